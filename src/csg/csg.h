@@ -1,0 +1,98 @@
+/*
+ * csg.h — the CSG tree: building it, finalising it into a read-only scene,
+ * and tracing rays through it as interval lists.
+ *
+ * Build:   csg_node_shape / csg_node_op / csg_node_add make a tree; each leaf
+ *          carries its full world_from_object transform and its material, so
+ *          nothing multiplies matrices per ray.
+ * Commit:  csg_scene_new takes the trees, computes bounds, inverse transforms
+ *          and normal matrices, flattens them, and frees the nodes.
+ * Query:   csg_trace, csg_scene_normal, csg_scene_material — read-only, so
+ *          any number of threads may query one scene at once (each with its
+ *          own iv_arena).
+ */
+#ifndef RAYSCAD_CSG_H
+#define RAYSCAD_CSG_H
+
+#include "../intervals/intervals.h"
+
+typedef enum csg_op {
+    CSG_OP_UNION,
+    CSG_OP_INTERSECTION,
+    CSG_OP_DIFFERENCE /* first child minus all the others */
+} csg_op;
+
+typedef struct csg_material {
+    float rgba[4];  /* sRGB-encoded colour and alpha, each in [0, 1] */
+    int has_color;  /* 0: no color() applied; the renderer uses its scheme */
+} csg_material;
+
+/* Affine transforms are 3×4 row-major: x' = m[0]x + m[1]y + m[2]z + m[3], … */
+typedef double csg_affine[12];
+
+extern const csg_affine csg_affine_identity;
+
+typedef struct csg_node csg_node;
+
+/* A leaf: shape s placed by world_from_object, with material m (both copied).
+ * Returns a node owned by the caller (csg_node_free, or hand it to a parent
+ * or a scene), or NULL when out of memory. */
+csg_node *csg_node_shape(const iv_shape *s, const csg_affine world_from_object,
+                         const csg_material *m);
+/* An operation with no children yet: an empty union, intersection or
+ * difference is the empty set. */
+csg_node *csg_node_op(csg_op op);
+/* Append child to parent (an op node); the parent owns it from now on, also
+ * when this fails.  Returns 0, or -1 when out of memory. */
+int csg_node_add(csg_node *parent, csg_node *child);
+/* Number of children of an op node (0 for a leaf). */
+int csg_node_child_count(const csg_node *n);
+void csg_node_free(csg_node *n);
+
+typedef struct csg_scene csg_scene;
+
+/* Commit: takes ownership of the n root trees (each may be NULL = empty) and
+ * frees them, whatever the outcome.  Leaves with a singular transform or an
+ * empty shape are dropped (as OpenSCAD drops degenerate objects).
+ * Returns the scene (free with csg_scene_free), or NULL with a message in
+ * err (errlen bytes) when out of memory. */
+csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen);
+void csg_scene_free(csg_scene *s);
+
+int csg_scene_root_count(const csg_scene *s);
+/* Number of primitives (leaves); prim indices run 0 .. count-1. */
+int csg_scene_prim_count(const csg_scene *s);
+
+/* World-space bounds of root r.  Returns 0, or -1 when the root is empty
+ * (then lo/hi are untouched).  Components may be infinite (halfspaces). */
+int csg_scene_bounds(const csg_scene *s, int r, double lo[3], double hi[3]);
+
+/* The interval list of root r along the world ray o + t·d, clipped to
+ * [tmin, tmax].  Scratch and the result's storage come from arena a (the
+ * result stays valid until the arena is reset).  Subtrees whose bounds the
+ * ray misses are skipped, and so is every operand after the first of an
+ * intersection or difference whose first operand is empty (Roth).
+ * Returns 0, or -1 when the arena is out of memory. */
+int csg_trace(const csg_scene *s, int r, const double o[3], const double d[3],
+              double tmin, double tmax, iv_arena *a, iv_list *out);
+
+/* The world-space unit normal at boundary b of a list traced along o + t·d:
+ * the primitive's outward normal, negated when b->flip.  A boundary with
+ * prim == IV_PRIM_NONE (a clip) gets -d normalised. */
+void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3],
+                      const double d[3], double n[3]);
+
+/* The material of primitive prim (borrowed from the scene). */
+const csg_material *csg_scene_material(const csg_scene *s, int32_t prim);
+
+/* ---- small affine helpers, shared by the builders ------------------------ */
+
+/* out = a ∘ b (apply b first).  out may alias a or b. */
+void csg_affine_mul(const csg_affine a, const csg_affine b, csg_affine out);
+/* Inverse of m into out; returns 0, or -1 when m is singular (|det| tiny
+ * relative to the scale of m) or not finite. */
+int csg_affine_invert(const csg_affine m, csg_affine out);
+void csg_affine_point(const csg_affine m, const double p[3], double out[3]);
+void csg_affine_vector(const csg_affine m, const double v[3], double out[3]);
+
+#endif

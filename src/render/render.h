@@ -1,0 +1,79 @@
+/*
+ * render.h — cameras that follow OpenSCAD's conventions, and the image
+ * renderer: primary rays through a csg_scene, visibility first, shading once
+ * at the visible boundaries, colour alpha composited front to back.
+ */
+#ifndef RAYSCAD_RENDER_H
+#define RAYSCAD_RENDER_H
+
+#include "../csg/csg.h"
+
+/* A resolved pinhole or orthographic camera in world space. */
+typedef struct render_camera {
+    double eye[3];     /* position (perspective) / reference point (ortho) */
+    double forward[3]; /* unit view direction */
+    double up[3];      /* unit, orthogonal to forward */
+    double right[3];   /* unit, forward × up */
+    double fovy_deg;   /* vertical field of view, perspective */
+    double ortho_half_height; /* half the visible height, orthographic */
+    int ortho;         /* 1: orthographic projection */
+} render_camera;
+
+/* The view as OpenSCAD's command line states it. */
+typedef enum render_camera_kind {
+    RENDER_CAMERA_DEFAULT, /* no --camera: rotation 55,0,25, viewall+autocenter */
+    RENDER_CAMERA_GIMBAL,  /* --camera=tx,ty,tz,rx,ry,rz,dist */
+    RENDER_CAMERA_EYE      /* --camera=ex,ey,ez,cx,cy,cz */
+} render_camera_kind;
+
+typedef struct render_view {
+    render_camera_kind kind;
+    double v[7];    /* the --camera numbers */
+    int viewall;    /* --viewall */
+    int autocenter; /* --autocenter */
+    int ortho;      /* --projection=o */
+} render_view;
+
+/* Resolve a view for an image of width × height pixels and a model whose
+ * bounds are lo/hi (used by viewall/autocenter; pass have_bounds = 0 for an
+ * empty model).  Follows OpenSCAD 2021.01 exactly (22.5° vertical field of
+ * view, its viewall distance and centring), so that the images line up
+ * pixel for pixel.  Returns 0, or -1 for a degenerate view (eye == centre). */
+int render_camera_resolve(const render_view *v, const double lo[3], const double hi[3],
+                          int have_bounds, int width, int height, render_camera *out);
+
+/* The world ray through image position (px, py) in pixels, (0,0) the
+ * top-left corner of the top-left pixel: origin o and direction d (unit). */
+void render_camera_ray(const render_camera *c, int width, int height, double px, double py,
+                       double o[3], double d[3]);
+
+/* An OpenSCAD colour scheme, sRGB in [0, 1]. */
+typedef struct render_colors {
+    float background[3];
+    float face[3]; /* objects with no color() */
+    float back[3]; /* subtracted surfaces with no color() */
+} render_colors;
+
+/* Fill *out with scheme `name` ("Cornfield", "Metallic", …, as OpenSCAD
+ * names them).  Returns 0, or -1 for an unknown name. */
+int render_colors_by_name(const char *name, render_colors *out);
+
+typedef struct render_options {
+    int width, height;
+    int samples; /* samples per pixel is samples², stratified; >= 1 */
+    int threads; /* worker threads; <= 0: all cores */
+    render_colors colors;
+    /* Called from the calling thread with the fraction done; may be NULL. */
+    void (*progress)(void *ud, double done);
+    void *ud;
+} render_options;
+
+/* Render root 0 of scene s (and any further roots, composited with it) into
+ * rgba: width*height*4 floats, row-major from the top row, sRGB-encoded,
+ * alpha 1 where the background shows.  The result is identical for any
+ * thread count.  Returns 0, or -1 with a message in err (out of memory,
+ * bad options). */
+int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
+                 float *rgba, char *err, size_t errlen);
+
+#endif

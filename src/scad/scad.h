@@ -1,0 +1,53 @@
+/*
+ * scad.h — the OpenSCAD language: lexer, parser and evaluator that turn a
+ * .scad file into CSG trees (csg.h).
+ *
+ * The library never prints: ECHO and WARNING lines, and errors, go to the
+ * caller's callback as whole lines, worded as OpenSCAD 2021.01 words them
+ * ("ECHO: a = 1", "WARNING: Ignoring unknown module 'foo' in file x.scad,
+ * line 3"); errors read "file:line:col: error: message".
+ */
+#ifndef RAYSCAD_SCAD_H
+#define RAYSCAD_SCAD_H
+
+#include "../csg/csg.h"
+
+typedef enum scad_msg_kind {
+    SCAD_MSG_ECHO,    /* "ECHO: …" as OpenSCAD prints it */
+    SCAD_MSG_WARNING, /* "WARNING: …" as OpenSCAD prints it */
+    SCAD_MSG_ERROR    /* "file:line:col: error: …" */
+} scad_msg_kind;
+
+typedef struct scad_options {
+    /* -D overrides, each "name=value" (value is an OpenSCAD expression),
+     * applied after the file's own top-level assignments of that name. */
+    const char *const *defines;
+    int define_count;
+    /* Receives every message line (no trailing newline); may be NULL. */
+    void (*message)(void *ud, scad_msg_kind kind, const char *line);
+    void *ud;
+    /* Limits; 0 picks the default. */
+    int max_recursion; /* nested module/function calls, default 10000 */
+} scad_options;
+
+/* What a file evaluates to.  Each tree may be NULL (nothing there). */
+typedef struct scad_result {
+    csg_node *model;      /* the top-level objects, as an implicit union */
+    csg_node *highlight;  /* subtrees under '#': also part of model */
+    csg_node *background; /* subtrees under '%': not part of model */
+    int warnings;         /* how many WARNING lines were sent */
+} scad_result;
+
+/* Parse and evaluate the file at path.  On success returns 0 and fills *out;
+ * the caller owns the trees (csg_node_free, or hand them to csg_scene_new).
+ * On failure returns -1, has sent at least one SCAD_MSG_ERROR line, and *out
+ * holds no trees.  Syntax errors are all reported before returning. */
+int scad_eval_file(const char *path, const scad_options *opt, scad_result *out);
+
+/* The same for source text in memory; `name` is used in messages. */
+int scad_eval_string(const char *name, const char *src, const scad_options *opt,
+                     scad_result *out);
+
+void scad_result_free(scad_result *r);
+
+#endif
