@@ -52,6 +52,8 @@ typedef struct render_colors {
     float background[3];
     float face[3]; /* objects with no color() */
     float back[3]; /* subtracted surfaces with no color() */
+    float highlight[4];  /* '#' subtrees: OpenSCAD's transparent pink */
+    float background_modifier[4]; /* '%' subtrees: transparent grey */
 } render_colors;
 
 /* Fill *out with scheme `name` ("Cornfield", "Metallic", …, as OpenSCAD
@@ -68,7 +70,13 @@ typedef struct render_options {
     void *ud;
 } render_options;
 
-/* Render root 0 of scene s (and any further roots, composited with it) into
+/* Scene roots by role: root 0 is the model; root 1, when present, the '#'
+ * highlight subtrees (drawn in colors.highlight over the model); root 2, when
+ * present, the '%' background subtrees (drawn in colors.background_modifier).
+ * An empty root is simply absent from the image. */
+enum { RENDER_ROOT_MODEL = 0, RENDER_ROOT_HIGHLIGHT = 1, RENDER_ROOT_BACKGROUND = 2 };
+
+/* Render the roots of scene s, composited front to back, into
  * rgba: width*height*4 floats, row-major from the top row, sRGB-encoded,
  * alpha 1 where the background shows.  The result is identical for any
  * thread count.  Returns 0, or -1 with a message in err (out of memory,
