@@ -1,0 +1,165 @@
+/*
+ * main.c — the rayscad command: parse the flags, evaluate the .scad file into
+ * CSG trees, commit them to a scene, and write what -o asks for.  This is the
+ * only place that prints and chooses exit codes: 0 ok, 1 the model or the
+ * output failed, 2 usage.
+ */
+#include "atomic_file.h"
+#include "options.h"
+#include "progress.h"
+
+#include "../io/io.h"
+#include "../render/render.h"
+#include "../scad/scad.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define RAYSCAD_VERSION "0.1.0"
+
+enum { EXIT_MODEL = 1, EXIT_USAGE = 2 };
+
+/* Messages from the evaluator: kept for an .echo output, else printed. */
+typedef struct messages {
+    int to_buffer;
+    char *buf;
+    size_t len, cap;
+} messages;
+
+static void on_message(void *ud, scad_msg_kind kind, const char *line)
+{
+    messages *m = ud;
+    if (!m->to_buffer || kind == SCAD_MSG_ERROR) {
+        fprintf(stderr, "%s\n", line);
+        if (kind == SCAD_MSG_ERROR || !m->to_buffer) return;
+    }
+    size_t n = strlen(line);
+    if (m->len + n + 2 > m->cap) {
+        size_t cap = m->cap ? m->cap * 2 : 4096;
+        while (cap < m->len + n + 2) cap *= 2;
+        char *b = realloc(m->buf, cap);
+        if (!b) return; /* the write step reports the shortfall */
+        m->buf = b;
+        m->cap = cap;
+    }
+    memcpy(m->buf + m->len, line, n);
+    m->len += n;
+    m->buf[m->len++] = '\n';
+}
+
+static int has_extension(const char *path, const char *ext)
+{
+    size_t n = strlen(path), e = strlen(ext);
+    if (n < e) return 0;
+    for (size_t i = 0; i < e; i++) {
+        char c = path[n - e + i];
+        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
+        if (c != ext[i]) return 0;
+    }
+    return 1;
+}
+
+static int write_image(const cli_options *o, csg_scene *scene)
+{
+    render_colors colors;
+    if (render_colors_by_name(o->colorscheme, &colors) != 0) {
+        fprintf(stderr, "rayscad: error: unknown colour scheme '%s'\n", o->colorscheme);
+        return EXIT_USAGE;
+    }
+    double lo[3], hi[3];
+    int have_bounds = csg_scene_bounds(scene, RENDER_ROOT_MODEL, lo, hi) == 0;
+    render_camera cam;
+    if (render_camera_resolve(&o->view, lo, hi, have_bounds, o->width, o->height, &cam) != 0) {
+        fprintf(stderr, "rayscad: error: the camera's eye and centre coincide\n");
+        return EXIT_USAGE;
+    }
+    render_options ro = {
+        .width = o->width,
+        .height = o->height,
+        .samples = o->samples,
+        .threads = o->threads,
+        .colors = colors,
+    };
+    progress bar;
+    progress_start(&bar, "rendering");
+    ro.progress = progress_update;
+    ro.ud = &bar;
+
+    float *rgba = malloc((size_t)o->width * (size_t)o->height * 4 * sizeof *rgba);
+    if (!rgba) {
+        fprintf(stderr, "rayscad: error: out of memory for a %dx%d image\n", o->width,
+                o->height);
+        return EXIT_MODEL;
+    }
+    char err[512];
+    int rc = render_image(scene, &cam, &ro, rgba, err, sizeof err);
+    progress_finish(&bar);
+    if (rc == 0) rc = io_image_write(o->output, o->width, o->height, 4, rgba, err, sizeof err);
+    free(rgba);
+    if (rc != 0) {
+        fprintf(stderr, "rayscad: error: %s\n", err);
+        return EXIT_MODEL;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    cli_options o;
+    char err[512];
+    if (cli_options_parse(argc, argv, &o, err, sizeof err) != 0) {
+        fprintf(stderr, "rayscad: %s\n(rayscad --help lists the options)\n", err);
+        return EXIT_USAGE;
+    }
+    if (o.help) {
+        fputs(cli_usage, stdout);
+        return 0;
+    }
+    if (o.version) {
+        printf("rayscad %s\n", RAYSCAD_VERSION);
+        return 0;
+    }
+    int echo_out = has_extension(o.output, ".echo");
+    if (!echo_out && !io_image_format_supported(o.output)) {
+        fprintf(stderr, "rayscad: cannot tell the output format from '%s' "
+                        "(use .png .jpg .tif .exr or .echo)\n",
+                o.output);
+        return EXIT_USAGE;
+    }
+
+    messages msgs = {.to_buffer = echo_out};
+    scad_options so = {
+        .defines = o.defines,
+        .define_count = o.define_count,
+        .message = on_message,
+        .ud = &msgs,
+    };
+    scad_result res;
+    if (scad_eval_file(o.input, &so, &res) != 0) {
+        free(msgs.buf);
+        return EXIT_MODEL;
+    }
+    if (echo_out) {
+        scad_result_free(&res);
+        int rc = atomic_file_write(o.output, msgs.buf ? msgs.buf : "", msgs.len, err, sizeof err);
+        free(msgs.buf);
+        if (rc != 0) {
+            fprintf(stderr, "rayscad: error: %s\n", err);
+            return EXIT_MODEL;
+        }
+        return 0;
+    }
+
+    csg_node *roots[3] = {res.model, res.highlight, res.background};
+    res.model = res.highlight = res.background = NULL;
+    scad_result_free(&res);
+    csg_scene *scene = csg_scene_new(roots, 3, err, sizeof err);
+    if (!scene) {
+        fprintf(stderr, "rayscad: error: %s\n", err);
+        return EXIT_MODEL;
+    }
+    int rc = write_image(&o, scene);
+    csg_scene_free(scene);
+    return rc;
+}

@@ -1,0 +1,205 @@
+/*
+ * options.c — parse the command line.  Every flag takes its value either as
+ * --flag=value or as the next argument; -o and -D also as -oFILE / -Dname=v.
+ * Numbers are parsed strictly: trailing junk, NaN and infinities are usage
+ * errors, never silently zero.
+ */
+#include "options.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char cli_usage[] =
+    "usage: rayscad FILE.scad -o OUTPUT [options]\n"
+    "\n"
+    "Renders an OpenSCAD file by ray casting its CSG tree with interval lists.\n"
+    "OUTPUT's extension picks the format: .png .jpg .tif .exr (images),\n"
+    ".echo (the ECHO and WARNING lines, as openscad -o x.echo writes them).\n"
+    "\n"
+    "  -o FILE                 output file (required)\n"
+    "  -D name=value           override a top-level variable (repeatable)\n"
+    "  --camera=tx,ty,tz,rx,ry,rz,dist   gimbal camera, as OpenSCAD\n"
+    "  --camera=ex,ey,ez,cx,cy,cz        eye and centre camera, as OpenSCAD\n"
+    "  --imgsize=W,H           image size in pixels (default 512,512)\n"
+    "  --projection=p|o        perspective (default) or orthographic\n"
+    "  --viewall               fit the model in view\n"
+    "  --autocenter            centre the model in view\n"
+    "  --colorscheme=NAME      OpenSCAD colour scheme (default Cornfield)\n"
+    "  --samples N             N×N stratified samples per pixel (default 1)\n"
+    "  --threads N             worker threads (default: all cores)\n"
+    "  --help                  this text\n"
+    "  --version               the version\n"
+    "\n"
+    "Exit status: 0 ok, 1 the model or the output failed, 2 usage error.\n";
+
+static int parse_double(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v)) return -1;
+    *out = v;
+    return 0;
+}
+
+static int parse_int(const char *s, long lo, long hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end != '\0' || errno == ERANGE || v < lo || v > hi) return -1;
+    *out = (int)v;
+    return 0;
+}
+
+/* Split a comma list of up to max numbers; returns the count, or -1. */
+static int parse_numbers(const char *s, double *v, int max)
+{
+    char buf[512];
+    if (strlen(s) >= sizeof buf) return -1;
+    strcpy(buf, s);
+    int n = 0;
+    char *save = NULL;
+    for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        if (n == max || parse_double(tok, &v[n]) != 0) return -1;
+        n++;
+    }
+    return n;
+}
+
+/* If argv[*i] is `name` or `name=value`, set *value (taking the next argument
+ * for the first form) and return 1; return -1 when the value is missing. */
+static int flag_value(int argc, char **argv, int *i, const char *name, const char **value)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0) return 0;
+    if (a[n] == '=') {
+        *value = a + n + 1;
+        return 1;
+    }
+    if (a[n] != '\0') return 0;
+    if (*i + 1 >= argc) return -1;
+    *value = argv[++*i];
+    return 1;
+}
+
+int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen)
+{
+    memset(o, 0, sizeof *o);
+    o->width = 512;
+    o->height = 512;
+    o->samples = 1;
+    o->colorscheme = "Cornfield";
+    o->view.kind = RENDER_CAMERA_DEFAULT;
+
+    static const char *const valued[] = {"-o",         "-D",        "--camera",  "--imgsize",
+                                         "--projection", "--colorscheme", "--samples", "--threads"};
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = NULL;
+        const char *flag = NULL;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            o->help = 1;
+            continue;
+        }
+        if (strcmp(a, "--version") == 0 || strcmp(a, "-v") == 0) {
+            o->version = 1;
+            continue;
+        }
+        if (strcmp(a, "--viewall") == 0) {
+            o->view.viewall = 1;
+            continue;
+        }
+        if (strcmp(a, "--autocenter") == 0) {
+            o->view.autocenter = 1;
+            continue;
+        }
+        if ((a[0] == '-' && (a[1] == 'o' || a[1] == 'D') && a[2] != '\0' && a[2] != '=')) {
+            flag = a[1] == 'o' ? "-o" : "-D";
+            val = a + 2;
+        }
+        for (size_t k = 0; !flag && k < sizeof valued / sizeof *valued; k++) {
+            int r = flag_value(argc, argv, &i, valued[k], &val);
+            if (r < 0) {
+                snprintf(err, errlen, "%s needs a value", valued[k]);
+                return -1;
+            }
+            if (r > 0) flag = valued[k];
+        }
+        if (!flag) {
+            if (a[0] == '-' && a[1] != '\0') {
+                snprintf(err, errlen, "unknown option '%s'", a);
+                return -1;
+            }
+            if (o->input) {
+                snprintf(err, errlen, "more than one input file ('%s' and '%s')", o->input, a);
+                return -1;
+            }
+            o->input = a;
+            continue;
+        }
+        if (strcmp(flag, "-o") == 0) {
+            o->output = val;
+        } else if (strcmp(flag, "-D") == 0) {
+            if (o->define_count == CLI_MAX_DEFINES || !strchr(val, '=')) {
+                snprintf(err, errlen, "-D expects name=value (at most %d of them)",
+                         CLI_MAX_DEFINES);
+                return -1;
+            }
+            o->defines[o->define_count++] = val;
+        } else if (strcmp(flag, "--camera") == 0) {
+            int n = parse_numbers(val, o->view.v, 7);
+            if (n != 6 && n != 7) {
+                snprintf(err, errlen,
+                         "--camera expects 7 numbers (tx,ty,tz,rx,ry,rz,dist) or 6 "
+                         "(ex,ey,ez,cx,cy,cz), got '%s'",
+                         val);
+                return -1;
+            }
+            o->view.kind = n == 7 ? RENDER_CAMERA_GIMBAL : RENDER_CAMERA_EYE;
+        } else if (strcmp(flag, "--imgsize") == 0) {
+            double wh[2];
+            if (parse_numbers(val, wh, 2) != 2 || wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 ||
+                wh[1] > 16384 || wh[0] != floor(wh[0]) || wh[1] != floor(wh[1])) {
+                snprintf(err, errlen, "--imgsize expects W,H in 1..16384, got '%s'", val);
+                return -1;
+            }
+            o->width = (int)wh[0];
+            o->height = (int)wh[1];
+        } else if (strcmp(flag, "--projection") == 0) {
+            if (val[0] == 'o' || val[0] == 'O') o->view.ortho = 1;
+            else if (val[0] == 'p' || val[0] == 'P') o->view.ortho = 0;
+            else {
+                snprintf(err, errlen, "--projection expects p or o, got '%s'", val);
+                return -1;
+            }
+        } else if (strcmp(flag, "--colorscheme") == 0) {
+            o->colorscheme = val;
+        } else if (strcmp(flag, "--samples") == 0) {
+            if (parse_int(val, 1, 64, &o->samples) != 0) {
+                snprintf(err, errlen, "--samples expects a whole number in 1..64, got '%s'", val);
+                return -1;
+            }
+        } else if (strcmp(flag, "--threads") == 0) {
+            if (parse_int(val, 0, 1024, &o->threads) != 0) {
+                snprintf(err, errlen, "--threads expects a whole number in 0..1024, got '%s'",
+                         val);
+                return -1;
+            }
+        }
+    }
+    if (o->help || o->version) return 0;
+    if (!o->input) {
+        snprintf(err, errlen, "no input file");
+        return -1;
+    }
+    if (!o->output) {
+        snprintf(err, errlen, "no output file (-o)");
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,32 @@
+/*
+ * options.h — the rayscad command line, parsed into one struct.  Flag names
+ * follow OpenSCAD's where OpenSCAD has the flag.
+ */
+#ifndef RAYSCAD_CLI_OPTIONS_H
+#define RAYSCAD_CLI_OPTIONS_H
+
+#include "../render/render.h"
+
+enum { CLI_MAX_DEFINES = 256 };
+
+typedef struct cli_options {
+    const char *input;
+    const char *output;
+    const char *defines[CLI_MAX_DEFINES];
+    int define_count;
+    render_view view;
+    int width, height;
+    const char *colorscheme;
+    int samples;
+    int threads;
+    int help, version;
+} cli_options;
+
+/* Parse argv into *o.  Returns 0, or -1 with a message in err (a usage
+ * error: the caller prints it and exits 2). */
+int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen);
+
+/* The --help text. */
+extern const char cli_usage[];
+
+#endif

@@ -1,0 +1,38 @@
+/*
+ * progress.c — see progress.h.  Redraws only when the whole percentage
+ * changes, so a fast render does not flood the terminal.
+ */
+#include "progress.h"
+
+#include <stdio.h>
+#include <unistd.h>
+
+void progress_start(progress *p, const char *label)
+{
+    p->label = label;
+    p->enabled = isatty(STDERR_FILENO);
+    p->last = -1;
+}
+
+void progress_update(void *ud, double done)
+{
+    progress *p = ud;
+    if (!p->enabled) return;
+    int pct = (int)(done * 100.0 + 0.5);
+    if (pct < 0) pct = 0;
+    if (pct > 100) pct = 100;
+    if (pct == p->last) return;
+    p->last = pct;
+    enum { WIDTH = 40 };
+    char bar[WIDTH + 1];
+    int fill = pct * WIDTH / 100;
+    for (int i = 0; i < WIDTH; i++) bar[i] = i < fill ? '#' : '.';
+    bar[WIDTH] = '\0';
+    fprintf(stderr, "\r%s [%s] %3d%%", p->label, bar, pct);
+    fflush(stderr);
+}
+
+void progress_finish(progress *p)
+{
+    if (p->enabled && p->last >= 0) fprintf(stderr, "\n");
+}

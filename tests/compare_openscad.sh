@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Render every model under tests/models and models/ with rayscad and with the
+# real openscad binary (its preview PNG, under xvfb), same flags, and compare
+# the object masks: IoU >= 0.99 outside a one-pixel band at the silhouette.
+# The flags come from the model's "// args:" line (none: OpenSCAD's defaults
+# at 512x512).  Images and mask diffs of each run stay in BUILD/compare/.
+#   usage: tests/compare_openscad.sh [BUILD] [model.scad ...]
+set -u
+build=${1:-build}
+shift || true
+rayscad=$build/rayscad
+maskcmp=$build/tools/maskcmp
+out=$build/compare
+mkdir -p "$out"
+if [ $# -gt 0 ]; then models=("$@"); else models=(tests/models/*.scad models/*.scad); fi
+
+passed=0
+failed=0
+for m in "${models[@]}"; do
+    name=$(basename "$m" .scad)
+    args=$(sed -n 's|^// args: *||p' "$m" | head -n 1)
+    [ -n "$args" ] || args="--imgsize=512,512"
+    # shellcheck disable=SC2086
+    if ! timeout 300 xvfb-run -a openscad -o "$out/$name.ref.png" $args "$m" \
+            >"$out/$name.openscad.log" 2>&1; then
+        echo "FAIL $name: openscad failed (see $out/$name.openscad.log)"
+        failed=$((failed + 1))
+        continue
+    fi
+    # shellcheck disable=SC2086
+    if ! timeout 300 "$rayscad" "$m" -o "$out/$name.png" $args >"$out/$name.rayscad.log" 2>&1; then
+        echo "FAIL $name: rayscad failed: $(tail -n 3 "$out/$name.rayscad.log")"
+        failed=$((failed + 1))
+        continue
+    fi
+    if res=$("$maskcmp" "$out/$name.png" "$out/$name.ref.png" --min-iou 0.99 \
+            --diff "$out/$name.diff.png"); then
+        echo "ok   $name: $res"
+        passed=$((passed + 1))
+    else
+        echo "FAIL $name: $res"
+        failed=$((failed + 1))
+    fi
+done
+echo "compare: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
