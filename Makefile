@@ -57,7 +57,7 @@ CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit compare asan bench clean format
+.PHONY: all deps demo test unit cli compare asan bench clean format
 .DEFAULT_GOAL := all
 
 all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
@@ -104,17 +104,22 @@ demo: deps
 unit: all
 	@fail=0; for t in $(TESTS); do $$t --jobs=2 || fail=1; done; exit $$fail
 
+cli: all
+	tests/cli_test.sh $(BUILD)
+
 compare: all
 	tests/compare_openscad.sh $(BUILD)
 
 test: deps
 	$(MAKE) all
 	$(MAKE) unit
+	$(MAKE) cli
 	$(MAKE) compare
 
 asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" all
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" unit
+	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" cli
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" compare
 
 bench: deps all
