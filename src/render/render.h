@@ -17,6 +17,10 @@ typedef struct render_camera {
     double fovy_deg;   /* vertical field of view, perspective */
     double ortho_half_height; /* half the visible height, orthographic */
     int ortho;         /* 1: orthographic projection */
+    /* The depth range OpenSCAD's projection keeps, measured along forward
+     * from eye: perspective [0.1·dist, 100·dist], orthographic
+     * [-100·dist, 100·dist] (GLView::setupCamera).  Both 0: no clipping. */
+    double clip_near, clip_far;
 } render_camera;
 
 /* The view as OpenSCAD's command line states it. */

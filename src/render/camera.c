@@ -1,0 +1,184 @@
+/*
+ * camera.c — OpenSCAD 2021.01's camera, rebuilt from its sources so that our
+ * silhouettes land on the same pixels as its preview PNG.
+ *
+ * OpenSCAD keeps every camera as a "gimbal": object_trans, object_rot (GL
+ * rotation angles) and viewer_distance (Camera.cc).  GLView::setupCamera
+ * draws with
+ *     view = lookAt(eye (0,-dist,0), centre 0, up +z)
+ *            · Rx(rot.x) · Ry(rot.y) · Rz(rot.z) · T(object_trans)
+ * and gluPerspective(22.5°, w/h, 0.1·dist, 100·dist), or for --projection=o
+ * glOrtho(±h·w/h, ±h, -100·dist, 100·dist) with h = dist·tan(22.5°/2).
+ * --camera=tx,ty,tz,rx,ry,rz,d goes through Camera::setVpt/setVpr:
+ *     object_trans = -t,  rot = wrap(90-rx, -ry, -rz),
+ * where wrap() is fmodf(360 + a, 360) — in float, which we repeat so that the
+ * angles round as OpenSCAD's do.  --camera=eye,centre becomes a gimbal too
+ * (Camera::setup): object_trans = -centre, dist = |centre-eye|, rot.y = 0,
+ * rot.x = -atan2(dir.z, |dir.xy|), rot.z = 90 - atan2(dir.y, dir.x) (or 0 /
+ * 180 when dir is vertical).  Camera::viewAll: with autocenter,
+ * object_trans = -bbox.centre; then
+ *     dist = (|bbox.centre + object_trans| + |bbox.diagonal|/2) / sin(fov/2).
+ * The invariant here: forward, up, right are orthonormal and eye is where the
+ * GL eye-space origin lies in world space.
+ */
+#include "render.h"
+
+#include <math.h>
+
+#define FOVY_DEG 22.5                  /* Camera::Camera(): fov(22.5) */
+#define DEFAULT_DIST 140.0             /* Camera::resetView(): setVpd(140) */
+#define PI 3.14159265358979323846
+
+/* Camera.cc's wrap(): fmodf(360 + angle, 360), float on purpose. */
+static double wrap(double angle)
+{
+    return (double)fmodf((float)(360.0 + angle), 360.0f);
+}
+
+/* rows = Rx(ax) · Ry(ay) · Rz(az), angles in degrees, as glRotated builds
+ * them (right-handed, counter-clockwise looking down the axis). */
+static void gl_rotation(double ax, double ay, double az, double m[3][3])
+{
+    double a = ax * PI / 180, b = ay * PI / 180, c = az * PI / 180;
+    double rx[3][3] = {{1, 0, 0}, {0, cos(a), -sin(a)}, {0, sin(a), cos(a)}};
+    double ry[3][3] = {{cos(b), 0, sin(b)}, {0, 1, 0}, {-sin(b), 0, cos(b)}};
+    double rz[3][3] = {{cos(c), -sin(c), 0}, {sin(c), cos(c), 0}, {0, 0, 1}};
+    double t[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            t[i][j] = 0;
+            for (int k = 0; k < 3; k++) t[i][j] += rx[i][k] * ry[k][j];
+        }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            m[i][j] = 0;
+            for (int k = 0; k < 3; k++) m[i][j] += t[i][k] * rz[k][j];
+        }
+}
+
+static int finite3(const double v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+int render_camera_resolve(const render_view *v, const double lo[3], const double hi[3],
+                          int have_bounds, int width, int height, render_camera *out)
+{
+    double trans[3] = {0, 0, 0}, rot[3], dist;
+    int viewall = v->viewall, autocenter = v->autocenter;
+
+    switch (v->kind) {
+    case RENDER_CAMERA_GIMBAL:
+        for (int i = 0; i < 3; i++) trans[i] = -v->v[i];
+        rot[0] = wrap(90 - v->v[3]);
+        rot[1] = wrap(-v->v[4]);
+        rot[2] = wrap(-v->v[5]);
+        dist = v->v[6];
+        break;
+    case RENDER_CAMERA_EYE: {
+        double dir[3];
+        for (int i = 0; i < 3; i++) {
+            trans[i] = -v->v[3 + i];
+            dir[i] = v->v[3 + i] - v->v[i];
+        }
+        dist = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        if (!(dist > 0)) return -1;
+        rot[2] = (dir[1] == 0 && dir[0] == 0) ? (dir[2] < 0 ? 0 : 180)
+                                              : -atan2(dir[1], dir[0]) * 180 / PI + 90;
+        rot[1] = 0;
+        rot[0] = -atan2(dir[2], hypot(dir[0], dir[1])) * 180 / PI;
+        break;
+    }
+    case RENDER_CAMERA_DEFAULT:
+    default:
+        /* No --camera: resetView() (vpr 55,0,25, vpd 140) and openscad.cc
+         * turns on both viewall and autocenter. */
+        rot[0] = wrap(90 - 55.0);
+        rot[1] = wrap(-0.0);
+        rot[2] = wrap(-25.0);
+        dist = DEFAULT_DIST;
+        viewall = autocenter = 1;
+        break;
+    }
+
+    /* Camera::viewAll.  OpenSCAD 2021.01 has no empty-box case: an empty
+     * Eigen box has centre 0 and an infinite diagonal, so it would centre on
+     * the origin and put the eye at infinity — an empty picture either way.
+     * We centre on the origin and keep a finite distance. */
+    int bounded = have_bounds && finite3(lo) && finite3(hi);
+    if (viewall) {
+        double c[3] = {0, 0, 0}, diag2 = 0;
+        if (bounded)
+            for (int i = 0; i < 3; i++) {
+                c[i] = (lo[i] + hi[i]) / 2;
+                diag2 += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+            }
+        if (autocenter)
+            for (int i = 0; i < 3; i++) trans[i] = -c[i];
+        if (bounded) {
+            double off[3] = {c[0] + trans[0], c[1] + trans[1], c[2] + trans[2]};
+            double radius = sqrt(off[0] * off[0] + off[1] * off[1] + off[2] * off[2]) +
+                            sqrt(diag2) / 2;
+            dist = radius / sin(FOVY_DEG / 2 * PI / 180);
+        }
+    }
+    if (!(dist > 0) || !isfinite(dist)) {
+        if (!viewall) return -1;
+        dist = DEFAULT_DIST; /* a model that is a single point */
+    }
+
+    /* Eye space (x right, y up, -z forward) = L · R · (p + trans) with
+     * L = lookAt((0,-dist,0), 0, +z): x_e = w.x, y_e = w.z, z_e = -(w.y + dist).
+     * So in world space right = R^T e_x, up = R^T e_z, forward = R^T e_y:
+     * the rows 0, 2, 1 of R; and the eye is R^T (0,-dist,0) - trans. */
+    double r[3][3];
+    gl_rotation(rot[0], rot[1], rot[2], r);
+    for (int i = 0; i < 3; i++) {
+        out->right[i] = r[0][i];
+        out->forward[i] = r[1][i];
+        out->up[i] = r[2][i];
+        out->eye[i] = -dist * r[1][i] - trans[i];
+    }
+    out->fovy_deg = FOVY_DEG;
+    out->ortho_half_height = dist * tan(FOVY_DEG / 2 * PI / 180);
+    out->ortho = v->ortho;
+    if (v->ortho) {
+        out->clip_near = -100 * dist;
+        out->clip_far = 100 * dist;
+    } else {
+        out->clip_near = 0.1 * dist;
+        out->clip_far = 100 * dist;
+    }
+    (void)width;
+    (void)height;
+    return 0;
+}
+
+/* Pixel (px, py) maps to GL's normalised device coordinates as the
+ * rasteriser samples it: x_ndc = 2·px/W - 1, y_ndc = 1 - 2·py/H (the PNG's
+ * top row is GL's last).  gluPerspective puts the image plane at unit depth
+ * with half-height tan(fovy/2) and half-width aspect times that; glOrtho's
+ * half-height is ortho_half_height. */
+void render_camera_ray(const render_camera *c, int width, int height, double px, double py,
+                       double o[3], double d[3])
+{
+    double aspect = (double)width / (double)height;
+    double nx = 2 * px / width - 1, ny = 1 - 2 * py / height;
+    if (c->ortho) {
+        double sx = nx * aspect * c->ortho_half_height, sy = ny * c->ortho_half_height;
+        for (int i = 0; i < 3; i++) {
+            o[i] = c->eye[i] + sx * c->right[i] + sy * c->up[i];
+            d[i] = c->forward[i];
+        }
+        return;
+    }
+    double th = tan(c->fovy_deg / 2 * PI / 180);
+    double sx = nx * aspect * th, sy = ny * th, len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        o[i] = c->eye[i];
+        d[i] = c->forward[i] + sx * c->right[i] + sy * c->up[i];
+        len2 += d[i] * d[i];
+    }
+    double inv = 1 / sqrt(len2);
+    for (int i = 0; i < 3; i++) d[i] *= inv;
+}
