@@ -84,16 +84,25 @@ static void roundtrip_8bit(const char *name, int channels)
     cr_assert(w == W && h == H && ch == channels, "%dx%d, %d channels", w, h, ch);
     for (int i = 0; i < W * H * channels; i++) {
         float expect = floorf(px[i] * 255.0f + 0.5f) / 255.0f; /* rounded to nearest */
-        cr_expect(fabsf(back[i] - expect) < 1e-6f, "%s value %d: wrote %.5f, read %.5f (%g)",
-                  name, i, px[i], back[i], expect * 255);
+        cr_expect(fabsf(back[i] - expect) < 1e-6f, "%s value %d: wrote %.5f, read %.5f (%g)", name,
+                  i, px[i], back[i], expect * 255);
     }
     free(back);
     cr_expect_eq(dir_entries(), 1, "a temporary file was left behind");
 }
 
-Test(io_image, png_rgba_roundtrip) { roundtrip_8bit("a.png", 4); }
-Test(io_image, png_rgb_roundtrip) { roundtrip_8bit("b.png", 3); }
-Test(io_image, tiff_roundtrip) { roundtrip_8bit("c.tif", 4); }
+Test(io_image, png_rgba_roundtrip)
+{
+    roundtrip_8bit("a.png", 4);
+}
+Test(io_image, png_rgb_roundtrip)
+{
+    roundtrip_8bit("b.png", 3);
+}
+Test(io_image, tiff_roundtrip)
+{
+    roundtrip_8bit("c.tif", 4);
+}
 
 /* Straight alpha reaches the file untouched: oiiotool, told not to
  * premultiply, prints the bytes we wrote. */
@@ -120,8 +129,7 @@ Test(io_image, png_alpha_is_straight_on_disk)
             unsigned r, g, b, a;
             char *q = strchr(line, ':');
             cr_assert(q && sscanf(q + 1, "%u %u %u %u", &r, &g, &b, &a) == 4, "%s", line);
-            cr_expect(r == 200 && g == 100 && b == 50 && a == 64, "bytes %u %u %u %u", r, g, b,
-                      a);
+            cr_expect(r == 200 && g == 100 && b == 50 && a == 64, "bytes %u %u %u %u", r, g, b, a);
             found = 1;
         }
     pclose(p);

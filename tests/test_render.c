@@ -44,8 +44,7 @@ static float *openscad_render(const char *scad, const char *args, int *w, int *h
     if (!f) return NULL;
     fputs(scad, f);
     fclose(f);
-    snprintf(cmd, sizeof cmd, "xvfb-run -a openscad -o %s %s %s >%s/log 2>&1", png, args, src,
-             dir);
+    snprintf(cmd, sizeof cmd, "xvfb-run -a openscad -o %s %s %s >%s/log 2>&1", png, args, src, dir);
     float *px = NULL;
     char err[256];
     if (system(cmd) == 0 && io_image_read(png, w, h, ch, &px, err, sizeof err) != 0) px = NULL;
@@ -148,9 +147,9 @@ static mask_stats compare_box(const char *args, const render_view *v, int W, int
     return st;
 }
 
-#define REQUIRE_OPENSCAD()                                                                       \
-    do {                                                                                         \
-        if (!have_openscad()) cr_skip_test("openscad or xvfb-run not installed");                \
+#define REQUIRE_OPENSCAD()                                                                         \
+    do {                                                                                           \
+        if (!have_openscad()) cr_skip_test("openscad or xvfb-run not installed");                  \
     } while (0)
 
 /* ---- camera against OpenSCAD --------------------------------------------- */
@@ -162,8 +161,8 @@ Test(render_camera, gimbal_ortho_top_view_matches_openscad)
     REQUIRE_OPENSCAD();
     render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
     double lo[3] = {-5, -5, -5}, hi[3] = {5, 5, 5};
-    mask_stats st = compare_box("--imgsize=300,300 --camera=0,0,0,0,0,0,50 --projection=o", &v,
-                                300, 300, lo, hi);
+    mask_stats st = compare_box("--imgsize=300,300 --camera=0,0,0,0,0,0,50 --projection=o", &v, 300,
+                                300, lo, hi);
     int ref_w = st.ref_x1 - st.ref_x0 + 1, ref_h = st.ref_y1 - st.ref_y0 + 1;
     double expect = 10 / (2 * 50 * tan(22.5 / 2 * M_PI / 180)) * 300;
     cr_expect(fabs(ref_w - expect) <= 1 && fabs(ref_h - expect) <= 1,
@@ -190,8 +189,7 @@ Test(render_camera, eye_centre_view_matches_openscad)
     REQUIRE_OPENSCAD();
     render_view v = {.kind = RENDER_CAMERA_EYE, .v = {30, -40, 25, 2, 3, 1}};
     double lo[3] = {-3, -2, -1}, hi[3] = {7, 6, 4};
-    mask_stats st =
-        compare_box("--imgsize=300,300 --camera=30,-40,25,2,3,1", &v, 300, 300, lo, hi);
+    mask_stats st = compare_box("--imgsize=300,300 --camera=30,-40,25,2,3,1", &v, 300, 300, lo, hi);
     cr_expect(st.ref_count > 1000, "OpenSCAD's image shows %d object px", st.ref_count);
     cr_expect(st.mismatch_outside_band == 0 && st.mismatch < st.ref_count / 100,
               "masks differ in %d px (%d outside the 1-px band); ours %d px, OpenSCAD %d px",
@@ -203,8 +201,8 @@ Test(render_camera, eye_straight_down_matches_openscad)
     REQUIRE_OPENSCAD();
     render_view v = {.kind = RENDER_CAMERA_EYE, .v = {0, 0, 60, 0, 0, 0}, .ortho = 1};
     double lo[3] = {-4, -2, 0}, hi[3] = {8, 6, 3};
-    mask_stats st = compare_box("--imgsize=200,200 --camera=0,0,60,0,0,0 --projection=o", &v,
-                                200, 200, lo, hi);
+    mask_stats st =
+        compare_box("--imgsize=200,200 --camera=0,0,60,0,0,0 --projection=o", &v, 200, 200, lo, hi);
     cr_expect(st.ref_count > 1000, "OpenSCAD's image shows %d object px", st.ref_count);
     cr_expect(st.mismatch_outside_band == 0 && st.mismatch < st.ref_count / 100,
               "masks differ in %d px (%d outside the 1-px band); ours %d px, OpenSCAD %d px",
@@ -216,8 +214,8 @@ Test(render_camera, gimbal_perspective_wide_image_matches_openscad)
     REQUIRE_OPENSCAD();
     render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {3, 2, 1, 63.3, 10, 31.7, 80}};
     double lo[3] = {-6, -3, -2}, hi[3] = {9, 8, 5};
-    mask_stats st = compare_box("--imgsize=320,200 --camera=3,2,1,63.3,10,31.7,80", &v, 320,
-                                200, lo, hi);
+    mask_stats st =
+        compare_box("--imgsize=320,200 --camera=3,2,1,63.3,10,31.7,80", &v, 320, 200, lo, hi);
     cr_expect(st.ref_count > 1000, "OpenSCAD's image shows %d object px", st.ref_count);
     cr_expect(st.mismatch_outside_band == 0 && st.mismatch < st.ref_count / 100,
               "masks differ in %d px (%d outside the 1-px band); ours %d px, OpenSCAD %d px",
@@ -269,12 +267,14 @@ Test(render_camera, default_view_closed_form)
      * 25° counter-clockwise about +z from the front (-y) view, so its
      * azimuth from +x is -90 + 25 (front right, as OpenSCAD's GUI shows). */
     double centre[3] = {5, 10, 2.5}, e[3];
-    for (int i = 0; i < 3; i++) e[i] = c.eye[i] - centre[i];
+    for (int i = 0; i < 3; i++)
+        e[i] = c.eye[i] - centre[i];
     cr_expect(fabs(sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) - dist) < 1e-9);
-    for (int i = 0; i < 3; i++) cr_expect(fabs(-e[i] / dist - c.forward[i]) < 1e-6);
+    for (int i = 0; i < 3; i++)
+        cr_expect(fabs(-e[i] / dist - c.forward[i]) < 1e-6);
     cr_expect(fabs(asin(e[2] / dist) * 180 / M_PI - 35) < 1e-4);
-    cr_expect(fabs(atan2(e[1], e[0]) * 180 / M_PI - (-90 + 25)) < 1e-4,
-              "azimuth %g", atan2(e[1], e[0]) * 180 / M_PI);
+    cr_expect(fabs(atan2(e[1], e[0]) * 180 / M_PI - (-90 + 25)) < 1e-4, "azimuth %g",
+              atan2(e[1], e[0]) * 180 / M_PI);
     cr_expect(fabs(c.up[2] - cos(35 * M_PI / 180)) < 1e-6);
     cr_expect_eq(c.ortho, 0);
     cr_expect(fabs(c.fovy_deg - 22.5) < 1e-12);
@@ -288,7 +288,8 @@ Test(render_camera, degenerate_and_empty)
     render_view def = {.kind = RENDER_CAMERA_DEFAULT};
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     cr_expect_eq(render_camera_resolve(&def, lo, hi, 0, 10, 10, &c), 0);
-    for (int i = 0; i < 3; i++) cr_expect(isfinite(c.eye[i]));
+    for (int i = 0; i < 3; i++)
+        cr_expect(isfinite(c.eye[i]));
 }
 
 /* Pixel centres at +0.5: the centre ray of an odd image is the forward axis. */
@@ -299,10 +300,12 @@ Test(render_camera, centre_pixel_is_forward)
     cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, 101, 51, &c), 0);
     double o[3], d[3];
     render_camera_ray(&c, 101, 51, 50.5, 25.5, o, d);
-    for (int i = 0; i < 3; i++) cr_expect(fabs(d[i] - c.forward[i]) < 1e-12);
+    for (int i = 0; i < 3; i++)
+        cr_expect(fabs(d[i] - c.forward[i]) < 1e-12);
     /* and it passes through the look-at point (1,2,3) at distance 30 */
     double at[3] = {1, 2, 3};
-    for (int i = 0; i < 3; i++) cr_expect(fabs(o[i] + 30 * d[i] - at[i]) < 1e-9);
+    for (int i = 0; i < 3; i++)
+        cr_expect(fabs(o[i] + 30 * d[i] - at[i]) < 1e-9);
 }
 
 /* ---- colour schemes ------------------------------------------------------- */
@@ -332,9 +335,15 @@ static int json_color(const char *file, const char *key, float out[3])
 Test(render_colors, schemes_match_openscad_files)
 {
     static const char *names[][2] = {
-        {"Metallic", "metallic"},     {"Sunset", "sunset"},       {"Starnight", "starnight"},
-        {"BeforeDawn", "beforedawn"}, {"Nature", "nature"},       {"DeepOcean", "deepocean"},
-        {"Solarized", "solarized"},   {"Tomorrow", "tomorrow"},   {"Tomorrow Night", "tomorrow-night"},
+        {"Metallic", "metallic"},
+        {"Sunset", "sunset"},
+        {"Starnight", "starnight"},
+        {"BeforeDawn", "beforedawn"},
+        {"Nature", "nature"},
+        {"DeepOcean", "deepocean"},
+        {"Solarized", "solarized"},
+        {"Tomorrow", "tomorrow"},
+        {"Tomorrow Night", "tomorrow-night"},
         {"Monotone", "monotone"},
     };
     const char *dir = "/usr/share/openscad/color-schemes/render";
@@ -456,7 +465,8 @@ Test(render_image, face_toward_camera_is_0_777_of_face_colour)
                   o.colors.face[i] * k);
     cr_expect(c[3] == 1);
     /* and a corner pixel shows the background */
-    for (int i = 0; i < 3; i++) cr_expect(px[i] == o.colors.background[i]);
+    for (int i = 0; i < 3; i++)
+        cr_expect(px[i] == o.colors.background[i]);
     free(px);
     csg_scene_free(s);
 }
@@ -548,7 +558,7 @@ Test(render_image, two_transparent_slabs_composite_analytically)
 {
     const float ca[4] = {0.9f, 0.2f, 0.1f, 0.3f}, cb[4] = {0.1f, 0.6f, 0.8f, 0.6f};
     csg_node *u = csg_node_op(CSG_OP_UNION);
-    cr_assert_eq(csg_node_add(u, box_node(-5, -5, 3, 5, 5, 4, ca)), 0);  /* nearer */
+    cr_assert_eq(csg_node_add(u, box_node(-5, -5, 3, 5, 5, 4, ca)), 0);   /* nearer */
     cr_assert_eq(csg_node_add(u, box_node(-5, -5, -2, 5, 5, -1, cb)), 0); /* farther */
     csg_scene *s = scene_of(u, NULL, NULL);
     render_camera cam;
@@ -563,8 +573,7 @@ Test(render_image, two_transparent_slabs_composite_analytically)
         double expect = a * A + (1 - a) * a * A + (1 - a) * (1 - a) * b * B +
                         (1 - a) * (1 - a) * (1 - b) * b * B +
                         (1 - a) * (1 - a) * (1 - b) * (1 - b) * o.colors.background[i];
-        cr_expect(fabs(c[i] - expect) < 1e-5, "channel %d: %.6f, expected %.6f", i, c[i],
-                  expect);
+        cr_expect(fabs(c[i] - expect) < 1e-5, "channel %d: %.6f, expected %.6f", i, c[i], expect);
     }
     free(px);
     csg_scene_free(s);
@@ -574,8 +583,8 @@ Test(render_image, two_transparent_slabs_composite_analytically)
  * then the model's face behind it, both lit alike. */
 Test(render_image, highlight_over_model)
 {
-    csg_scene *s = scene_of(box_node(-5, -5, -5, 5, 5, 5, NULL),
-                            box_node(-5, -5, -5, 5, 5, 5, NULL), NULL);
+    csg_scene *s =
+        scene_of(box_node(-5, -5, -5, 5, 5, 5, NULL), box_node(-5, -5, -5, 5, 5, 5, NULL), NULL);
     render_camera cam;
     cr_assert_eq(render_camera_resolve(&top_ortho, NULL, NULL, 0, 21, 21, &cam), 0);
     render_options o = {.width = 21, .height = 21, .samples = 1, .threads = 1};
@@ -586,8 +595,7 @@ Test(render_image, highlight_over_model)
     for (int i = 0; i < 3; i++) {
         double H = fmin(1, o.colors.highlight[i] * k), F = o.colors.face[i] * k;
         double expect = a * H + (1 - a) * F;
-        cr_expect(fabs(c[i] - expect) < 1e-5, "channel %d: %.6f, expected %.6f", i, c[i],
-                  expect);
+        cr_expect(fabs(c[i] - expect) < 1e-5, "channel %d: %.6f, expected %.6f", i, c[i], expect);
     }
     free(px);
     csg_scene_free(s);

@@ -28,7 +28,8 @@
 
 #include <unistd.h>
 
-namespace {
+namespace
+{
 
 void set_err(char *err, size_t errlen, const std::string &msg)
 {
@@ -52,7 +53,8 @@ std::string lower_extension(const std::string &path)
     size_t dot = path.find_last_of('.');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
     std::string ext = path.substr(dot + 1);
-    for (auto &c : ext) c = (char)std::tolower((unsigned char)c);
+    for (auto &c : ext)
+        c = (char)std::tolower((unsigned char)c);
     return ext;
 }
 
@@ -88,8 +90,9 @@ int write_image(const char *path, int width, int height, int channels, const flo
                 char *err, size_t errlen)
 {
     if (!path || !pixels || width < 1 || height < 1 || (channels != 3 && channels != 4)) {
-        set_err(err, errlen, "image write: bad arguments (need a path, pixels, a size of "
-                             "at least 1x1 and 3 or 4 channels)");
+        set_err(err, errlen,
+                "image write: bad arguments (need a path, pixels, a size of "
+                "at least 1x1 and 3 or 4 channels)");
         return -1;
     }
     const std::string target(path);
@@ -101,8 +104,10 @@ int write_image(const char *path, int width, int height, int channels, const flo
 
     auto probe = OIIO::ImageOutput::create(target);
     if (!probe) {
-        set_err(err, errlen, target + ": " + oiio_error<OIIO::ImageOutput>(nullptr,
-                                                 "no image format for extension ." + ext));
+        set_err(
+            err, errlen,
+            target + ": " +
+                oiio_error<OIIO::ImageOutput>(nullptr, "no image format for extension ." + ext));
         return -1;
     }
     int out_channels = channels;
@@ -138,8 +143,8 @@ int write_image(const char *path, int width, int height, int channels, const flo
     tmp.push_back('\0');
     int fd = mkstemps(tmp.data(), (int)suffix.size());
     if (fd < 0) {
-        set_err(err, errlen, target + ": cannot create a temporary file: " +
-                                 std::string(std::strerror(errno)));
+        set_err(err, errlen,
+                target + ": cannot create a temporary file: " + std::string(std::strerror(errno)));
         return -1;
     }
     close(fd);
@@ -156,8 +161,9 @@ int write_image(const char *path, int width, int height, int channels, const flo
 
     auto out = OIIO::ImageOutput::create(tmp_path);
     if (!out) {
-        set_err(err, errlen, target + ": " + oiio_error<OIIO::ImageOutput>(nullptr,
-                                                 "cannot create an image writer"));
+        set_err(err, errlen,
+                target + ": " +
+                    oiio_error<OIIO::ImageOutput>(nullptr, "cannot create an image writer"));
         return -1;
     }
     OIIO::TypeDesc store = linear ? (ext == "exr" ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
@@ -189,8 +195,8 @@ int write_image(const char *path, int width, int height, int channels, const flo
     return 0;
 }
 
-int read_image(const char *path, int *width, int *height, int *channels, float **pixels,
-               char *err, size_t errlen)
+int read_image(const char *path, int *width, int *height, int *channels, float **pixels, char *err,
+               size_t errlen)
 {
     if (!path || !width || !height || !channels || !pixels) {
         set_err(err, errlen, "image read: bad arguments");
@@ -201,22 +207,23 @@ int read_image(const char *path, int *width, int *height, int *channels, float *
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
-        set_err(err, errlen, std::string(path) + ": " +
-                                 oiio_error<OIIO::ImageInput>(nullptr, "cannot open the image"));
+        set_err(err, errlen,
+                std::string(path) + ": " +
+                    oiio_error<OIIO::ImageInput>(nullptr, "cannot open the image"));
         return -1;
     }
     const OIIO::ImageSpec &spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w < 1 || h < 1 || nc < 1 || nc > 4) {
-        set_err(err, errlen, std::string(path) + ": unsupported image (" + std::to_string(w) +
-                                 "x" + std::to_string(h) + ", " + std::to_string(nc) +
-                                 " channels)");
+        set_err(err, errlen,
+                std::string(path) + ": unsupported image (" + std::to_string(w) + "x" +
+                    std::to_string(h) + ", " + std::to_string(nc) + " channels)");
         return -1;
     }
     const bool linear = spec.format.is_floating_point();
     size_t n = (size_t)w * (size_t)h * (size_t)nc;
     std::unique_ptr<float, decltype(&std::free)> owned((float *)std::malloc(n * sizeof(float)),
-                                                      &std::free);
+                                                       &std::free);
     float *buf = owned.get();
     if (!buf) {
         set_err(err, errlen, std::string(path) + ": out of memory");
@@ -234,8 +241,9 @@ int read_image(const char *path, int *width, int *height, int *channels, float *
         int colour = std::min(nc, 3);
         for (size_t i = 0; i < (size_t)w * (size_t)h; i++)
             for (int c = 0; c < colour; c++)
-                if (c != alpha) buf[i * (size_t)nc + (size_t)c] =
-                                    linear_to_srgb(buf[i * (size_t)nc + (size_t)c]);
+                if (c != alpha)
+                    buf[i * (size_t)nc + (size_t)c] =
+                        linear_to_srgb(buf[i * (size_t)nc + (size_t)c]);
     }
     *width = w;
     *height = h;

@@ -25,8 +25,8 @@
 
 #include <math.h>
 
-#define FOVY_DEG 22.5                  /* Camera::Camera(): fov(22.5) */
-#define DEFAULT_DIST 140.0             /* Camera::resetView(): setVpd(140) */
+#define FOVY_DEG 22.5      /* Camera::Camera(): fov(22.5) */
+#define DEFAULT_DIST 140.0 /* Camera::resetView(): setVpd(140) */
 #define PI 3.14159265358979323846
 
 /* Camera.cc's wrap(): fmodf(360 + angle, 360), float on purpose. */
@@ -47,12 +47,14 @@ static void gl_rotation(double ax, double ay, double az, double m[3][3])
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             t[i][j] = 0;
-            for (int k = 0; k < 3; k++) t[i][j] += rx[i][k] * ry[k][j];
+            for (int k = 0; k < 3; k++)
+                t[i][j] += rx[i][k] * ry[k][j];
         }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             m[i][j] = 0;
-            for (int k = 0; k < 3; k++) m[i][j] += t[i][k] * rz[k][j];
+            for (int k = 0; k < 3; k++)
+                m[i][j] += t[i][k] * rz[k][j];
         }
 }
 
@@ -69,7 +71,8 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
 
     switch (v->kind) {
     case RENDER_CAMERA_GIMBAL:
-        for (int i = 0; i < 3; i++) trans[i] = -v->v[i];
+        for (int i = 0; i < 3; i++)
+            trans[i] = -v->v[i];
         rot[0] = wrap(90 - v->v[3]);
         rot[1] = wrap(-v->v[4]);
         rot[2] = wrap(-v->v[5]);
@@ -114,11 +117,12 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
                 diag2 += (hi[i] - lo[i]) * (hi[i] - lo[i]);
             }
         if (autocenter)
-            for (int i = 0; i < 3; i++) trans[i] = -c[i];
+            for (int i = 0; i < 3; i++)
+                trans[i] = -c[i];
         if (bounded) {
             double off[3] = {c[0] + trans[0], c[1] + trans[1], c[2] + trans[2]};
-            double radius = sqrt(off[0] * off[0] + off[1] * off[1] + off[2] * off[2]) +
-                            sqrt(diag2) / 2;
+            double radius =
+                sqrt(off[0] * off[0] + off[1] * off[1] + off[2] * off[2]) + sqrt(diag2) / 2;
             dist = radius / sin(FOVY_DEG / 2 * PI / 180);
         }
     }
@@ -180,5 +184,6 @@ void render_camera_ray(const render_camera *c, int width, int height, double px,
         len2 += d[i] * d[i];
     }
     double inv = 1 / sqrt(len2);
-    for (int i = 0; i < 3; i++) d[i] *= inv;
+    for (int i = 0; i < 3; i++)
+        d[i] *= inv;
 }

@@ -135,11 +135,13 @@ static int shade_ray(const job *J, iv_arena *a, double px, double py, float out[
         float lit[3];
         render_shade_apply(c, render_shade_factor(cam, n), lit);
         double w = (1 - acc_a) * (c[3] > 1 ? 1 : c[3]);
-        for (int i = 0; i < 3; i++) acc[i] += w * lit[i];
+        for (int i = 0; i < 3; i++)
+            acc[i] += w * lit[i];
         acc_a += w;
     }
     const float *bg = J->opt->colors.background;
-    for (int i = 0; i < 3; i++) out[i] = (float)(acc[i] + (1 - acc_a) * bg[i]);
+    for (int i = 0; i < 3; i++)
+        out[i] = (float)(acc[i] + (1 - acc_a) * bg[i]);
     return 0;
 }
 
@@ -162,10 +164,12 @@ static int render_tile(const job *J, iv_arena *a, int tile)
                     int rc = shade_ray(J, a, x + (i + 0.5) / s, y + (j + 0.5) / s, c);
                     iv_arena_reset(a);
                     if (rc != 0) return -1;
-                    for (int k = 0; k < 3; k++) sum[k] += c[k];
+                    for (int k = 0; k < 3; k++)
+                        sum[k] += c[k];
                 }
             float *p = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
-            for (int k = 0; k < 3; k++) p[k] = (float)(sum[k] * inv);
+            for (int k = 0; k < 3; k++)
+                p[k] = (float)(sum[k] * inv);
             p[3] = 1;
         }
     return 0;
@@ -199,10 +203,11 @@ static void *worker(void *arg)
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
                  float *rgba, char *err, size_t errlen)
 {
-    if (!s || !cam || !opt || !rgba || opt->width < 1 || opt->height < 1 ||
-        opt->samples < 1 || opt->samples > MAX_SAMPLES) {
-        set_err(err, errlen, "render: bad options (need a scene, a camera, an image of at "
-                             "least 1x1 pixels and 1 to 64 samples)");
+    if (!s || !cam || !opt || !rgba || opt->width < 1 || opt->height < 1 || opt->samples < 1 ||
+        opt->samples > MAX_SAMPLES) {
+        set_err(err, errlen,
+                "render: bad options (need a scene, a camera, an image of at "
+                "least 1x1 pixels and 1 to 64 samples)");
         return -1;
     }
     job J;
@@ -271,7 +276,8 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
             pthread_cond_timedwait(&J.cv, &J.mu, &ts);
         }
         pthread_mutex_unlock(&J.mu);
-        for (int i = 0; i < started; i++) pthread_join(tids[i], NULL);
+        for (int i = 0; i < started; i++)
+            pthread_join(tids[i], NULL);
         if (opt->progress && !atomic_load(&J.failed) && reported != J.ntiles)
             opt->progress(opt->ud, 1.0);
     }
