@@ -1,0 +1,219 @@
+/*
+ * ast.h — private to src/scad: the arena, source locations, diagnostics,
+ * tokens and the syntax tree of one parsed file.
+ *
+ * Everything the lexer and parser make (token text, nodes, lists) lives in
+ * one scad_arena owned by the parse; freeing the arena frees the whole AST.
+ * Every token and node carries the scad_loc of its first character.
+ */
+#ifndef RAYSCAD_SCAD_AST_H
+#define RAYSCAD_SCAD_AST_H
+
+#include <stddef.h>
+
+#include "scad.h"
+
+/* ---- arena ---------------------------------------------------------------- */
+
+typedef struct scad_arena scad_arena;
+
+scad_arena *scad_arena_new(void);
+void scad_arena_free(scad_arena *a);
+/* Zeroed, 16-byte aligned memory valid until scad_arena_free; NULL when out
+ * of memory. */
+void *scad_arena_alloc(scad_arena *a, size_t bytes);
+/* A NUL-terminated copy of s[0..n). */
+char *scad_arena_strndup(scad_arena *a, const char *s, size_t n);
+
+/* ---- locations and diagnostics -------------------------------------------- */
+
+typedef struct scad_loc {
+    const char *file; /* the name used in "file:line:col: error:" */
+    int line, col;    /* 1-based */
+} scad_loc;
+
+typedef struct scad_diag {
+    const scad_options *opt;
+    const char *base_dir; /* the main file's folder with its '/', or "";
+                             stripped from paths in OpenSCAD's
+                             "in file x.scad, line N" */
+    int errors;
+    int warnings;
+} scad_diag;
+
+/* "file:line:col: error: <fmt>" as a SCAD_MSG_ERROR line. */
+void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* "WARNING: <fmt> in file <relative path>, line N" (OpenSCAD's wording). */
+void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* "DEPRECATED: <fmt> in file <relative path>, line N", sent as a warning. */
+void scad_diag_deprecated(scad_diag *d, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* A line sent as is, of the given kind (ECHO, DEPRECATED warnings …). */
+void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line);
+
+/* ---- tokens --------------------------------------------------------------- */
+
+typedef enum scad_tok_kind {
+    TK_EOF,
+    TK_ID,
+    TK_NUMBER,
+    TK_STRING,
+    /* keywords */
+    TK_MODULE,
+    TK_FUNCTION,
+    TK_IF,
+    TK_ELSE,
+    TK_FOR,
+    TK_LET,
+    TK_ASSERT,
+    TK_ECHO,
+    TK_EACH,
+    TK_TRUE,
+    TK_FALSE,
+    TK_UNDEF,
+    TK_INCLUDE, /* text holds the path between < > */
+    TK_USE,
+    /* two-character operators */
+    TK_LE,
+    TK_GE,
+    TK_EQ,
+    TK_NE,
+    TK_AND,
+    TK_OR,
+    /* every other token is its single character, e.g. '(' */
+    TK_CHAR
+} scad_tok_kind;
+
+typedef struct scad_token {
+    scad_tok_kind kind;
+    int ch; /* the character for TK_CHAR */
+    scad_loc loc;
+    double num;       /* TK_NUMBER */
+    const char *text; /* TK_ID, TK_STRING (unescaped), TK_INCLUDE/TK_USE */
+    size_t len;       /* length of text (strings may hold NUL) */
+} scad_token;
+
+/* Tokenise src.  Returns the number of tokens (the last is TK_EOF) and sets
+ * *out to an array in the arena; reports lexical errors through d and keeps
+ * going (an unterminated string or comment ends the input). */
+int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
+             scad_token **out);
+
+/* The whole file at path as a NUL-terminated string in the arena, or NULL
+ * when it cannot be read. */
+char *scad_read_file(scad_arena *a, const char *path);
+
+/* ---- syntax tree ---------------------------------------------------------- */
+
+typedef enum scad_expr_kind {
+    EX_NUMBER,
+    EX_STRING,
+    EX_BOOL,
+    EX_UNDEF,
+    EX_VAR,
+    EX_RANGE,   /* a[0]=begin, a[1]=step or NULL, a[2]=end */
+    EX_VECTOR,  /* elements in list; may hold LC_* nodes */
+    EX_UNARY,   /* op: '-', '+', '!'; a[0] */
+    EX_BINARY,  /* op: '+','-','*','/','%','^','<','>',TK_LE… ; a[0] a[1] */
+    EX_TERNARY, /* a[0] ? a[1] : a[2] */
+    EX_CALL,    /* a[0] callee, args */
+    EX_INDEX,   /* a[0][a[1]] */
+    EX_MEMBER,  /* a[0].name */
+    EX_LET,     /* let(args) a[0] */
+    EX_ASSERT,  /* assert(args) a[0] (a[0] may be NULL) */
+    EX_ECHO,    /* echo(args) a[0] (a[0] may be NULL) */
+    EX_FUNCLIT, /* function(params) a[0] */
+    LC_FOR,     /* for(args) a[0] */
+    LC_CFOR,    /* for(args; a[1]; args2) a[0] */
+    LC_IF,      /* if(a[1]) a[0] else a[2] (a[2] may be NULL) */
+    LC_EACH,    /* each a[0] */
+    LC_LET      /* let(args) a[0] */
+} scad_expr_kind;
+
+typedef struct scad_expr scad_expr;
+
+/* One argument of a call, or one parameter of a definition: name may be
+ * NULL (positional), value may be NULL (parameter with no default). */
+typedef struct scad_arg {
+    const char *name;
+    scad_expr *value;
+    scad_loc loc;
+} scad_arg;
+
+typedef struct scad_args {
+    scad_arg *v;
+    int n;
+} scad_args;
+
+struct scad_expr {
+    scad_expr_kind kind;
+    int op;
+    scad_loc loc;
+    double num;
+    const char *str; /* EX_STRING text, EX_VAR / EX_MEMBER name */
+    size_t len;
+    scad_expr *a[3];
+    scad_args args;   /* call arguments, let/for/assert/echo arguments,
+                         function literal parameters */
+    scad_args args2;  /* LC_CFOR update assignments */
+    scad_expr **list; /* EX_VECTOR elements */
+    int n;
+};
+
+typedef struct scad_scope scad_scope;
+typedef struct scad_stmt scad_stmt;
+
+typedef struct scad_assign {
+    const char *name;
+    scad_expr *value;
+    scad_loc loc;
+} scad_assign;
+
+/* A module instantiation (also if/else, for, echo … used as statements). */
+struct scad_stmt {
+    const char *name; /* "if" for if/else */
+    scad_loc loc;
+    scad_args args;
+    scad_scope *children;
+    scad_scope *else_children; /* if only; NULL when absent */
+    scad_expr *cond;           /* if only */
+    char disable, root, highlight, background; /* * ! # % */
+};
+
+typedef struct scad_moddef {
+    const char *name;
+    scad_loc loc;
+    scad_args params;
+    scad_scope *body;
+} scad_moddef;
+
+typedef struct scad_funcdef {
+    const char *name;
+    scad_loc loc;
+    scad_args params;
+    scad_expr *body;
+} scad_funcdef;
+
+/* A scope: its assignments (a later one of the same name replaces the value
+ * of the first, kept at the first one's position), its instantiations in
+ * order, and the modules and functions it defines (visible in the whole
+ * scope and below). */
+struct scad_scope {
+    scad_assign *assigns;
+    int nassigns, capassigns;
+    scad_stmt **stmts;
+    int nstmts, capstmts;
+    scad_moddef **mods;
+    int nmods, capmods;
+    scad_funcdef **funcs;
+    int nfuncs, capfuncs;
+};
+
+/* Parse a whole file.  Returns the top-level scope (in arena a), or NULL
+ * when any syntax error was reported through d (all are reported). */
+scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file,
+                       const char *src);
+
+#endif

@@ -1,0 +1,623 @@
+/*
+ * builtin_math.c — OpenSCAD's builtin functions (math, vectors, strings,
+ * type tests, rands) with its warnings for wrong argument counts and types.
+ *
+ * Each builtin reads borrowed arguments and returns an owned value; a wrong
+ * type gives undef and "WARNING: f() parameter could not be converted", as
+ * OpenSCAD 2021.01 does.  Trigonometry is in degrees and exact at multiples
+ * of 30 and 45 degrees where OpenSCAD's sin_degrees/cos_degrees are.
+ * The name table is sorted, searched by bsearch.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+#ifndef M_SQRT1_2
+#define M_SQRT1_2 0.70710678118654752440
+#endif
+
+static void conv_warning(scad_eval *ev, scad_loc loc, const char *name)
+{
+    scad_diag_warning(ev->d, loc, "%s() parameter could not be converted", name);
+}
+
+static void count_warning(scad_eval *ev, scad_loc loc, const char *name)
+{
+    scad_diag_warning(ev->d, loc, "%s() number of parameters does not match", name);
+}
+
+/* n numeric positional arguments into x; warns and returns 0 otherwise. */
+static int nums(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name, int n,
+                double *x)
+{
+    if (a->n != n) {
+        count_warning(ev, loc, name);
+        return 0;
+    }
+    for (int i = 0; i < n; i++) {
+        if (a->v[i].kind != SV_NUM) {
+            conv_warning(ev, loc, name);
+            return 0;
+        }
+        x[i] = a->v[i].u.num;
+    }
+    return 1;
+}
+
+/* Degrees, exact at the angles where the answer is exact. */
+static double sin_deg(double x)
+{
+    if (!isfinite(x)) return NAN;
+    x = fmod(x, 360.0);
+    if (x < 0) x += 360.0;
+    int neg = x >= 180.0;
+    if (neg) x -= 180.0;
+    if (x > 90.0) x = 180.0 - x;
+    double r;
+    if (x == 0) r = 0;
+    else if (x == 30.0) r = 0.5;
+    else if (x == 45.0) r = M_SQRT1_2;
+    else if (x == 60.0) r = sqrt(3.0) / 2;
+    else if (x == 90.0) r = 1;
+    else if (x < 45.0) r = sin(x * M_PI / 180.0);
+    else r = cos((90.0 - x) * M_PI / 180.0);
+    return neg ? -r : r;
+}
+
+static double cos_deg(double x)
+{
+    if (!isfinite(x)) return NAN;
+    x = fmod(x, 360.0);
+    if (x < 0) x += 360.0;
+    return sin_deg(x + 90.0 > 360.0 ? x - 270.0 : x + 90.0);
+}
+
+double scad_sin_degrees(double x);
+double scad_cos_degrees(double x);
+double scad_sin_degrees(double x) { return sin_deg(x); }
+double scad_cos_degrees(double x) { return cos_deg(x); }
+
+static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    double x;
+    if (!nums(ev, a, loc, name, 1, &x)) return scad_undef();
+    switch (name[0]) {
+    case 'a':
+        if (!strcmp(name, "abs")) return scad_num(fabs(x));
+        if (!strcmp(name, "asin")) return scad_num(asin(x) * 180.0 / M_PI);
+        if (!strcmp(name, "acos")) return scad_num(acos(x) * 180.0 / M_PI);
+        return scad_num(atan(x) * 180.0 / M_PI);
+    case 's':
+        if (!strcmp(name, "sin")) return scad_num(sin_deg(x));
+        if (!strcmp(name, "sqrt")) return scad_num(sqrt(x));
+        return scad_num(x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0); /* sign */
+    case 'c':
+        if (!strcmp(name, "cos")) return scad_num(cos_deg(x));
+        return scad_num(ceil(x));
+    case 't': {
+        double c = cos_deg(x);
+        return scad_num(sin_deg(x) / c);
+    }
+    case 'f': return scad_num(floor(x));
+    case 'r': return scad_num(round(x));
+    case 'e': return scad_num(exp(x));
+    case 'l': return scad_num(log(x)); /* ln */
+    }
+    return scad_undef();
+}
+
+static scad_value f_atan2(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    double x[2];
+    if (!nums(ev, a, loc, name, 2, x)) return scad_undef();
+    return scad_num(atan2(x[0], x[1]) * 180.0 / M_PI);
+}
+
+static scad_value f_pow(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    double x[2];
+    if (!nums(ev, a, loc, name, 2, x)) return scad_undef();
+    return scad_num(pow(x[0], x[1]));
+}
+
+static scad_value f_log(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    double x[2];
+    if (a->n == 2) {
+        if (!nums(ev, a, loc, name, 2, x)) return scad_undef();
+        return scad_num(log(x[1]) / log(x[0]));
+    }
+    if (!nums(ev, a, loc, name, 1, x)) return scad_undef();
+    return scad_num(log10(x[0]));
+}
+
+static scad_value f_minmax(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    int is_max = name[1] == 'a';
+    const scad_value *v = a->v;
+    int n = a->n;
+    if (n == 1 && a->v[0].kind == SV_VEC) {
+        v = a->v[0].u.vec->v;
+        n = a->v[0].u.vec->n;
+    }
+    if (n == 0) {
+        if (a->n == 0) count_warning(ev, loc, name);
+        else conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    if (a->n == 1 && a->v[0].kind == SV_VEC) {
+        int all_num = 1;
+        for (int i = 0; i < n; i++)
+            if (v[i].kind != SV_NUM) all_num = 0;
+        if (!all_num) {
+            int best = 0;
+            for (int i = 1; i < n; i++) {
+                int c = scad_value_compare(v[i], v[best]);
+                if (c == 2) {
+                    conv_warning(ev, loc, name);
+                    return scad_undef();
+                }
+                if (is_max ? c > 0 : c < 0) best = i;
+            }
+            return scad_value_ref(v[best]);
+        }
+    }
+    double best = 0;
+    for (int i = 0; i < n; i++) {
+        if (v[i].kind != SV_NUM) {
+            conv_warning(ev, loc, name);
+            return scad_undef();
+        }
+        double x = v[i].u.num;
+        if (i == 0 || (is_max ? x > best : x < best)) best = x;
+    }
+    return scad_num(best);
+}
+
+static scad_value f_norm(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)name;
+    if (a->n != 1 || a->v[0].kind != SV_VEC) return scad_undef();
+    double s = 0;
+    const scad_vec *v = a->v[0].u.vec;
+    for (int i = 0; i < v->n; i++) {
+        if (v->v[i].kind != SV_NUM) {
+            scad_diag_warning(ev->d, loc, "Incorrect arguments to norm()");
+            return scad_undef();
+        }
+        s += v->v[i].u.num * v->v[i].u.num;
+    }
+    return scad_num(sqrt(s));
+}
+
+static scad_value f_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)name;
+    if (a->n != 2 || a->v[0].kind != SV_VEC || a->v[1].kind != SV_VEC) {
+        scad_diag_warning(ev->d, loc, "Invalid call of 'cross' function");
+        return scad_undef();
+    }
+    const scad_vec *p = a->v[0].u.vec, *q = a->v[1].u.vec;
+    if (p->n != q->n || (p->n != 2 && p->n != 3)) {
+        scad_diag_warning(ev->d, loc, "Invalid vector size in call of 'cross' function");
+        return scad_undef();
+    }
+    double x[3], y[3];
+    for (int i = 0; i < p->n; i++) {
+        if (p->v[i].kind != SV_NUM || q->v[i].kind != SV_NUM) {
+            scad_diag_warning(ev->d, loc, "Invalid value in call of 'cross' function");
+            return scad_undef();
+        }
+        x[i] = p->v[i].u.num;
+        y[i] = q->v[i].u.num;
+    }
+    if (p->n == 2) return scad_num(x[0] * y[1] - x[1] * y[0]);
+    scad_value r = scad_vec_new(3);
+    if (r.kind != SV_VEC) return r;
+    r.u.vec->v[0] = scad_num(x[1] * y[2] - x[2] * y[1]);
+    r.u.vec->v[1] = scad_num(x[2] * y[0] - x[0] * y[2]);
+    r.u.vec->v[2] = scad_num(x[0] * y[1] - x[1] * y[0]);
+    return r;
+}
+
+static scad_value f_len(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    if (a->n == 1 && a->v[0].kind == SV_VEC) return scad_num(a->v[0].u.vec->n);
+    if (a->n == 1 && a->v[0].kind == SV_STR) return scad_num((double)a->v[0].u.str->nchars);
+    if (a->n != 1) count_warning(ev, loc, name);
+    else conv_warning(ev, loc, name);
+    return scad_undef();
+}
+
+static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)ev, (void)loc, (void)name;
+    int n = 0;
+    for (int i = 0; i < a->n; i++) n += a->v[i].kind == SV_VEC ? a->v[i].u.vec->n : 1;
+    scad_value r = scad_vec_new(n);
+    if (r.kind != SV_VEC) return r;
+    int k = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (a->v[i].kind == SV_VEC)
+            for (int j = 0; j < a->v[i].u.vec->n; j++)
+                r.u.vec->v[k++] = scad_value_ref(a->v[i].u.vec->v[j]);
+        else
+            r.u.vec->v[k++] = scad_value_ref(a->v[i]);
+    }
+    return r;
+}
+
+static scad_value f_str(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)ev, (void)loc, (void)name;
+    scad_buf b = {0};
+    for (int i = 0; i < a->n; i++) scad_value_format(&b, a->v[i], 0);
+    scad_value r = scad_str_new(b.p ? b.p : "", b.oom ? 0 : b.n);
+    scad_buf_free(&b);
+    return r;
+}
+
+static void put_code(scad_buf *b, double x)
+{
+    if (!(x >= 1 && x <= 0x10FFFF)) return;
+    unsigned long cp = (unsigned long)x;
+    if (cp >= 0xD800 && cp <= 0xDFFF) return;
+    char o[4];
+    size_t n;
+    if (cp < 0x80) {
+        o[0] = (char)cp;
+        n = 1;
+    } else if (cp < 0x800) {
+        o[0] = (char)(0xC0 | (cp >> 6));
+        o[1] = (char)(0x80 | (cp & 0x3F));
+        n = 2;
+    } else if (cp < 0x10000) {
+        o[0] = (char)(0xE0 | (cp >> 12));
+        o[1] = (char)(0x80 | ((cp >> 6) & 0x3F));
+        o[2] = (char)(0x80 | (cp & 0x3F));
+        n = 3;
+    } else {
+        o[0] = (char)(0xF0 | (cp >> 18));
+        o[1] = (char)(0x80 | ((cp >> 12) & 0x3F));
+        o[2] = (char)(0x80 | ((cp >> 6) & 0x3F));
+        o[3] = (char)(0x80 | (cp & 0x3F));
+        n = 4;
+    }
+    scad_buf_put(b, o, n);
+}
+
+static void chr_value(scad_buf *b, scad_value v)
+{
+    if (v.kind == SV_NUM) put_code(b, v.u.num);
+    if (v.kind == SV_VEC)
+        for (int i = 0; i < v.u.vec->n; i++) chr_value(b, v.u.vec->v[i]);
+    if (v.kind == SV_RANGE) {
+        double n = scad_range_count(v.u.range);
+        for (double i = 0; i < n && i < 1000000; i++)
+            put_code(b, v.u.range->begin + i * v.u.range->step);
+    }
+}
+
+static scad_value f_chr(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)ev, (void)loc, (void)name;
+    scad_buf b = {0};
+    for (int i = 0; i < a->n; i++) chr_value(&b, a->v[i]);
+    scad_value r = scad_str_new(b.p ? b.p : "", b.oom ? 0 : b.n);
+    scad_buf_free(&b);
+    return r;
+}
+
+static scad_value f_ord(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    if (a->n != 1) {
+        count_warning(ev, loc, name);
+        return scad_undef();
+    }
+    if (a->v[0].kind != SV_STR) {
+        conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    const unsigned char *s = (const unsigned char *)a->v[0].u.str->s;
+    if (a->v[0].u.str->len == 0) return scad_undef();
+    unsigned long cp = s[0];
+    int extra = 0;
+    if (cp >= 0xF0) cp &= 0x07, extra = 3;
+    else if (cp >= 0xE0) cp &= 0x0F, extra = 2;
+    else if (cp >= 0xC0) cp &= 0x1F, extra = 1;
+    for (int i = 1; i <= extra && s[i]; i++) cp = (cp << 6) | (s[i] & 0x3F);
+    return scad_num((double)cp);
+}
+
+static int get_num(scad_value v, double *x)
+{
+    if (v.kind != SV_NUM) return 0;
+    *x = v.u.num;
+    return 1;
+}
+
+static scad_value f_lookup(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    double p;
+    if (a->n != 2 || !get_num(a->v[0], &p) || a->v[1].kind != SV_VEC ||
+        a->v[1].u.vec->n == 0) {
+        conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    const scad_vec *t = a->v[1].u.vec;
+    double low_p, low_v, high_p, high_v;
+    if (t->v[0].kind != SV_VEC || t->v[0].u.vec->n < 2 ||
+        !get_num(t->v[0].u.vec->v[0], &low_p) || !get_num(t->v[0].u.vec->v[1], &low_v))
+        return scad_undef();
+    high_p = low_p;
+    high_v = low_v;
+    for (int i = 1; i < t->n; i++) {
+        double tp, tv;
+        if (t->v[i].kind != SV_VEC || t->v[i].u.vec->n < 2 ||
+            !get_num(t->v[i].u.vec->v[0], &tp) || !get_num(t->v[i].u.vec->v[1], &tv))
+            continue;
+        if (tp <= p && (tp > low_p || low_p > p)) {
+            low_p = tp;
+            low_v = tv;
+        }
+        if (tp >= p && (tp < high_p || high_p < p)) {
+            high_p = tp;
+            high_v = tv;
+        }
+    }
+    if (p <= low_p) return scad_num(high_v);
+    if (p >= high_p) return scad_num(low_v);
+    double f = (p - low_p) / (high_p - low_p);
+    return scad_num(high_v * f + low_v * (1 - f));
+}
+
+/* ---- rands: std::mt19937 seeded with the seed as an unsigned, and
+ * libstdc++'s uniform_real_distribution (two 32-bit draws per double), so
+ * that a seeded rands() gives OpenSCAD's numbers. */
+
+typedef struct mt19937 {
+    uint32_t s[624];
+    int i;
+} mt19937;
+
+static void mt_seed(mt19937 *m, uint32_t seed)
+{
+    m->s[0] = seed;
+    for (int i = 1; i < 624; i++)
+        m->s[i] = 1812433253u * (m->s[i - 1] ^ (m->s[i - 1] >> 30)) + (uint32_t)i;
+    m->i = 624;
+}
+
+static uint32_t mt_next(mt19937 *m)
+{
+    if (m->i >= 624) {
+        for (int k = 0; k < 624; k++) {
+            uint32_t y = (m->s[k] & 0x80000000u) | (m->s[(k + 1) % 624] & 0x7fffffffu);
+            m->s[k] = m->s[(k + 397) % 624] ^ (y >> 1) ^ ((y & 1) ? 0x9908b0dfu : 0);
+        }
+        m->i = 0;
+    }
+    uint32_t y = m->s[m->i++];
+    y ^= y >> 11;
+    y ^= (y << 7) & 0x9d2c5680u;
+    y ^= (y << 15) & 0xefc60000u;
+    y ^= y >> 18;
+    return y;
+}
+
+static double mt_canonical(mt19937 *m)
+{
+    double lo = (double)mt_next(m);
+    double hi = (double)mt_next(m);
+    double r = (lo + hi * 4294967296.0) / 18446744073709551616.0;
+    if (r >= 1.0) r = nextafter(1.0, 0.0);
+    return r;
+}
+
+static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    double lo, hi, cnt;
+    if (a->n < 3 || a->n > 4 || !get_num(a->v[0], &lo) || !get_num(a->v[1], &hi) ||
+        !get_num(a->v[2], &cnt)) {
+        conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    mt19937 *m = malloc(sizeof *m);
+    if (!m) return scad_undef();
+    double seed;
+    if (a->n == 4 && get_num(a->v[3], &seed)) {
+        mt_seed(m, (uint32_t)(int64_t)seed); /* OpenSCAD: seed((unsigned)seed) */
+    } else {
+        ev->rand_state = ev->rand_state * 6364136223846793005ul + 1442695040888963407ul;
+        mt_seed(m, (uint32_t)(ev->rand_state >> 32));
+    }
+    if (!(cnt >= 0)) cnt = 0;
+    if (cnt > 1000000) cnt = 1000000;
+    int n = (int)cnt;
+    scad_value r = scad_vec_new(n);
+    if (r.kind == SV_VEC) {
+        double a0 = lo < hi ? lo : hi, b0 = lo < hi ? hi : lo;
+        for (int i = 0; i < n; i++) r.u.vec->v[i] = scad_num(mt_canonical(m) * (b0 - a0) + a0);
+    }
+    free(m);
+    return r;
+}
+
+/* search(match, in, num_returns_per_match = 1, index_col_num = 0) */
+static int search_eq(scad_value item, scad_value match, int col)
+{
+    if (item.kind == SV_VEC) {
+        if (col >= item.u.vec->n) return 0;
+        item = item.u.vec->v[col];
+    }
+    return scad_value_equal(item, match);
+}
+
+static scad_value search_one(scad_value match, scad_value in, int nret, int col, int as_list)
+{
+    int n = in.kind == SV_VEC ? in.u.vec->n : 0;
+    scad_value *hits = malloc(sizeof *hits * (size_t)(n ? n : 1));
+    int k = 0;
+    for (int i = 0; hits && i < n; i++) {
+        if (search_eq(in.u.vec->v[i], match, col)) {
+            hits[k++] = scad_num(i);
+            if (nret > 0 && k >= nret) break;
+        }
+    }
+    scad_value r;
+    if (!as_list && k == 1 && nret == 1) {
+        r = hits[0];
+    } else {
+        r = scad_vec_new(k);
+        if (r.kind == SV_VEC)
+            for (int i = 0; i < k; i++) r.u.vec->v[i] = hits[i];
+    }
+    free(hits);
+    return r;
+}
+
+static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)name;
+    if (a->n < 2) return scad_undef();
+    scad_value match = a->v[0], in = a->v[1];
+    double d;
+    int nret = a->n > 2 && get_num(a->v[2], &d) ? (int)d : 1;
+    int col = a->n > 3 && get_num(a->v[3], &d) ? (int)d : 0;
+    scad_value hay = scad_value_ref(in);
+    if (in.kind == SV_STR) {
+        /* characters of the string, as a vector of one-character strings */
+        scad_value_drop(hay);
+        int n = (int)in.u.str->nchars;
+        hay = scad_vec_new(n);
+        for (int i = 0; hay.kind == SV_VEC && i < n; i++) {
+            const char *s = in.u.str->s;
+            size_t pos = 0;
+            for (int c = 0; c < i; c++) {
+                pos++;
+                while (pos < in.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80) pos++;
+            }
+            size_t len = 1;
+            while (pos + len < in.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
+                len++;
+            hay.u.vec->v[i] = scad_str_new(s + pos, len);
+        }
+    }
+    scad_value r;
+    if (match.kind == SV_STR && in.kind == SV_VEC) {
+        for (int i = 0; i < in.u.vec->n; i++) {
+            scad_value e = in.u.vec->v[i];
+            if (e.kind != SV_VEC || e.u.vec->n <= col) {
+                scad_buf b = {0};
+                scad_value_format(&b, e, 1);
+                scad_diag_warning(ev->d, loc,
+                                  "Invalid entry in search vector at index %d, required number of values in the entry: %d. Invalid entry: %s",
+                                  i, col + 1, scad_buf_str(&b));
+                scad_buf_free(&b);
+                scad_value_drop(hay);
+                return scad_vec_new(0);
+            }
+        }
+    }
+    if (match.kind == SV_NUM || match.kind == SV_BOOL || match.kind == SV_UNDEF) {
+        r = search_one(match, hay, nret, col, 1);
+    } else if (match.kind == SV_STR || match.kind == SV_VEC) {
+        int n = match.kind == SV_STR ? (int)match.u.str->nchars : match.u.vec->n;
+        r = scad_vec_new(n);
+        const char *s = match.kind == SV_STR ? match.u.str->s : NULL;
+        size_t pos = 0;
+        int k = 0;
+        for (int i = 0; r.kind == SV_VEC && i < n; i++) {
+            scad_value m;
+            if (s) {
+                size_t len = 1;
+                while (pos + len < match.u.str->len &&
+                       ((unsigned char)s[pos + len] & 0xC0) == 0x80)
+                    len++;
+                m = scad_str_new(s + pos, len);
+                pos += len;
+            } else {
+                m = scad_value_ref(match.u.vec->v[i]);
+            }
+            scad_value hit = search_one(m, hay, nret, col, 0);
+            scad_value_drop(m);
+            if (nret == 1 && hit.kind == SV_VEC && hit.u.vec->n == 0 && s) {
+                scad_value_drop(hit); /* a character not found is left out */
+                continue;
+            }
+            r.u.vec->v[k++] = hit;
+        }
+        if (r.kind == SV_VEC) r.u.vec->n = k;
+    } else {
+        r = scad_undef();
+    }
+    scad_value_drop(hay);
+    return r;
+}
+
+static scad_value f_is(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    if (a->n != 1) {
+        count_warning(ev, loc, name);
+        return scad_bool(0);
+    }
+    scad_value v = a->v[0];
+    const char *t = name + 3;
+    if (!strcmp(t, "undef")) return scad_bool(v.kind == SV_UNDEF);
+    if (!strcmp(t, "num")) return scad_bool(v.kind == SV_NUM && !isnan(v.u.num));
+    if (!strcmp(t, "bool")) return scad_bool(v.kind == SV_BOOL);
+    if (!strcmp(t, "string")) return scad_bool(v.kind == SV_STR);
+    if (!strcmp(t, "list")) return scad_bool(v.kind == SV_VEC);
+    return scad_bool(v.kind == SV_FUNC);
+}
+
+static scad_value f_version(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
+{
+    (void)ev, (void)a, (void)loc;
+    if (!strcmp(name, "version_num")) return scad_num(20210100);
+    scad_value r = scad_vec_new(3);
+    if (r.kind == SV_VEC) {
+        r.u.vec->v[0] = scad_num(2021);
+        r.u.vec->v[1] = scad_num(1);
+        r.u.vec->v[2] = scad_num(0);
+    }
+    return r;
+}
+
+typedef struct entry {
+    const char *name;
+    scad_builtin_fn fn;
+} entry;
+
+static const entry table[] = {
+    {"abs", f_unary},       {"acos", f_unary},     {"asin", f_unary},
+    {"atan", f_unary},      {"atan2", f_atan2},    {"ceil", f_unary},
+    {"chr", f_chr},         {"concat", f_concat},  {"cos", f_unary},
+    {"cross", f_cross},     {"exp", f_unary},      {"floor", f_unary},
+    {"is_bool", f_is},      {"is_function", f_is}, {"is_list", f_is},
+    {"is_num", f_is},       {"is_string", f_is},   {"is_undef", f_is},
+    {"len", f_len},         {"ln", f_unary},       {"log", f_log},
+    {"lookup", f_lookup},   {"max", f_minmax},     {"min", f_minmax},
+    {"norm", f_norm},       {"ord", f_ord},        {"pow", f_pow},
+    {"rands", f_rands},     {"round", f_unary},    {"search", f_search},
+    {"sign", f_unary},      {"sin", f_unary},      {"sqrt", f_unary},
+    {"str", f_str},         {"tan", f_unary},      {"version", f_version},
+    {"version_num", f_version},
+};
+
+static int by_name(const void *k, const void *e)
+{
+    return strcmp((const char *)k, *(const char *const *)e);
+}
+
+scad_builtin_fn scad_builtin_function(const char *name)
+{
+    const void *hit = bsearch(name, table, sizeof table / sizeof table[0], sizeof table[0], by_name);
+    return hit ? ((const entry *)hit)->fn : NULL;
+}

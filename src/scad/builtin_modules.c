@@ -1,0 +1,380 @@
+/*
+ * builtin_modules.c — the geometry modules: cube, sphere, cylinder, the
+ * transforms (translate, rotate, scale, mirror, multmatrix), color, and the
+ * CSG operations (union, group, render, difference, intersection).
+ *
+ * A transform composes its matrix onto the inherited world_from_object
+ * (state.xf ∘ M, so M applies first) and evaluates its children with it;
+ * leaves copy the full transform, so nothing is multiplied per ray.
+ * Arguments follow OpenSCAD 2021.01: positional order, defaults, the
+ * diameter-over-radius rule and its warning; degenerate sizes (r <= 0,
+ * h <= 0, a zero cube edge, NaN) produce nothing, silently, as OpenSCAD.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "eval.h"
+
+double scad_sin_degrees(double x);
+double scad_cos_degrees(double x);
+
+static int num_of(scad_value v, double *x)
+{
+    if (v.kind != SV_NUM) return 0;
+    *x = v.u.num;
+    return 1;
+}
+
+/* Up to 3 numbers of a vector into out (others keep their value); returns
+ * 1 when v is a vector of numbers with 1..3 elements … any size accepted. */
+static int vec3_of(scad_value v, double out[3])
+{
+    if (v.kind != SV_VEC) return 0;
+    const scad_vec *p = v.u.vec;
+    if (p->n < 2 || p->n > 3) return 0;
+    for (int i = 0; i < p->n; i++)
+        if (p->v[i].kind != SV_NUM) return 0;
+    for (int i = 0; i < p->n; i++) out[i] = p->v[i].u.num;
+    return 1;
+}
+
+static scad_geom *leaf(scad_eval *ev, const iv_shape *s, const scad_state *state,
+                       const csg_affine local)
+{
+    scad_state st = *state;
+    if (local) csg_affine_mul(state->xf, local, st.xf);
+    return scad_geom_leaf(ev, s, &st);
+}
+
+static scad_geom *m_cube(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                         const scad_argv *a, const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"size", "center", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double s[3] = {1, 1, 1};
+    scad_value size = scad_argv_get(a, "size", 0);
+    double x;
+    if (num_of(size, &x)) {
+        s[0] = s[1] = s[2] = x;
+    } else if (size.kind == SV_VEC) {
+        if (size.u.vec->n != 3) return NULL;
+        for (int i = 0; i < 3; i++)
+            if (!num_of(size.u.vec->v[i], &s[i])) return NULL;
+    } else if (size.kind != SV_UNDEF) {
+        return NULL;
+    }
+    for (int i = 0; i < 3; i++)
+        if (!(s[i] > 0) || !isfinite(s[i])) return NULL;
+    int center = scad_value_truthy(scad_argv_get(a, "center", 1)) &&
+                 scad_argv_get(a, "center", 1).kind == SV_BOOL;
+    iv_shape sh;
+    memset(&sh, 0, sizeof sh);
+    sh.kind = IV_SHAPE_BOX;
+    for (int i = 0; i < 3; i++) {
+        sh.u.box.lo[i] = center ? -s[i] / 2 : 0;
+        sh.u.box.hi[i] = center ? s[i] / 2 : s[i];
+    }
+    return leaf(ev, &sh, state, NULL);
+}
+
+/* OpenSCAD's lookup_radius: d/2 wins over r, with a warning when both. */
+static int radius(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *dname,
+                  const char *rname, int rpos, double *out)
+{
+    scad_value d = scad_argv_get(a, dname, -1);
+    scad_value r = scad_argv_get(a, rname, rpos);
+    double x;
+    if (num_of(d, &x)) {
+        if (r.kind == SV_NUM)
+            scad_diag_warning(ev->d, loc,
+                              "Ignoring radius variable '%s' as diameter '%s' is defined too.",
+                              rname, dname);
+        *out = x / 2;
+        return 1;
+    }
+    if (num_of(r, &x)) {
+        *out = x;
+        return 1;
+    }
+    return 0;
+}
+
+static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                           const scad_argv *a, const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"r", "d", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double r = 1;
+    radius(ev, a, st->loc, "d", "r", 0, &r);
+    if (!(r > 0) || !isfinite(r)) return NULL;
+    iv_shape sh;
+    memset(&sh, 0, sizeof sh);
+    sh.kind = IV_SHAPE_SPHERE;
+    sh.u.sphere.r = r;
+    return leaf(ev, &sh, state, NULL);
+}
+
+static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                             const scad_argv *a, const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"h", "r1", "r2", "center", "r", "d", "d1", "d2", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double h = 1, r1 = 1, r2 = 1, r;
+    num_of(scad_argv_get(a, "h", 0), &h);
+    int has_r = radius(ev, a, st->loc, "d", "r", -1, &r);
+    double x1, x2;
+    int has_r1 = radius(ev, a, st->loc, "d1", "r1", 1, &x1);
+    int has_r2 = radius(ev, a, st->loc, "d2", "r2", 2, &x2);
+    if (has_r) r1 = r2 = r;
+    if (has_r1) r1 = x1;
+    if (has_r2) r2 = x2;
+    scad_value c = scad_argv_get(a, "center", 3);
+    int center = c.kind == SV_BOOL && c.u.b;
+    if (!(h > 0) || !isfinite(h) || !(r1 >= 0) || !(r2 >= 0) || !isfinite(r1) ||
+        !isfinite(r2) || (r1 == 0 && r2 == 0))
+        return NULL;
+    iv_shape sh;
+    memset(&sh, 0, sizeof sh);
+    sh.kind = IV_SHAPE_CONE;
+    sh.u.cone.r1 = r1;
+    sh.u.cone.r2 = r2;
+    sh.u.cone.h = h;
+    if (!center) return leaf(ev, &sh, state, NULL);
+    csg_affine t = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -h / 2};
+    return leaf(ev, &sh, state, t);
+}
+
+static scad_geom *with_matrix(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state, const csg_affine m)
+{
+    scad_state s = *state;
+    csg_affine_mul(state->xf, m, s.xf);
+    return scad_eval_children(ev, env, st, &s, CSG_OP_UNION);
+}
+
+static void identity(csg_affine m) { memcpy(m, csg_affine_identity, sizeof(csg_affine)); }
+
+static scad_geom *m_translate(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"v", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double v[3] = {0, 0, 0};
+    csg_affine m;
+    identity(m);
+    if (vec3_of(scad_argv_get(a, "v", 0), v)) {
+        m[3] = v[0];
+        m[7] = v[1];
+        m[11] = v[2];
+    }
+    return with_matrix(ev, env, st, state, m);
+}
+
+static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                           const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"a", "v", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    csg_affine m;
+    identity(m);
+    scad_value av = scad_argv_get(a, "a", 0);
+    scad_value vv = scad_argv_get(a, "v", 1);
+    if (av.kind == SV_VEC) {
+        double ang[3] = {0, 0, 0};
+        for (int i = 0; i < av.u.vec->n && i < 3; i++) num_of(av.u.vec->v[i], &ang[i]);
+        double sx = scad_sin_degrees(ang[0]), cx = scad_cos_degrees(ang[0]);
+        double sy = scad_sin_degrees(ang[1]), cy = scad_cos_degrees(ang[1]);
+        double sz = scad_sin_degrees(ang[2]), cz = scad_cos_degrees(ang[2]);
+        csg_affine r = {cy * cz, cz * sx * sy - cx * sz, cx * cz * sy + sx * sz, 0,
+                        cy * sz, cx * cz + sx * sy * sz, -cz * sx + cx * sy * sz, 0,
+                        -sy,     cy * sx,                cx * cy,                 0};
+        memcpy(m, r, sizeof m);
+    } else {
+        double ang;
+        if (num_of(av, &ang) && isfinite(ang)) {
+            double ax[3] = {0, 0, 1};
+            if (vv.kind == SV_VEC) {
+                double v[3] = {0, 0, 0};
+                if (vec3_of(vv, v) && isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2])) {
+                    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                    if (n > 0) {
+                        ax[0] = v[0] / n;
+                        ax[1] = v[1] / n;
+                        ax[2] = v[2] / n;
+                    } else {
+                        ax[0] = ax[1] = ax[2] = 0;
+                    }
+                }
+            }
+            double s = scad_sin_degrees(ang), c = scad_cos_degrees(ang), t = 1 - c;
+            double x = ax[0], y = ax[1], z = ax[2];
+            if (x == 0 && y == 0 && z == 0) {
+                /* Eigen's AngleAxis of a zero axis: cos(a) on the diagonal */
+                csg_affine r = {c, 0, 0, 0, 0, c, 0, 0, 0, 0, c, 0};
+                memcpy(m, r, sizeof m);
+            } else {
+                csg_affine r = {t * x * x + c,     t * x * y - s * z, t * x * z + s * y, 0,
+                                t * x * y + s * z, t * y * y + c,     t * y * z - s * x, 0,
+                                t * x * z - s * y, t * y * z + s * x, t * z * z + c,     0};
+                memcpy(m, r, sizeof m);
+            }
+        }
+    }
+    return with_matrix(ev, env, st, state, m);
+}
+
+static scad_geom *m_scale(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                          const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"v", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double v[3] = {1, 1, 1}, x;
+    scad_value sv = scad_argv_get(a, "v", 0);
+    if (num_of(sv, &x)) v[0] = v[1] = v[2] = x;
+    else vec3_of(sv, v);
+    csg_affine m = {v[0], 0, 0, 0, 0, v[1], 0, 0, 0, 0, v[2], 0};
+    return with_matrix(ev, env, st, state, m);
+}
+
+static scad_geom *m_mirror(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                           const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"v", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double v[3] = {0, 0, 0};
+    csg_affine m;
+    identity(m);
+    if (vec3_of(scad_argv_get(a, "v", 0), v)) {
+        double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if (n > 0 && isfinite(n)) {
+            double x = v[0] / n, y = v[1] / n, z = v[2] / n;
+            csg_affine r = {1 - 2 * x * x, -2 * y * x,    -2 * z * x,    0,
+                            -2 * x * y,    1 - 2 * y * y, -2 * z * y,    0,
+                            -2 * x * z,    -2 * y * z,    1 - 2 * z * z, 0};
+            memcpy(m, r, sizeof m);
+        }
+    }
+    return with_matrix(ev, env, st, state, m);
+}
+
+static scad_geom *m_multmatrix(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"m", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    csg_affine m;
+    identity(m);
+    scad_value mv = scad_argv_get(a, "m", 0);
+    if (mv.kind == SV_VEC) {
+        for (int i = 0; i < 3 && i < mv.u.vec->n; i++) {
+            scad_value row = mv.u.vec->v[i];
+            if (row.kind != SV_VEC) continue;
+            for (int j = 0; j < 4 && j < row.u.vec->n; j++) num_of(row.u.vec->v[j], &m[i * 4 + j]);
+        }
+    }
+    return with_matrix(ev, env, st, state, m);
+}
+
+static int parse_hex(const char *s, float rgba[4])
+{
+    size_t n = strlen(s);
+    if (s[0] != '#' || !(n == 4 || n == 5 || n == 7 || n == 9)) return 0;
+    int stride = (n == 4 || n == 5) ? 1 : 2;
+    float max = stride == 1 ? 15.0f : 255.0f;
+    for (size_t i = 1; i < n; i++) {
+        char c = s[i];
+        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')))
+            return 0;
+    }
+    rgba[3] = 1;
+    for (size_t i = 0; i < (n - 1) / (size_t)stride; i++) {
+        int v = 0;
+        for (int k = 0; k < stride; k++) {
+            char c = s[1 + i * (size_t)stride + (size_t)k];
+            int d = c <= '9' ? c - '0' : (c | 32) - 'a' + 10;
+            v = v * 16 + d;
+        }
+        rgba[i] = (float)v / max;
+    }
+    return 1;
+}
+
+static scad_geom *m_color(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                          const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"c", "alpha", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    float rgba[4] = {-1, -1, -1, 1};
+    scad_value c = scad_argv_get(a, "c", 0);
+    if (c.kind == SV_VEC) {
+        for (int i = 0; i < 4; i++) {
+            double x = 1;
+            if (i < c.u.vec->n) {
+                x = 0;
+                num_of(c.u.vec->v[i], &x);
+            }
+            rgba[i] = (float)x;
+            if (rgba[i] > 1 || rgba[i] < 0)
+                scad_diag_warning(ev->d, st->loc,
+                                  "color() expects numbers between 0.0 and 1.0. Value of %.1f is out of range",
+                                  (double)rgba[i]);
+        }
+    } else if (c.kind == SV_STR) {
+        char name[64];
+        size_t n = c.u.str->len < sizeof name - 1 ? c.u.str->len : sizeof name - 1;
+        for (size_t i = 0; i < n; i++) {
+            char ch = c.u.str->s[i];
+            name[i] = (ch >= 'A' && ch <= 'Z') ? (char)(ch + 32) : ch;
+        }
+        name[n] = 0;
+        if (c.u.str->len >= sizeof name || (!scad_color_by_name(name, rgba) && !parse_hex(name, rgba))) {
+            char shown[64];
+            memcpy(shown, name, n + 1);
+            scad_diag_warning(ev->d, st->loc, "Unable to parse color \"%s\"", shown);
+            scad_diag_line(ev->d, SCAD_MSG_WARNING, "Please see https://en.wikipedia.org/wiki/Web_colors");
+        }
+    }
+    double alpha;
+    if (num_of(scad_argv_get(a, "alpha", 1), &alpha)) rgba[3] = (float)alpha;
+    scad_state s = *state;
+    int valid = !(rgba[0] < 0 || rgba[1] < 0 || rgba[2] < 0 || rgba[3] < 0) &&
+                !isnan(rgba[0]) && !isnan(rgba[1]) && !isnan(rgba[2]) && !isnan(rgba[3]);
+    if (!s.mat.has_color && valid) { /* the outermost valid color() wins */
+        s.mat.has_color = 1;
+        for (int i = 0; i < 4; i++) s.mat.rgba[i] = rgba[i] > 1 ? 1.0f : rgba[i];
+    }
+    return scad_eval_children(ev, env, st, &s, CSG_OP_UNION);
+}
+
+static scad_geom *m_group(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                          const scad_argv *a, const scad_state *state)
+{
+    static const char *const none[] = {NULL};
+    static const char *const render[] = {"convexity", NULL};
+    scad_check_arg_names(ev, a, st->loc, strcmp(st->name, "render") ? none : render);
+    csg_op op = CSG_OP_UNION;
+    if (!strcmp(st->name, "difference")) op = CSG_OP_DIFFERENCE;
+    if (!strcmp(st->name, "intersection")) op = CSG_OP_INTERSECTION;
+    return scad_eval_children(ev, env, st, state, op);
+}
+
+static const struct {
+    const char *name;
+    scad_builtin_mod fn;
+} table[] = {
+    {"color", m_color},         {"cube", m_cube},         {"cylinder", m_cylinder},
+    {"difference", m_group},    {"group", m_group},       {"intersection", m_group},
+    {"mirror", m_mirror},       {"multmatrix", m_multmatrix}, {"render", m_group},
+    {"rotate", m_rotate},       {"scale", m_scale},       {"sphere", m_sphere},
+    {"translate", m_translate}, {"union", m_group},
+};
+
+scad_builtin_mod scad_builtin_module(const char *name)
+{
+    for (size_t i = 0; i < sizeof table / sizeof table[0]; i++)
+        if (strcmp(table[i].name, name) == 0) return table[i].fn;
+    return NULL;
+}

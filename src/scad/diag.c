@@ -1,0 +1,63 @@
+/*
+ * diag.c — formatting of messages for the caller's callback.
+ *
+ * Errors are compiler-style "file:line:col: error: …"; warnings follow
+ * OpenSCAD 2021.01 ("WARNING: … in file x.scad, line N") so that an .echo
+ * file written by openscad compares line for line.  Counters in scad_diag
+ * say how many of each were sent; nothing here prints.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "ast.h"
+
+enum { LINE_MAX_BYTES = 4096 };
+
+void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
+{
+    if (kind == SCAD_MSG_WARNING) d->warnings++;
+    if (kind == SCAD_MSG_ERROR) d->errors++;
+    if (d->opt && d->opt->message) d->opt->message(d->opt->ud, kind, line);
+}
+
+void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(line, sizeof line, "%s:%d:%d: error: %s", loc.file ? loc.file : "?",
+             loc.line, loc.col, msg);
+    scad_diag_line(d, SCAD_MSG_ERROR, line);
+}
+
+static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt,
+                    va_list ap)
+{
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    const char *file = loc.file ? loc.file : "?";
+    size_t n = d->base_dir ? strlen(d->base_dir) : 0;
+    if (n && strncmp(file, d->base_dir, n) == 0) file += n;
+    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, file,
+             loc.line);
+    scad_diag_line(d, SCAD_MSG_WARNING, line);
+}
+
+void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    located(d, loc, "WARNING", fmt, ap);
+    va_end(ap);
+}
+
+void scad_diag_deprecated(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    located(d, loc, "DEPRECATED", fmt, ap);
+    va_end(ap);
+}

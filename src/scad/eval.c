@@ -1,0 +1,1344 @@
+/*
+ * eval.c — the evaluator: environments, expressions, list comprehensions,
+ * user functions and modules, and the control modules (if, for,
+ * intersection_for, let, echo, assert, children).
+ *
+ * Environments form two chains: `parent` is lexical (plain variables,
+ * functions and modules are looked up there, as OpenSCAD does) and `dyn` is
+ * the caller (for $-variables, which OpenSCAD scopes dynamically).  An
+ * environment is freed when its scope ends unless a function literal closed
+ * over it; those are kept on ev->captured until the evaluation ends.  A
+ * scope evaluates all its assignments in order (each name once, at its
+ * first position) before instantiating anything.  Every user call counts
+ * against ev->max_depth and the C stack budget, and an error sets
+ * ev->aborted, after which everything returns undef / no geometry at once.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval.h"
+
+enum { MAX_LOOP_ELEMENTS = 1000000 };
+
+/* ---- errors and limits ------------------------------------------------------ */
+
+void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
+{
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (!ev->aborted) scad_diag_error(ev->d, loc, "%s", msg);
+    ev->aborted = 1;
+}
+
+/* Called on entry to every user function or module: 0 to go on. */
+static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char *name)
+{
+    char here;
+    if (ev->aborted) return -1;
+    if (ev->depth >= ev->max_depth) {
+        scad_eval_error(ev, loc, "recursion deeper than %d calls (calling %s '%s')",
+                        ev->max_depth, what, name);
+        return -1;
+    }
+    size_t used = ev->stack_base > &here ? (size_t)(ev->stack_base - &here)
+                                         : (size_t)(&here - ev->stack_base);
+    if (ev->stack_budget && used > ev->stack_budget) {
+        scad_eval_error(ev, loc,
+                        "recursion deeper than the stack allows (%d calls, calling %s '%s')",
+                        ev->depth, what, name);
+        return -1;
+    }
+    ev->depth++;
+    return 0;
+}
+
+static void leave_call(scad_eval *ev) { ev->depth--; }
+
+/* ---- environments ------------------------------------------------------------ */
+
+static scad_env *env_new(scad_eval *ev, scad_env *parent, scad_env *dyn,
+                         const scad_scope *defs)
+{
+    scad_env *e = calloc(1, sizeof *e);
+    if (!e) {
+        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        return NULL;
+    }
+    e->parent = parent;
+    e->dyn = dyn;
+    e->defs = defs;
+    e->vars = e->inline_vars;
+    e->cap = 4;
+    return e;
+}
+
+static void env_release(scad_env *e)
+{
+    for (int i = 0; i < e->nvars; i++) scad_value_drop(e->vars[i].v);
+    if (e->vars != e->inline_vars) free(e->vars);
+    free(e);
+}
+
+static void env_free(scad_env *e)
+{
+    if (e && !e->captured) env_release(e);
+}
+
+/* A closure keeps its environment and every lexical ancestor alive. */
+static void env_capture(scad_eval *ev, scad_env *e)
+{
+    for (; e && !e->captured; e = e->parent) {
+        e->captured = 1;
+        e->next_captured = ev->captured;
+        ev->captured = e;
+    }
+}
+
+void scad_eval_free_captured(scad_eval *ev);
+void scad_eval_free_captured(scad_eval *ev)
+{
+    /* Values first: they may hold closures, which only point at envs. */
+    scad_env *e = ev->captured;
+    while (e) {
+        scad_env *n = e->next_captured;
+        env_release(e);
+        e = n;
+    }
+    ev->captured = NULL;
+}
+
+void scad_env_set(scad_env *env, const char *name, scad_value v)
+{
+    for (int i = 0; i < env->nvars; i++) {
+        if (strcmp(env->vars[i].name, name) == 0) {
+            scad_value_drop(env->vars[i].v);
+            env->vars[i].v = v;
+            return;
+        }
+    }
+    if (env->nvars == env->cap) {
+        int cap = env->cap * 2;
+        scad_var *nv = malloc(sizeof *nv * (size_t)cap);
+        if (!nv) {
+            scad_value_drop(v);
+            return;
+        }
+        memcpy(nv, env->vars, sizeof *nv * (size_t)env->nvars);
+        if (env->vars != env->inline_vars) free(env->vars);
+        env->vars = nv;
+        env->cap = cap;
+    }
+    env->vars[env->nvars].name = name;
+    env->vars[env->nvars].v = v;
+    env->nvars++;
+}
+
+static scad_var *env_find(scad_env *env, const char *name)
+{
+    for (int i = 0; i < env->nvars; i++)
+        if (strcmp(env->vars[i].name, name) == 0) return &env->vars[i];
+    return NULL;
+}
+
+scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name,
+                           scad_loc loc, int silent, int *found)
+{
+    int special = name[0] == '$';
+    for (scad_env *e = env; e; e = special ? e->dyn : e->parent) {
+        scad_var *v = env_find(e, name);
+        if (v) {
+            if (found) *found = 1;
+            return v->v;
+        }
+    }
+    if (found) *found = 0;
+    if (!silent) scad_diag_warning(ev->d, loc, "Ignoring unknown variable '%s'", name);
+    return scad_undef();
+}
+
+static const scad_funcdef *find_function(scad_env *env, const char *name,
+                                         scad_env **def_env)
+{
+    for (scad_env *e = env; e; e = e->parent) {
+        if (!e->defs) continue;
+        for (int i = e->defs->nfuncs - 1; i >= 0; i--) {
+            if (strcmp(e->defs->funcs[i]->name, name) == 0) {
+                *def_env = e;
+                return e->defs->funcs[i];
+            }
+        }
+    }
+    return NULL;
+}
+
+static const scad_moddef *find_module(scad_env *env, const char *name, scad_env **def_env)
+{
+    for (scad_env *e = env; e; e = e->parent) {
+        if (!e->defs) continue;
+        for (int i = e->defs->nmods - 1; i >= 0; i--) {
+            if (strcmp(e->defs->mods[i]->name, name) == 0) {
+                *def_env = e;
+                return e->defs->mods[i];
+            }
+        }
+    }
+    return NULL;
+}
+
+/* ---- arguments ---------------------------------------------------------------- */
+
+static int eval_args(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out)
+{
+    out->n = 0;
+    out->v = NULL;
+    out->names = NULL;
+    out->locs = NULL;
+    if (args->n == 0) return 0;
+    out->v = malloc(sizeof *out->v * (size_t)args->n);
+    out->names = malloc(sizeof *out->names * (size_t)args->n);
+    out->locs = malloc(sizeof *out->locs * (size_t)args->n);
+    if (!out->v || !out->names || !out->locs) {
+        free(out->v);
+        free(out->names);
+        free(out->locs);
+        out->v = NULL;
+        out->names = NULL;
+        out->locs = NULL;
+        scad_eval_error(ev, args->v[0].loc, "out of memory");
+        return -1;
+    }
+    for (int i = 0; i < args->n; i++) {
+        out->v[i] = args->v[i].value ? scad_eval_expr(ev, env, args->v[i].value)
+                                     : scad_undef();
+        out->names[i] = args->v[i].name;
+        out->locs[i] = args->v[i].loc;
+        out->n++;
+    }
+    return 0;
+}
+
+static void argv_free(scad_argv *a)
+{
+    for (int i = 0; i < a->n; i++) scad_value_drop(a->v[i]);
+    free(a->v);
+    free(a->names);
+    free(a->locs);
+    a->n = 0;
+}
+
+scad_value scad_argv_get(const scad_argv *a, const char *name, int pos)
+{
+    if (name)
+        for (int i = a->n - 1; i >= 0; i--)
+            if (a->names[i] && strcmp(a->names[i], name) == 0) return a->v[i];
+    if (pos >= 0) {
+        int k = 0;
+        for (int i = 0; i < a->n; i++) {
+            if (a->names[i]) continue;
+            if (k++ == pos) return a->v[i];
+        }
+    }
+    return scad_undef();
+}
+
+int scad_argv_given(const scad_argv *a, const char *name, int pos)
+{
+    if (name)
+        for (int i = 0; i < a->n; i++)
+            if (a->names[i] && strcmp(a->names[i], name) == 0) return 1;
+    if (pos >= 0) {
+        int k = 0;
+        for (int i = 0; i < a->n; i++)
+            if (!a->names[i] && k++ == pos) return 1;
+    }
+    return 0;
+}
+
+void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc,
+                          const char *const *known)
+{
+    for (int i = 0; i < a->n; i++) {
+        if (!a->names[i] || a->names[i][0] == '$') continue;
+        int ok = 0;
+        for (const char *const *k = known; *k; k++)
+            if (strcmp(*k, a->names[i]) == 0) ok = 1;
+        if (!ok)
+            scad_diag_warning(ev->d, loc, "variable %s not specified as parameter",
+                              a->names[i]);
+    }
+}
+
+void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env,
+                    const scad_args *params, const scad_argv *argv, scad_loc loc)
+{
+    for (int i = 0; i < params->n; i++) {
+        scad_value v = params->v[i].value ? scad_eval_expr(ev, def_env, params->v[i].value)
+                                          : scad_undef();
+        scad_env_set(target, params->v[i].name, v);
+    }
+    int pos = 0, too_many = 0;
+    for (int i = 0; i < argv->n; i++) {
+        if (argv->names[i]) continue;
+        if (pos < params->n) {
+            scad_env_set(target, params->v[pos].name, scad_value_ref(argv->v[i]));
+        } else {
+            too_many = 1;
+        }
+        pos++;
+    }
+    for (int i = 0; i < argv->n; i++) {
+        const char *name = argv->names[i];
+        if (!name) continue;
+        int known = name[0] == '$';
+        for (int k = 0; k < params->n && !known; k++)
+            if (strcmp(params->v[k].name, name) == 0) known = 1;
+        if (known)
+            scad_env_set(target, name, scad_value_ref(argv->v[i]));
+        else
+            scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", name);
+    }
+    if (too_many) scad_diag_warning(ev->d, loc, "Too many unnamed arguments supplied");
+}
+
+/* ---- operators ---------------------------------------------------------------- */
+
+static const char *op_name(int op)
+{
+    static const char *two[] = {"<=", ">=", "==", "!=", "&&", "||"};
+    static char one[8][2];
+    if (op >= TK_LE && op <= TK_OR) return two[op - TK_LE];
+    char *s = one[op & 7];
+    s[0] = (char)op;
+    s[1] = 0;
+    return s;
+}
+
+static int is_num_vec(scad_value v)
+{
+    if (v.kind != SV_VEC) return 0;
+    for (int i = 0; i < v.u.vec->n; i++)
+        if (v.u.vec->v[i].kind != SV_NUM) return 0;
+    return 1;
+}
+
+/* Elementwise +, - over the shorter length; non-matching elements give undef. */
+static scad_value arith(int op, scad_value a, scad_value b, int *defined)
+{
+    *defined = 1;
+    if (a.kind == SV_NUM && b.kind == SV_NUM) {
+        switch (op) {
+        case '+': return scad_num(a.u.num + b.u.num);
+        case '-': return scad_num(a.u.num - b.u.num);
+        case '*': return scad_num(a.u.num * b.u.num);
+        case '/': return scad_num(a.u.num / b.u.num);
+        case '%': return scad_num(fmod(a.u.num, b.u.num));
+        case '^': return scad_num(pow(a.u.num, b.u.num));
+        }
+    }
+    if ((op == '+' || op == '-') && a.kind == SV_VEC && b.kind == SV_VEC) {
+        int n = a.u.vec->n < b.u.vec->n ? a.u.vec->n : b.u.vec->n;
+        scad_value r = scad_vec_new(n);
+        if (r.kind != SV_VEC) return r;
+        int dummy;
+        for (int i = 0; i < n; i++) r.u.vec->v[i] = arith(op, a.u.vec->v[i], b.u.vec->v[i], &dummy);
+        return r;
+    }
+    if ((op == '*' && a.kind == SV_VEC && b.kind == SV_NUM) ||
+        (op == '*' && a.kind == SV_NUM && b.kind == SV_VEC) ||
+        (op == '/' && (a.kind == SV_VEC) != (b.kind == SV_VEC) &&
+         (a.kind == SV_NUM || b.kind == SV_NUM))) {
+        scad_value vec = a.kind == SV_VEC ? a : b;
+        scad_value r = scad_vec_new(vec.u.vec->n);
+        if (r.kind != SV_VEC) return r;
+        int dummy;
+        for (int i = 0; i < vec.u.vec->n; i++)
+            r.u.vec->v[i] = a.kind == SV_VEC ? arith(op, a.u.vec->v[i], b, &dummy)
+                                             : arith(op, a, b.u.vec->v[i], &dummy);
+        return r;
+    }
+    *defined = 0;
+    return scad_undef();
+}
+
+static scad_value dot(const scad_vec *a, const scad_vec *b)
+{
+    double s = 0;
+    for (int i = 0; i < a->n; i++) s += a->v[i].u.num * b->v[i].u.num;
+    return scad_num(s);
+}
+
+/* Vector and matrix products, with OpenSCAD's warnings. */
+static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value b,
+                           int *defined)
+{
+    if (!(a.kind == SV_VEC && b.kind == SV_VEC)) return arith('*', a, b, defined);
+    *defined = 1;
+    const scad_vec *A = a.u.vec, *B = b.u.vec;
+    if (A->n == 0 || B->n == 0) return scad_undef();
+    if (A->v[0].kind == SV_NUM) {
+        if (B->v[0].kind == SV_NUM) { /* dot product */
+            if (A->n != B->n) {
+                scad_diag_warning(ev->d, loc, "vector*vector requires matching lengths (%d != %d)",
+                                  A->n, B->n);
+                return scad_undef();
+            }
+            if (!is_num_vec(a) || !is_num_vec(b)) return scad_undef();
+            return dot(A, B);
+        }
+        /* vector * matrix */
+        if (A->n != B->n) {
+            scad_diag_warning(ev->d, loc,
+                              "vector*matrix requires vector length to match matrix row count (%d != %d)",
+                              A->n, B->n);
+            return scad_undef();
+        }
+        if (!is_num_vec(a) || !is_num_vec(B->v[0])) return scad_undef();
+        int cols = B->v[0].u.vec->n;
+        for (int i = 0; i < B->n; i++)
+            if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != cols) return scad_undef();
+        scad_value r = scad_vec_new(cols);
+        if (r.kind != SV_VEC) return r;
+        for (int j = 0; j < cols; j++) {
+            double s = 0;
+            for (int i = 0; i < A->n; i++) s += A->v[i].u.num * B->v[i].u.vec->v[j].u.num;
+            r.u.vec->v[j] = scad_num(s);
+        }
+        return r;
+    }
+    if (A->v[0].kind != SV_VEC) return scad_undef();
+    int acols = A->v[0].u.vec->n;
+    for (int i = 0; i < A->n; i++)
+        if (!is_num_vec(A->v[i]) || A->v[i].u.vec->n != acols) return scad_undef();
+    if (B->v[0].kind == SV_NUM) { /* matrix * vector */
+        if (acols != B->n) {
+            scad_diag_warning(ev->d, loc,
+                              "matrix*vector requires matrix column count to match vector length (%d != %d)",
+                              acols, B->n);
+            return scad_undef();
+        }
+        if (!is_num_vec(b)) return scad_undef();
+        scad_value r = scad_vec_new(A->n);
+        if (r.kind != SV_VEC) return r;
+        for (int i = 0; i < A->n; i++) r.u.vec->v[i] = dot(A->v[i].u.vec, B);
+        return r;
+    }
+    if (B->v[0].kind != SV_VEC) return scad_undef();
+    int bcols = B->v[0].u.vec->n;
+    for (int i = 0; i < B->n; i++)
+        if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != bcols) return scad_undef();
+    if (acols != B->n) {
+        scad_diag_warning(ev->d, loc,
+                          "matrix*matrix requires left operand column count to match right operand row count (%d != %d)",
+                          acols, B->n);
+        return scad_undef();
+    }
+    scad_value r = scad_vec_new(A->n);
+    if (r.kind != SV_VEC) return r;
+    for (int i = 0; i < A->n; i++) {
+        scad_value row = scad_vec_new(bcols);
+        if (row.kind != SV_VEC) break;
+        for (int j = 0; j < bcols; j++) {
+            double s = 0;
+            for (int k = 0; k < acols; k++)
+                s += A->v[i].u.vec->v[k].u.num * B->v[k].u.vec->v[j].u.num;
+            row.u.vec->v[j] = scad_num(s);
+        }
+        r.u.vec->v[i] = row;
+    }
+    return r;
+}
+
+static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_value b)
+{
+    int op = e->op, defined = 1;
+    scad_value r;
+    switch (op) {
+    case TK_EQ: return scad_bool(scad_value_equal(a, b));
+    case TK_NE: return scad_bool(!scad_value_equal(a, b));
+    case '<':
+    case '>':
+    case TK_LE:
+    case TK_GE: {
+        int c = scad_value_compare(a, b);
+        if (c == 2) {
+            if (a.kind == SV_NUM && b.kind == SV_NUM) return scad_bool(0); /* NaN */
+            defined = 0;
+            r = scad_undef();
+            break;
+        }
+        r = scad_bool(op == '<' ? c < 0 : op == '>' ? c > 0 : op == TK_LE ? c <= 0 : c >= 0);
+        break;
+    }
+    case '*': r = multiply(ev, e->loc, a, b, &defined); break;
+    default: r = arith(op, a, b, &defined); break;
+    }
+    if (!defined)
+        scad_diag_warning(ev->d, e->loc, "undefined operation (%s %s %s)",
+                          scad_value_type_name(a), op_name(op), scad_value_type_name(b));
+    return r;
+}
+
+static scad_value negate(scad_value v, int *defined)
+{
+    if (v.kind == SV_NUM) return scad_num(-v.u.num);
+    if (v.kind == SV_VEC) {
+        scad_value r = scad_vec_new(v.u.vec->n);
+        if (r.kind != SV_VEC) return r;
+        int dummy;
+        for (int i = 0; i < v.u.vec->n; i++) r.u.vec->v[i] = negate(v.u.vec->v[i], &dummy);
+        return r;
+    }
+    *defined = 0;
+    return scad_undef();
+}
+
+/* ---- growable value lists ------------------------------------------------------ */
+
+typedef struct vlist {
+    scad_value *v;
+    int n, cap;
+} vlist;
+
+static void vlist_push(scad_eval *ev, vlist *l, scad_value v, scad_loc loc)
+{
+    if (l->n == l->cap) {
+        int cap = l->cap ? l->cap * 2 : 8;
+        scad_value *nv = realloc(l->v, sizeof *nv * (size_t)cap);
+        if (!nv || cap > 100000000) {
+            scad_value_drop(v);
+            scad_eval_error(ev, loc, "out of memory building a vector");
+            return;
+        }
+        l->v = nv;
+        l->cap = cap;
+    }
+    l->v[l->n++] = v;
+}
+
+static scad_value vlist_take(vlist *l)
+{
+    scad_value r = scad_vec_new(l->n);
+    if (r.kind == SV_VEC) {
+        if (l->n) memcpy(r.u.vec->v, l->v, sizeof *l->v * (size_t)l->n);
+    } else {
+        for (int i = 0; i < l->n; i++) scad_value_drop(l->v[i]);
+    }
+    free(l->v);
+    l->v = NULL;
+    l->n = l->cap = 0;
+    return r;
+}
+
+static void vlist_free(vlist *l)
+{
+    for (int i = 0; i < l->n; i++) scad_value_drop(l->v[i]);
+    free(l->v);
+}
+
+/* ---- iteration (for, each) --------------------------------------------------- */
+
+double scad_range_steps(const scad_range *r);
+/* Number of values of a range as OpenSCAD counts them: the quotient is
+ * nudged up by one ulp so that [0:0.1:0.3] has 4 values; a zero step or an
+ * infinite end gives UINT32_MAX (which the loop limit then refuses). */
+double scad_range_steps(const scad_range *r)
+{
+    if (isnan(r->begin) || isnan(r->end) || isnan(r->step)) return 0;
+    if (r->step < 0 ? r->begin < r->end : r->begin > r->end) return 0;
+    if (r->begin == r->end || isinf(r->step)) return 1;
+    if (isinf(r->begin) || isinf(r->end) || r->step == 0) return 4294967295.0;
+    double q = floor(nextafter((r->end - r->begin) / r->step, INFINITY));
+    if (q >= 4294967295.0) return 4294967295.0;
+    return q + 1;
+}
+
+/* Expands v into the list of values a for loop visits.  Returns the count,
+ * or -1 when refused (warned).  Borrowed items are referenced into out. */
+static int iter_values(scad_eval *ev, scad_value v, scad_loc loc, vlist *out)
+{
+    switch (v.kind) {
+    case SV_UNDEF: return 0;
+    case SV_RANGE: {
+        double n = scad_range_steps(v.u.range);
+        if (n > MAX_LOOP_ELEMENTS) {
+            scad_diag_warning(ev->d, loc,
+                              "Bad range parameter in for statement: too many elements (%.0f)",
+                              n);
+            return -1;
+        }
+        for (int i = 0; i < (int)n && !ev->aborted; i++)
+            vlist_push(ev, out, scad_num(v.u.range->begin + i * v.u.range->step), loc);
+        return out->n;
+    }
+    case SV_VEC:
+        for (int i = 0; i < v.u.vec->n && !ev->aborted; i++)
+            vlist_push(ev, out, scad_value_ref(v.u.vec->v[i]), loc);
+        return out->n;
+    case SV_STR: {
+        const char *s = v.u.str->s;
+        size_t i = 0;
+        while (i < v.u.str->len && !ev->aborted) {
+            size_t k = 1;
+            while (i + k < v.u.str->len && ((unsigned char)s[i + k] & 0xC0) == 0x80) k++;
+            vlist_push(ev, out, scad_str_new(s + i, k), loc);
+            i += k;
+        }
+        return out->n;
+    }
+    default: vlist_push(ev, out, scad_value_ref(v), loc); return 1;
+    }
+}
+
+/* ---- expressions -------------------------------------------------------------- */
+
+static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_expr *call,
+                                     const char *name, const scad_args *params,
+                                     const scad_expr *body, scad_env *def_env)
+{
+    scad_argv argv;
+    if (eval_args(ev, env, &call->args, &argv)) return scad_undef();
+    if (enter_call(ev, call->loc, "function", name)) {
+        argv_free(&argv);
+        return scad_undef();
+    }
+    scad_value r = scad_undef();
+    scad_env *fe = env_new(ev, def_env, env, NULL);
+    if (fe) {
+        scad_bind_args(ev, fe, def_env, params, &argv, call->loc);
+        r = scad_eval_expr(ev, fe, body);
+        env_free(fe);
+    }
+    leave_call(ev);
+    argv_free(&argv);
+    return r;
+}
+
+static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
+{
+    const scad_expr *callee = e->a[0];
+    scad_value fv = scad_undef();
+    int owned = 0;
+    if (callee->kind == EX_VAR) {
+        int found;
+        scad_env *found_env;
+        fv = scad_env_lookup(ev, env, callee->str, callee->loc, 1, &found);
+        if (fv.kind != SV_FUNC && !strcmp(callee->str, "is_undef") && e->args.n == 1 &&
+            e->args.v[0].value->kind == EX_VAR && !find_function(env, "is_undef", &found_env)) {
+            /* OpenSCAD looks the variable up silently here */
+            int there;
+            scad_env_lookup(ev, env, e->args.v[0].value->str, e->loc, 1, &there);
+            if (!there) return scad_bool(1);
+        }
+        if (fv.kind != SV_FUNC) {
+            scad_env *def_env;
+            const scad_funcdef *f = find_function(env, callee->str, &def_env);
+            if (f)
+                return call_user_function(ev, env, e, f->name, &f->params, f->body, def_env);
+            scad_builtin_fn b = scad_builtin_function(callee->str);
+            if (b) {
+                scad_argv argv;
+                if (eval_args(ev, env, &e->args, &argv)) return scad_undef();
+                scad_value r = b(ev, &argv, e->loc, callee->str);
+                argv_free(&argv);
+                return r;
+            }
+            scad_diag_warning(ev->d, e->loc, "Ignoring unknown function '%s'", callee->str);
+            return scad_undef();
+        }
+    } else {
+        fv = scad_eval_expr(ev, env, callee);
+        owned = 1;
+        if (fv.kind != SV_FUNC) {
+            if (!ev->aborted)
+                scad_diag_warning(ev->d, e->loc, "Can't call function on %s",
+                                  scad_value_type_name(fv));
+            scad_value_drop(fv);
+            return scad_undef();
+        }
+    }
+    scad_value keep = scad_value_ref(fv);
+    if (owned) scad_value_drop(fv);
+    const scad_expr *lit = keep.u.func->lit;
+    scad_value r = call_user_function(ev, env, e, "function literal", &lit->args,
+                                      lit->a[0], keep.u.func->env);
+    scad_value_drop(keep);
+    return r;
+}
+
+static scad_value eval_index(scad_value v, scad_value i)
+{
+    if (i.kind != SV_NUM || isnan(i.u.num) || i.u.num < 0) return scad_undef();
+    double k = floor(i.u.num);
+    if (v.kind == SV_VEC) {
+        if (k >= v.u.vec->n) return scad_undef();
+        return scad_value_ref(v.u.vec->v[(int)k]);
+    }
+    if (v.kind == SV_STR) {
+        if (k >= (double)v.u.str->nchars) return scad_undef();
+        const char *s = v.u.str->s;
+        size_t pos = 0, c = 0;
+        while (c < (size_t)k) {
+            pos++;
+            while (pos < v.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80) pos++;
+            c++;
+        }
+        size_t len = 1;
+        while (pos + len < v.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80) len++;
+        return scad_str_new(s + pos, len);
+    }
+    if (v.kind == SV_RANGE) {
+        const scad_range *r = v.u.range;
+        if (k == 0) return scad_num(r->begin);
+        if (k == 1) return scad_num(r->step);
+        if (k == 2) return scad_num(r->end);
+    }
+    return scad_undef();
+}
+
+/* Runs the let/for assignments of args one after another in env. */
+static void assign_seq(scad_eval *ev, scad_env *env, const scad_args *args)
+{
+    for (int i = 0; i < args->n && !ev->aborted; i++) {
+        scad_value v = scad_eval_expr(ev, env, args->v[i].value);
+        if (args->v[i].name)
+            scad_env_set(env, args->v[i].name, v);
+        else
+            scad_value_drop(v);
+    }
+}
+
+static void echo_line(scad_eval *ev, const scad_argv *a)
+{
+    scad_buf b = {0};
+    scad_buf_puts(&b, "ECHO: ");
+    for (int i = 0; i < a->n; i++) {
+        if (i) scad_buf_puts(&b, ", ");
+        if (a->names[i]) scad_buf_printf(&b, "%s = ", a->names[i]);
+        scad_value_format(&b, a->v[i], 1);
+    }
+    scad_diag_line(ev->d, SCAD_MSG_ECHO, scad_buf_str(&b));
+    scad_buf_free(&b);
+}
+
+/* assert(condition, message): 0 when it holds, else reports and aborts. */
+static int check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_loc loc)
+{
+    scad_argv a;
+    if (eval_args(ev, env, args, &a)) return -1;
+    scad_value c = scad_argv_get(&a, "condition", 0);
+    int ok = scad_value_truthy(c);
+    if (!ok && !ev->aborted) {
+        scad_buf b = {0};
+        const scad_expr *ce = NULL;
+        for (int i = 0; i < args->n; i++)
+            if (!args->v[i].name || strcmp(args->v[i].name, "condition") == 0) {
+                ce = args->v[i].value;
+                break;
+            }
+        scad_buf_puts(&b, "Assertion '");
+        if (ce) scad_expr_format(&b, ce);
+        scad_buf_puts(&b, "' failed");
+        if (scad_argv_given(&a, "message", 1)) {
+            scad_buf_puts(&b, ": ");
+            scad_value_format(&b, scad_argv_get(&a, "message", 1), 1);
+        }
+        scad_eval_error(ev, loc, "%s", scad_buf_str(&b));
+        scad_buf_free(&b);
+    }
+    argv_free(&a);
+    return ok ? 0 : -1;
+}
+
+static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, vlist *out);
+
+/* for (a = …, b = …) in a comprehension: nested, each level evaluated in
+ * the environment of the levels outside it. */
+static void lc_for(scad_eval *ev, scad_env *env, const scad_expr *e, int k, vlist *out)
+{
+    if (ev->aborted) return;
+    if (k == e->args.n) {
+        lc_eval(ev, env, e->a[0], out);
+        return;
+    }
+    const scad_arg *arg = &e->args.v[k];
+    scad_value src = scad_eval_expr(ev, env, arg->value);
+    vlist items = {0};
+    if (iter_values(ev, src, arg->loc, &items) > 0) {
+        for (int i = 0; i < items.n && !ev->aborted; i++) {
+            scad_env *ie = env_new(ev, env, env, NULL);
+            if (!ie) break;
+            if (arg->name) scad_env_set(ie, arg->name, scad_value_ref(items.v[i]));
+            lc_for(ev, ie, e, k + 1, out);
+            env_free(ie);
+        }
+    }
+    vlist_free(&items);
+    scad_value_drop(src);
+}
+
+static void push_each(scad_eval *ev, scad_value v, scad_loc loc, vlist *out)
+{
+    if (v.kind == SV_VEC || v.kind == SV_RANGE || v.kind == SV_STR) {
+        vlist items = {0};
+        if (iter_values(ev, v, loc, &items) > 0)
+            for (int i = 0; i < items.n; i++) vlist_push(ev, out, scad_value_ref(items.v[i]), loc);
+        vlist_free(&items);
+        scad_value_drop(v);
+    } else {
+        vlist_push(ev, out, v, loc);
+    }
+}
+
+static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, vlist *out)
+{
+    if (ev->aborted) return;
+    switch (e->kind) {
+    case LC_FOR: lc_for(ev, env, e, 0, out); break;
+    case LC_CFOR: {
+        scad_env *ie = env_new(ev, env, env, NULL);
+        if (!ie) return;
+        assign_seq(ev, ie, &e->args);
+        long iterations = 0;
+        for (;;) {
+            scad_value c = scad_eval_expr(ev, ie, e->a[1]);
+            int go = scad_value_truthy(c);
+            scad_value_drop(c);
+            if (!go || ev->aborted) break;
+            if (++iterations > MAX_LOOP_ELEMENTS) {
+                scad_diag_warning(ev->d, e->loc,
+                                  "for loop stopped after %d iterations", MAX_LOOP_ELEMENTS);
+                break;
+            }
+            lc_eval(ev, ie, e->a[0], out);
+            /* the update reads the old values and makes a new environment */
+            scad_env *ne = env_new(ev, env, env, NULL);
+            if (!ne) break;
+            for (int i = 0; i < ie->nvars; i++)
+                scad_env_set(ne, ie->vars[i].name, scad_value_ref(ie->vars[i].v));
+            for (int i = 0; i < e->args2.n && !ev->aborted; i++) {
+                scad_value v = scad_eval_expr(ev, ie, e->args2.v[i].value);
+                if (e->args2.v[i].name)
+                    scad_env_set(ne, e->args2.v[i].name, v);
+                else
+                    scad_value_drop(v);
+            }
+            env_free(ie);
+            ie = ne;
+        }
+        env_free(ie);
+        break;
+    }
+    case LC_IF: {
+        scad_value c = scad_eval_expr(ev, env, e->a[1]);
+        int t = scad_value_truthy(c);
+        scad_value_drop(c);
+        if (t)
+            lc_eval(ev, env, e->a[0], out);
+        else if (e->a[2])
+            lc_eval(ev, env, e->a[2], out);
+        break;
+    }
+    case LC_LET: {
+        scad_env *le = env_new(ev, env, env, NULL);
+        if (!le) return;
+        assign_seq(ev, le, &e->args);
+        lc_eval(ev, le, e->a[0], out);
+        env_free(le);
+        break;
+    }
+    case LC_EACH: {
+        if (e->a[0]->kind >= LC_FOR) {
+            vlist inner = {0};
+            lc_eval(ev, env, e->a[0], &inner);
+            for (int i = 0; i < inner.n; i++) {
+                push_each(ev, inner.v[i], e->loc, out);
+                inner.v[i] = scad_undef();
+            }
+            vlist_free(&inner);
+        } else {
+            push_each(ev, scad_eval_expr(ev, env, e->a[0]), e->loc, out);
+        }
+        break;
+    }
+    default: vlist_push(ev, out, scad_eval_expr(ev, env, e), e->loc); break;
+    }
+}
+
+scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
+{
+    if (ev->aborted) return scad_undef();
+    switch (e->kind) {
+    case EX_NUMBER: return scad_num(e->num);
+    case EX_STRING: return scad_str_new(e->str, e->len);
+    case EX_BOOL: return scad_bool((int)e->num);
+    case EX_UNDEF: return scad_undef();
+    case EX_VAR: return scad_value_ref(scad_env_lookup(ev, env, e->str, e->loc, 0, NULL));
+    case EX_RANGE: {
+        scad_value b = scad_eval_expr(ev, env, e->a[0]);
+        scad_value s = e->a[1] ? scad_eval_expr(ev, env, e->a[1]) : scad_num(1);
+        scad_value en = scad_eval_expr(ev, env, e->a[2]);
+        scad_value r = scad_undef();
+        if (b.kind == SV_NUM && s.kind == SV_NUM && en.kind == SV_NUM) {
+            double bb = b.u.num, ss = s.u.num, ee = en.u.num;
+            if (!e->a[1] && bb > ee) {
+                scad_diag_deprecated(ev->d, e->loc,
+                                     "Using ranges of the form [begin:end] with begin value greater than the end value is deprecated");
+                double t = bb;
+                bb = ee;
+                ee = t;
+            } else if (e->a[1] && ss < 0 && bb < ee) {
+                scad_diag_warning(ev->d, e->loc,
+                                  "begin is smaller than the end, but step is negative");
+            } else if (e->a[1] && ss > 0 && bb > ee) {
+                scad_diag_warning(ev->d, e->loc,
+                                  "begin is greater than the end, but step is positive");
+            }
+            r = scad_range_new(bb, ss, ee);
+        }
+        scad_value_drop(b);
+        scad_value_drop(s);
+        scad_value_drop(en);
+        return r;
+    }
+    case EX_VECTOR: {
+        vlist l = {0};
+        for (int i = 0; i < e->n && !ev->aborted; i++) lc_eval(ev, env, e->list[i], &l);
+        if (ev->aborted) {
+            vlist_free(&l);
+            return scad_undef();
+        }
+        return vlist_take(&l);
+    }
+    case EX_UNARY: {
+        scad_value v = scad_eval_expr(ev, env, e->a[0]);
+        scad_value r;
+        int defined = 1;
+        if (e->op == '!')
+            r = scad_bool(!scad_value_truthy(v));
+        else if (e->op == '-')
+            r = negate(v, &defined);
+        else if (v.kind == SV_NUM || v.kind == SV_VEC)
+            r = scad_value_ref(v);
+        else
+            defined = 0, r = scad_undef();
+        if (!defined && !ev->aborted)
+            scad_diag_warning(ev->d, e->loc, "undefined operation (%c%s)", e->op,
+                              scad_value_type_name(v));
+        scad_value_drop(v);
+        return r;
+    }
+    case EX_BINARY: {
+        scad_value a = scad_eval_expr(ev, env, e->a[0]);
+        if (e->op == TK_AND || e->op == TK_OR) {
+            int t = scad_value_truthy(a);
+            scad_value_drop(a);
+            if (e->op == TK_AND ? !t : t) return scad_bool(t);
+            scad_value b = scad_eval_expr(ev, env, e->a[1]);
+            t = scad_value_truthy(b);
+            scad_value_drop(b);
+            return scad_bool(t);
+        }
+        scad_value b = scad_eval_expr(ev, env, e->a[1]);
+        scad_value r = ev->aborted ? scad_undef() : binary(ev, e, a, b);
+        scad_value_drop(a);
+        scad_value_drop(b);
+        return r;
+    }
+    case EX_TERNARY: {
+        scad_value c = scad_eval_expr(ev, env, e->a[0]);
+        int t = scad_value_truthy(c);
+        scad_value_drop(c);
+        return scad_eval_expr(ev, env, e->a[t ? 1 : 2]);
+    }
+    case EX_CALL: return eval_call(ev, env, e);
+    case EX_INDEX: {
+        scad_value v = scad_eval_expr(ev, env, e->a[0]);
+        scad_value i = scad_eval_expr(ev, env, e->a[1]);
+        scad_value r = eval_index(v, i);
+        scad_value_drop(v);
+        scad_value_drop(i);
+        return r;
+    }
+    case EX_MEMBER: {
+        scad_value v = scad_eval_expr(ev, env, e->a[0]);
+        scad_value r = scad_undef();
+        const char *m = e->str;
+        int k = -1;
+        if (v.kind == SV_VEC) k = !strcmp(m, "x") ? 0 : !strcmp(m, "y") ? 1 : !strcmp(m, "z") ? 2 : -1;
+        if (v.kind == SV_RANGE)
+            k = !strcmp(m, "begin") ? 0 : !strcmp(m, "step") ? 1 : !strcmp(m, "end") ? 2 : -1;
+        if (k >= 0) r = eval_index(v, scad_num(k));
+        scad_value_drop(v);
+        return r;
+    }
+    case EX_LET: {
+        scad_env *le = env_new(ev, env, env, NULL);
+        if (!le) return scad_undef();
+        assign_seq(ev, le, &e->args);
+        scad_value r = scad_eval_expr(ev, le, e->a[0]);
+        env_free(le);
+        return r;
+    }
+    case EX_ASSERT:
+        if (check_assert(ev, env, &e->args, e->loc)) return scad_undef();
+        return e->a[0] ? scad_eval_expr(ev, env, e->a[0]) : scad_undef();
+    case EX_ECHO: {
+        scad_argv a;
+        if (eval_args(ev, env, &e->args, &a)) return scad_undef();
+        if (!ev->aborted) echo_line(ev, &a);
+        argv_free(&a);
+        return e->a[0] ? scad_eval_expr(ev, env, e->a[0]) : scad_undef();
+    }
+    case EX_FUNCLIT:
+        env_capture(ev, env);
+        return scad_func_new(e, env);
+    default: {
+        /* a comprehension outside [ ]: not produced by the parser */
+        vlist l = {0};
+        lc_eval(ev, env, e, &l);
+        return vlist_take(&l);
+    }
+    }
+}
+
+/* ---- geometry ----------------------------------------------------------------- */
+
+scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *state)
+{
+    scad_geom *g = scad_arena_alloc(ev->arena, sizeof *g);
+    if (!g) {
+        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        return NULL;
+    }
+    g->is_leaf = 1;
+    g->shape = *s;
+    memcpy(g->xf, state->xf, sizeof g->xf);
+    g->mat = state->mat;
+    return g;
+}
+
+scad_geom *scad_geom_op(scad_eval *ev, csg_op op)
+{
+    scad_geom *g = scad_arena_alloc(ev->arena, sizeof *g);
+    if (!g) {
+        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        return NULL;
+    }
+    g->op = op;
+    return g;
+}
+
+void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child)
+{
+    if (!parent || !child) return;
+    if (parent->n == parent->cap) {
+        int cap = parent->cap ? parent->cap * 2 : 4;
+        scad_geom **k = scad_arena_alloc(ev->arena, sizeof *k * (size_t)cap);
+        if (!k) {
+            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            return;
+        }
+        if (parent->n) memcpy(k, parent->kids, sizeof *k * (size_t)parent->n);
+        parent->kids = k;
+        parent->cap = cap;
+    }
+    parent->kids[parent->n++] = child;
+}
+
+/* Collects the children of one node; combined by `finish`. */
+typedef struct gather {
+    scad_geom **v;
+    int n, cap;
+} gather;
+
+static void gather_add(scad_eval *ev, gather *g, scad_geom *x)
+{
+    if (!x) return;
+    if (g->n == g->cap) {
+        int cap = g->cap ? g->cap * 2 : 8;
+        scad_geom **v = realloc(g->v, sizeof *v * (size_t)cap);
+        if (!v) {
+            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            return;
+        }
+        g->v = v;
+        g->cap = cap;
+    }
+    g->v[g->n++] = x;
+}
+
+/* Empty children are skipped (as OpenSCAD's CSG tree drops them); a single
+ * child stands for itself. */
+static scad_geom *finish(scad_eval *ev, gather *g, csg_op op)
+{
+    scad_geom *r = NULL;
+    if (g->n == 1) {
+        r = g->v[0];
+    } else if (g->n > 1) {
+        r = scad_geom_op(ev, op);
+        for (int i = 0; i < g->n; i++) scad_geom_add(ev, r, g->v[i]);
+    }
+    free(g->v);
+    g->v = NULL;
+    g->n = g->cap = 0;
+    return r;
+}
+
+static void list_add(scad_eval *ev, scad_geom ***v, int *n, int *cap, scad_geom *g)
+{
+    if (*n == *cap) {
+        int c = *cap ? *cap * 2 : 4;
+        scad_geom **nv = realloc(*v, sizeof *nv * (size_t)c);
+        if (!nv) {
+            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            return;
+        }
+        *v = nv;
+        *cap = c;
+    }
+    (*v)[(*n)++] = g;
+}
+
+/* ---- statements ----------------------------------------------------------------- */
+
+static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state);
+
+static void run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s)
+{
+    for (int i = 0; i < s->nassigns && !ev->aborted; i++)
+        scad_env_set(env, s->assigns[i].name, scad_eval_expr(ev, env, s->assigns[i].value));
+}
+
+/* Instantiates the statements of s (all of them, or those picked) in env. */
+static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s,
+                      const scad_state *state, gather *out, const int *pick, int npick)
+{
+    int n = pick ? npick : s->nstmts;
+    for (int i = 0; i < n && !ev->aborted; i++)
+        gather_add(ev, out, instantiate(ev, env, s->stmts[pick ? pick[i] : i], state));
+}
+
+/* A child scope: a fresh environment below env for its assignments. */
+static scad_geom *child_scope(scad_eval *ev, scad_env *env, scad_env *dyn,
+                              const scad_scope *s, const scad_state *state, csg_op op,
+                              const int *pick, int npick)
+{
+    if (!s || ev->aborted) return NULL;
+    scad_env *ce = env_new(ev, env, dyn, s);
+    if (!ce) return NULL;
+    gather g = {0};
+    run_assignments(ev, ce, s);
+    run_stmts(ev, ce, s, state, &g, pick, npick);
+    env_free(ce);
+    return finish(ev, &g, op);
+}
+
+scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state, csg_op op)
+{
+    return child_scope(ev, env, env, st->children, state, op, NULL, 0);
+}
+
+static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_moddef *m, scad_env *def_env,
+                              const scad_state *state)
+{
+    scad_argv argv;
+    if (eval_args(ev, env, &st->args, &argv)) return NULL;
+    if (enter_call(ev, st->loc, "module", m->name)) {
+        argv_free(&argv);
+        return NULL;
+    }
+    scad_geom *r = NULL;
+    scad_env *me = env_new(ev, def_env, env, m->body);
+    if (me) {
+        me->is_module = 1;
+        me->children = st->children;
+        me->children_env = env;
+        scad_bind_args(ev, me, def_env, &m->params, &argv, st->loc);
+        scad_env_set(me, "$children", scad_num(st->children ? st->children->nstmts : 0));
+        gather g = {0};
+        run_assignments(ev, me, m->body);
+        run_stmts(ev, me, m->body, state, &g, NULL, 0);
+        r = finish(ev, &g, CSG_OP_UNION);
+        env_free(me);
+    }
+    leave_call(ev);
+    argv_free(&argv);
+    return r;
+}
+
+static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_argv *a, const scad_state *state)
+{
+    scad_env *m = env;
+    while (m && !m->is_module) m = m->parent;
+    if (!m || !m->children || m->children->nstmts == 0) return NULL;
+    int n = m->children->nstmts;
+    if (a->n == 0)
+        return child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, NULL, 0);
+    scad_value sel = scad_argv_get(a, "index", 0);
+    vlist idx = {0};
+    if (sel.kind == SV_NUM) {
+        vlist_push(ev, &idx, scad_value_ref(sel), st->loc);
+    } else if (sel.kind == SV_VEC || sel.kind == SV_RANGE) {
+        if (iter_values(ev, sel, st->loc, &idx) < 0) {
+            vlist_free(&idx);
+            return NULL;
+        }
+    } else {
+        scad_diag_warning(ev->d, st->loc, "Bad parameter type (%s) for children, only accept: empty, number, vector, range.",
+                          scad_value_type_name(sel));
+        return NULL;
+    }
+    int *pick = malloc(sizeof *pick * (size_t)(idx.n ? idx.n : 1));
+    int np = 0;
+    for (int i = 0; pick && i < idx.n; i++) {
+        if (idx.v[i].kind != SV_NUM) continue;
+        double k = idx.v[i].u.num;
+        if (k < 0 || k >= n || isnan(k)) {
+            scad_diag_warning(ev->d, st->loc, "Children index (%d) out of bounds (%d children)",
+                              (int)k, n);
+            continue;
+        }
+        pick[np++] = (int)k;
+    }
+    scad_geom *r = np ? child_scope(ev, m->children_env, env, m->children, state,
+                                    CSG_OP_UNION, pick, np)
+                      : NULL;
+    free(pick);
+    vlist_free(&idx);
+    return r;
+}
+
+/* for / intersection_for: nested loops over the arguments, evaluated once
+ * in the caller's environment (as OpenSCAD does). */
+static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                     int k, scad_env *cur, const scad_state *state, gather *out)
+{
+    if (ev->aborted) return;
+    if (k == a->n) {
+        gather_add(ev, out, child_scope(ev, cur, cur, st->children, state, CSG_OP_UNION, NULL, 0));
+        return;
+    }
+    vlist items = {0};
+    if (iter_values(ev, a->v[k], a->locs[k], &items) > 0) {
+        for (int i = 0; i < items.n && !ev->aborted; i++) {
+            scad_env *ie = env_new(ev, cur, cur, NULL);
+            if (!ie) break;
+            if (a->names[k]) scad_env_set(ie, a->names[k], scad_value_ref(items.v[i]));
+            for_loop(ev, env, st, a, k + 1, ie, state, out);
+            env_free(ie);
+        }
+    }
+    vlist_free(&items);
+}
+
+static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                    const scad_state *state)
+{
+    const char *name = st->name;
+    if (strcmp(name, "if") == 0) {
+        scad_value c = scad_eval_expr(ev, env, st->cond);
+        int t = scad_value_truthy(c);
+        scad_value_drop(c);
+        return child_scope(ev, env, env, t ? st->children : st->else_children, state,
+                           CSG_OP_UNION, NULL, 0);
+    }
+    scad_env *def_env;
+    const scad_moddef *m = find_module(env, name, &def_env);
+    if (m) return call_module(ev, env, st, m, def_env, state);
+
+    if (strcmp(name, "let") == 0) {
+        scad_env *le = env_new(ev, env, env, NULL);
+        if (!le) return NULL;
+        assign_seq(ev, le, &st->args);
+        scad_geom *r = child_scope(ev, le, le, st->children, state, CSG_OP_UNION, NULL, 0);
+        env_free(le);
+        return r;
+    }
+    if (strcmp(name, "assert") == 0) {
+        if (check_assert(ev, env, &st->args, st->loc)) return NULL;
+        return scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    }
+    scad_builtin_mod bm = scad_builtin_module(name);
+    int control = !strcmp(name, "for") || !strcmp(name, "intersection_for") ||
+                  !strcmp(name, "echo") || !strcmp(name, "children");
+    if (!bm && !control) {
+        scad_diag_warning(ev->d, st->loc, "Ignoring unknown module '%s'", name);
+        return NULL;
+    }
+    scad_argv a;
+    if (eval_args(ev, env, &st->args, &a)) return NULL;
+    scad_geom *r = NULL;
+    if (ev->aborted) {
+        /* nothing */
+    } else if (!strcmp(name, "for") || !strcmp(name, "intersection_for")) {
+        gather g = {0};
+        for_loop(ev, env, st, &a, 0, env, state, &g);
+        r = finish(ev, &g, name[0] == 'f' ? CSG_OP_UNION : CSG_OP_INTERSECTION);
+    } else if (!strcmp(name, "echo")) {
+        echo_line(ev, &a);
+        r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    } else if (!strcmp(name, "children")) {
+        r = do_children(ev, env, st, &a, state);
+    } else {
+        r = bm(ev, env, st, &a, state);
+    }
+    argv_free(&a);
+    return r;
+}
+
+static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state)
+{
+    if (st->disable || ev->aborted) return NULL;
+    if (st->root) {
+        scad_state fresh;
+        memcpy(fresh.xf, csg_affine_identity, sizeof fresh.xf);
+        memset(&fresh.mat, 0, sizeof fresh.mat);
+        scad_geom *g = instantiate_plain(ev, env, st, &fresh);
+        if (!ev->has_root) {
+            ev->root = g;
+            ev->has_root = 1;
+        }
+        return NULL;
+    }
+    scad_geom *g = instantiate_plain(ev, env, st, state);
+    if (g && st->background) {
+        list_add(ev, &ev->backgrounds, &ev->nbackgrounds, &ev->capbackgrounds, g);
+        return NULL;
+    }
+    if (g && st->highlight) list_add(ev, &ev->highlights, &ev->nhighlights, &ev->caphighlights, g);
+    return g;
+}
+
+/* The file: its scope in env, top-level objects as an implicit union. */
+scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
+scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s)
+{
+    scad_state st;
+    memcpy(st.xf, csg_affine_identity, sizeof st.xf);
+    memset(&st.mat, 0, sizeof st.mat);
+    gather g = {0};
+    run_assignments(ev, env, s);
+    run_stmts(ev, env, s, &st, &g, NULL, 0);
+    return finish(ev, &g, CSG_OP_UNION);
+}
+
+/* Environment creation for scad.c (the builtin and file scopes). */
+scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
+scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs)
+{
+    return env_new(ev, parent, parent, defs);
+}
+void scad_env_free(scad_env *e);
+void scad_env_free(scad_env *e) { env_free(e); }

@@ -1,0 +1,148 @@
+/*
+ * eval.h — private to src/scad: the evaluator's state, environments, the
+ * geometry it builds, and the interface of the builtin functions and
+ * modules.
+ */
+#ifndef RAYSCAD_SCAD_EVAL_H
+#define RAYSCAD_SCAD_EVAL_H
+
+#include "value.h"
+
+/* ---- geometry ---------------------------------------------------------------
+ * The evaluator builds a light tree of scad_geom in its arena; at the end it
+ * is turned into csg nodes (a '#' subtree twice: in the model and in the
+ * highlight tree). */
+typedef struct scad_geom scad_geom;
+struct scad_geom {
+    int is_leaf;
+    csg_op op;
+    iv_shape shape;
+    csg_affine xf;
+    csg_material mat;
+    scad_geom **kids;
+    int n, cap;
+};
+
+/* What a subtree inherits: the accumulated world_from_object transform and
+ * the colour of the outermost color() (OpenSCAD 2021.01: the first color()
+ * met going down wins). */
+typedef struct scad_state {
+    csg_affine xf;
+    csg_material mat;
+} scad_state;
+
+/* ---- environments ----------------------------------------------------------- */
+
+typedef struct scad_var {
+    const char *name;
+    scad_value v;
+} scad_var;
+
+/* A context: variables, the definitions of a scope, lexical parent (for
+ * plain names, functions and modules) and dynamic parent (the caller, for
+ * $-variables).  A module call's context also knows its children. */
+struct scad_env {
+    scad_env *parent, *dyn;
+    const scad_scope *defs;
+    scad_var *vars;
+    int nvars, cap;
+    scad_var inline_vars[4];
+    int is_module;
+    const scad_scope *children;
+    scad_env *children_env;
+    int captured; /* a function literal refers to it: freed at the end */
+    scad_env *next_captured;
+};
+
+typedef struct scad_eval {
+    scad_diag *d;
+    scad_arena *arena; /* geometry */
+    int depth, max_depth;
+    int aborted; /* an error stopped the evaluation */
+    char *stack_base;
+    size_t stack_budget;
+    scad_env *captured;
+    unsigned long rand_state;
+    scad_geom *root; /* the first '!' subtree */
+    int has_root;
+    scad_geom **highlights;
+    int nhighlights, caphighlights;
+    scad_geom **backgrounds;
+    int nbackgrounds, capbackgrounds;
+} scad_eval;
+
+/* Evaluated call arguments: names[i] is NULL for positional ones. */
+typedef struct scad_argv {
+    scad_value *v;
+    const char **names;
+    scad_loc *locs;
+    int n;
+} scad_argv;
+
+scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e);
+/* Borrowed value of a variable; undef (with OpenSCAD's warning unless
+ * silent) when unknown.  *found tells which. */
+scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name,
+                           scad_loc loc, int silent, int *found);
+/* Set (or replace) a variable in env; takes ownership of v. */
+void scad_env_set(scad_env *env, const char *name, scad_value v);
+
+/* Bind call arguments to parameters, OpenSCAD style: defaults evaluated in
+ * def_env, then positional, then named arguments; $-named arguments are set
+ * even when not declared.  Warns like OpenSCAD about unknown names and extra
+ * positional arguments.  The values in argv are borrowed (referenced). */
+void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env,
+                    const scad_args *params, const scad_argv *argv, scad_loc loc);
+
+/* Error: reports "file:line:col: error: …" and stops the evaluation. */
+void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* ---- builtins --------------------------------------------------------------- */
+
+/* A builtin function; returns an owned value.  Arguments are borrowed. */
+typedef scad_value (*scad_builtin_fn)(scad_eval *ev, const scad_argv *a, scad_loc loc,
+                                      const char *name);
+/* The builtin function called name, or NULL. */
+scad_builtin_fn scad_builtin_function(const char *name);
+
+/* A builtin module: evaluates its children as it needs (through
+ * scad_eval_children) and returns the geometry (NULL: nothing). */
+typedef scad_geom *(*scad_builtin_mod)(scad_eval *ev, scad_env *env,
+                                       const scad_stmt *st, const scad_argv *a,
+                                       const scad_state *state);
+scad_builtin_mod scad_builtin_module(const char *name);
+
+/* Instantiate st's children in a fresh scope below env with the given state;
+ * returns them as one node (union of several, NULL if none). op selects how
+ * several children combine. */
+scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state, csg_op op);
+
+/* Geometry in the eval arena. */
+scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *state);
+scad_geom *scad_geom_op(scad_eval *ev, csg_op op);
+void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child);
+
+/* Looks up a named or positional argument: index pos (or -1 for named
+ * only).  Returns a borrowed value, undef when absent. */
+scad_value scad_argv_get(const scad_argv *a, const char *name, int pos);
+/* 1 when the argument is present (positional or named). */
+int scad_argv_given(const scad_argv *a, const char *name, int pos);
+/* Warn "variable x not specified as parameter" for names not in the list
+ * (NULL-terminated); $-names are accepted. */
+void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc,
+                          const char *const *known);
+
+/* Web colour by lower-case name; returns 1 and fills rgba (0..1) or 0. */
+int scad_color_by_name(const char *name, float rgba[4]);
+
+/* A number from a value: 1 when v is a finite-or-not number. */
+static inline int scad_to_num(scad_value v, double *out)
+{
+    if (v.kind != SV_NUM) return 0;
+    *out = v.u.num;
+    return 1;
+}
+
+#endif

@@ -1,0 +1,331 @@
+/*
+ * lex.c — the OpenSCAD tokeniser.
+ *
+ * One pass over the source text turns it into an array of scad_token in the
+ * parse's arena, ending with TK_EOF.  The array grows by doubling in the
+ * arena (old copies are simply abandoned there).  Each token records the
+ * line and column of its first character; columns count bytes from 1.
+ * Like flex in OpenSCAD's lexer.l the longest match wins, so "2x" is an
+ * identifier and "2e3" a number.  Errors (an unterminated string or comment,
+ * a stray character) are reported and lexing goes on.
+ */
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ast.h"
+
+typedef struct lexer {
+    scad_arena *a;
+    scad_diag *d;
+    const char *file;
+    const char *p;
+    int line, col;
+    scad_token *v;
+    int n, cap;
+    int failed;
+} lexer;
+
+static void advance(lexer *L, size_t k)
+{
+    while (k-- && *L->p) {
+        if (*L->p == '\n') {
+            L->line++;
+            L->col = 1;
+        } else {
+            L->col++;
+        }
+        L->p++;
+    }
+}
+
+static scad_token *push(lexer *L, scad_tok_kind kind, scad_loc loc)
+{
+    if (L->n == L->cap) {
+        int cap = L->cap ? L->cap * 2 : 256;
+        scad_token *v = scad_arena_alloc(L->a, sizeof *v * (size_t)cap);
+        if (!v) return NULL;
+        if (L->n) memcpy(v, L->v, sizeof *v * (size_t)L->n);
+        L->v = v;
+        L->cap = cap;
+    }
+    scad_token *t = &L->v[L->n++];
+    memset(t, 0, sizeof *t);
+    t->kind = kind;
+    t->loc = loc;
+    return t;
+}
+
+static int is_idch(int c) { return isalnum(c) || c == '_'; }
+
+static size_t number_length(const char *s)
+{
+    size_t i = 0, digits = 0;
+    while (isdigit((unsigned char)s[i])) i++, digits++;
+    if (s[i] == '.') {
+        size_t j = i + 1, frac = 0;
+        while (isdigit((unsigned char)s[j])) j++, frac++;
+        if (digits + frac == 0) return 0;
+        i = j;
+    } else if (digits == 0) {
+        return 0;
+    }
+    if (s[i] == 'e' || s[i] == 'E') {
+        size_t j = i + 1;
+        if (s[j] == '+' || s[j] == '-') j++;
+        if (isdigit((unsigned char)s[j])) {
+            while (isdigit((unsigned char)s[j])) j++;
+            i = j;
+        }
+    }
+    return i;
+}
+
+static int hexval(int c)
+{
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+static size_t put_utf8(char *o, unsigned long cp)
+{
+    if (cp < 0x80) {
+        o[0] = (char)cp;
+        return 1;
+    }
+    if (cp < 0x800) {
+        o[0] = (char)(0xC0 | (cp >> 6));
+        o[1] = (char)(0x80 | (cp & 0x3F));
+        return 2;
+    }
+    if (cp < 0x10000) {
+        o[0] = (char)(0xE0 | (cp >> 12));
+        o[1] = (char)(0x80 | ((cp >> 6) & 0x3F));
+        o[2] = (char)(0x80 | (cp & 0x3F));
+        return 3;
+    }
+    o[0] = (char)(0xF0 | (cp >> 18));
+    o[1] = (char)(0x80 | ((cp >> 12) & 0x3F));
+    o[2] = (char)(0x80 | ((cp >> 6) & 0x3F));
+    o[3] = (char)(0x80 | (cp & 0x3F));
+    return 4;
+}
+
+/* A string literal starting at the opening quote. */
+static void lex_string(lexer *L, scad_loc loc)
+{
+    const char *s = L->p + 1;
+    size_t cap = 0;
+    while (s[cap] && s[cap] != '"') cap += (s[cap] == '\\' && s[cap + 1]) ? 2 : 1;
+    char *buf = scad_arena_alloc(L->a, cap + 8);
+    if (!buf) {
+        L->failed = 1;
+        return;
+    }
+    size_t n = 0;
+    advance(L, 1);
+    for (;;) {
+        char c = *L->p;
+        if (c == 0) {
+            scad_diag_error(L->d, loc, "unterminated string");
+            L->failed = 1;
+            break;
+        }
+        if (c == '"') {
+            advance(L, 1);
+            break;
+        }
+        if (c != '\\') {
+            buf[n++] = c;
+            advance(L, 1);
+            continue;
+        }
+        char e = L->p[1];
+        size_t used = 2;
+        switch (e) {
+        case 'n': buf[n++] = '\n'; break;
+        case 't': buf[n++] = '\t'; break;
+        case 'r': buf[n++] = '\r'; break;
+        case '\\': buf[n++] = '\\'; break;
+        case '"': buf[n++] = '"'; break;
+        case 'x': {
+            int h1 = hexval(L->p[2]), h2 = h1 >= 0 ? hexval(L->p[3]) : -1;
+            if (h1 >= 0 && h1 <= 7 && h2 >= 0) {
+                buf[n++] = (char)(h1 * 16 + h2);
+                used = 4;
+            } else {
+                buf[n++] = 'x';
+            }
+            break;
+        }
+        case 'u':
+        case 'U': {
+            int want = e == 'u' ? 4 : 6, k;
+            unsigned long cp = 0;
+            for (k = 0; k < want; k++) {
+                int h = hexval(L->p[2 + k]);
+                if (h < 0) break;
+                cp = cp * 16 + (unsigned long)h;
+            }
+            if (k == want && cp != 0 && cp <= 0x10FFFF) {
+                n += put_utf8(buf + n, cp);
+                used = 2 + (size_t)want;
+            } else {
+                buf[n++] = e;
+            }
+            break;
+        }
+        case 0: used = 1; break;
+        default: buf[n++] = e; break;
+        }
+        advance(L, used);
+    }
+    buf[n] = 0;
+    scad_token *t = push(L, TK_STRING, loc);
+    if (!t) {
+        L->failed = 1;
+        return;
+    }
+    t->text = buf;
+    t->len = n;
+}
+
+static const struct {
+    const char *word;
+    scad_tok_kind kind;
+} keywords[] = {
+    {"module", TK_MODULE}, {"function", TK_FUNCTION}, {"if", TK_IF},
+    {"else", TK_ELSE},     {"for", TK_FOR},           {"let", TK_LET},
+    {"assert", TK_ASSERT}, {"echo", TK_ECHO},         {"each", TK_EACH},
+    {"true", TK_TRUE},     {"false", TK_FALSE},       {"undef", TK_UNDEF},
+};
+
+/* include <path> / use <path>: returns 1 when one was lexed. */
+static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kind)
+{
+    const char *q = L->p + wordlen;
+    while (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n') q++;
+    if (*q != '<') return 0;
+    const char *end = strchr(q, '>');
+    if (!end || memchr(q, '\n', (size_t)(end - q))) {
+        scad_diag_error(L->d, loc, "unterminated file name after '%s'",
+                        kind == TK_USE ? "use" : "include");
+        advance(L, (size_t)(q - L->p) + 1);
+        return 1;
+    }
+    scad_token *t = push(L, kind, loc);
+    if (!t) {
+        L->failed = 1;
+        return 1;
+    }
+    t->text = scad_arena_strndup(L->a, q + 1, (size_t)(end - q - 1));
+    t->len = (size_t)(end - q - 1);
+    advance(L, (size_t)(end - L->p) + 1);
+    return 1;
+}
+
+int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
+             scad_token **out)
+{
+    lexer L = {a, d, file, src, 1, 1, NULL, 0, 0, 0};
+    while (!L.failed) {
+        char c = *L.p;
+        scad_loc loc = {file, L.line, L.col};
+        if (c == 0) break;
+        if (isspace((unsigned char)c)) {
+            advance(&L, 1);
+            continue;
+        }
+        if (c == '/' && L.p[1] == '/') {
+            while (*L.p && *L.p != '\n') advance(&L, 1);
+            continue;
+        }
+        if (c == '/' && L.p[1] == '*') {
+            const char *end = strstr(L.p + 2, "*/");
+            if (!end) {
+                scad_diag_error(d, loc, "unterminated comment");
+                advance(&L, strlen(L.p));
+                break;
+            }
+            advance(&L, (size_t)(end - L.p) + 2);
+            continue;
+        }
+        if (c == '"') {
+            lex_string(&L, loc);
+            continue;
+        }
+        size_t nl = number_length(L.p);
+        size_t il = 0;
+        if (c == '$') {
+            il = 1;
+            while (is_idch((unsigned char)L.p[il])) il++;
+            if (il == 1) il = 0;
+        } else {
+            while (is_idch((unsigned char)L.p[il])) il++;
+        }
+        if (nl > 0 && nl >= il) {
+            scad_token *t = push(&L, TK_NUMBER, loc);
+            if (!t) break;
+            char tmp[128];
+            size_t k = nl < sizeof tmp - 1 ? nl : sizeof tmp - 1;
+            memcpy(tmp, L.p, k);
+            tmp[k] = 0;
+            t->num = strtod(tmp, NULL);
+            advance(&L, nl);
+            continue;
+        }
+        if (il > 0) {
+            scad_tok_kind kind = TK_ID;
+            for (size_t k = 0; k < sizeof keywords / sizeof keywords[0]; k++)
+                if (strlen(keywords[k].word) == il &&
+                    memcmp(keywords[k].word, L.p, il) == 0)
+                    kind = keywords[k].kind;
+            if (il == 7 && memcmp(L.p, "include", 7) == 0 &&
+                lex_include(&L, loc, 7, TK_INCLUDE))
+                continue;
+            if (il == 3 && memcmp(L.p, "use", 3) == 0 &&
+                lex_include(&L, loc, 3, TK_USE))
+                continue;
+            scad_token *t = push(&L, kind, loc);
+            if (!t) break;
+            t->text = scad_arena_strndup(a, L.p, il);
+            t->len = il;
+            advance(&L, il);
+            continue;
+        }
+        static const struct {
+            char s[3];
+            scad_tok_kind kind;
+        } two[] = {{"<=", TK_LE}, {">=", TK_GE}, {"==", TK_EQ},
+                   {"!=", TK_NE}, {"&&", TK_AND}, {"||", TK_OR}};
+        int done = 0;
+        for (size_t k = 0; k < sizeof two / sizeof two[0]; k++) {
+            if (c == two[k].s[0] && L.p[1] == two[k].s[1]) {
+                if (!push(&L, two[k].kind, loc)) L.failed = 1;
+                advance(&L, 2);
+                done = 1;
+                break;
+            }
+        }
+        if (done) continue;
+        if (strchr("+-*/%^<>!?:=.,;()[]{}#", c)) {
+            scad_token *t = push(&L, TK_CHAR, loc);
+            if (!t) break;
+            t->ch = c;
+            advance(&L, 1);
+            continue;
+        }
+        scad_diag_error(d, loc, "unexpected character '%c'",
+                        isprint((unsigned char)c) ? c : '?');
+        advance(&L, 1);
+    }
+    scad_loc loc = {file, L.line, L.col};
+    if (!push(&L, TK_EOF, loc)) {
+        *out = NULL;
+        return 0;
+    }
+    *out = L.v;
+    return L.n;
+}

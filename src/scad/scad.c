@@ -1,0 +1,304 @@
+/*
+ * scad.c — the public entry points (scad.h): read, parse, apply -D
+ * overrides, evaluate, and turn the evaluator's geometry into csg trees.
+ *
+ * The parse owns its AST in one arena and the evaluation its geometry in
+ * another; both are freed before returning, so the caller owns nothing but
+ * the csg trees in the result.  Evaluation runs on its own thread with a
+ * large stack (EVAL_STACK bytes, reserved, not committed), so that deep but
+ * legal recursion never depends on the caller's stack; the evaluator stops
+ * with a named error well before that stack is used up.
+ */
+#include <errno.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+#include "eval.h"
+
+enum { DEFAULT_MAX_RECURSION = 10000 };
+#define EVAL_STACK ((size_t)1 << 30)
+#define STACK_MARGIN ((size_t)64 << 20)
+
+scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
+scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
+void scad_env_free(scad_env *e);
+void scad_eval_free_captured(scad_eval *ev);
+
+char *scad_read_file(scad_arena *a, const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    size_t cap = 65536, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        size_t got = fread(buf + n, 1, cap - n - 1, f);
+        n += got;
+        if (got == 0) break;
+        if (n + 1 == cap) {
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+    }
+    int err = ferror(f);
+    fclose(f);
+    if (!buf || err) {
+        free(buf);
+        return NULL;
+    }
+    char *out = scad_arena_strndup(a, buf, n);
+    free(buf);
+    return out;
+}
+
+/* ---- geometry → csg ------------------------------------------------------------ */
+
+static csg_node *to_csg(const scad_geom *g, int *oom)
+{
+    if (!g || *oom) return NULL;
+    if (g->is_leaf) {
+        csg_node *n = csg_node_shape(&g->shape, g->xf, &g->mat);
+        if (!n) *oom = 1;
+        return n;
+    }
+    csg_node *n = csg_node_op(g->op);
+    if (!n) {
+        *oom = 1;
+        return NULL;
+    }
+    for (int i = 0; i < g->n; i++) {
+        csg_node *k = to_csg(g->kids[i], oom);
+        if (k && csg_node_add(n, k)) *oom = 1;
+    }
+    return n;
+}
+
+static csg_node *list_to_csg(scad_geom **v, int n, int *oom)
+{
+    if (n == 0) return NULL;
+    if (n == 1) return to_csg(v[0], oom);
+    csg_node *u = csg_node_op(CSG_OP_UNION);
+    if (!u) {
+        *oom = 1;
+        return NULL;
+    }
+    for (int i = 0; i < n; i++) {
+        csg_node *k = to_csg(v[i], oom);
+        if (k && csg_node_add(u, k)) *oom = 1;
+    }
+    return u;
+}
+
+/* ---- evaluation ------------------------------------------------------------------ */
+
+typedef struct job {
+    const scad_options *opt;
+    scad_diag *d;
+    scad_scope *top;
+    scad_result *out;
+    size_t stack_size;
+    int status;
+} job;
+
+static void set_num(scad_env *e, const char *name, double x) { scad_env_set(e, name, scad_num(x)); }
+
+static void set_vec3(scad_env *e, const char *name, double x, double y, double z)
+{
+    scad_value v = scad_vec_new(3);
+    if (v.kind == SV_VEC) {
+        v.u.vec->v[0] = scad_num(x);
+        v.u.vec->v[1] = scad_num(y);
+        v.u.vec->v[2] = scad_num(z);
+    }
+    scad_env_set(e, name, v);
+}
+
+static void run_job(job *j)
+{
+    char base;
+    scad_eval ev;
+    memset(&ev, 0, sizeof ev);
+    ev.d = j->d;
+    ev.arena = scad_arena_new();
+    ev.max_depth = j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion
+                                                         : DEFAULT_MAX_RECURSION;
+    ev.stack_base = &base;
+    ev.stack_budget = j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN
+                                                       : j->stack_size / 2;
+    ev.rand_state = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
+    j->status = -1;
+    if (!ev.arena) {
+        scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
+        return;
+    }
+    scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
+    scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
+    if (file) {
+        set_num(builtins, "PI", 3.14159265358979323846);
+        set_num(builtins, "$fn", 0);
+        set_num(builtins, "$fa", 12);
+        set_num(builtins, "$fs", 2);
+        set_num(builtins, "$t", 0);
+        scad_env_set(builtins, "$preview", scad_bool(1));
+        set_num(builtins, "$vpd", 500);
+        set_vec3(builtins, "$vpr", 0, 0, 0);
+        set_vec3(builtins, "$vpt", 0, 0, 0);
+        scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
+        if (!ev.aborted) {
+            int oom = 0;
+            if (ev.has_root) model = ev.root;
+            j->out->model = to_csg(model, &oom);
+            j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, &oom);
+            j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, &oom);
+            if (oom) {
+                scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
+                scad_result_free(j->out);
+            } else {
+                j->status = 0;
+            }
+        }
+    }
+    scad_env_free(file);
+    scad_env_free(builtins);
+    scad_eval_free_captured(&ev);
+    free(ev.highlights);
+    free(ev.backgrounds);
+    scad_arena_free(ev.arena);
+}
+
+static void *job_thread(void *p)
+{
+    run_job(p);
+    return NULL;
+}
+
+/* ---- -D overrides ------------------------------------------------------------------ */
+
+static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const scad_options *opt)
+{
+    if (!opt) return 0;
+    for (int i = 0; i < opt->define_count; i++) {
+        const char *def = opt->defines[i];
+        size_t n = strlen(def);
+        char *src = scad_arena_alloc(a, n + 2);
+        if (!src) return -1;
+        memcpy(src, def, n);
+        src[n] = ';';
+        scad_scope *s = scad_parse(a, d, "<-D>", src);
+        if (!s) return -1;
+        if (s->nassigns != 1 || s->nstmts || s->nmods || s->nfuncs) {
+            scad_diag_error(d, (scad_loc){"<-D>", 1, 1}, "-D expects name=value, got '%s'", def);
+            return -1;
+        }
+        scad_assign *as = &s->assigns[0];
+        int k;
+        for (k = 0; k < top->nassigns; k++)
+            if (strcmp(top->assigns[k].name, as->name) == 0) break;
+        if (k < top->nassigns) {
+            top->assigns[k].value = as->value;
+            continue;
+        }
+        scad_assign *nv = scad_arena_alloc(a, sizeof *nv * (size_t)(top->nassigns + 1));
+        if (!nv) return -1;
+        if (top->nassigns) memcpy(nv, top->assigns, sizeof *nv * (size_t)top->nassigns);
+        nv[top->nassigns] = *as;
+        top->assigns = nv;
+        top->nassigns++;
+        top->capassigns = top->nassigns;
+    }
+    return 0;
+}
+
+/* ---- public ----------------------------------------------------------------------- */
+
+static int eval_source(const char *name, const char *src, scad_arena *a,
+                       const scad_options *opt, scad_result *out)
+{
+    scad_diag d;
+    memset(&d, 0, sizeof d);
+    d.opt = opt;
+    const char *slash = strrchr(name, '/');
+    d.base_dir = slash ? scad_arena_strndup(a, name, (size_t)(slash - name + 1)) : "";
+    scad_scope *top = scad_parse(a, &d, name, src);
+    if (!top) {
+        if (d.errors == 0) scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
+        return -1;
+    }
+    if (apply_defines(a, &d, top, opt)) {
+        if (d.errors == 0) scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
+        return -1;
+    }
+    job j = {opt, &d, top, out, EVAL_STACK, -1};
+    pthread_attr_t attr;
+    pthread_t th;
+    int started = 0;
+    if (pthread_attr_init(&attr) == 0) {
+        if (pthread_attr_setstacksize(&attr, EVAL_STACK) == 0 &&
+            pthread_create(&th, &attr, job_thread, &j) == 0)
+            started = 1;
+        pthread_attr_destroy(&attr);
+    }
+    if (started) {
+        pthread_join(th, NULL);
+    } else {
+        /* No thread: use the caller's stack, with a budget from its limit. */
+        struct rlimit rl;
+        size_t lim = (size_t)8 << 20;
+        if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+            rl.rlim_cur < lim)
+            lim = (size_t)rl.rlim_cur;
+        j.stack_size = lim / 2;
+        run_job(&j);
+    }
+    out->warnings = d.warnings;
+    if (j.status != 0) scad_result_free(out);
+    return j.status;
+}
+
+int scad_eval_string(const char *name, const char *src, const scad_options *opt,
+                     scad_result *out)
+{
+    memset(out, 0, sizeof *out);
+    scad_arena *a = scad_arena_new();
+    if (!a) return -1;
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out);
+    scad_arena_free(a);
+    return r;
+}
+
+int scad_eval_file(const char *path, const scad_options *opt, scad_result *out)
+{
+    memset(out, 0, sizeof *out);
+    scad_arena *a = scad_arena_new();
+    if (!a) return -1;
+    char *src = scad_read_file(a, path);
+    if (!src) {
+        scad_diag d;
+        memset(&d, 0, sizeof d);
+        d.opt = opt;
+        scad_diag_error(&d, (scad_loc){path, 1, 1}, "cannot read file: %s", strerror(errno));
+        scad_arena_free(a);
+        return -1;
+    }
+    int r = eval_source(path, src, a, opt, out);
+    scad_arena_free(a);
+    return r;
+}
+
+void scad_result_free(scad_result *r)
+{
+    if (!r) return;
+    csg_node_free(r->model);
+    csg_node_free(r->highlight);
+    csg_node_free(r->background);
+    r->model = r->highlight = r->background = NULL;
+}
