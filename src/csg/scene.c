@@ -1,0 +1,380 @@
+/*
+ * scene.c — commit: turn builder trees into the read-only flat scene.
+ *
+ * Commit runs in two non-recursive passes over each root.  The first is a
+ * post-order walk (parents found through `link`, progress kept in `visit`)
+ * that simplifies bottom-up: leaves with a singular transform or an empty
+ * shape vanish; empty operands are removed by the rules of each operation
+ * (an empty operand empties an intersection, and a difference whose first
+ * operand is empty); nested unions and intersections are spliced into their
+ * parent, as are a difference's leading difference and subtracted unions
+ * (a − (b ∪ c) = a − b − c); subtracted operands whose bounds miss the first
+ * operand's are dropped; an operation left with one operand becomes that
+ * operand.  Every surviving node then holds its world bounds, subtree size
+ * and depth.  The second pass lays the nodes out in pre-order in one array
+ * (csg_internal.h) and moves leaves into the primitive arrays.
+ *
+ * The invariant the scene keeps for csg_trace: every point of a node's solid
+ * lies inside that node's bounds, which are padded outward so that rounding
+ * in the ray–box test can never reject a ray that the exact shape test
+ * would hit.
+ */
+#include "csg_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Relative padding of bounds.  Object-space hits and world-space box tests
+ * round differently; their disagreement is a few ulps of the coordinates
+ * (~1e-16 relative), so 1e-9 is far outside it and far below anything
+ * visible. */
+#define BOUNDS_PAD 1e-9
+
+static void pad_bounds(double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        double m = fmax(fabs(lo[k]), fabs(hi[k]));
+        if (!isfinite(m)) m = isfinite(lo[k]) ? fabs(lo[k]) : isfinite(hi[k]) ? fabs(hi[k]) : 0;
+        double e = BOUNDS_PAD * m + 1e-300;
+        lo[k] -= e; /* ±inf stays ±inf */
+        hi[k] += e;
+    }
+}
+
+/* World bounds of a leaf: the AABB of the transformed object box, computed
+ * per axis as t_i + Σ_j m_ij·[lo_j, hi_j] (Arvo 1990), which equals the box
+ * of the 8 transformed corners.  A zero coefficient contributes exactly 0, so
+ * an infinite object extent only spreads to the world axes it maps onto
+ * (no 0·inf = NaN). */
+static void leaf_bounds(const csg_affine m, const double lo[3], const double hi[3], double wlo[3],
+                        double whi[3])
+{
+    for (int i = 0; i < 3; i++) {
+        double a = m[4 * i + 3], b = m[4 * i + 3];
+        for (int j = 0; j < 3; j++) {
+            double c = m[4 * i + j];
+            if (c == 0) continue;
+            double x = c * lo[j], y = c * hi[j];
+            a += fmin(x, y);
+            b += fmax(x, y);
+        }
+        wlo[i] = a;
+        whi[i] = b;
+    }
+}
+
+static void free_shell(csg_node *n)
+{
+    free(n->kids);
+    free(n);
+}
+
+static int overlaps(const csg_node *a, const csg_node *b)
+{
+    for (int k = 0; k < 3; k++)
+        if (a->hi[k] < b->lo[k] || b->hi[k] < a->lo[k]) return 0;
+    return 1;
+}
+
+/* Whether kid's own children can replace it in an `op` node at position i. */
+static int splices(csg_op op, int i, const csg_node *kid)
+{
+    if (kid->is_leaf) return 0;
+    switch (op) {
+    case CSG_OP_UNION:
+        return kid->op == CSG_OP_UNION;
+    case CSG_OP_INTERSECTION:
+        return kid->op == CSG_OP_INTERSECTION;
+    case CSG_OP_DIFFERENCE:
+        return i == 0 ? kid->op == CSG_OP_DIFFERENCE : kid->op == CSG_OP_UNION;
+    }
+    return 0;
+}
+
+/* Simplify op node x whose children are already simplified (NULL = empty).
+ * Returns what replaces x (x itself, one of its children, or NULL) and frees
+ * whatever is no longer used. */
+static csg_node *finish_op(csg_node *x)
+{
+    const csg_op op = x->op;
+    if (x->nkids == 0 || (op == CSG_OP_DIFFERENCE && !x->kids[0])) {
+        csg_node_free(x);
+        return NULL;
+    }
+    if (op == CSG_OP_INTERSECTION) {
+        for (int i = 0; i < x->nkids; i++) {
+            if (!x->kids[i]) {
+                csg_node_free(x);
+                return NULL;
+            }
+        }
+    }
+    /* Splice into a fresh array when memory allows; otherwise keep the
+     * nesting (correct, just deeper) and only squeeze out the NULLs. */
+    int total = 0;
+    for (int i = 0; i < x->nkids; i++)
+        if (x->kids[i]) total += splices(op, i, x->kids[i]) ? x->kids[i]->nkids : 1;
+    csg_node **flat = total > 0 ? malloc((size_t)total * sizeof *flat) : NULL;
+    int n = 0;
+    if (flat) {
+        for (int i = 0; i < x->nkids; i++) {
+            csg_node *k = x->kids[i];
+            if (!k) continue;
+            if (splices(op, i, k)) {
+                memcpy(flat + n, k->kids, (size_t)k->nkids * sizeof *flat);
+                n += k->nkids;
+                free_shell(k);
+            } else {
+                flat[n++] = k;
+            }
+        }
+        free(x->kids);
+        x->kids = flat;
+        x->cap = total;
+    } else {
+        for (int i = 0; i < x->nkids; i++)
+            if (x->kids[i]) x->kids[n++] = x->kids[i];
+    }
+    x->nkids = n;
+    if (n == 0) {
+        csg_node_free(x);
+        return NULL;
+    }
+    /* Bounds, and operands that bounds prove irrelevant. */
+    csg_node *first = x->kids[0];
+    memcpy(x->lo, first->lo, sizeof x->lo);
+    memcpy(x->hi, first->hi, sizeof x->hi);
+    if (op == CSG_OP_DIFFERENCE) {
+        int m = 1;
+        for (int i = 1; i < n; i++) {
+            if (overlaps(first, x->kids[i]))
+                x->kids[m++] = x->kids[i];
+            else
+                csg_node_free(x->kids[i]);
+        }
+        n = x->nkids = m;
+    } else {
+        for (int i = 1; i < n; i++) {
+            const csg_node *k = x->kids[i];
+            for (int a = 0; a < 3; a++) {
+                if (op == CSG_OP_UNION) {
+                    x->lo[a] = fmin(x->lo[a], k->lo[a]);
+                    x->hi[a] = fmax(x->hi[a], k->hi[a]);
+                } else {
+                    x->lo[a] = fmax(x->lo[a], k->lo[a]);
+                    x->hi[a] = fmin(x->hi[a], k->hi[a]);
+                }
+            }
+        }
+        if (op == CSG_OP_INTERSECTION) {
+            for (int a = 0; a < 3; a++) {
+                if (x->lo[a] > x->hi[a]) { /* disjoint operands */
+                    csg_node_free(x);
+                    return NULL;
+                }
+            }
+        }
+    }
+    if (n == 1) {
+        x->nkids = 0;
+        free_shell(x);
+        return first;
+    }
+    x->size = 1;
+    x->leaves = 0;
+    x->depth = 0;
+    for (int i = 0; i < n; i++) {
+        x->size += x->kids[i]->size;
+        x->leaves += x->kids[i]->leaves;
+        if (x->kids[i]->depth > x->depth) x->depth = x->kids[i]->depth;
+    }
+    x->depth += 1;
+    return x;
+}
+
+static csg_node *finish_leaf(csg_node *x)
+{
+    double lo[3], hi[3];
+    if (csg_affine_invert(x->world_from_object, x->object_from_world) != 0 ||
+        iv_shape_bounds(&x->shape, lo, hi) != 0) {
+        csg_node_free(x);
+        return NULL;
+    }
+    leaf_bounds(x->world_from_object, lo, hi, x->lo, x->hi);
+    pad_bounds(x->lo, x->hi);
+    x->size = x->leaves = x->depth = 1;
+    return x;
+}
+
+/* Post-order without recursion: descend through unvisited children, setting
+ * each child's `link` to its parent; when a node's children are done,
+ * finish it and store the replacement in the parent's slot. */
+static csg_node *simplify(csg_node *root)
+{
+    if (!root) return NULL;
+    root->link = NULL;
+    root->visit = 0;
+    csg_node *x = root;
+    for (;;) {
+        if (!x->is_leaf && x->visit < x->nkids) {
+            csg_node *c = x->kids[x->visit];
+            if (c) {
+                c->link = x;
+                c->visit = 0;
+                x = c;
+            } else {
+                x->visit++;
+            }
+            continue;
+        }
+        csg_node *parent = x->link;
+        csg_node *r = x->is_leaf ? finish_leaf(x) : finish_op(x);
+        if (!parent) return r;
+        parent->kids[parent->visit++] = r;
+        x = parent;
+    }
+}
+
+/* Lay out a simplified tree in pre-order from node index `at` and primitive
+ * index `*prim`, freeing the builder nodes.  Uses `link` as the stack. */
+static void flatten(csg_scene *s, csg_node *root, int at, int *prim)
+{
+    root->link = NULL;
+    csg_node *stack = root;
+    while (stack) {
+        csg_node *x = stack;
+        stack = x->link;
+        csg_fnode *f = &s->nodes[at];
+        memcpy(f->lo, x->lo, sizeof f->lo);
+        memcpy(f->hi, x->hi, sizeof f->hi);
+        f->next = at + x->size;
+        if (x->is_leaf) {
+            int p = (*prim)++;
+            f->op = FNODE_LEAF;
+            f->prim = p;
+            csg_prim *hot = &s->prims[p];
+            csg_prim_cold *cold = &s->cold[p];
+            memcpy(hot->object_from_world, x->object_from_world, sizeof(csg_affine));
+            hot->shape = x->shape;
+            /* Normals map by the inverse transpose of world_from_object's
+             * linear part, which is the transpose of object_from_world's. */
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    cold->normal_from_object[3 * i + j] = x->object_from_world[4 * j + i];
+            cold->material = x->material;
+        } else {
+            f->op = (uint8_t)x->op;
+            f->prim = -1;
+            /* Push in reverse so the first child is laid out next. */
+            for (int i = x->nkids - 1; i >= 0; i--) {
+                x->kids[i]->link = stack;
+                stack = x->kids[i];
+            }
+        }
+        at++;
+        free_shell(x);
+    }
+}
+
+csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
+{
+    csg_scene *s = calloc(1, sizeof *s);
+    if (s && n > 0) s->roots = malloc((size_t)n * sizeof *s->roots);
+    if (!s || (n > 0 && !s->roots)) {
+        for (int r = 0; r < n; r++)
+            csg_node_free(roots[r]);
+        free(s);
+        if (err && errlen) snprintf(err, errlen, "out of memory committing the scene");
+        return NULL;
+    }
+    s->nroots = n;
+    s->cull = 1;
+    long nodes = 0, prims = 0;
+    for (int r = 0; r < n; r++) {
+        roots[r] = simplify(roots[r]);
+        if (roots[r]) {
+            nodes += roots[r]->size;
+            prims += roots[r]->leaves;
+            if (roots[r]->depth > s->max_depth) s->max_depth = roots[r]->depth;
+        }
+    }
+    if (nodes > INT32_MAX) {
+        for (int r = 0; r < n; r++)
+            csg_node_free(roots[r]);
+        free(s->roots);
+        free(s);
+        if (err && errlen) snprintf(err, errlen, "scene has more than %ld nodes", (long)INT32_MAX);
+        return NULL;
+    }
+    s->nodes = malloc((size_t)(nodes ? nodes : 1) * sizeof *s->nodes);
+    s->prims = malloc((size_t)(prims ? prims : 1) * sizeof *s->prims);
+    s->cold = malloc((size_t)(prims ? prims : 1) * sizeof *s->cold);
+    if (!s->nodes || !s->prims || !s->cold) {
+        for (int r = 0; r < n; r++)
+            csg_node_free(roots[r]);
+        csg_scene_free(s);
+        if (err && errlen) snprintf(err, errlen, "out of memory committing the scene");
+        return NULL;
+    }
+    int at = 0, prim = 0;
+    for (int r = 0; r < n; r++) {
+        if (!roots[r]) {
+            s->roots[r] = -1;
+            continue;
+        }
+        s->roots[r] = at;
+        int size = roots[r]->size;
+        flatten(s, roots[r], at, &prim);
+        roots[r] = NULL;
+        at += size;
+    }
+    s->nnodes = at;
+    s->nprims = prim;
+    return s;
+}
+
+void csg_scene_free(csg_scene *s)
+{
+    if (!s) return;
+    free(s->nodes);
+    free(s->prims);
+    free(s->cold);
+    free(s->roots);
+    free(s);
+}
+
+void csg_scene_set_cull(csg_scene *s, int on)
+{
+    s->cull = on;
+}
+
+int csg_scene_root_count(const csg_scene *s)
+{
+    return s->nroots;
+}
+
+int csg_scene_prim_count(const csg_scene *s)
+{
+    return s->nprims;
+}
+
+int csg_scene_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
+{
+    if (r < 0 || r >= s->nroots || s->roots[r] < 0) return -1;
+    const csg_fnode *f = &s->nodes[s->roots[r]];
+    memcpy(lo, f->lo, sizeof f->lo);
+    memcpy(hi, f->hi, sizeof f->hi);
+    return 0;
+}
+
+static const csg_material default_material = {{1, 1, 1, 1}, 0};
+
+const csg_material *csg_scene_material(const csg_scene *s, int32_t prim)
+{
+    /* A clip boundary (IV_PRIM_NONE) has no primitive; it gets the
+     * uncoloured default rather than a NULL the caller would trip on. */
+    if (prim < 0 || prim >= s->nprims) return &default_material;
+    return &s->cold[prim].material;
+}

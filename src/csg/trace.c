@@ -1,0 +1,230 @@
+/*
+ * trace.c — one ray through a committed scene: csg_trace and the normals.
+ *
+ * Evaluation is a post-order walk of the flat pre-order node array driven by
+ * an explicit stack of frames (one per open operation), so its depth is
+ * limited by arena memory, never by the C stack: there is no depth limit.
+ * Lists live on a second stack, an array of spans from the arena: a frame's
+ * accumulated list sits at `base`, the child being evaluated is written right
+ * after it, and a merge writes past both and is copied back to `base`.  The
+ * spans of disjoint subtrees never exceed their leaf count, so this array
+ * stays within twice the number of primitives the ray meets.
+ *
+ * Invariant: a subtree evaluated for the range [t0, t1] yields exactly its
+ * true interval list clipped to [t0, t1].  That is what lets a node whose
+ * bounds the segment misses return the empty list, and lets the operands of
+ * an intersection or difference after the first be evaluated only over the
+ * extent of the list accumulated so far (nothing outside it can matter).
+ * Clip boundaries (prim = IV_PRIM_NONE) made at such a narrowed range fall
+ * on a boundary of the accumulated list, which the merges prefer at equal t,
+ * so only the root range [tmin, tmax] ever shows up as a clip in a result.
+ */
+#include "csg_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+typedef struct frame {
+    int32_t node;   /* the op node */
+    int32_t cursor; /* the child being evaluated */
+    int32_t base;   /* span-stack index of the accumulated list */
+    int32_t nacc;   /* its length; -1 before the first child is done */
+    double t0, t1;  /* the range this op was asked for */
+} frame;
+
+typedef struct ray {
+    const csg_scene *s;
+    double o[3], d[3], inv[3];
+    iv_arena *a;
+    iv_span *sp; /* the span stack */
+    int cap;
+} ray;
+
+/* Make room for `need` spans, keeping the first `live`. */
+static int reserve(ray *r, long need, int live)
+{
+    if (need <= r->cap) return 0;
+    long cap = 2L * r->cap;
+    if (cap < need) cap = need;
+    if (cap > INT32_MAX) return -1;
+    iv_span *v = iv_arena_alloc(r->a, (size_t)cap * sizeof *v);
+    if (!v) return -1;
+    if (live > 0) memcpy(v, r->sp, (size_t)live * sizeof *v);
+    r->sp = v;
+    r->cap = (int)cap;
+    return 0;
+}
+
+/* Whether the segment t in [t0, t1] of the ray meets the node's box.  The
+ * slab products may be NaN (a bound plane through o with a subnormal d,
+ * giving 0·inf); every comparison with NaN is false, so such a slab narrows
+ * nothing and the test errs on the side of "hit". */
+static int hits_box(const ray *r, const csg_fnode *n, double t0, double t1)
+{
+    for (int k = 0; k < 3; k++) {
+        if (r->d[k] == 0) {
+            if (r->o[k] < n->lo[k] || r->o[k] > n->hi[k]) return 0;
+            continue;
+        }
+        double ta = (n->lo[k] - r->o[k]) * r->inv[k];
+        double tb = (n->hi[k] - r->o[k]) * r->inv[k];
+        if (r->inv[k] < 0) {
+            double tt = ta;
+            ta = tb;
+            tb = tt;
+        }
+        if (ta > t0) t0 = ta;
+        if (tb < t1) t1 = tb;
+    }
+    return t0 <= t1;
+}
+
+/* A leaf's list, clipped to [t0, t1], written at span index `at`. */
+static int trace_leaf(const ray *r, int32_t prim, double t0, double t1, int at)
+{
+    const csg_prim *p = &r->s->prims[prim];
+    double o[3], d[3];
+    /* Map the ray, not the shape, and do not normalise d: t then means the
+     * same point in both spaces. */
+    csg_affine_point(p->object_from_world, r->o, o);
+    csg_affine_vector(p->object_from_world, r->d, d);
+    iv_list l = {r->sp + at, 0, 1};
+    iv_shape_intersect(&p->shape, o, d, prim, &l);
+    iv_list_clip(&l, t0, t1);
+    return l.n;
+}
+
+int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
+              double tmax, iv_arena *a, iv_list *out)
+{
+    out->v = NULL;
+    out->n = out->cap = 0;
+    if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
+    ray r = {.s = s, .a = a, .sp = NULL, .cap = 0};
+    for (int k = 0; k < 3; k++) {
+        r.o[k] = o[k];
+        r.d[k] = d[k];
+        r.inv[k] = 1 / d[k]; /* ±inf when d[k] = ±0; hits_box never uses it then */
+    }
+    frame *fr = iv_arena_alloc(a, (size_t)s->max_depth * sizeof *fr);
+    if (!fr || reserve(&r, 16, 0) != 0) return -1;
+    const csg_fnode *nodes = s->nodes;
+    int depth = 0; /* open frames */
+    int32_t cur = s->roots[root];
+    double t0 = tmin, t1 = tmax;
+    int at = 0; /* where cur's list goes */
+    int nres;   /* length of the list just finished, at `at` */
+    for (;;) {
+        /* Descend from cur until a list is known. */
+        const csg_fnode *n = &nodes[cur];
+        if (s->cull && !hits_box(&r, n, t0, t1)) {
+            nres = 0;
+        } else if (n->op == FNODE_LEAF) {
+            if (reserve(&r, at + 1L, at) != 0) return -1;
+            nres = trace_leaf(&r, n->prim, t0, t1, at);
+        } else {
+            fr[depth++] = (frame){cur, cur + 1, at, -1, t0, t1};
+            cur = cur + 1;
+            continue;
+        }
+        /* Ascend: hand nres to the open frames until one wants another
+         * child. */
+        for (;;) {
+            if (depth == 0) {
+                out->v = r.sp;
+                out->n = nres;
+                out->cap = r.cap;
+                return 0;
+            }
+            frame *f = &fr[depth - 1];
+            const csg_fnode *op = &nodes[f->node];
+            if (f->nacc <= 0) {
+                /* First operand, or a union whose operands so far were
+                 * empty: the child's list already sits at base. */
+                f->nacc = nres;
+            } else if (nres == 0) {
+                if (op->op == CSG_OP_INTERSECTION) f->nacc = 0;
+            } else {
+                const int base = f->base, na = f->nacc;
+                if (reserve(&r, (long)base + 2L * (na + nres), base + na + nres) != 0) return -1;
+                iv_list la = {r.sp + base, na, na};
+                iv_list lb = {r.sp + base + na, nres, nres};
+                iv_list lo = {r.sp + base + na + nres, 0, na + nres};
+                switch (op->op) {
+                case CSG_OP_UNION:
+                    iv_list_union(&la, &lb, &lo);
+                    break;
+                case CSG_OP_INTERSECTION:
+                    iv_list_intersection(&la, &lb, &lo);
+                    break;
+                default:
+                    iv_list_difference(&la, &lb, &lo);
+                    break;
+                }
+                memcpy(r.sp + base, lo.v, (size_t)lo.n * sizeof *lo.v);
+                f->nacc = lo.n;
+            }
+            int32_t next = nodes[f->cursor].next;
+            /* Roth: once an intersection or difference is empty, the
+             * remaining operands cannot change it. */
+            if (next >= op->next || (f->nacc == 0 && op->op != CSG_OP_UNION)) {
+                nres = f->nacc;
+                at = f->base;
+                depth--;
+                continue;
+            }
+            f->cursor = next;
+            cur = next;
+            at = f->base + f->nacc;
+            t0 = f->t0;
+            t1 = f->t1;
+            if (op->op != CSG_OP_UNION) {
+                /* The accumulated list is clipped to [f->t0, f->t1], so its
+                 * extent lies inside that range. */
+                t0 = r.sp[f->base].enter.t;
+                t1 = r.sp[f->base + f->nacc - 1].exit.t;
+            }
+            break;
+        }
+    }
+}
+
+void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],
+                      double n[3])
+{
+    double v[3];
+    int ok = 0;
+    if (b->prim >= 0 && b->prim < s->nprims) {
+        const csg_prim *p = &s->prims[b->prim];
+        const double *N = s->cold[b->prim].normal_from_object;
+        /* An infinite t only comes from a flat face the line runs into at
+         * infinity (halfspace), whose normal does not depend on the point;
+         * use the origin rather than an infinite point. */
+        double pw[3] = {0, 0, 0}, po[3] = {0, 0, 0}, no[3];
+        if (isfinite(b->t)) {
+            for (int k = 0; k < 3; k++)
+                pw[k] = o[k] + b->t * d[k];
+            csg_affine_point(p->object_from_world, pw, po);
+        }
+        iv_shape_normal(&p->shape, po, b->part, no);
+        for (int i = 0; i < 3; i++)
+            v[i] = N[3 * i] * no[0] + N[3 * i + 1] * no[1] + N[3 * i + 2] * no[2];
+        double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if (l > 0 && isfinite(l)) {
+            double sgn = b->flip ? -1 : 1;
+            for (int k = 0; k < 3; k++)
+                n[k] = sgn * v[k] / l;
+            ok = 1;
+        }
+    }
+    if (ok) return;
+    /* A clip: the surface faces the viewer. */
+    double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (l > 0 && isfinite(l)) {
+        for (int k = 0; k < 3; k++)
+            n[k] = -d[k] / l;
+    } else {
+        n[0] = n[1] = 0;
+        n[2] = 1;
+    }
+}
