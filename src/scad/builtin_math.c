@@ -78,6 +78,19 @@ static double cos_deg(double x)
     return sin_deg(x + 90.0 > 360.0 ? x - 270.0 : x + 90.0);
 }
 
+/* Exact at multiples of 45 degrees; ±90 (mod 180) is +inf as in OpenSCAD. */
+static double tan_deg(double x)
+{
+    if (!isfinite(x)) return NAN;
+    double r = fmod(x, 180.0);
+    if (r < 0) r += 180.0;
+    if (r == 0) return 0;
+    if (r == 45.0) return 1;
+    if (r == 90.0) return INFINITY;
+    if (r == 135.0) return -1;
+    return tan(r * M_PI / 180.0);
+}
+
 double scad_sin_degrees(double x);
 double scad_cos_degrees(double x);
 double scad_sin_degrees(double x) { return sin_deg(x); }
@@ -100,10 +113,7 @@ static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     case 'c':
         if (!strcmp(name, "cos")) return scad_num(cos_deg(x));
         return scad_num(ceil(x));
-    case 't': {
-        double c = cos_deg(x);
-        return scad_num(sin_deg(x) / c);
-    }
+    case 't': return scad_num(tan_deg(x));
     case 'f': return scad_num(floor(x));
     case 'r': return scad_num(round(x));
     case 'e': return scad_num(exp(x));

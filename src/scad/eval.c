@@ -1147,6 +1147,25 @@ scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return child_scope(ev, env, env, st->children, state, op, NULL, 0);
 }
 
+/* OpenSCAD's Expression::isLiteral: constants, and vectors and ranges of
+ * constants. */
+static int is_literal(const scad_expr *e)
+{
+    switch (e->kind) {
+    case EX_NUMBER:
+    case EX_STRING:
+    case EX_BOOL:
+    case EX_UNDEF: return 1;
+    case EX_VECTOR:
+        for (int i = 0; i < e->n; i++)
+            if (!is_literal(e->list[i])) return 0;
+        return 1;
+    case EX_RANGE:
+        return is_literal(e->a[0]) && (!e->a[1] || is_literal(e->a[1])) && is_literal(e->a[2]);
+    default: return 0;
+    }
+}
+
 static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_moddef *m, scad_env *def_env,
                               const scad_state *state)
@@ -1165,11 +1184,23 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
         me->children_env = env;
         scad_bind_args(ev, me, def_env, &m->params, &argv, st->loc);
         scad_env_set(me, "$children", scad_num(st->children ? st->children->nstmts : 0));
+        ev->module_depth++;
+        scad_env_set(me, "$parent_modules", scad_num(ev->module_depth));
+        for (int i = 0; i < m->body->nassigns; i++) {
+            const scad_assign *as = &m->body->assigns[i];
+            if (!is_literal(as->value)) continue;
+            for (int k = 0; k < m->params.n; k++)
+                if (strcmp(m->params.v[k].name, as->name) == 0)
+                    scad_diag_warning(ev->d, as->loc,
+                                      "Module %s: Parameter %s is overwritten with a literal",
+                                      m->name, as->name);
+        }
         gather g = {0};
         run_assignments(ev, me, m->body);
         run_stmts(ev, me, m->body, state, &g, NULL, 0);
         r = finish(ev, &g, CSG_OP_UNION);
         env_free(me);
+        ev->module_depth--;
     }
     leave_call(ev);
     argv_free(&argv);
@@ -1205,8 +1236,13 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
         if (idx.v[i].kind != SV_NUM) continue;
         double k = idx.v[i].u.num;
         if (k < 0 || k >= n || isnan(k)) {
-            scad_diag_warning(ev->d, st->loc, "Children index (%d) out of bounds (%d children)",
-                              (int)k, n);
+        {
+            /* OpenSCAD words this one without a location */
+            char line[128];
+            snprintf(line, sizeof line,
+                     "WARNING: Children index (%d) out of bounds (%d children)", (int)k, n);
+            scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
+        }
             continue;
         }
         pick[np++] = (int)k;

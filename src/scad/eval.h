@@ -58,6 +58,7 @@ typedef struct scad_eval {
     scad_diag *d;
     scad_arena *arena; /* geometry */
     int depth, max_depth;
+    int module_depth; /* user modules being instantiated: $parent_modules */
     int aborted; /* an error stopped the evaluation */
     char *stack_base;
     size_t stack_budget;

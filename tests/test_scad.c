@@ -1,0 +1,436 @@
+/*
+ * test_scad.c — the OpenSCAD language module against independent truth:
+ * every .scad file in tests/lang is run through the real openscad binary and its
+ * ECHO / WARNING / DEPRECATED lines are compared, line by line, with ours;
+ * trees are checked through the csg API (scene bounds, materials, roots);
+ * errors by their exact "file:line:col: error:" text; limits and garbage
+ * input must give a named error or a result, never a crash.
+ */
+#include <criterion/criterion.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../src/scad/scad.h"
+
+/* ---- collecting messages ------------------------------------------------- */
+
+typedef struct lines {
+    char **v;
+    int n;
+} lines;
+
+static void lines_add(lines *l, const char *s, size_t n)
+{
+    l->v = realloc(l->v, sizeof *l->v * (size_t)(l->n + 1));
+    l->v[l->n] = strndup(s, n);
+    l->n++;
+}
+
+static void lines_free(lines *l)
+{
+    for (int i = 0; i < l->n; i++) free(l->v[i]);
+    free(l->v);
+    l->v = NULL;
+    l->n = 0;
+}
+
+/* Messages are split at newlines, as they appear in an .echo file. */
+static void collect(void *ud, scad_msg_kind kind, const char *line)
+{
+    (void)kind;
+    lines *l = ud;
+    const char *p = line;
+    for (;;) {
+        const char *nl = strchr(p, '\n');
+        if (!nl) {
+            lines_add(l, p, strlen(p));
+            return;
+        }
+        lines_add(l, p, (size_t)(nl - p));
+        p = nl + 1;
+    }
+}
+
+static int compared_line(const char *s)
+{
+    return !strncmp(s, "ECHO:", 5) || !strncmp(s, "WARNING:", 8) ||
+           !strncmp(s, "DEPRECATED:", 11) || !strncmp(s, "Please see", 10);
+}
+
+static void filter(lines *l)
+{
+    int k = 0;
+    for (int i = 0; i < l->n; i++) {
+        if (compared_line(l->v[i]))
+            l->v[k++] = l->v[i];
+        else
+            free(l->v[i]);
+    }
+    l->n = k;
+}
+
+static int eval_src(const char *src, lines *msgs, scad_result *r, int max_rec)
+{
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.message = collect;
+    o.ud = msgs;
+    o.max_recursion = max_rec;
+    return scad_eval_string("t.scad", src, &o, r);
+}
+
+static int has_line(const lines *l, const char *s)
+{
+    for (int i = 0; i < l->n; i++)
+        if (strcmp(l->v[i], s) == 0) return 1;
+    return 0;
+}
+
+static int has_prefix(const lines *l, const char *s)
+{
+    for (int i = 0; i < l->n; i++)
+        if (strncmp(l->v[i], s, strlen(s)) == 0) return 1;
+    return 0;
+}
+
+/* ---- against the openscad binary ----------------------------------------- */
+
+static int run_openscad(const char *scad, lines *out)
+{
+    char dir[] = "/tmp/rayscad_lang_XXXXXX";
+    if (!mkdtemp(dir)) return -1;
+    char echo_path[256], cmd[1024];
+    snprintf(echo_path, sizeof echo_path, "%s/out.echo", dir);
+    snprintf(cmd, sizeof cmd, "openscad -o '%s' '%s' >/dev/null 2>&1", echo_path, scad);
+    int rc = system(cmd);
+    FILE *f = fopen(echo_path, "r");
+    if (f) {
+        char buf[8192];
+        while (fgets(buf, sizeof buf, f)) {
+            size_t n = strlen(buf);
+            if (n && buf[n - 1] == '\n') buf[--n] = 0;
+            lines_add(out, buf, n);
+        }
+        fclose(f);
+    }
+    unlink(echo_path);
+    rmdir(dir);
+    return f ? 0 : (rc ? -1 : 0);
+}
+
+Test(scad_lang, matches_openscad_echo_files, .timeout = 600)
+{
+    if (system("command -v openscad >/dev/null 2>&1") != 0) cr_skip_test("openscad not installed");
+    DIR *d = opendir("tests/lang");
+    cr_assert_not_null(d, "run from the repository root");
+    struct dirent *e;
+    int files = 0;
+    while ((e = readdir(d))) {
+        size_t n = strlen(e->d_name);
+        if (n < 6 || strcmp(e->d_name + n - 5, ".scad")) continue;
+        char path[512];
+        snprintf(path, sizeof path, "tests/lang/%s", e->d_name);
+        lines want = {0}, got = {0};
+        cr_assert_eq(run_openscad(path, &want), 0, "openscad failed on %s", path);
+        scad_options o;
+        memset(&o, 0, sizeof o);
+        o.message = collect;
+        o.ud = &got;
+        scad_result r;
+        int rc = scad_eval_file(path, &o, &r);
+        cr_expect_eq(rc, 0, "%s: evaluation failed", path);
+        if (rc == 0) scad_result_free(&r);
+        filter(&want);
+        filter(&got);
+        int n_min = want.n < got.n ? want.n : got.n;
+        for (int i = 0; i < n_min; i++)
+            cr_expect_str_eq(got.v[i], want.v[i], "%s, message %d", path, i + 1);
+        cr_expect_eq(got.n, want.n, "%s: %d messages, openscad %d", path, got.n, want.n);
+        lines_free(&want);
+        lines_free(&got);
+        files++;
+    }
+    closedir(d);
+    cr_expect_geq(files, 15, "only %d files in tests/lang", files);
+}
+
+/* ---- trees ---------------------------------------------------------------- */
+
+static csg_scene *scene_of(csg_node *n)
+{
+    char err[128];
+    csg_node *roots[1] = {n};
+    csg_scene *s = csg_scene_new(roots, 1, err, sizeof err);
+    cr_assert_not_null(s, "%s", err);
+    return s;
+}
+
+static void expect_bounds(const char *src, double x0, double y0, double z0, double x1,
+                          double y1, double z1)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src(src, &m, &r, 0), 0, "%s", src);
+    csg_node_free(r.highlight);
+    csg_node_free(r.background);
+    cr_assert_not_null(r.model, "%s: empty model", src);
+    csg_scene *s = scene_of(r.model);
+    double lo[3], hi[3];
+    cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0, "%s", src);
+    double want_lo[3] = {x0, y0, z0}, want_hi[3] = {x1, y1, z1};
+    /* csg may pad bounds by a few ulps for robust slab tests: 1e-6 */
+    for (int i = 0; i < 3; i++) {
+        cr_expect(fabs(lo[i] - want_lo[i]) < 1e-6, "%s: lo[%d] = %.17g, want %g", src, i,
+                  lo[i], want_lo[i]);
+        cr_expect(fabs(hi[i] - want_hi[i]) < 1e-6, "%s: hi[%d] = %.17g, want %g", src, i,
+                  hi[i], want_hi[i]);
+    }
+    csg_scene_free(s);
+    lines_free(&m);
+}
+
+Test(scad_tree, translate_cube) { expect_bounds("translate([1,2,3]) cube(2);", 1, 2, 3, 3, 4, 5); }
+Test(scad_tree, cube_center) { expect_bounds("cube([2,4,6], center=true);", -1, -2, -3, 1, 2, 3); }
+Test(scad_tree, sphere_diameter) { expect_bounds("sphere(d=4);", -2, -2, -2, 2, 2, 2); }
+Test(scad_tree, cylinder_centered) { expect_bounds("cylinder(h=2, r=1, center=true);", -1, -1, -1, 1, 1, 1); }
+Test(scad_tree, cylinder_d_over_r) { expect_bounds("cylinder(h=1, r=5, d=2);", -1, -1, 0, 1, 1, 1); }
+Test(scad_tree, rotate_z_then_translate)
+{
+    /* rotate applies after translate: the unit cube at x in [1,2] turns to y in [1,2] */
+    expect_bounds("rotate([0,0,90]) translate([1,0,0]) cube(1);", -1, 1, 0, 0, 2, 1);
+}
+Test(scad_tree, rotate_scalar_is_about_z) { expect_bounds("rotate(180) cube(1);", -1, -1, 0, 0, 0, 1); }
+Test(scad_tree, scale_mirror_multmatrix)
+{
+    expect_bounds("scale([2,1,1]) mirror([1,0,0]) cube(1);", -2, 0, 0, 0, 1, 1);
+    expect_bounds("multmatrix([[1,0,0,5],[0,1,0,0],[0,0,1,0]]) cube(1);", 5, 0, 0, 6, 1, 1);
+}
+Test(scad_tree, module_and_for)
+{
+    expect_bounds("module c(s) translate([s,0,0]) cube(1); for (i=[0:2]) c(i*2);", 0, 0, 0, 5, 1, 1);
+}
+Test(scad_tree, children_transformed)
+{
+    expect_bounds("module up() translate([0,0,10]) children(); up() cube(1);", 0, 0, 10, 1, 1, 11);
+}
+
+static const csg_material *first_material(const char *src, csg_scene **keep)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src(src, &m, &r, 0), 0);
+    csg_node_free(r.highlight);
+    csg_node_free(r.background);
+    lines_free(&m);
+    *keep = scene_of(r.model);
+    cr_assert_geq(csg_scene_prim_count(*keep), 1);
+    return csg_scene_material(*keep, 0);
+}
+
+Test(scad_tree, color_forms)
+{
+    csg_scene *s;
+    const csg_material *m = first_material("cube(1);", &s);
+    cr_expect_eq(m->has_color, 0);
+    csg_scene_free(s);
+    m = first_material("color(\"#ff000080\") cube(1);", &s);
+    cr_expect(m->has_color && m->rgba[0] == 1 && m->rgba[1] == 0 && fabsf(m->rgba[3] - 128 / 255.0f) < 1e-6);
+    csg_scene_free(s);
+    m = first_material("color(\"SteelBlue\", 0.5) cube(1);", &s);
+    cr_expect(m->has_color && fabsf(m->rgba[0] - 70 / 255.0f) < 1e-6 && m->rgba[3] == 0.5f);
+    csg_scene_free(s);
+    m = first_material("color([0, 1, 0]) cube(1);", &s);
+    cr_expect(m->has_color && m->rgba[1] == 1 && m->rgba[3] == 1);
+    csg_scene_free(s);
+    /* OpenSCAD 2021.01: the outermost color() wins */
+    m = first_material("color(\"red\") color(\"blue\") cube(1);", &s);
+    cr_expect(m->has_color && m->rgba[0] == 1 && m->rgba[2] == 0);
+    csg_scene_free(s);
+    /* an invalid outer colour (alpha only) leaves the inner one */
+    m = first_material("color(alpha=0.5) color(\"blue\") cube(1);", &s);
+    cr_expect(m->has_color && m->rgba[2] == 1);
+    csg_scene_free(s);
+}
+
+Test(scad_tree, modifiers)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("#cube(1); %sphere(1); *cylinder(); echo(1);", &m, &r, 0), 0);
+    cr_expect_not_null(r.model);
+    cr_expect_not_null(r.highlight);
+    cr_expect_not_null(r.background);
+    cr_expect_eq(csg_node_child_count(r.model), 0, "model is the cube alone");
+    scad_result_free(&r);
+    cr_assert_eq(eval_src("*cube(1);", &m, &r, 0), 0);
+    cr_expect_null(r.model);
+    scad_result_free(&r);
+    lines_free(&m);
+    /* '!' makes that subtree the only root, without the transforms above it */
+    expect_bounds("sphere(5); translate([10,0,0]) !cube(2);", 0, 0, 0, 2, 2, 2);
+}
+
+Test(scad_tree, difference_skips_empty_first_child)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("difference() { echo(); cube(5); sphere(1); }", &m, &r, 0), 0);
+    cr_assert_not_null(r.model);
+    cr_expect_eq(csg_node_child_count(r.model), 2);
+    scad_result_free(&r);
+    lines_free(&m);
+}
+
+Test(scad_tree, degenerate_primitives_make_nothing)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("cube(-1); sphere(0); cylinder(h=-1); cube(0/0); sphere(1/0);", &m, &r, 0), 0);
+    cr_expect_null(r.model);
+    scad_result_free(&r);
+    lines_free(&m);
+}
+
+/* ---- errors and limits ----------------------------------------------------- */
+
+Test(scad_errors, syntax_error_location)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("echo(1);\nx = 5 + ;\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:2:9: error: syntax error: expected an expression before ';'"));
+    cr_expect_null(r.model);
+    lines_free(&m);
+}
+
+Test(scad_errors, all_syntax_errors_reported)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("a = ;\nb = 1;\nc = );\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:1:5: error: syntax error: expected an expression before ';'"));
+    cr_expect(has_line(&m, "t.scad:3:5: error: syntax error: expected an expression before ')'"));
+    lines_free(&m);
+}
+
+Test(scad_errors, unterminated_string_and_comment)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("echo(1);\ny = \"abc;\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:2:5: error: unterminated string"));
+    lines_free(&m);
+    cr_assert_eq(eval_src("echo(1);\n  /* abc\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:2:3: error: unterminated comment"));
+    lines_free(&m);
+}
+
+Test(scad_errors, assert_failure)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("echo(\"before\");\nassert(1 == 2, \"boom\");\necho(\"after\");", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "ECHO: \"before\""));
+    cr_expect(has_line(&m, "t.scad:2:1: error: Assertion '(1 == 2)' failed: \"boom\""));
+    cr_expect(!has_line(&m, "ECHO: \"after\""));
+    lines_free(&m);
+}
+
+Test(scad_limits, deep_function_recursion)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\necho(f(9000));\necho(f(1000000));", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "ECHO: 9000"));
+    cr_expect(has_line(&m, "t.scad:1:34: error: recursion deeper than 10000 calls (calling function 'f')"));
+    lines_free(&m);
+}
+
+Test(scad_limits, deep_module_recursion)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("module m(n) { if (n > 0) m(n - 1); else cube(1); }\nm(9000);\nm(1000000);", &m, &r, 0), -1);
+    cr_expect(has_prefix(&m, "t.scad:1:26: error: recursion deeper than 10000 calls (calling module 'm')"));
+    lines_free(&m);
+}
+
+Test(scad_limits, custom_recursion_limit)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\necho(f(100));", &m, &r, 50), -1);
+    cr_expect(has_prefix(&m, "t.scad:1:34: error: recursion deeper than 50 calls"));
+    lines_free(&m);
+}
+
+Test(scad_limits, huge_loops_refused)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("for (i = [0:1e7]) cube(i);\necho(len([for (i = [0:2e6]) i]));", &m, &r, 0), 0);
+    cr_expect(has_line(&m, "WARNING: Bad range parameter in for statement: too many elements (10000001) in file t.scad, line 1"));
+    cr_expect(has_line(&m, "ECHO: 0"));
+    scad_result_free(&r);
+    lines_free(&m);
+}
+
+Test(scad_limits, deep_nesting_in_source)
+{
+    size_t n = 100000;
+    char *src = malloc(2 * n + 16);
+    strcpy(src, "x = ");
+    size_t k = 4;
+    for (size_t i = 0; i < n; i++) src[k++] = '(';
+    src[k++] = '1';
+    for (size_t i = 0; i < n; i++) src[k++] = ')';
+    strcpy(src + k, ";");
+    lines m = {0};
+    scad_result r;
+    cr_expect_eq(eval_src(src, &m, &r, 0), -1);
+    cr_expect(has_prefix(&m, "t.scad:1:"));
+    free(src);
+    lines_free(&m);
+}
+
+Test(scad_limits, garbage_never_crashes)
+{
+    unsigned seed = 12345;
+    static const char alphabet[] = "abcxyz019 ;,.()[]{}<>=!?:+-*/%^#$\"\\\n/*&|'";
+    for (int t = 0; t < 300; t++) {
+        char src[200];
+        int n = (int)(seed % 199);
+        for (int i = 0; i < n; i++) {
+            seed = seed * 1103515245u + 12345u;
+            src[i] = alphabet[(seed >> 16) % (sizeof alphabet - 1)];
+        }
+        src[n] = 0;
+        lines m = {0};
+        scad_result r;
+        int rc = eval_src(src, &m, &r, 0);
+        cr_assert(rc == 0 || rc == -1, "seed %u", seed);
+        if (rc == 0) scad_result_free(&r);
+        lines_free(&m);
+    }
+}
+
+Test(scad_options, defines_override_top_level)
+{
+    const char *defs[] = {"a=5", "b=\"x\""};
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    lines m = {0};
+    o.message = collect;
+    o.ud = &m;
+    o.defines = defs;
+    o.define_count = 2;
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad", "a = 1; echo(a, b);", &o, &r), 0);
+    cr_expect(has_line(&m, "ECHO: 5, \"x\""));
+    scad_result_free(&r);
+    lines_free(&m);
+}
