@@ -32,7 +32,8 @@ static void lines_add(lines *l, const char *s, size_t n)
 
 static void lines_free(lines *l)
 {
-    for (int i = 0; i < l->n; i++) free(l->v[i]);
+    for (int i = 0; i < l->n; i++)
+        free(l->v[i]);
     free(l->v);
     l->v = NULL;
     l->n = 0;
@@ -169,8 +170,8 @@ static csg_scene *scene_of(csg_node *n)
     return s;
 }
 
-static void expect_bounds(const char *src, double x0, double y0, double z0, double x1,
-                          double y1, double z1)
+static void expect_bounds(const char *src, double x0, double y0, double z0, double x1, double y1,
+                          double z1)
 {
     lines m = {0};
     scad_result r;
@@ -184,26 +185,44 @@ static void expect_bounds(const char *src, double x0, double y0, double z0, doub
     double want_lo[3] = {x0, y0, z0}, want_hi[3] = {x1, y1, z1};
     /* csg may pad bounds by a few ulps for robust slab tests: 1e-6 */
     for (int i = 0; i < 3; i++) {
-        cr_expect(fabs(lo[i] - want_lo[i]) < 1e-6, "%s: lo[%d] = %.17g, want %g", src, i,
-                  lo[i], want_lo[i]);
-        cr_expect(fabs(hi[i] - want_hi[i]) < 1e-6, "%s: hi[%d] = %.17g, want %g", src, i,
-                  hi[i], want_hi[i]);
+        cr_expect(fabs(lo[i] - want_lo[i]) < 1e-6, "%s: lo[%d] = %.17g, want %g", src, i, lo[i],
+                  want_lo[i]);
+        cr_expect(fabs(hi[i] - want_hi[i]) < 1e-6, "%s: hi[%d] = %.17g, want %g", src, i, hi[i],
+                  want_hi[i]);
     }
     csg_scene_free(s);
     lines_free(&m);
 }
 
-Test(scad_tree, translate_cube) { expect_bounds("translate([1,2,3]) cube(2);", 1, 2, 3, 3, 4, 5); }
-Test(scad_tree, cube_center) { expect_bounds("cube([2,4,6], center=true);", -1, -2, -3, 1, 2, 3); }
-Test(scad_tree, sphere_diameter) { expect_bounds("sphere(d=4);", -2, -2, -2, 2, 2, 2); }
-Test(scad_tree, cylinder_centered) { expect_bounds("cylinder(h=2, r=1, center=true);", -1, -1, -1, 1, 1, 1); }
-Test(scad_tree, cylinder_d_over_r) { expect_bounds("cylinder(h=1, r=5, d=2);", -1, -1, 0, 1, 1, 1); }
+Test(scad_tree, translate_cube)
+{
+    expect_bounds("translate([1,2,3]) cube(2);", 1, 2, 3, 3, 4, 5);
+}
+Test(scad_tree, cube_center)
+{
+    expect_bounds("cube([2,4,6], center=true);", -1, -2, -3, 1, 2, 3);
+}
+Test(scad_tree, sphere_diameter)
+{
+    expect_bounds("sphere(d=4);", -2, -2, -2, 2, 2, 2);
+}
+Test(scad_tree, cylinder_centered)
+{
+    expect_bounds("cylinder(h=2, r=1, center=true);", -1, -1, -1, 1, 1, 1);
+}
+Test(scad_tree, cylinder_d_over_r)
+{
+    expect_bounds("cylinder(h=1, r=5, d=2);", -1, -1, 0, 1, 1, 1);
+}
 Test(scad_tree, rotate_z_then_translate)
 {
     /* rotate applies after translate: the unit cube at x in [1,2] turns to y in [1,2] */
     expect_bounds("rotate([0,0,90]) translate([1,0,0]) cube(1);", -1, 1, 0, 0, 2, 1);
 }
-Test(scad_tree, rotate_scalar_is_about_z) { expect_bounds("rotate(180) cube(1);", -1, -1, 0, 0, 0, 1); }
+Test(scad_tree, rotate_scalar_is_about_z)
+{
+    expect_bounds("rotate(180) cube(1);", -1, -1, 0, 0, 0, 1);
+}
 Test(scad_tree, scale_mirror_multmatrix)
 {
     expect_bounds("scale([2,1,1]) mirror([1,0,0]) cube(1);", -2, 0, 0, 0, 1, 1);
@@ -211,7 +230,8 @@ Test(scad_tree, scale_mirror_multmatrix)
 }
 Test(scad_tree, module_and_for)
 {
-    expect_bounds("module c(s) translate([s,0,0]) cube(1); for (i=[0:2]) c(i*2);", 0, 0, 0, 5, 1, 1);
+    expect_bounds("module c(s) translate([s,0,0]) cube(1); for (i=[0:2]) c(i*2);", 0, 0, 0, 5, 1,
+                  1);
 }
 Test(scad_tree, children_transformed)
 {
@@ -238,7 +258,8 @@ Test(scad_tree, color_forms)
     cr_expect_eq(m->has_color, 0);
     csg_scene_free(s);
     m = first_material("color(\"#ff000080\") cube(1);", &s);
-    cr_expect(m->has_color && m->rgba[0] == 1 && m->rgba[1] == 0 && fabsf(m->rgba[3] - 128 / 255.0f) < 1e-6);
+    cr_expect(m->has_color && m->rgba[0] == 1 && m->rgba[1] == 0 &&
+              fabsf(m->rgba[3] - 128 / 255.0f) < 1e-6);
     csg_scene_free(s);
     m = first_material("color(\"SteelBlue\", 0.5) cube(1);", &s);
     cr_expect(m->has_color && fabsf(m->rgba[0] - 70 / 255.0f) < 1e-6 && m->rgba[3] == 0.5f);
@@ -289,7 +310,8 @@ Test(scad_tree, degenerate_primitives_make_nothing)
 {
     lines m = {0};
     scad_result r;
-    cr_assert_eq(eval_src("cube(-1); sphere(0); cylinder(h=-1); cube(0/0); sphere(1/0);", &m, &r, 0), 0);
+    cr_assert_eq(
+        eval_src("cube(-1); sphere(0); cylinder(h=-1); cube(0/0); sphere(1/0);", &m, &r, 0), 0);
     cr_expect_null(r.model);
     scad_result_free(&r);
     lines_free(&m);
@@ -333,7 +355,8 @@ Test(scad_errors, assert_failure)
 {
     lines m = {0};
     scad_result r;
-    cr_assert_eq(eval_src("echo(\"before\");\nassert(1 == 2, \"boom\");\necho(\"after\");", &m, &r, 0), -1);
+    cr_assert_eq(
+        eval_src("echo(\"before\");\nassert(1 == 2, \"boom\");\necho(\"after\");", &m, &r, 0), -1);
     cr_expect(has_line(&m, "ECHO: \"before\""));
     cr_expect(has_line(&m, "t.scad:2:1: error: Assertion '(1 == 2)' failed: \"boom\""));
     cr_expect(!has_line(&m, "ECHO: \"after\""));
@@ -344,9 +367,13 @@ Test(scad_limits, deep_function_recursion)
 {
     lines m = {0};
     scad_result r;
-    cr_assert_eq(eval_src("function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\necho(f(9000));\necho(f(1000000));", &m, &r, 0), -1);
+    cr_assert_eq(
+        eval_src("function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\necho(f(9000));\necho(f(1000000));",
+                 &m, &r, 0),
+        -1);
     cr_expect(has_line(&m, "ECHO: 9000"));
-    cr_expect(has_line(&m, "t.scad:1:34: error: recursion deeper than 10000 calls (calling function 'f')"));
+    cr_expect(has_line(
+        &m, "t.scad:1:34: error: recursion deeper than 10000 calls (calling function 'f')"));
     lines_free(&m);
 }
 
@@ -354,8 +381,12 @@ Test(scad_limits, deep_module_recursion)
 {
     lines m = {0};
     scad_result r;
-    cr_assert_eq(eval_src("module m(n) { if (n > 0) m(n - 1); else cube(1); }\nm(9000);\nm(1000000);", &m, &r, 0), -1);
-    cr_expect(has_prefix(&m, "t.scad:1:26: error: recursion deeper than 10000 calls (calling module 'm')"));
+    cr_assert_eq(
+        eval_src("module m(n) { if (n > 0) m(n - 1); else cube(1); }\nm(9000);\nm(1000000);", &m,
+                 &r, 0),
+        -1);
+    cr_expect(has_prefix(
+        &m, "t.scad:1:26: error: recursion deeper than 10000 calls (calling module 'm')"));
     lines_free(&m);
 }
 
@@ -363,7 +394,8 @@ Test(scad_limits, custom_recursion_limit)
 {
     lines m = {0};
     scad_result r;
-    cr_assert_eq(eval_src("function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\necho(f(100));", &m, &r, 50), -1);
+    cr_assert_eq(eval_src("function f(n) = n <= 0 ? 0 : 1 + f(n - 1);\necho(f(100));", &m, &r, 50),
+                 -1);
     cr_expect(has_prefix(&m, "t.scad:1:34: error: recursion deeper than 50 calls"));
     lines_free(&m);
 }
@@ -372,8 +404,10 @@ Test(scad_limits, huge_loops_refused)
 {
     lines m = {0};
     scad_result r;
-    cr_assert_eq(eval_src("for (i = [0:1e7]) cube(i);\necho(len([for (i = [0:2e6]) i]));", &m, &r, 0), 0);
-    cr_expect(has_line(&m, "WARNING: Bad range parameter in for statement: too many elements (10000001) in file t.scad, line 1"));
+    cr_assert_eq(
+        eval_src("for (i = [0:1e7]) cube(i);\necho(len([for (i = [0:2e6]) i]));", &m, &r, 0), 0);
+    cr_expect(has_line(&m, "WARNING: Bad range parameter in for statement: too many elements "
+                           "(10000001) in file t.scad, line 1"));
     cr_expect(has_line(&m, "ECHO: 0"));
     scad_result_free(&r);
     lines_free(&m);
@@ -385,9 +419,11 @@ Test(scad_limits, deep_nesting_in_source)
     char *src = malloc(2 * n + 16);
     strcpy(src, "x = ");
     size_t k = 4;
-    for (size_t i = 0; i < n; i++) src[k++] = '(';
+    for (size_t i = 0; i < n; i++)
+        src[k++] = '(';
     src[k++] = '1';
-    for (size_t i = 0; i < n; i++) src[k++] = ')';
+    for (size_t i = 0; i < n; i++)
+        src[k++] = ')';
     strcpy(src + k, ";");
     lines m = {0};
     scad_result r;

@@ -48,7 +48,8 @@ void *scad_arena_alloc(scad_arena *a, size_t bytes)
     chunk *c = a->head;
     if (!c || c->size - c->used < bytes) {
         size_t size = a->next_size;
-        while (size < bytes) size *= 2;
+        while (size < bytes)
+            size *= 2;
         c = malloc(sizeof *c + size);
         if (!c) return NULL;
         c->size = size;

@@ -98,8 +98,7 @@ typedef struct scad_token {
 /* Tokenise src.  Returns the number of tokens (the last is TK_EOF) and sets
  * *out to an array in the arena; reports lexical errors through d and keeps
  * going (an unterminated string or comment ends the input). */
-int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
-             scad_token **out);
+int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, scad_token **out);
 
 /* The whole file at path as a NUL-terminated string in the arena, or NULL
  * when it cannot be read. */
@@ -177,8 +176,8 @@ struct scad_stmt {
     scad_loc loc;
     scad_args args;
     scad_scope *children;
-    scad_scope *else_children; /* if only; NULL when absent */
-    scad_expr *cond;           /* if only */
+    scad_scope *else_children;                 /* if only; NULL when absent */
+    scad_expr *cond;                           /* if only */
     char disable, root, highlight, background; /* * ! # % */
 };
 
@@ -213,7 +212,6 @@ struct scad_scope {
 
 /* Parse a whole file.  Returns the top-level scope (in arena a), or NULL
  * when any syntax error was reported through d (all are reported). */
-scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file,
-                       const char *src);
+scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file, const char *src);
 
 #endif

@@ -33,8 +33,7 @@ static void count_warning(scad_eval *ev, scad_loc loc, const char *name)
 }
 
 /* n numeric positional arguments into x; warns and returns 0 otherwise. */
-static int nums(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name, int n,
-                double *x)
+static int nums(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name, int n, double *x)
 {
     if (a->n != n) {
         count_warning(ev, loc, name);
@@ -60,13 +59,20 @@ static double sin_deg(double x)
     if (neg) x -= 180.0;
     if (x > 90.0) x = 180.0 - x;
     double r;
-    if (x == 0) r = 0;
-    else if (x == 30.0) r = 0.5;
-    else if (x == 45.0) r = M_SQRT1_2;
-    else if (x == 60.0) r = sqrt(3.0) / 2;
-    else if (x == 90.0) r = 1;
-    else if (x < 45.0) r = sin(x * M_PI / 180.0);
-    else r = cos((90.0 - x) * M_PI / 180.0);
+    if (x == 0)
+        r = 0;
+    else if (x == 30.0)
+        r = 0.5;
+    else if (x == 45.0)
+        r = M_SQRT1_2;
+    else if (x == 60.0)
+        r = sqrt(3.0) / 2;
+    else if (x == 90.0)
+        r = 1;
+    else if (x < 45.0)
+        r = sin(x * M_PI / 180.0);
+    else
+        r = cos((90.0 - x) * M_PI / 180.0);
     return neg ? -r : r;
 }
 
@@ -91,10 +97,14 @@ static double tan_deg(double x)
     return tan(r * M_PI / 180.0);
 }
 
-double scad_sin_degrees(double x);
-double scad_cos_degrees(double x);
-double scad_sin_degrees(double x) { return sin_deg(x); }
-double scad_cos_degrees(double x) { return cos_deg(x); }
+double scad_sin_degrees(double x)
+{
+    return sin_deg(x);
+}
+double scad_cos_degrees(double x)
+{
+    return cos_deg(x);
+}
 
 static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
@@ -113,11 +123,16 @@ static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     case 'c':
         if (!strcmp(name, "cos")) return scad_num(cos_deg(x));
         return scad_num(ceil(x));
-    case 't': return scad_num(tan_deg(x));
-    case 'f': return scad_num(floor(x));
-    case 'r': return scad_num(round(x));
-    case 'e': return scad_num(exp(x));
-    case 'l': return scad_num(log(x)); /* ln */
+    case 't':
+        return scad_num(tan_deg(x));
+    case 'f':
+        return scad_num(floor(x));
+    case 'r':
+        return scad_num(round(x));
+    case 'e':
+        return scad_num(exp(x));
+    case 'l':
+        return scad_num(log(x)); /* ln */
     }
     return scad_undef();
 }
@@ -157,8 +172,10 @@ static scad_value f_minmax(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
         n = a->v[0].u.vec->n;
     }
     if (n == 0) {
-        if (a->n == 0) count_warning(ev, loc, name);
-        else conv_warning(ev, loc, name);
+        if (a->n == 0)
+            count_warning(ev, loc, name);
+        else
+            conv_warning(ev, loc, name);
         return scad_undef();
     }
     if (a->n == 1 && a->v[0].kind == SV_VEC) {
@@ -240,8 +257,10 @@ static scad_value f_len(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
 {
     if (a->n == 1 && a->v[0].kind == SV_VEC) return scad_num(a->v[0].u.vec->n);
     if (a->n == 1 && a->v[0].kind == SV_STR) return scad_num((double)a->v[0].u.str->nchars);
-    if (a->n != 1) count_warning(ev, loc, name);
-    else conv_warning(ev, loc, name);
+    if (a->n != 1)
+        count_warning(ev, loc, name);
+    else
+        conv_warning(ev, loc, name);
     return scad_undef();
 }
 
@@ -249,7 +268,8 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
 {
     (void)ev, (void)loc, (void)name;
     int n = 0;
-    for (int i = 0; i < a->n; i++) n += a->v[i].kind == SV_VEC ? a->v[i].u.vec->n : 1;
+    for (int i = 0; i < a->n; i++)
+        n += a->v[i].kind == SV_VEC ? a->v[i].u.vec->n : 1;
     scad_value r = scad_vec_new(n);
     if (r.kind != SV_VEC) return r;
     int k = 0;
@@ -267,7 +287,8 @@ static scad_value f_str(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
 {
     (void)ev, (void)loc, (void)name;
     scad_buf b = {0};
-    for (int i = 0; i < a->n; i++) scad_value_format(&b, a->v[i], 0);
+    for (int i = 0; i < a->n; i++)
+        scad_value_format(&b, a->v[i], 0);
     scad_value r = scad_str_new(b.p ? b.p : "", b.oom ? 0 : b.n);
     scad_buf_free(&b);
     return r;
@@ -306,7 +327,8 @@ static void chr_value(scad_buf *b, scad_value v)
 {
     if (v.kind == SV_NUM) put_code(b, v.u.num);
     if (v.kind == SV_VEC)
-        for (int i = 0; i < v.u.vec->n; i++) chr_value(b, v.u.vec->v[i]);
+        for (int i = 0; i < v.u.vec->n; i++)
+            chr_value(b, v.u.vec->v[i]);
     if (v.kind == SV_RANGE) {
         double n = scad_range_count(v.u.range);
         for (double i = 0; i < n && i < 1000000; i++)
@@ -318,7 +340,8 @@ static scad_value f_chr(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
 {
     (void)ev, (void)loc, (void)name;
     scad_buf b = {0};
-    for (int i = 0; i < a->n; i++) chr_value(&b, a->v[i]);
+    for (int i = 0; i < a->n; i++)
+        chr_value(&b, a->v[i]);
     scad_value r = scad_str_new(b.p ? b.p : "", b.oom ? 0 : b.n);
     scad_buf_free(&b);
     return r;
@@ -338,10 +361,14 @@ static scad_value f_ord(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
     if (a->v[0].u.str->len == 0) return scad_undef();
     unsigned long cp = s[0];
     int extra = 0;
-    if (cp >= 0xF0) cp &= 0x07, extra = 3;
-    else if (cp >= 0xE0) cp &= 0x0F, extra = 2;
-    else if (cp >= 0xC0) cp &= 0x1F, extra = 1;
-    for (int i = 1; i <= extra && s[i]; i++) cp = (cp << 6) | (s[i] & 0x3F);
+    if (cp >= 0xF0)
+        cp &= 0x07, extra = 3;
+    else if (cp >= 0xE0)
+        cp &= 0x0F, extra = 2;
+    else if (cp >= 0xC0)
+        cp &= 0x1F, extra = 1;
+    for (int i = 1; i <= extra && s[i]; i++)
+        cp = (cp << 6) | (s[i] & 0x3F);
     return scad_num((double)cp);
 }
 
@@ -355,22 +382,21 @@ static int get_num(scad_value v, double *x)
 static scad_value f_lookup(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     double p;
-    if (a->n != 2 || !get_num(a->v[0], &p) || a->v[1].kind != SV_VEC ||
-        a->v[1].u.vec->n == 0) {
+    if (a->n != 2 || !get_num(a->v[0], &p) || a->v[1].kind != SV_VEC || a->v[1].u.vec->n == 0) {
         conv_warning(ev, loc, name);
         return scad_undef();
     }
     const scad_vec *t = a->v[1].u.vec;
     double low_p, low_v, high_p, high_v;
-    if (t->v[0].kind != SV_VEC || t->v[0].u.vec->n < 2 ||
-        !get_num(t->v[0].u.vec->v[0], &low_p) || !get_num(t->v[0].u.vec->v[1], &low_v))
+    if (t->v[0].kind != SV_VEC || t->v[0].u.vec->n < 2 || !get_num(t->v[0].u.vec->v[0], &low_p) ||
+        !get_num(t->v[0].u.vec->v[1], &low_v))
         return scad_undef();
     high_p = low_p;
     high_v = low_v;
     for (int i = 1; i < t->n; i++) {
         double tp, tv;
-        if (t->v[i].kind != SV_VEC || t->v[i].u.vec->n < 2 ||
-            !get_num(t->v[i].u.vec->v[0], &tp) || !get_num(t->v[i].u.vec->v[1], &tv))
+        if (t->v[i].kind != SV_VEC || t->v[i].u.vec->n < 2 || !get_num(t->v[i].u.vec->v[0], &tp) ||
+            !get_num(t->v[i].u.vec->v[1], &tv))
             continue;
         if (tp <= p && (tp > low_p || low_p > p)) {
             low_p = tp;
@@ -453,7 +479,8 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     scad_value r = scad_vec_new(n);
     if (r.kind == SV_VEC) {
         double a0 = lo < hi ? lo : hi, b0 = lo < hi ? hi : lo;
-        for (int i = 0; i < n; i++) r.u.vec->v[i] = scad_num(mt_canonical(m) * (b0 - a0) + a0);
+        for (int i = 0; i < n; i++)
+            r.u.vec->v[i] = scad_num(mt_canonical(m) * (b0 - a0) + a0);
     }
     free(m);
     return r;
@@ -486,7 +513,8 @@ static scad_value search_one(scad_value match, scad_value in, int nret, int col,
     } else {
         r = scad_vec_new(k);
         if (r.kind == SV_VEC)
-            for (int i = 0; i < k; i++) r.u.vec->v[i] = hits[i];
+            for (int i = 0; i < k; i++)
+                r.u.vec->v[i] = hits[i];
     }
     free(hits);
     return r;
@@ -511,7 +539,8 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
             size_t pos = 0;
             for (int c = 0; c < i; c++) {
                 pos++;
-                while (pos < in.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80) pos++;
+                while (pos < in.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80)
+                    pos++;
             }
             size_t len = 1;
             while (pos + len < in.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
@@ -527,7 +556,8 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
                 scad_buf b = {0};
                 scad_value_format(&b, e, 1);
                 scad_diag_warning(ev->d, loc,
-                                  "Invalid entry in search vector at index %d, required number of values in the entry: %d. Invalid entry: %s",
+                                  "Invalid entry in search vector at index %d, required number of "
+                                  "values in the entry: %d. Invalid entry: %s",
                                   i, col + 1, scad_buf_str(&b));
                 scad_buf_free(&b);
                 scad_value_drop(hay);
@@ -547,8 +577,7 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
             scad_value m;
             if (s) {
                 size_t len = 1;
-                while (pos + len < match.u.str->len &&
-                       ((unsigned char)s[pos + len] & 0xC0) == 0x80)
+                while (pos + len < match.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
                     len++;
                 m = scad_str_new(s + pos, len);
                 pos += len;
@@ -606,18 +635,42 @@ typedef struct entry {
 } entry;
 
 static const entry table[] = {
-    {"abs", f_unary},       {"acos", f_unary},     {"asin", f_unary},
-    {"atan", f_unary},      {"atan2", f_atan2},    {"ceil", f_unary},
-    {"chr", f_chr},         {"concat", f_concat},  {"cos", f_unary},
-    {"cross", f_cross},     {"exp", f_unary},      {"floor", f_unary},
-    {"is_bool", f_is},      {"is_function", f_is}, {"is_list", f_is},
-    {"is_num", f_is},       {"is_string", f_is},   {"is_undef", f_is},
-    {"len", f_len},         {"ln", f_unary},       {"log", f_log},
-    {"lookup", f_lookup},   {"max", f_minmax},     {"min", f_minmax},
-    {"norm", f_norm},       {"ord", f_ord},        {"pow", f_pow},
-    {"rands", f_rands},     {"round", f_unary},    {"search", f_search},
-    {"sign", f_unary},      {"sin", f_unary},      {"sqrt", f_unary},
-    {"str", f_str},         {"tan", f_unary},      {"version", f_version},
+    {"abs", f_unary},
+    {"acos", f_unary},
+    {"asin", f_unary},
+    {"atan", f_unary},
+    {"atan2", f_atan2},
+    {"ceil", f_unary},
+    {"chr", f_chr},
+    {"concat", f_concat},
+    {"cos", f_unary},
+    {"cross", f_cross},
+    {"exp", f_unary},
+    {"floor", f_unary},
+    {"is_bool", f_is},
+    {"is_function", f_is},
+    {"is_list", f_is},
+    {"is_num", f_is},
+    {"is_string", f_is},
+    {"is_undef", f_is},
+    {"len", f_len},
+    {"ln", f_unary},
+    {"log", f_log},
+    {"lookup", f_lookup},
+    {"max", f_minmax},
+    {"min", f_minmax},
+    {"norm", f_norm},
+    {"ord", f_ord},
+    {"pow", f_pow},
+    {"rands", f_rands},
+    {"round", f_unary},
+    {"search", f_search},
+    {"sign", f_unary},
+    {"sin", f_unary},
+    {"sqrt", f_unary},
+    {"str", f_str},
+    {"tan", f_unary},
+    {"version", f_version},
     {"version_num", f_version},
 };
 
@@ -628,6 +681,7 @@ static int by_name(const void *k, const void *e)
 
 scad_builtin_fn scad_builtin_function(const char *name)
 {
-    const void *hit = bsearch(name, table, sizeof table / sizeof table[0], sizeof table[0], by_name);
+    const void *hit =
+        bsearch(name, table, sizeof table / sizeof table[0], sizeof table[0], by_name);
     return hit ? ((const entry *)hit)->fn : NULL;
 }

@@ -15,9 +15,6 @@
 
 #include "eval.h"
 
-double scad_sin_degrees(double x);
-double scad_cos_degrees(double x);
-
 static int num_of(scad_value v, double *x)
 {
     if (v.kind != SV_NUM) return 0;
@@ -34,7 +31,8 @@ static int vec3_of(scad_value v, double out[3])
     if (p->n < 2 || p->n > 3) return 0;
     for (int i = 0; i < p->n; i++)
         if (p->v[i].kind != SV_NUM) return 0;
-    for (int i = 0; i < p->n; i++) out[i] = p->v[i].u.num;
+    for (int i = 0; i < p->n; i++)
+        out[i] = p->v[i].u.num;
     return 1;
 }
 
@@ -46,8 +44,8 @@ static scad_geom *leaf(scad_eval *ev, const iv_shape *s, const scad_state *state
     return scad_geom_leaf(ev, s, &st);
 }
 
-static scad_geom *m_cube(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                         const scad_argv *a, const scad_state *state)
+static scad_geom *m_cube(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                         const scad_state *state)
 {
     (void)env;
     static const char *const known[] = {"size", "center", NULL};
@@ -100,8 +98,8 @@ static int radius(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *d
     return 0;
 }
 
-static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                           const scad_argv *a, const scad_state *state)
+static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
 {
     (void)env;
     static const char *const known[] = {"r", "d", NULL};
@@ -116,8 +114,8 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return leaf(ev, &sh, state, NULL);
 }
 
-static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                             const scad_argv *a, const scad_state *state)
+static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                             const scad_state *state)
 {
     (void)env;
     static const char *const known[] = {"h", "r1", "r2", "center", "r", "d", "d1", "d2", NULL};
@@ -133,8 +131,8 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st,
     if (has_r2) r2 = x2;
     scad_value c = scad_argv_get(a, "center", 3);
     int center = c.kind == SV_BOOL && c.u.b;
-    if (!(h > 0) || !isfinite(h) || !(r1 >= 0) || !(r2 >= 0) || !isfinite(r1) ||
-        !isfinite(r2) || (r1 == 0 && r2 == 0))
+    if (!(h > 0) || !isfinite(h) || !(r1 >= 0) || !(r2 >= 0) || !isfinite(r1) || !isfinite(r2) ||
+        (r1 == 0 && r2 == 0))
         return NULL;
     iv_shape sh;
     memset(&sh, 0, sizeof sh);
@@ -155,10 +153,13 @@ static scad_geom *with_matrix(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return scad_eval_children(ev, env, st, &s, CSG_OP_UNION);
 }
 
-static void identity(csg_affine m) { memcpy(m, csg_affine_identity, sizeof(csg_affine)); }
+static void identity(csg_affine m)
+{
+    memcpy(m, csg_affine_identity, sizeof(csg_affine));
+}
 
-static scad_geom *m_translate(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                              const scad_argv *a, const scad_state *state)
+static scad_geom *m_translate(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                              const scad_state *state)
 {
     static const char *const known[] = {"v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
@@ -173,8 +174,8 @@ static scad_geom *m_translate(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return with_matrix(ev, env, st, state, m);
 }
 
-static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                           const scad_argv *a, const scad_state *state)
+static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
 {
     static const char *const known[] = {"a", "v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
@@ -184,13 +185,23 @@ static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st,
     scad_value vv = scad_argv_get(a, "v", 1);
     if (av.kind == SV_VEC) {
         double ang[3] = {0, 0, 0};
-        for (int i = 0; i < av.u.vec->n && i < 3; i++) num_of(av.u.vec->v[i], &ang[i]);
+        for (int i = 0; i < av.u.vec->n && i < 3; i++)
+            num_of(av.u.vec->v[i], &ang[i]);
         double sx = scad_sin_degrees(ang[0]), cx = scad_cos_degrees(ang[0]);
         double sy = scad_sin_degrees(ang[1]), cy = scad_cos_degrees(ang[1]);
         double sz = scad_sin_degrees(ang[2]), cz = scad_cos_degrees(ang[2]);
-        csg_affine r = {cy * cz, cz * sx * sy - cx * sz, cx * cz * sy + sx * sz, 0,
-                        cy * sz, cx * cz + sx * sy * sz, -cz * sx + cx * sy * sz, 0,
-                        -sy,     cy * sx,                cx * cy,                 0};
+        csg_affine r = {cy * cz,
+                        cz * sx * sy - cx * sz,
+                        cx * cz * sy + sx * sz,
+                        0,
+                        cy * sz,
+                        cx * cz + sx * sy * sz,
+                        -cz * sx + cx * sy * sz,
+                        0,
+                        -sy,
+                        cy * sx,
+                        cx * cy,
+                        0};
         memcpy(m, r, sizeof m);
     } else {
         double ang;
@@ -226,21 +237,23 @@ static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return with_matrix(ev, env, st, state, m);
 }
 
-static scad_geom *m_scale(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                          const scad_argv *a, const scad_state *state)
+static scad_geom *m_scale(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                          const scad_state *state)
 {
     static const char *const known[] = {"v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
     double v[3] = {1, 1, 1}, x;
     scad_value sv = scad_argv_get(a, "v", 0);
-    if (num_of(sv, &x)) v[0] = v[1] = v[2] = x;
-    else vec3_of(sv, v);
+    if (num_of(sv, &x))
+        v[0] = v[1] = v[2] = x;
+    else
+        vec3_of(sv, v);
     csg_affine m = {v[0], 0, 0, 0, 0, v[1], 0, 0, 0, 0, v[2], 0};
     return with_matrix(ev, env, st, state, m);
 }
 
-static scad_geom *m_mirror(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                           const scad_argv *a, const scad_state *state)
+static scad_geom *m_mirror(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
 {
     static const char *const known[] = {"v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
@@ -272,7 +285,8 @@ static scad_geom *m_multmatrix(scad_eval *ev, scad_env *env, const scad_stmt *st
         for (int i = 0; i < 3 && i < mv.u.vec->n; i++) {
             scad_value row = mv.u.vec->v[i];
             if (row.kind != SV_VEC) continue;
-            for (int j = 0; j < 4 && j < row.u.vec->n; j++) num_of(row.u.vec->v[j], &m[i * 4 + j]);
+            for (int j = 0; j < 4 && j < row.u.vec->n; j++)
+                num_of(row.u.vec->v[j], &m[i * 4 + j]);
         }
     }
     return with_matrix(ev, env, st, state, m);
@@ -286,8 +300,7 @@ static int parse_hex(const char *s, float rgba[4])
     float max = stride == 1 ? 15.0f : 255.0f;
     for (size_t i = 1; i < n; i++) {
         char c = s[i];
-        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')))
-            return 0;
+        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'))) return 0;
     }
     rgba[3] = 1;
     for (size_t i = 0; i < (n - 1) / (size_t)stride; i++) {
@@ -302,8 +315,8 @@ static int parse_hex(const char *s, float rgba[4])
     return 1;
 }
 
-static scad_geom *m_color(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                          const scad_argv *a, const scad_state *state)
+static scad_geom *m_color(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                          const scad_state *state)
 {
     static const char *const known[] = {"c", "alpha", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
@@ -318,9 +331,10 @@ static scad_geom *m_color(scad_eval *ev, scad_env *env, const scad_stmt *st,
             }
             rgba[i] = (float)x;
             if (rgba[i] > 1 || rgba[i] < 0)
-                scad_diag_warning(ev->d, st->loc,
-                                  "color() expects numbers between 0.0 and 1.0. Value of %.1f is out of range",
-                                  (double)rgba[i]);
+                scad_diag_warning(
+                    ev->d, st->loc,
+                    "color() expects numbers between 0.0 and 1.0. Value of %.1f is out of range",
+                    (double)rgba[i]);
         }
     } else if (c.kind == SV_STR) {
         char name[64];
@@ -330,27 +344,30 @@ static scad_geom *m_color(scad_eval *ev, scad_env *env, const scad_stmt *st,
             name[i] = (ch >= 'A' && ch <= 'Z') ? (char)(ch + 32) : ch;
         }
         name[n] = 0;
-        if (c.u.str->len >= sizeof name || (!scad_color_by_name(name, rgba) && !parse_hex(name, rgba))) {
+        if (c.u.str->len >= sizeof name ||
+            (!scad_color_by_name(name, rgba) && !parse_hex(name, rgba))) {
             char shown[64];
             memcpy(shown, name, n + 1);
             scad_diag_warning(ev->d, st->loc, "Unable to parse color \"%s\"", shown);
-            scad_diag_line(ev->d, SCAD_MSG_WARNING, "Please see https://en.wikipedia.org/wiki/Web_colors");
+            scad_diag_line(ev->d, SCAD_MSG_WARNING,
+                           "Please see https://en.wikipedia.org/wiki/Web_colors");
         }
     }
     double alpha;
     if (num_of(scad_argv_get(a, "alpha", 1), &alpha)) rgba[3] = (float)alpha;
     scad_state s = *state;
-    int valid = !(rgba[0] < 0 || rgba[1] < 0 || rgba[2] < 0 || rgba[3] < 0) &&
-                !isnan(rgba[0]) && !isnan(rgba[1]) && !isnan(rgba[2]) && !isnan(rgba[3]);
+    int valid = !(rgba[0] < 0 || rgba[1] < 0 || rgba[2] < 0 || rgba[3] < 0) && !isnan(rgba[0]) &&
+                !isnan(rgba[1]) && !isnan(rgba[2]) && !isnan(rgba[3]);
     if (!s.mat.has_color && valid) { /* the outermost valid color() wins */
         s.mat.has_color = 1;
-        for (int i = 0; i < 4; i++) s.mat.rgba[i] = rgba[i] > 1 ? 1.0f : rgba[i];
+        for (int i = 0; i < 4; i++)
+            s.mat.rgba[i] = rgba[i] > 1 ? 1.0f : rgba[i];
     }
     return scad_eval_children(ev, env, st, &s, CSG_OP_UNION);
 }
 
-static scad_geom *m_group(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                          const scad_argv *a, const scad_state *state)
+static scad_geom *m_group(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                          const scad_state *state)
 {
     static const char *const none[] = {NULL};
     static const char *const render[] = {"convexity", NULL};
@@ -365,10 +382,12 @@ static const struct {
     const char *name;
     scad_builtin_mod fn;
 } table[] = {
-    {"color", m_color},         {"cube", m_cube},         {"cylinder", m_cylinder},
-    {"difference", m_group},    {"group", m_group},       {"intersection", m_group},
-    {"mirror", m_mirror},       {"multmatrix", m_multmatrix}, {"render", m_group},
-    {"rotate", m_rotate},       {"scale", m_scale},       {"sphere", m_sphere},
+    {"color", m_color},         {"cube", m_cube},
+    {"cylinder", m_cylinder},   {"difference", m_group},
+    {"group", m_group},         {"intersection", m_group},
+    {"mirror", m_mirror},       {"multmatrix", m_multmatrix},
+    {"render", m_group},        {"rotate", m_rotate},
+    {"scale", m_scale},         {"sphere", m_sphere},
     {"translate", m_translate}, {"union", m_group},
 };
 

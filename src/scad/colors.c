@@ -173,8 +173,8 @@ static int by_name(const void *k, const void *e)
 
 int scad_color_by_name(const char *name, float rgba[4])
 {
-    const named *c = bsearch(name, colors, sizeof colors / sizeof colors[0], sizeof colors[0],
-                             by_name);
+    const named *c =
+        bsearch(name, colors, sizeof colors / sizeof colors[0], sizeof colors[0], by_name);
     if (!c) return 0;
     rgba[0] = c->r / 255.0f;
     rgba[1] = c->g / 255.0f;

@@ -28,21 +28,19 @@ void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(line, sizeof line, "%s:%d:%d: error: %s", loc.file ? loc.file : "?",
-             loc.line, loc.col, msg);
+    snprintf(line, sizeof line, "%s:%d:%d: error: %s", loc.file ? loc.file : "?", loc.line, loc.col,
+             msg);
     scad_diag_line(d, SCAD_MSG_ERROR, line);
 }
 
-static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt,
-                    va_list ap)
+static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
     vsnprintf(msg, sizeof msg, fmt, ap);
     const char *file = loc.file ? loc.file : "?";
     size_t n = d->base_dir ? strlen(d->base_dir) : 0;
     if (n && strncmp(file, d->base_dir, n) == 0) file += n;
-    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, file,
-             loc.line);
+    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, file, loc.line);
     scad_diag_line(d, SCAD_MSG_WARNING, line);
 }
 

@@ -43,8 +43,8 @@ static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char 
     char here;
     if (ev->aborted) return -1;
     if (ev->depth >= ev->max_depth) {
-        scad_eval_error(ev, loc, "recursion deeper than %d calls (calling %s '%s')",
-                        ev->max_depth, what, name);
+        scad_eval_error(ev, loc, "recursion deeper than %d calls (calling %s '%s')", ev->max_depth,
+                        what, name);
         return -1;
     }
     size_t used = ev->stack_base > &here ? (size_t)(ev->stack_base - &here)
@@ -59,12 +59,14 @@ static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char 
     return 0;
 }
 
-static void leave_call(scad_eval *ev) { ev->depth--; }
+static void leave_call(scad_eval *ev)
+{
+    ev->depth--;
+}
 
 /* ---- environments ------------------------------------------------------------ */
 
-static scad_env *env_new(scad_eval *ev, scad_env *parent, scad_env *dyn,
-                         const scad_scope *defs)
+static scad_env *env_new(scad_eval *ev, scad_env *parent, scad_env *dyn, const scad_scope *defs)
 {
     scad_env *e = calloc(1, sizeof *e);
     if (!e) {
@@ -81,7 +83,8 @@ static scad_env *env_new(scad_eval *ev, scad_env *parent, scad_env *dyn,
 
 static void env_release(scad_env *e)
 {
-    for (int i = 0; i < e->nvars; i++) scad_value_drop(e->vars[i].v);
+    for (int i = 0; i < e->nvars; i++)
+        scad_value_drop(e->vars[i].v);
     if (e->vars != e->inline_vars) free(e->vars);
     free(e);
 }
@@ -101,7 +104,6 @@ static void env_capture(scad_eval *ev, scad_env *e)
     }
 }
 
-void scad_eval_free_captured(scad_eval *ev);
 void scad_eval_free_captured(scad_eval *ev)
 {
     /* Values first: they may hold closures, which only point at envs. */
@@ -147,8 +149,8 @@ static scad_var *env_find(scad_env *env, const char *name)
     return NULL;
 }
 
-scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name,
-                           scad_loc loc, int silent, int *found)
+scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_loc loc, int silent,
+                           int *found)
 {
     int special = name[0] == '$';
     for (scad_env *e = env; e; e = special ? e->dyn : e->parent) {
@@ -163,8 +165,7 @@ scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name,
     return scad_undef();
 }
 
-static const scad_funcdef *find_function(scad_env *env, const char *name,
-                                         scad_env **def_env)
+static const scad_funcdef *find_function(scad_env *env, const char *name, scad_env **def_env)
 {
     for (scad_env *e = env; e; e = e->parent) {
         if (!e->defs) continue;
@@ -215,8 +216,7 @@ static int eval_args(scad_eval *ev, scad_env *env, const scad_args *args, scad_a
         return -1;
     }
     for (int i = 0; i < args->n; i++) {
-        out->v[i] = args->v[i].value ? scad_eval_expr(ev, env, args->v[i].value)
-                                     : scad_undef();
+        out->v[i] = args->v[i].value ? scad_eval_expr(ev, env, args->v[i].value) : scad_undef();
         out->names[i] = args->v[i].name;
         out->locs[i] = args->v[i].loc;
         out->n++;
@@ -226,7 +226,8 @@ static int eval_args(scad_eval *ev, scad_env *env, const scad_args *args, scad_a
 
 static void argv_free(scad_argv *a)
 {
-    for (int i = 0; i < a->n; i++) scad_value_drop(a->v[i]);
+    for (int i = 0; i < a->n; i++)
+        scad_value_drop(a->v[i]);
     free(a->v);
     free(a->names);
     free(a->locs);
@@ -261,8 +262,7 @@ int scad_argv_given(const scad_argv *a, const char *name, int pos)
     return 0;
 }
 
-void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc,
-                          const char *const *known)
+void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *const *known)
 {
     for (int i = 0; i < a->n; i++) {
         if (!a->names[i] || a->names[i][0] == '$') continue;
@@ -270,17 +270,16 @@ void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc,
         for (const char *const *k = known; *k; k++)
             if (strcmp(*k, a->names[i]) == 0) ok = 1;
         if (!ok)
-            scad_diag_warning(ev->d, loc, "variable %s not specified as parameter",
-                              a->names[i]);
+            scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", a->names[i]);
     }
 }
 
-void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env,
-                    const scad_args *params, const scad_argv *argv, scad_loc loc)
+void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env, const scad_args *params,
+                    const scad_argv *argv, scad_loc loc)
 {
     for (int i = 0; i < params->n; i++) {
-        scad_value v = params->v[i].value ? scad_eval_expr(ev, def_env, params->v[i].value)
-                                          : scad_undef();
+        scad_value v =
+            params->v[i].value ? scad_eval_expr(ev, def_env, params->v[i].value) : scad_undef();
         scad_env_set(target, params->v[i].name, v);
     }
     int pos = 0, too_many = 0;
@@ -334,12 +333,18 @@ static scad_value arith(int op, scad_value a, scad_value b, int *defined)
     *defined = 1;
     if (a.kind == SV_NUM && b.kind == SV_NUM) {
         switch (op) {
-        case '+': return scad_num(a.u.num + b.u.num);
-        case '-': return scad_num(a.u.num - b.u.num);
-        case '*': return scad_num(a.u.num * b.u.num);
-        case '/': return scad_num(a.u.num / b.u.num);
-        case '%': return scad_num(fmod(a.u.num, b.u.num));
-        case '^': return scad_num(pow(a.u.num, b.u.num));
+        case '+':
+            return scad_num(a.u.num + b.u.num);
+        case '-':
+            return scad_num(a.u.num - b.u.num);
+        case '*':
+            return scad_num(a.u.num * b.u.num);
+        case '/':
+            return scad_num(a.u.num / b.u.num);
+        case '%':
+            return scad_num(fmod(a.u.num, b.u.num));
+        case '^':
+            return scad_num(pow(a.u.num, b.u.num));
         }
     }
     if ((op == '+' || op == '-') && a.kind == SV_VEC && b.kind == SV_VEC) {
@@ -347,7 +352,8 @@ static scad_value arith(int op, scad_value a, scad_value b, int *defined)
         scad_value r = scad_vec_new(n);
         if (r.kind != SV_VEC) return r;
         int dummy;
-        for (int i = 0; i < n; i++) r.u.vec->v[i] = arith(op, a.u.vec->v[i], b.u.vec->v[i], &dummy);
+        for (int i = 0; i < n; i++)
+            r.u.vec->v[i] = arith(op, a.u.vec->v[i], b.u.vec->v[i], &dummy);
         return r;
     }
     if ((op == '*' && a.kind == SV_VEC && b.kind == SV_NUM) ||
@@ -370,13 +376,13 @@ static scad_value arith(int op, scad_value a, scad_value b, int *defined)
 static scad_value dot(const scad_vec *a, const scad_vec *b)
 {
     double s = 0;
-    for (int i = 0; i < a->n; i++) s += a->v[i].u.num * b->v[i].u.num;
+    for (int i = 0; i < a->n; i++)
+        s += a->v[i].u.num * b->v[i].u.num;
     return scad_num(s);
 }
 
 /* Vector and matrix products, with OpenSCAD's warnings. */
-static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value b,
-                           int *defined)
+static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value b, int *defined)
 {
     if (!(a.kind == SV_VEC && b.kind == SV_VEC)) return arith('*', a, b, defined);
     *defined = 1;
@@ -394,9 +400,10 @@ static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value
         }
         /* vector * matrix */
         if (A->n != B->n) {
-            scad_diag_warning(ev->d, loc,
-                              "vector*matrix requires vector length to match matrix row count (%d != %d)",
-                              A->n, B->n);
+            scad_diag_warning(
+                ev->d, loc,
+                "vector*matrix requires vector length to match matrix row count (%d != %d)", A->n,
+                B->n);
             return scad_undef();
         }
         if (!is_num_vec(a) || !is_num_vec(B->v[0])) return scad_undef();
@@ -407,7 +414,8 @@ static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value
         if (r.kind != SV_VEC) return r;
         for (int j = 0; j < cols; j++) {
             double s = 0;
-            for (int i = 0; i < A->n; i++) s += A->v[i].u.num * B->v[i].u.vec->v[j].u.num;
+            for (int i = 0; i < A->n; i++)
+                s += A->v[i].u.num * B->v[i].u.vec->v[j].u.num;
             r.u.vec->v[j] = scad_num(s);
         }
         return r;
@@ -418,15 +426,17 @@ static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value
         if (!is_num_vec(A->v[i]) || A->v[i].u.vec->n != acols) return scad_undef();
     if (B->v[0].kind == SV_NUM) { /* matrix * vector */
         if (acols != B->n) {
-            scad_diag_warning(ev->d, loc,
-                              "matrix*vector requires matrix column count to match vector length (%d != %d)",
-                              acols, B->n);
+            scad_diag_warning(
+                ev->d, loc,
+                "matrix*vector requires matrix column count to match vector length (%d != %d)",
+                acols, B->n);
             return scad_undef();
         }
         if (!is_num_vec(b)) return scad_undef();
         scad_value r = scad_vec_new(A->n);
         if (r.kind != SV_VEC) return r;
-        for (int i = 0; i < A->n; i++) r.u.vec->v[i] = dot(A->v[i].u.vec, B);
+        for (int i = 0; i < A->n; i++)
+            r.u.vec->v[i] = dot(A->v[i].u.vec, B);
         return r;
     }
     if (B->v[0].kind != SV_VEC) return scad_undef();
@@ -435,7 +445,8 @@ static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value
         if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != bcols) return scad_undef();
     if (acols != B->n) {
         scad_diag_warning(ev->d, loc,
-                          "matrix*matrix requires left operand column count to match right operand row count (%d != %d)",
+                          "matrix*matrix requires left operand column count to match right operand "
+                          "row count (%d != %d)",
                           acols, B->n);
         return scad_undef();
     }
@@ -460,8 +471,10 @@ static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_v
     int op = e->op, defined = 1;
     scad_value r;
     switch (op) {
-    case TK_EQ: return scad_bool(scad_value_equal(a, b));
-    case TK_NE: return scad_bool(!scad_value_equal(a, b));
+    case TK_EQ:
+        return scad_bool(scad_value_equal(a, b));
+    case TK_NE:
+        return scad_bool(!scad_value_equal(a, b));
     case '<':
     case '>':
     case TK_LE:
@@ -476,12 +489,16 @@ static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_v
         r = scad_bool(op == '<' ? c < 0 : op == '>' ? c > 0 : op == TK_LE ? c <= 0 : c >= 0);
         break;
     }
-    case '*': r = multiply(ev, e->loc, a, b, &defined); break;
-    default: r = arith(op, a, b, &defined); break;
+    case '*':
+        r = multiply(ev, e->loc, a, b, &defined);
+        break;
+    default:
+        r = arith(op, a, b, &defined);
+        break;
     }
     if (!defined)
-        scad_diag_warning(ev->d, e->loc, "undefined operation (%s %s %s)",
-                          scad_value_type_name(a), op_name(op), scad_value_type_name(b));
+        scad_diag_warning(ev->d, e->loc, "undefined operation (%s %s %s)", scad_value_type_name(a),
+                          op_name(op), scad_value_type_name(b));
     return r;
 }
 
@@ -492,7 +509,8 @@ static scad_value negate(scad_value v, int *defined)
         scad_value r = scad_vec_new(v.u.vec->n);
         if (r.kind != SV_VEC) return r;
         int dummy;
-        for (int i = 0; i < v.u.vec->n; i++) r.u.vec->v[i] = negate(v.u.vec->v[i], &dummy);
+        for (int i = 0; i < v.u.vec->n; i++)
+            r.u.vec->v[i] = negate(v.u.vec->v[i], &dummy);
         return r;
     }
     *defined = 0;
@@ -528,7 +546,8 @@ static scad_value vlist_take(vlist *l)
     if (r.kind == SV_VEC) {
         if (l->n) memcpy(r.u.vec->v, l->v, sizeof *l->v * (size_t)l->n);
     } else {
-        for (int i = 0; i < l->n; i++) scad_value_drop(l->v[i]);
+        for (int i = 0; i < l->n; i++)
+            scad_value_drop(l->v[i]);
     }
     free(l->v);
     l->v = NULL;
@@ -538,13 +557,13 @@ static scad_value vlist_take(vlist *l)
 
 static void vlist_free(vlist *l)
 {
-    for (int i = 0; i < l->n; i++) scad_value_drop(l->v[i]);
+    for (int i = 0; i < l->n; i++)
+        scad_value_drop(l->v[i]);
     free(l->v);
 }
 
 /* ---- iteration (for, each) --------------------------------------------------- */
 
-double scad_range_steps(const scad_range *r);
 /* Number of values of a range as OpenSCAD counts them: the quotient is
  * nudged up by one ulp so that [0:0.1:0.3] has 4 values; a zero step or an
  * infinite end gives UINT32_MAX (which the loop limit then refuses). */
@@ -564,13 +583,13 @@ double scad_range_steps(const scad_range *r)
 static int iter_values(scad_eval *ev, scad_value v, scad_loc loc, vlist *out)
 {
     switch (v.kind) {
-    case SV_UNDEF: return 0;
+    case SV_UNDEF:
+        return 0;
     case SV_RANGE: {
         double n = scad_range_steps(v.u.range);
         if (n > MAX_LOOP_ELEMENTS) {
             scad_diag_warning(ev->d, loc,
-                              "Bad range parameter in for statement: too many elements (%.0f)",
-                              n);
+                              "Bad range parameter in for statement: too many elements (%.0f)", n);
             return -1;
         }
         for (int i = 0; i < (int)n && !ev->aborted; i++)
@@ -586,13 +605,16 @@ static int iter_values(scad_eval *ev, scad_value v, scad_loc loc, vlist *out)
         size_t i = 0;
         while (i < v.u.str->len && !ev->aborted) {
             size_t k = 1;
-            while (i + k < v.u.str->len && ((unsigned char)s[i + k] & 0xC0) == 0x80) k++;
+            while (i + k < v.u.str->len && ((unsigned char)s[i + k] & 0xC0) == 0x80)
+                k++;
             vlist_push(ev, out, scad_str_new(s + i, k), loc);
             i += k;
         }
         return out->n;
     }
-    default: vlist_push(ev, out, scad_value_ref(v), loc); return 1;
+    default:
+        vlist_push(ev, out, scad_value_ref(v), loc);
+        return 1;
     }
 }
 
@@ -639,8 +661,7 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
         if (fv.kind != SV_FUNC) {
             scad_env *def_env;
             const scad_funcdef *f = find_function(env, callee->str, &def_env);
-            if (f)
-                return call_user_function(ev, env, e, f->name, &f->params, f->body, def_env);
+            if (f) return call_user_function(ev, env, e, f->name, &f->params, f->body, def_env);
             scad_builtin_fn b = scad_builtin_function(callee->str);
             if (b) {
                 scad_argv argv;
@@ -666,8 +687,8 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
     scad_value keep = scad_value_ref(fv);
     if (owned) scad_value_drop(fv);
     const scad_expr *lit = keep.u.func->lit;
-    scad_value r = call_user_function(ev, env, e, "function literal", &lit->args,
-                                      lit->a[0], keep.u.func->env);
+    scad_value r =
+        call_user_function(ev, env, e, "function literal", &lit->args, lit->a[0], keep.u.func->env);
     scad_value_drop(keep);
     return r;
 }
@@ -686,11 +707,13 @@ static scad_value eval_index(scad_value v, scad_value i)
         size_t pos = 0, c = 0;
         while (c < (size_t)k) {
             pos++;
-            while (pos < v.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80) pos++;
+            while (pos < v.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80)
+                pos++;
             c++;
         }
         size_t len = 1;
-        while (pos + len < v.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80) len++;
+        while (pos + len < v.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
+            len++;
         return scad_str_new(s + pos, len);
     }
     if (v.kind == SV_RANGE) {
@@ -788,7 +811,8 @@ static void push_each(scad_eval *ev, scad_value v, scad_loc loc, vlist *out)
     if (v.kind == SV_VEC || v.kind == SV_RANGE || v.kind == SV_STR) {
         vlist items = {0};
         if (iter_values(ev, v, loc, &items) > 0)
-            for (int i = 0; i < items.n; i++) vlist_push(ev, out, scad_value_ref(items.v[i]), loc);
+            for (int i = 0; i < items.n; i++)
+                vlist_push(ev, out, scad_value_ref(items.v[i]), loc);
         vlist_free(&items);
         scad_value_drop(v);
     } else {
@@ -800,7 +824,9 @@ static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, vlist *out
 {
     if (ev->aborted) return;
     switch (e->kind) {
-    case LC_FOR: lc_for(ev, env, e, 0, out); break;
+    case LC_FOR:
+        lc_for(ev, env, e, 0, out);
+        break;
     case LC_CFOR: {
         scad_env *ie = env_new(ev, env, env, NULL);
         if (!ie) return;
@@ -812,8 +838,8 @@ static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, vlist *out
             scad_value_drop(c);
             if (!go || ev->aborted) break;
             if (++iterations > MAX_LOOP_ELEMENTS) {
-                scad_diag_warning(ev->d, e->loc,
-                                  "for loop stopped after %d iterations", MAX_LOOP_ELEMENTS);
+                scad_diag_warning(ev->d, e->loc, "for loop stopped after %d iterations",
+                                  MAX_LOOP_ELEMENTS);
                 break;
             }
             lc_eval(ev, ie, e->a[0], out);
@@ -867,7 +893,9 @@ static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, vlist *out
         }
         break;
     }
-    default: vlist_push(ev, out, scad_eval_expr(ev, env, e), e->loc); break;
+    default:
+        vlist_push(ev, out, scad_eval_expr(ev, env, e), e->loc);
+        break;
     }
 }
 
@@ -875,11 +903,16 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
 {
     if (ev->aborted) return scad_undef();
     switch (e->kind) {
-    case EX_NUMBER: return scad_num(e->num);
-    case EX_STRING: return scad_str_new(e->str, e->len);
-    case EX_BOOL: return scad_bool((int)e->num);
-    case EX_UNDEF: return scad_undef();
-    case EX_VAR: return scad_value_ref(scad_env_lookup(ev, env, e->str, e->loc, 0, NULL));
+    case EX_NUMBER:
+        return scad_num(e->num);
+    case EX_STRING:
+        return scad_str_new(e->str, e->len);
+    case EX_BOOL:
+        return scad_bool((int)e->num);
+    case EX_UNDEF:
+        return scad_undef();
+    case EX_VAR:
+        return scad_value_ref(scad_env_lookup(ev, env, e->str, e->loc, 0, NULL));
     case EX_RANGE: {
         scad_value b = scad_eval_expr(ev, env, e->a[0]);
         scad_value s = e->a[1] ? scad_eval_expr(ev, env, e->a[1]) : scad_num(1);
@@ -889,7 +922,8 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
             double bb = b.u.num, ss = s.u.num, ee = en.u.num;
             if (!e->a[1] && bb > ee) {
                 scad_diag_deprecated(ev->d, e->loc,
-                                     "Using ranges of the form [begin:end] with begin value greater than the end value is deprecated");
+                                     "Using ranges of the form [begin:end] with begin value "
+                                     "greater than the end value is deprecated");
                 double t = bb;
                 bb = ee;
                 ee = t;
@@ -909,7 +943,8 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
     }
     case EX_VECTOR: {
         vlist l = {0};
-        for (int i = 0; i < e->n && !ev->aborted; i++) lc_eval(ev, env, e->list[i], &l);
+        for (int i = 0; i < e->n && !ev->aborted; i++)
+            lc_eval(ev, env, e->list[i], &l);
         if (ev->aborted) {
             vlist_free(&l);
             return scad_undef();
@@ -957,7 +992,8 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
         scad_value_drop(c);
         return scad_eval_expr(ev, env, e->a[t ? 1 : 2]);
     }
-    case EX_CALL: return eval_call(ev, env, e);
+    case EX_CALL:
+        return eval_call(ev, env, e);
     case EX_INDEX: {
         scad_value v = scad_eval_expr(ev, env, e->a[0]);
         scad_value i = scad_eval_expr(ev, env, e->a[1]);
@@ -971,7 +1007,8 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
         scad_value r = scad_undef();
         const char *m = e->str;
         int k = -1;
-        if (v.kind == SV_VEC) k = !strcmp(m, "x") ? 0 : !strcmp(m, "y") ? 1 : !strcmp(m, "z") ? 2 : -1;
+        if (v.kind == SV_VEC)
+            k = !strcmp(m, "x") ? 0 : !strcmp(m, "y") ? 1 : !strcmp(m, "z") ? 2 : -1;
         if (v.kind == SV_RANGE)
             k = !strcmp(m, "begin") ? 0 : !strcmp(m, "step") ? 1 : !strcmp(m, "end") ? 2 : -1;
         if (k >= 0) r = eval_index(v, scad_num(k));
@@ -1083,7 +1120,8 @@ static scad_geom *finish(scad_eval *ev, gather *g, csg_op op)
         r = g->v[0];
     } else if (g->n > 1) {
         r = scad_geom_op(ev, op);
-        for (int i = 0; i < g->n; i++) scad_geom_add(ev, r, g->v[i]);
+        for (int i = 0; i < g->n; i++)
+            scad_geom_add(ev, r, g->v[i]);
     }
     free(g->v);
     g->v = NULL;
@@ -1118,8 +1156,8 @@ static void run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s)
 }
 
 /* Instantiates the statements of s (all of them, or those picked) in env. */
-static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s,
-                      const scad_state *state, gather *out, const int *pick, int npick)
+static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s, const scad_state *state,
+                      gather *out, const int *pick, int npick)
 {
     int n = pick ? npick : s->nstmts;
     for (int i = 0; i < n && !ev->aborted; i++)
@@ -1127,9 +1165,8 @@ static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s,
 }
 
 /* A child scope: a fresh environment below env for its assignments. */
-static scad_geom *child_scope(scad_eval *ev, scad_env *env, scad_env *dyn,
-                              const scad_scope *s, const scad_state *state, csg_op op,
-                              const int *pick, int npick)
+static scad_geom *child_scope(scad_eval *ev, scad_env *env, scad_env *dyn, const scad_scope *s,
+                              const scad_state *state, csg_op op, const int *pick, int npick)
 {
     if (!s || ev->aborted) return NULL;
     scad_env *ce = env_new(ev, env, dyn, s);
@@ -1155,20 +1192,21 @@ static int is_literal(const scad_expr *e)
     case EX_NUMBER:
     case EX_STRING:
     case EX_BOOL:
-    case EX_UNDEF: return 1;
+    case EX_UNDEF:
+        return 1;
     case EX_VECTOR:
         for (int i = 0; i < e->n; i++)
             if (!is_literal(e->list[i])) return 0;
         return 1;
     case EX_RANGE:
         return is_literal(e->a[0]) && (!e->a[1] || is_literal(e->a[1])) && is_literal(e->a[2]);
-    default: return 0;
+    default:
+        return 0;
     }
 }
 
 static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                              const scad_moddef *m, scad_env *def_env,
-                              const scad_state *state)
+                              const scad_moddef *m, scad_env *def_env, const scad_state *state)
 {
     scad_argv argv;
     if (eval_args(ev, env, &st->args, &argv)) return NULL;
@@ -1207,11 +1245,12 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return r;
 }
 
-static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                              const scad_argv *a, const scad_state *state)
+static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                              const scad_state *state)
 {
     scad_env *m = env;
-    while (m && !m->is_module) m = m->parent;
+    while (m && !m->is_module)
+        m = m->parent;
     if (!m || !m->children || m->children->nstmts == 0) return NULL;
     int n = m->children->nstmts;
     if (a->n == 0)
@@ -1226,8 +1265,10 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
             return NULL;
         }
     } else {
-        scad_diag_warning(ev->d, st->loc, "Bad parameter type (%s) for children, only accept: empty, number, vector, range.",
-                          scad_value_type_name(sel));
+        scad_diag_warning(
+            ev->d, st->loc,
+            "Bad parameter type (%s) for children, only accept: empty, number, vector, range.",
+            scad_value_type_name(sel));
         return NULL;
     }
     int *pick = malloc(sizeof *pick * (size_t)(idx.n ? idx.n : 1));
@@ -1236,20 +1277,20 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
         if (idx.v[i].kind != SV_NUM) continue;
         double k = idx.v[i].u.num;
         if (k < 0 || k >= n || isnan(k)) {
-        {
-            /* OpenSCAD words this one without a location */
-            char line[128];
-            snprintf(line, sizeof line,
-                     "WARNING: Children index (%d) out of bounds (%d children)", (int)k, n);
-            scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
-        }
+            {
+                /* OpenSCAD words this one without a location */
+                char line[128];
+                snprintf(line, sizeof line,
+                         "WARNING: Children index (%d) out of bounds (%d children)", (int)k, n);
+                scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
+            }
             continue;
         }
         pick[np++] = (int)k;
     }
-    scad_geom *r = np ? child_scope(ev, m->children_env, env, m->children, state,
-                                    CSG_OP_UNION, pick, np)
-                      : NULL;
+    scad_geom *r =
+        np ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, pick, np)
+           : NULL;
     free(pick);
     vlist_free(&idx);
     return r;
@@ -1257,8 +1298,8 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
 
 /* for / intersection_for: nested loops over the arguments, evaluated once
  * in the caller's environment (as OpenSCAD does). */
-static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                     int k, scad_env *cur, const scad_state *state, gather *out)
+static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a, int k,
+                     scad_env *cur, const scad_state *state, gather *out)
 {
     if (ev->aborted) return;
     if (k == a->n) {
@@ -1286,8 +1327,8 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_value c = scad_eval_expr(ev, env, st->cond);
         int t = scad_value_truthy(c);
         scad_value_drop(c);
-        return child_scope(ev, env, env, t ? st->children : st->else_children, state,
-                           CSG_OP_UNION, NULL, 0);
+        return child_scope(ev, env, env, t ? st->children : st->else_children, state, CSG_OP_UNION,
+                           NULL, 0);
     }
     scad_env *def_env;
     const scad_moddef *m = find_module(env, name, &def_env);
@@ -1358,7 +1399,6 @@ static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
 }
 
 /* The file: its scope in env, top-level objects as an implicit union. */
-scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
 scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s)
 {
     scad_state st;
@@ -1371,10 +1411,11 @@ scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *
 }
 
 /* Environment creation for scad.c (the builtin and file scopes). */
-scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
 scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs)
 {
     return env_new(ev, parent, parent, defs);
 }
-void scad_env_free(scad_env *e);
-void scad_env_free(scad_env *e) { env_free(e); }
+void scad_env_free(scad_env *e)
+{
+    env_free(e);
+}

@@ -59,7 +59,7 @@ typedef struct scad_eval {
     scad_arena *arena; /* geometry */
     int depth, max_depth;
     int module_depth; /* user modules being instantiated: $parent_modules */
-    int aborted; /* an error stopped the evaluation */
+    int aborted;      /* an error stopped the evaluation */
     char *stack_base;
     size_t stack_budget;
     scad_env *captured;
@@ -83,8 +83,8 @@ typedef struct scad_argv {
 scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e);
 /* Borrowed value of a variable; undef (with OpenSCAD's warning unless
  * silent) when unknown.  *found tells which. */
-scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name,
-                           scad_loc loc, int silent, int *found);
+scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_loc loc, int silent,
+                           int *found);
 /* Set (or replace) a variable in env; takes ownership of v. */
 void scad_env_set(scad_env *env, const char *name, scad_value v);
 
@@ -92,12 +92,26 @@ void scad_env_set(scad_env *env, const char *name, scad_value v);
  * def_env, then positional, then named arguments; $-named arguments are set
  * even when not declared.  Warns like OpenSCAD about unknown names and extra
  * positional arguments.  The values in argv are borrowed (referenced). */
-void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env,
-                    const scad_args *params, const scad_argv *argv, scad_loc loc);
+void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env, const scad_args *params,
+                    const scad_argv *argv, scad_loc loc);
 
 /* Error: reports "file:line:col: error: …" and stops the evaluation. */
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* The file's scope evaluated in env; top-level objects as one union. */
+scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
+/* An environment below parent (lexical and dynamic); free with
+ * scad_env_free (a no-op for environments a closure captured). */
+scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
+void scad_env_free(scad_env *e);
+/* Frees the environments closures kept alive; call once at the end. */
+void scad_eval_free_captured(scad_eval *ev);
+/* Values in a range, OpenSCAD's count (UINT32_MAX for endless ones). */
+double scad_range_steps(const scad_range *r);
+/* sin/cos in degrees, exact at multiples of 30 and 45 degrees. */
+double scad_sin_degrees(double x);
+double scad_cos_degrees(double x);
 
 /* ---- builtins --------------------------------------------------------------- */
 
@@ -109,9 +123,8 @@ scad_builtin_fn scad_builtin_function(const char *name);
 
 /* A builtin module: evaluates its children as it needs (through
  * scad_eval_children) and returns the geometry (NULL: nothing). */
-typedef scad_geom *(*scad_builtin_mod)(scad_eval *ev, scad_env *env,
-                                       const scad_stmt *st, const scad_argv *a,
-                                       const scad_state *state);
+typedef scad_geom *(*scad_builtin_mod)(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                       const scad_argv *a, const scad_state *state);
 scad_builtin_mod scad_builtin_module(const char *name);
 
 /* Instantiate st's children in a fresh scope below env with the given state;

@@ -56,15 +56,20 @@ static scad_token *push(lexer *L, scad_tok_kind kind, scad_loc loc)
     return t;
 }
 
-static int is_idch(int c) { return isalnum(c) || c == '_'; }
+static int is_idch(int c)
+{
+    return isalnum(c) || c == '_';
+}
 
 static size_t number_length(const char *s)
 {
     size_t i = 0, digits = 0;
-    while (isdigit((unsigned char)s[i])) i++, digits++;
+    while (isdigit((unsigned char)s[i]))
+        i++, digits++;
     if (s[i] == '.') {
         size_t j = i + 1, frac = 0;
-        while (isdigit((unsigned char)s[j])) j++, frac++;
+        while (isdigit((unsigned char)s[j]))
+            j++, frac++;
         if (digits + frac == 0) return 0;
         i = j;
     } else if (digits == 0) {
@@ -74,7 +79,8 @@ static size_t number_length(const char *s)
         size_t j = i + 1;
         if (s[j] == '+' || s[j] == '-') j++;
         if (isdigit((unsigned char)s[j])) {
-            while (isdigit((unsigned char)s[j])) j++;
+            while (isdigit((unsigned char)s[j]))
+                j++;
             i = j;
         }
     }
@@ -118,7 +124,8 @@ static void lex_string(lexer *L, scad_loc loc)
 {
     const char *s = L->p + 1;
     size_t cap = 0;
-    while (s[cap] && s[cap] != '"') cap += (s[cap] == '\\' && s[cap + 1]) ? 2 : 1;
+    while (s[cap] && s[cap] != '"')
+        cap += (s[cap] == '\\' && s[cap + 1]) ? 2 : 1;
     char *buf = scad_arena_alloc(L->a, cap + 8);
     if (!buf) {
         L->failed = 1;
@@ -145,11 +152,21 @@ static void lex_string(lexer *L, scad_loc loc)
         char e = L->p[1];
         size_t used = 2;
         switch (e) {
-        case 'n': buf[n++] = '\n'; break;
-        case 't': buf[n++] = '\t'; break;
-        case 'r': buf[n++] = '\r'; break;
-        case '\\': buf[n++] = '\\'; break;
-        case '"': buf[n++] = '"'; break;
+        case 'n':
+            buf[n++] = '\n';
+            break;
+        case 't':
+            buf[n++] = '\t';
+            break;
+        case 'r':
+            buf[n++] = '\r';
+            break;
+        case '\\':
+            buf[n++] = '\\';
+            break;
+        case '"':
+            buf[n++] = '"';
+            break;
         case 'x': {
             int h1 = hexval(L->p[2]), h2 = h1 >= 0 ? hexval(L->p[3]) : -1;
             if (h1 >= 0 && h1 <= 7 && h2 >= 0) {
@@ -177,8 +194,12 @@ static void lex_string(lexer *L, scad_loc loc)
             }
             break;
         }
-        case 0: used = 1; break;
-        default: buf[n++] = e; break;
+        case 0:
+            used = 1;
+            break;
+        default:
+            buf[n++] = e;
+            break;
         }
         advance(L, used);
     }
@@ -196,17 +217,17 @@ static const struct {
     const char *word;
     scad_tok_kind kind;
 } keywords[] = {
-    {"module", TK_MODULE}, {"function", TK_FUNCTION}, {"if", TK_IF},
-    {"else", TK_ELSE},     {"for", TK_FOR},           {"let", TK_LET},
-    {"assert", TK_ASSERT}, {"echo", TK_ECHO},         {"each", TK_EACH},
-    {"true", TK_TRUE},     {"false", TK_FALSE},       {"undef", TK_UNDEF},
+    {"module", TK_MODULE}, {"function", TK_FUNCTION}, {"if", TK_IF},         {"else", TK_ELSE},
+    {"for", TK_FOR},       {"let", TK_LET},           {"assert", TK_ASSERT}, {"echo", TK_ECHO},
+    {"each", TK_EACH},     {"true", TK_TRUE},         {"false", TK_FALSE},   {"undef", TK_UNDEF},
 };
 
 /* include <path> / use <path>: returns 1 when one was lexed. */
 static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kind)
 {
     const char *q = L->p + wordlen;
-    while (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n') q++;
+    while (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n')
+        q++;
     if (*q != '<') return 0;
     const char *end = strchr(q, '>');
     if (!end || memchr(q, '\n', (size_t)(end - q))) {
@@ -226,8 +247,7 @@ static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kin
     return 1;
 }
 
-int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
-             scad_token **out)
+int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, scad_token **out)
 {
     lexer L = {a, d, file, src, 1, 1, NULL, 0, 0, 0};
     while (!L.failed) {
@@ -239,7 +259,8 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
             continue;
         }
         if (c == '/' && L.p[1] == '/') {
-            while (*L.p && *L.p != '\n') advance(&L, 1);
+            while (*L.p && *L.p != '\n')
+                advance(&L, 1);
             continue;
         }
         if (c == '/' && L.p[1] == '*') {
@@ -260,10 +281,12 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
         size_t il = 0;
         if (c == '$') {
             il = 1;
-            while (is_idch((unsigned char)L.p[il])) il++;
+            while (is_idch((unsigned char)L.p[il]))
+                il++;
             if (il == 1) il = 0;
         } else {
-            while (is_idch((unsigned char)L.p[il])) il++;
+            while (is_idch((unsigned char)L.p[il]))
+                il++;
         }
         if (nl > 0 && nl >= il) {
             scad_token *t = push(&L, TK_NUMBER, loc);
@@ -279,15 +302,11 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
         if (il > 0) {
             scad_tok_kind kind = TK_ID;
             for (size_t k = 0; k < sizeof keywords / sizeof keywords[0]; k++)
-                if (strlen(keywords[k].word) == il &&
-                    memcmp(keywords[k].word, L.p, il) == 0)
+                if (strlen(keywords[k].word) == il && memcmp(keywords[k].word, L.p, il) == 0)
                     kind = keywords[k].kind;
-            if (il == 7 && memcmp(L.p, "include", 7) == 0 &&
-                lex_include(&L, loc, 7, TK_INCLUDE))
+            if (il == 7 && memcmp(L.p, "include", 7) == 0 && lex_include(&L, loc, 7, TK_INCLUDE))
                 continue;
-            if (il == 3 && memcmp(L.p, "use", 3) == 0 &&
-                lex_include(&L, loc, 3, TK_USE))
-                continue;
+            if (il == 3 && memcmp(L.p, "use", 3) == 0 && lex_include(&L, loc, 3, TK_USE)) continue;
             scad_token *t = push(&L, kind, loc);
             if (!t) break;
             t->text = scad_arena_strndup(a, L.p, il);
@@ -298,7 +317,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
         static const struct {
             char s[3];
             scad_tok_kind kind;
-        } two[] = {{"<=", TK_LE}, {">=", TK_GE}, {"==", TK_EQ},
+        } two[] = {{"<=", TK_LE}, {">=", TK_GE},  {"==", TK_EQ},
                    {"!=", TK_NE}, {"&&", TK_AND}, {"||", TK_OR}};
         int done = 0;
         for (size_t k = 0; k < sizeof two / sizeof two[0]; k++) {
@@ -317,8 +336,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src,
             advance(&L, 1);
             continue;
         }
-        scad_diag_error(d, loc, "unexpected character '%c'",
-                        isprint((unsigned char)c) ? c : '?');
+        scad_diag_error(d, loc, "unexpected character '%c'", isprint((unsigned char)c) ? c : '?');
         advance(&L, 1);
     }
     scad_loc loc = {file, L.line, L.col};

@@ -30,12 +30,15 @@ typedef struct parser {
 } parser;
 
 /* Raised by a failing rule: the whole statement is abandoned. */
-#define FAIL_IF(cond) \
-    do {              \
-        if (cond) return NULL; \
+#define FAIL_IF(cond)                                                                              \
+    do {                                                                                           \
+        if (cond) return NULL;                                                                     \
     } while (0)
 
-static scad_token *peek(parser *P) { return &P->t[P->pos]; }
+static scad_token *peek(parser *P)
+{
+    return &P->t[P->pos];
+}
 static scad_token *peek2(parser *P)
 {
     return &P->t[P->pos + 1 < P->ntok ? P->pos + 1 : P->pos];
@@ -46,22 +49,38 @@ static scad_token *next(parser *P)
     if (P->pos < P->ntok - 1) P->pos++;
     return t;
 }
-static int is_ch(const scad_token *t, int c) { return t->kind == TK_CHAR && t->ch == c; }
+static int is_ch(const scad_token *t, int c)
+{
+    return t->kind == TK_CHAR && t->ch == c;
+}
 
 static const char *describe(const scad_token *t, char *buf, size_t n)
 {
     switch (t->kind) {
-    case TK_EOF: return "end of file";
-    case TK_NUMBER: return "number";
-    case TK_STRING: return "string";
-    case TK_CHAR: snprintf(buf, n, "'%c'", t->ch); return buf;
-    case TK_LE: return "'<='";
-    case TK_GE: return "'>='";
-    case TK_EQ: return "'=='";
-    case TK_NE: return "'!='";
-    case TK_AND: return "'&&'";
-    case TK_OR: return "'||'";
-    default: snprintf(buf, n, "'%s'", t->text ? t->text : "?"); return buf;
+    case TK_EOF:
+        return "end of file";
+    case TK_NUMBER:
+        return "number";
+    case TK_STRING:
+        return "string";
+    case TK_CHAR:
+        snprintf(buf, n, "'%c'", t->ch);
+        return buf;
+    case TK_LE:
+        return "'<='";
+    case TK_GE:
+        return "'>='";
+    case TK_EQ:
+        return "'=='";
+    case TK_NE:
+        return "'!='";
+    case TK_AND:
+        return "'&&'";
+    case TK_OR:
+        return "'||'";
+    default:
+        snprintf(buf, n, "'%s'", t->text ? t->text : "?");
+        return buf;
     }
 }
 
@@ -153,7 +172,8 @@ static int arg_list(parser *P, scad_args *out, int is_def, int close)
         if (!out->v) return 0;
         out->v[out->n++] = arg;
         if (is_ch(peek(P), ',')) {
-            while (is_ch(peek(P), ',')) next(P); /* optional_commas */
+            while (is_ch(peek(P), ','))
+                next(P); /* optional_commas */
             continue;
         }
         if (!at_close(P, close)) {
@@ -210,7 +230,8 @@ static scad_expr *primary(parser *P)
         e = new_expr(P, EX_VAR, t->loc);
         if (e) e->str = t->text;
         return e;
-    default: break;
+    default:
+        break;
     }
     if (is_ch(t, '(')) {
         next(P);
@@ -258,7 +279,8 @@ static scad_expr *primary(parser *P)
                 return e;
             }
             FAIL_IF(!expect(P, ',', "',' or ']'"));
-            while (is_ch(peek(P), ',')) next(P);
+            while (is_ch(peek(P), ','))
+                next(P);
             if (is_ch(peek(P), ']')) continue;
             scad_expr *el = vector_element(P);
             FAIL_IF(!el);
@@ -329,8 +351,7 @@ static scad_expr *unary(parser *P)
     if (is_ch(t, '-') || is_ch(t, '+') || is_ch(t, '!')) {
         next(P);
         if (++P->depth > MAX_DEPTH) {
-            scad_diag_error(P->d, t->loc, "expression nested deeper than %d levels",
-                            MAX_DEPTH);
+            scad_diag_error(P->d, t->loc, "expression nested deeper than %d levels", MAX_DEPTH);
             P->errors = MAX_ERRORS;
             return NULL;
         }
@@ -371,8 +392,11 @@ static scad_expr *comparison(parser *P)
     scad_expr *l = addition(P);
     for (;;) {
         scad_token *t = peek(P);
-        int op = is_ch(t, '<') ? '<' : is_ch(t, '>') ? '>' : t->kind == TK_LE ? TK_LE
-                 : t->kind == TK_GE ? TK_GE : 0;
+        int op = is_ch(t, '<')      ? '<'
+                 : is_ch(t, '>')    ? '>'
+                 : t->kind == TK_LE ? TK_LE
+                 : t->kind == TK_GE ? TK_GE
+                                    : 0;
         if (!l || !op) return l;
         next(P);
         l = binary(P, op, t->loc, l, addition(P));
@@ -419,8 +443,8 @@ static scad_expr *prefixed(parser *P, scad_expr_kind kind, int body_optional)
     FAIL_IF(!arg_list(P, &e->args, kind == EX_FUNCLIT, ')'));
     if (body_optional) {
         scad_token *n = peek(P);
-        if (is_ch(n, ';') || is_ch(n, ')') || is_ch(n, ']') || is_ch(n, ',') ||
-            is_ch(n, ':') || n->kind == TK_EOF)
+        if (is_ch(n, ';') || is_ch(n, ')') || is_ch(n, ']') || is_ch(n, ',') || is_ch(n, ':') ||
+            n->kind == TK_EOF)
             return e;
     }
     e->a[0] = expr(P);
@@ -431,8 +455,7 @@ static scad_expr *prefixed(parser *P, scad_expr_kind kind, int body_optional)
 static scad_expr *expr(parser *P)
 {
     if (++P->depth > MAX_DEPTH) {
-        scad_diag_error(P->d, peek(P)->loc, "expression nested deeper than %d levels",
-                        MAX_DEPTH);
+        scad_diag_error(P->d, peek(P)->loc, "expression nested deeper than %d levels", MAX_DEPTH);
         P->errors = MAX_ERRORS;
         return NULL;
     }
@@ -466,14 +489,16 @@ static scad_expr *expr(parser *P)
 /* One element of a vector: an expression or a list comprehension. */
 static scad_expr *lc_element(parser *P, int parens_ok);
 
-static scad_expr *vector_element(parser *P) { return lc_element(P, 1); }
+static scad_expr *vector_element(parser *P)
+{
+    return lc_element(P, 1);
+}
 
 static scad_expr *lc_element(parser *P, int parens_ok)
 {
     scad_token *t = peek(P);
     if (++P->depth > MAX_DEPTH) {
-        scad_diag_error(P->d, t->loc, "expression nested deeper than %d levels",
-                        MAX_DEPTH);
+        scad_diag_error(P->d, t->loc, "expression nested deeper than %d levels", MAX_DEPTH);
         P->errors = MAX_ERRORS;
         return NULL;
     }
@@ -495,8 +520,7 @@ static scad_expr *lc_element(parser *P, int parens_ok)
                 if (is_ch(&P->t[P->pos - 1], ';')) {
                     e->kind = LC_CFOR;
                     e->a[1] = expr(P);
-                    if (!e->a[1] || !expect(P, ';', "';'") ||
-                        !arg_list(P, &e->args2, 0, ')'))
+                    if (!e->a[1] || !expect(P, ';', "';'") || !arg_list(P, &e->args2, 0, ')'))
                         e = NULL;
                 }
                 if (e && !(e->a[0] = lc_element(P, 1))) e = NULL;
@@ -527,8 +551,7 @@ static scad_expr *lc_element(parser *P, int parens_ok)
             e = NULL;
         }
     } else if (parens_ok && is_ch(t, '(') &&
-               (peek2(P)->kind == TK_FOR || peek2(P)->kind == TK_EACH ||
-                peek2(P)->kind == TK_IF)) {
+               (peek2(P)->kind == TK_FOR || peek2(P)->kind == TK_EACH || peek2(P)->kind == TK_IF)) {
         next(P);
         e = lc_element(P, 1);
         if (e && !expect(P, ')', "')'")) e = NULL;
@@ -541,17 +564,19 @@ static scad_expr *lc_element(parser *P, int parens_ok)
 
 /* ---- statements ------------------------------------------------------------ */
 
-static scad_scope *new_scope(parser *P) { return alloc(P, sizeof(scad_scope)); }
+static scad_scope *new_scope(parser *P)
+{
+    return alloc(P, sizeof(scad_scope));
+}
 
 static int statement(parser *P, scad_scope *s);
 
-static void add_assign(parser *P, scad_scope *s, const char *name, scad_expr *value,
-                       scad_loc loc)
+static void add_assign(parser *P, scad_scope *s, const char *name, scad_expr *value, scad_loc loc)
 {
     for (int i = 0; i < s->nassigns; i++) {
         if (strcmp(s->assigns[i].name, name) == 0) {
-            scad_diag_warning(P->d, loc, "%s was assigned on line %d but was overwritten",
-                              name, s->assigns[i].loc.line);
+            scad_diag_warning(P->d, loc, "%s was assigned on line %d but was overwritten", name,
+                              s->assigns[i].loc.line);
             s->assigns[i].value = value;
             return;
         }
@@ -580,8 +605,7 @@ static scad_stmt *instantiation(parser *P)
 {
     scad_token *t = peek(P);
     if (++P->depth > MAX_DEPTH) {
-        scad_diag_error(P->d, t->loc, "statements nested deeper than %d levels",
-                        MAX_DEPTH);
+        scad_diag_error(P->d, t->loc, "statements nested deeper than %d levels", MAX_DEPTH);
         P->errors = MAX_ERRORS;
         return NULL;
     }
@@ -609,8 +633,8 @@ static scad_stmt *instantiation(parser *P)
                 if (!(st->else_children = child_scope(P))) st = NULL;
             }
         }
-    } else if (t->kind == TK_ID || t->kind == TK_FOR || t->kind == TK_LET ||
-               t->kind == TK_ASSERT || t->kind == TK_ECHO || t->kind == TK_EACH) {
+    } else if (t->kind == TK_ID || t->kind == TK_FOR || t->kind == TK_LET || t->kind == TK_ASSERT ||
+               t->kind == TK_ECHO || t->kind == TK_EACH) {
         next(P);
         st = alloc(P, sizeof *st);
         if (st) {
@@ -772,8 +796,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
         memcpy(path + dl, t->text, pl + 1);
     }
     if (P->include_depth >= MAX_INCLUDE_DEPTH) {
-        scad_diag_error(P->d, t->loc, "includes nested deeper than %d files",
-                        MAX_INCLUDE_DEPTH);
+        scad_diag_error(P->d, t->loc, "includes nested deeper than %d files", MAX_INCLUDE_DEPTH);
         P->errors++;
         return;
     }

@@ -23,11 +23,6 @@ enum { DEFAULT_MAX_RECURSION = 10000 };
 #define EVAL_STACK ((size_t)1 << 30)
 #define STACK_MARGIN ((size_t)64 << 20)
 
-scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
-scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
-void scad_env_free(scad_env *e);
-void scad_eval_free_captured(scad_eval *ev);
-
 char *scad_read_file(scad_arena *a, const char *path)
 {
     FILE *f = fopen(path, "rb");
@@ -109,7 +104,10 @@ typedef struct job {
     int status;
 } job;
 
-static void set_num(scad_env *e, const char *name, double x) { scad_env_set(e, name, scad_num(x)); }
+static void set_num(scad_env *e, const char *name, double x)
+{
+    scad_env_set(e, name, scad_num(x));
+}
 
 static void set_vec3(scad_env *e, const char *name, double x, double y, double z)
 {
@@ -129,11 +127,11 @@ static void run_job(job *j)
     memset(&ev, 0, sizeof ev);
     ev.d = j->d;
     ev.arena = scad_arena_new();
-    ev.max_depth = j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion
-                                                         : DEFAULT_MAX_RECURSION;
+    ev.max_depth =
+        j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion : DEFAULT_MAX_RECURSION;
     ev.stack_base = &base;
-    ev.stack_budget = j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN
-                                                       : j->stack_size / 2;
+    ev.stack_budget =
+        j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;
     ev.rand_state = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
     j->status = -1;
     if (!ev.arena) {
@@ -220,8 +218,8 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const sca
 
 /* ---- public ----------------------------------------------------------------------- */
 
-static int eval_source(const char *name, const char *src, scad_arena *a,
-                       const scad_options *opt, scad_result *out)
+static int eval_source(const char *name, const char *src, scad_arena *a, const scad_options *opt,
+                       scad_result *out)
 {
     scad_diag d;
     memset(&d, 0, sizeof d);
@@ -253,8 +251,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a,
         /* No thread: use the caller's stack, with a budget from its limit. */
         struct rlimit rl;
         size_t lim = (size_t)8 << 20;
-        if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
-            rl.rlim_cur < lim)
+        if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur < lim)
             lim = (size_t)rl.rlim_cur;
         j.stack_size = lim / 2;
         run_job(&j);
@@ -264,8 +261,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a,
     return j.status;
 }
 
-int scad_eval_string(const char *name, const char *src, const scad_options *opt,
-                     scad_result *out)
+int scad_eval_string(const char *name, const char *src, const scad_options *opt, scad_result *out)
 {
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();

@@ -45,7 +45,8 @@ scad_value scad_vec_new(int n)
     if (!p) return scad_undef();
     p->refs = 1;
     p->n = n;
-    for (int i = 0; i < n; i++) p->v[i] = scad_undef();
+    for (int i = 0; i < n; i++)
+        p->v[i] = scad_undef();
     scad_value v;
     v.kind = SV_VEC;
     v.u.vec = p;
@@ -82,11 +83,20 @@ scad_value scad_func_new(const scad_expr *lit, scad_env *env)
 scad_value scad_value_ref(scad_value v)
 {
     switch (v.kind) {
-    case SV_STR: v.u.str->refs++; break;
-    case SV_VEC: v.u.vec->refs++; break;
-    case SV_RANGE: v.u.range->refs++; break;
-    case SV_FUNC: v.u.func->refs++; break;
-    default: break;
+    case SV_STR:
+        v.u.str->refs++;
+        break;
+    case SV_VEC:
+        v.u.vec->refs++;
+        break;
+    case SV_RANGE:
+        v.u.range->refs++;
+        break;
+    case SV_FUNC:
+        v.u.func->refs++;
+        break;
+    default:
+        break;
     }
     return v;
 }
@@ -122,20 +132,28 @@ void scad_value_drop(scad_value v)
     case SV_FUNC:
         if (--v.u.func->refs == 0) free(v.u.func);
         break;
-    default: break;
+    default:
+        break;
     }
 }
 
 int scad_value_truthy(scad_value v)
 {
     switch (v.kind) {
-    case SV_UNDEF: return 0;
-    case SV_BOOL: return v.u.b;
-    case SV_NUM: return v.u.num != 0 && !isnan(v.u.num);
-    case SV_STR: return v.u.str->len > 0;
-    case SV_VEC: return v.u.vec->n > 0;
-    case SV_RANGE: return 1;
-    case SV_FUNC: return 1;
+    case SV_UNDEF:
+        return 0;
+    case SV_BOOL:
+        return v.u.b;
+    case SV_NUM:
+        return v.u.num != 0 && !isnan(v.u.num);
+    case SV_STR:
+        return v.u.str->len > 0;
+    case SV_VEC:
+        return v.u.vec->n > 0;
+    case SV_RANGE:
+        return 1;
+    case SV_FUNC:
+        return 1;
     }
     return 0;
 }
@@ -144,21 +162,24 @@ int scad_value_equal(scad_value a, scad_value b)
 {
     if (a.kind != b.kind) return 0;
     switch (a.kind) {
-    case SV_UNDEF: return 1;
-    case SV_BOOL: return a.u.b == b.u.b;
-    case SV_NUM: return a.u.num == b.u.num;
+    case SV_UNDEF:
+        return 1;
+    case SV_BOOL:
+        return a.u.b == b.u.b;
+    case SV_NUM:
+        return a.u.num == b.u.num;
     case SV_STR:
-        return a.u.str->len == b.u.str->len &&
-               memcmp(a.u.str->s, b.u.str->s, a.u.str->len) == 0;
+        return a.u.str->len == b.u.str->len && memcmp(a.u.str->s, b.u.str->s, a.u.str->len) == 0;
     case SV_VEC:
         if (a.u.vec->n != b.u.vec->n) return 0;
         for (int i = 0; i < a.u.vec->n; i++)
             if (!scad_value_equal(a.u.vec->v[i], b.u.vec->v[i])) return 0;
         return 1;
     case SV_RANGE:
-        return a.u.range->begin == b.u.range->begin &&
-               a.u.range->step == b.u.range->step && a.u.range->end == b.u.range->end;
-    case SV_FUNC: return a.u.func == b.u.func;
+        return a.u.range->begin == b.u.range->begin && a.u.range->step == b.u.range->step &&
+               a.u.range->end == b.u.range->end;
+    case SV_FUNC:
+        return a.u.func == b.u.func;
     }
     return 0;
 }
@@ -171,7 +192,8 @@ int scad_value_compare(scad_value a, scad_value b)
         if (a.u.num < b.u.num) return -1;
         if (a.u.num > b.u.num) return 1;
         return a.u.num == b.u.num ? 0 : 2;
-    case SV_BOOL: return (a.u.b > b.u.b) - (a.u.b < b.u.b);
+    case SV_BOOL:
+        return (a.u.b > b.u.b) - (a.u.b < b.u.b);
     case SV_STR: {
         int c = strcmp(a.u.str->s, b.u.str->s);
         return (c > 0) - (c < 0);
@@ -184,7 +206,8 @@ int scad_value_compare(scad_value a, scad_value b)
         }
         return (A->n > B->n) - (A->n < B->n);
     }
-    default: return 2;
+    default:
+        return 2;
     }
 }
 
@@ -199,8 +222,7 @@ double scad_range_count(const scad_range *r)
 {
     if (!isfinite(r->begin) || !isfinite(r->step) || !isfinite(r->end)) return -1;
     if (r->step == 0) return 0;
-    if ((r->step > 0 && r->begin > r->end) || (r->step < 0 && r->begin < r->end))
-        return 0;
+    if ((r->step > 0 && r->begin > r->end) || (r->step < 0 && r->begin < r->end)) return 0;
     return floor((r->end - r->begin) / r->step) + 1;
 }
 
@@ -211,7 +233,8 @@ void scad_buf_put(scad_buf *b, const char *s, size_t n)
     if (b->oom) return;
     if (b->n + n + 1 > b->cap) {
         size_t cap = b->cap ? b->cap : 64;
-        while (cap < b->n + n + 1) cap *= 2;
+        while (cap < b->n + n + 1)
+            cap *= 2;
         char *p = realloc(b->p, cap);
         if (!p) {
             b->oom = 1;
@@ -225,7 +248,10 @@ void scad_buf_put(scad_buf *b, const char *s, size_t n)
     b->p[b->n] = 0;
 }
 
-void scad_buf_puts(scad_buf *b, const char *s) { scad_buf_put(b, s, strlen(s)); }
+void scad_buf_puts(scad_buf *b, const char *s)
+{
+    scad_buf_put(b, s, strlen(s));
+}
 
 void scad_buf_printf(scad_buf *b, const char *fmt, ...)
 {
@@ -245,7 +271,10 @@ void scad_buf_free(scad_buf *b)
     b->n = b->cap = 0;
 }
 
-const char *scad_buf_str(scad_buf *b) { return b->p && !b->oom ? b->p : ""; }
+const char *scad_buf_str(scad_buf *b)
+{
+    return b->p && !b->oom ? b->p : "";
+}
 
 /* Six significant digits, rounded half up on the exact binary value (as
  * double-conversion's precision mode does; printf would round half to even
@@ -272,11 +301,13 @@ void scad_format_number(double d, char *buf)
     char digits[8];
     int k = 0;
     digits[k++] = raw[0];
-    for (int i = 2; k < 6; i++) digits[k++] = raw[i];
+    for (int i = 2; k < 6; i++)
+        digits[k++] = raw[i];
     int exp10 = atoi(strchr(raw, 'e') + 1);
     if (raw[7] >= '5') { /* half up: look only at the 7th digit */
         int i = 5;
-        while (i >= 0 && digits[i] == '9') digits[i--] = '0';
+        while (i >= 0 && digits[i] == '9')
+            digits[i--] = '0';
         if (i < 0) {
             memmove(digits + 1, digits, 5);
             digits[0] = '1';
@@ -286,14 +317,16 @@ void scad_format_number(double d, char *buf)
         }
     }
     int nd = 6;
-    while (nd > 1 && digits[nd - 1] == '0') nd--;
+    while (nd > 1 && digits[nd - 1] == '0')
+        nd--;
     char *o = buf;
     if (d < 0) *o++ = '-';
     if (exp10 < -5 || exp10 >= 6) {
         *o++ = digits[0];
         if (nd > 1) {
             *o++ = '.';
-            for (int i = 1; i < nd; i++) *o++ = digits[i];
+            for (int i = 1; i < nd; i++)
+                *o++ = digits[i];
         }
         sprintf(o, "e%c%d", exp10 < 0 ? '-' : '+', abs(exp10));
         return;
@@ -301,13 +334,17 @@ void scad_format_number(double d, char *buf)
     if (exp10 < 0) {
         *o++ = '0';
         *o++ = '.';
-        for (int i = -1; i > exp10; i--) *o++ = '0';
-        for (int i = 0; i < nd; i++) *o++ = digits[i];
+        for (int i = -1; i > exp10; i--)
+            *o++ = '0';
+        for (int i = 0; i < nd; i++)
+            *o++ = digits[i];
     } else {
-        for (int i = 0; i <= exp10; i++) *o++ = i < nd ? digits[i] : '0';
+        for (int i = 0; i <= exp10; i++)
+            *o++ = i < nd ? digits[i] : '0';
         if (nd > exp10 + 1) {
             *o++ = '.';
-            for (int i = exp10 + 1; i < nd; i++) *o++ = digits[i];
+            for (int i = exp10 + 1; i < nd; i++)
+                *o++ = digits[i];
         }
     }
     *o = 0;
@@ -334,28 +371,44 @@ static const char *op_text(int op)
 {
     static char one[2];
     switch (op) {
-    case TK_LE: return "<=";
-    case TK_GE: return ">=";
-    case TK_EQ: return "==";
-    case TK_NE: return "!=";
-    case TK_AND: return "&&";
-    case TK_OR: return "||";
-    default: one[0] = (char)op; return one;
+    case TK_LE:
+        return "<=";
+    case TK_GE:
+        return ">=";
+    case TK_EQ:
+        return "==";
+    case TK_NE:
+        return "!=";
+    case TK_AND:
+        return "&&";
+    case TK_OR:
+        return "||";
+    default:
+        one[0] = (char)op;
+        return one;
     }
 }
 
 void scad_expr_format(scad_buf *b, const scad_expr *e)
 {
     switch (e->kind) {
-    case EX_NUMBER: put_number(b, e->num); break;
+    case EX_NUMBER:
+        put_number(b, e->num);
+        break;
     case EX_STRING:
         scad_buf_puts(b, "\"");
         scad_buf_put(b, e->str, e->len);
         scad_buf_puts(b, "\"");
         break;
-    case EX_BOOL: scad_buf_puts(b, e->num ? "true" : "false"); break;
-    case EX_UNDEF: scad_buf_puts(b, "undef"); break;
-    case EX_VAR: scad_buf_puts(b, e->str); break;
+    case EX_BOOL:
+        scad_buf_puts(b, e->num ? "true" : "false");
+        break;
+    case EX_UNDEF:
+        scad_buf_puts(b, "undef");
+        break;
+    case EX_VAR:
+        scad_buf_puts(b, e->str);
+        break;
     case EX_RANGE:
         scad_buf_puts(b, "[");
         scad_expr_format(b, e->a[0]);
@@ -474,9 +527,15 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
 void scad_value_format(scad_buf *b, scad_value v, int quote_strings)
 {
     switch (v.kind) {
-    case SV_UNDEF: scad_buf_puts(b, "undef"); break;
-    case SV_BOOL: scad_buf_puts(b, v.u.b ? "true" : "false"); break;
-    case SV_NUM: put_number(b, v.u.num); break;
+    case SV_UNDEF:
+        scad_buf_puts(b, "undef");
+        break;
+    case SV_BOOL:
+        scad_buf_puts(b, v.u.b ? "true" : "false");
+        break;
+    case SV_NUM:
+        put_number(b, v.u.num);
+        break;
     case SV_STR:
         if (quote_strings) scad_buf_puts(b, "\"");
         scad_buf_put(b, v.u.str->s, v.u.str->len);
@@ -499,6 +558,8 @@ void scad_value_format(scad_buf *b, scad_value v, int quote_strings)
         put_number(b, v.u.range->end);
         scad_buf_puts(b, "]");
         break;
-    case SV_FUNC: scad_expr_format(b, v.u.func->lit); break;
+    case SV_FUNC:
+        scad_expr_format(b, v.u.func->lit);
+        break;
     }
 }

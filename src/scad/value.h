@@ -14,15 +14,7 @@
 
 #include "ast.h"
 
-typedef enum scad_vkind {
-    SV_UNDEF,
-    SV_BOOL,
-    SV_NUM,
-    SV_STR,
-    SV_VEC,
-    SV_RANGE,
-    SV_FUNC
-} scad_vkind;
+typedef enum scad_vkind { SV_UNDEF, SV_BOOL, SV_NUM, SV_STR, SV_VEC, SV_RANGE, SV_FUNC } scad_vkind;
 
 typedef struct scad_str scad_str;
 typedef struct scad_vec scad_vec;
@@ -122,8 +114,7 @@ typedef struct scad_buf {
 
 void scad_buf_put(scad_buf *b, const char *s, size_t n);
 void scad_buf_puts(scad_buf *b, const char *s);
-void scad_buf_printf(scad_buf *b, const char *fmt, ...)
-    __attribute__((format(printf, 2, 3)));
+void scad_buf_printf(scad_buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void scad_buf_free(scad_buf *b);
 /* The text so far, NUL-terminated ("" when empty or out of memory). */
 const char *scad_buf_str(scad_buf *b);
