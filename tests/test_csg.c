@@ -894,3 +894,38 @@ Test(csg_trace, concurrent_traces_agree)
     cr_assert(js[0].sum != 0);
     csg_scene_free(s);
 }
+
+Test(csg_trace, culling_keeps_grazing_hits)
+{
+    /* An axis-aligned box's bounds are the box itself (plus padding), so
+     * rays that clip an edge or corner by a hair test the box test where it
+     * is tightest: every hit the shape reports must survive culling. */
+    const uint64_t seed = 0x9a2e;
+    rng_seed(seed);
+    csg_scene *s = commit1(leaf(box(0, 0, 0, 1, 1, 1), csg_affine_identity, 0));
+    int kept = 0;
+    for (int it = 0; it < 20000; it++) {
+        iv_arena_reset(arena);
+        /* A point just inside an edge or a corner. */
+        double p[3];
+        for (int k = 0; k < 3; k++) {
+            double e = pow(10, -rng_uniform(2, 12));
+            p[k] = rng_int(3) == 0 ? rng_uniform(0.1, 0.9) : (rng_int(2) ? e : 1 - e);
+        }
+        double d[3] = {rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)};
+        double o[3] = {p[0] - 3 * d[0], p[1] - 3 * d[1], p[2] - 3 * d[2]};
+        iv_list l, lc;
+        cr_assert_eq(csg_trace(s, 0, o, d, -INFINITY, INFINITY, arena, &l), 0);
+        csg_scene_set_cull(s, 0);
+        cr_assert_eq(csg_trace(s, 0, o, d, -INFINITY, INFINITY, arena, &lc), 0);
+        csg_scene_set_cull(s, 1);
+        cr_assert_eq(l.n, lc.n, "seed %#llx iter %d", (unsigned long long)seed, it);
+        cr_assert_eq(l.n, 1, "seed %#llx iter %d: the ray passes through (%g,%g,%g)",
+                     (unsigned long long)seed, it, p[0], p[1], p[2]);
+        cr_assert(same_bound(&l.v[0].enter, &lc.v[0].enter) &&
+                  same_bound(&l.v[0].exit, &lc.v[0].exit));
+        kept++;
+    }
+    cr_assert_eq(kept, 20000);
+    csg_scene_free(s);
+}
