@@ -2,7 +2,7 @@
 // A transparent shell around an opaque core: the core must show through.
 $fn = 128;
 color("crimson") cube(8, center = true);
-color([1, 1, 1], 0.25) difference() {
+color([0.3, 0.6, 1.0], 0.3) difference() {
     sphere(12);
     sphere(11);
 }

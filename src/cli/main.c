@@ -67,8 +67,18 @@ static int write_image(const cli_options *o, csg_scene *scene)
         fprintf(stderr, "rayscad: error: unknown colour scheme '%s'\n", o->colorscheme);
         return EXIT_USAGE;
     }
+    /* OpenSCAD frames the highlight and background subtrees too. */
     double lo[3], hi[3];
-    int have_bounds = csg_scene_bounds(scene, RENDER_ROOT_MODEL, lo, hi) == 0;
+    int have_bounds = 0;
+    for (int r = 0; r < csg_scene_root_count(scene); r++) {
+        double l[3], h[3];
+        if (csg_scene_bounds(scene, r, l, h) != 0) continue;
+        for (int k = 0; k < 3; k++) {
+            lo[k] = have_bounds && lo[k] < l[k] ? lo[k] : l[k];
+            hi[k] = have_bounds && hi[k] > h[k] ? hi[k] : h[k];
+        }
+        have_bounds = 1;
+    }
     render_camera cam;
     if (render_camera_resolve(&o->view, lo, hi, have_bounds, o->width, o->height, &cam) != 0) {
         fprintf(stderr, "rayscad: error: the camera's eye and centre coincide\n");
