@@ -439,7 +439,7 @@ Test(csg_trace, roots_are_independent)
 
 /* ---- property test: random trees against a point classifier ------------- */
 
-enum { MAXK = 4 };
+enum { MAXK = 12 }; /* > 4 so that commit's grouping of wide operations is exercised */
 
 typedef struct tnode {
     int leaf;
@@ -607,7 +607,8 @@ static tnode *random_tree(int depth)
         return n;
     }
     n->op = (csg_op)rng_int(3);
-    n->nk = rng_int(8) == 0 ? rng_int(2) : 2 + rng_int(MAXK - 1);
+    int r = rng_int(8);
+    n->nk = r == 0 ? rng_int(2) : r < 3 ? 5 + rng_int(MAXK - 4) : 2 + rng_int(3);
     for (int i = 0; i < n->nk; i++)
         n->k[i] = random_tree(depth + 1);
     return n;
@@ -649,7 +650,7 @@ Test(csg_trace, random_trees_match_point_classifier)
         cr_assert_not_null(s, "%s", err);
         double blo[3], bhi[3];
         int has_bounds = csg_scene_bounds(s, 0, blo, bhi) == 0;
-        for (int ray = 0; ray < 150; ray++) {
+        for (int ray = 0; ray < 100; ray++) {
             iv_arena_reset(arena);
             double o[3], d[3];
             for (int k = 0; k < 3; k++) {

@@ -237,6 +237,181 @@ static csg_node *simplify(csg_node *root)
     }
 }
 
+/* ---- grouping: a bounding hierarchy inside wide unions ------------------- */
+
+/* Most operands per group.  A group costs one box test per ray; 4 keeps the
+ * hierarchy shallow while letting most rays reject a group of 4 at once. */
+#define GROUP_MAX 4
+
+typedef struct item {
+    double c[3]; /* centre of the bounds */
+    csg_node *n;
+} item;
+
+static int cmp_axis(const item *a, const item *b, int k)
+{
+    return a->c[k] < b->c[k] ? -1 : a->c[k] > b->c[k];
+}
+static int cmp_x(const void *a, const void *b)
+{
+    return cmp_axis(a, b, 0);
+}
+static int cmp_y(const void *a, const void *b)
+{
+    return cmp_axis(a, b, 1);
+}
+static int cmp_z(const void *a, const void *b)
+{
+    return cmp_axis(a, b, 2);
+}
+
+static int group_count(int m)
+{
+    return m <= GROUP_MAX ? 1 : 1 + group_count(m / 2) + group_count(m - m / 2);
+}
+
+static void op_totals(csg_node *x)
+{
+    x->size = 1;
+    x->leaves = 0;
+    x->depth = 0;
+    for (int i = 0; i < x->nkids; i++) {
+        x->size += x->kids[i]->size;
+        x->leaves += x->kids[i]->leaves;
+        if (x->kids[i]->depth > x->depth) x->depth = x->kids[i]->depth;
+    }
+    x->depth += 1;
+}
+
+/* A union over items[0..m) from preallocated nodes: median split on the
+ * axis along which the centres spread most.  Recursion depth is log2(m). */
+static csg_node *group_build(item *items, int m, csg_node **pool, int *used)
+{
+    csg_node *g = pool[(*used)++];
+    if (m <= GROUP_MAX) {
+        for (int i = 0; i < m; i++)
+            g->kids[i] = items[i].n;
+        g->nkids = m;
+    } else {
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (int i = 0; i < m; i++) {
+            for (int k = 0; k < 3; k++) {
+                lo[k] = fmin(lo[k], items[i].c[k]);
+                hi[k] = fmax(hi[k], items[i].c[k]);
+            }
+        }
+        int axis = 0;
+        for (int k = 1; k < 3; k++)
+            if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+        qsort(items, (size_t)m, sizeof *items, axis == 0 ? cmp_x : axis == 1 ? cmp_y : cmp_z);
+        g->kids[0] = group_build(items, m / 2, pool, used);
+        g->kids[1] = group_build(items + m / 2, m - m / 2, pool, used);
+        g->nkids = 2;
+    }
+    memcpy(g->lo, g->kids[0]->lo, sizeof g->lo);
+    memcpy(g->hi, g->kids[0]->hi, sizeof g->hi);
+    for (int i = 1; i < g->nkids; i++) {
+        for (int k = 0; k < 3; k++) {
+            g->lo[k] = fmin(g->lo[k], g->kids[i]->lo[k]);
+            g->hi[k] = fmax(g->hi[k], g->kids[i]->hi[k]);
+        }
+    }
+    op_totals(g);
+    return g;
+}
+
+/* Replace x's operands from index `from` on (all of a union's, or a
+ * difference's subtracted ones, since a − b − c = a − (b ∪ c)) by a union
+ * hierarchy over those with finite bounds; unbounded ones stay as they are.
+ * Out of memory leaves x unchanged, which is only slower. */
+static void group_op(csg_node *x, int from)
+{
+    int m = x->nkids - from, nf = 0;
+    item *items = malloc((size_t)m * sizeof *items);
+    if (!items) return;
+    for (int i = 0; i < m; i++) {
+        csg_node *k = x->kids[from + i];
+        int finite = 1;
+        for (int a = 0; a < 3; a++)
+            finite &= isfinite(k->lo[a]) && isfinite(k->hi[a]);
+        if (!finite) continue;
+        for (int a = 0; a < 3; a++)
+            items[nf].c[a] = 0.5 * (k->lo[a] + k->hi[a]);
+        items[nf++].n = k;
+    }
+    int need = nf > GROUP_MAX ? group_count(nf) : 0;
+    csg_node **pool = need ? calloc((size_t)need, sizeof *pool) : NULL;
+    int ok = pool != NULL;
+    for (int i = 0; ok && i < need; i++) {
+        pool[i] = calloc(1, sizeof **pool);
+        if (pool[i]) pool[i]->kids = malloc(GROUP_MAX * sizeof(csg_node *));
+        if (!pool[i] || !pool[i]->kids) ok = 0;
+        if (pool[i]) {
+            pool[i]->op = CSG_OP_UNION;
+            pool[i]->cap = GROUP_MAX;
+        }
+    }
+    if (!ok) {
+        for (int i = 0; pool && i < need; i++)
+            if (pool[i]) free_shell(pool[i]);
+        free(pool);
+        free(items);
+        return;
+    }
+    /* Unbounded operands first, in their order, then the hierarchy. */
+    int n = from;
+    for (int i = from; i < x->nkids; i++) {
+        csg_node *k = x->kids[i];
+        int finite = 1;
+        for (int a = 0; a < 3; a++)
+            finite &= isfinite(k->lo[a]) && isfinite(k->hi[a]);
+        if (!finite) x->kids[n++] = k;
+    }
+    int used = 0;
+    csg_node *h = group_build(items, nf, pool, &used);
+    if (x->op == CSG_OP_UNION && n == 0) {
+        /* x itself becomes the root of the hierarchy. */
+        memcpy(x->kids, h->kids, (size_t)h->nkids * sizeof *h->kids);
+        n = h->nkids;
+        free_shell(h);
+    } else {
+        x->kids[n++] = h;
+    }
+    x->nkids = n;
+    free(pool);
+    free(items);
+}
+
+/* Post-order pass over a simplified tree: group wide unions and
+ * differences, and refresh sizes and depths. */
+static void group_tree(csg_node *root)
+{
+    if (!root) return;
+    root->link = NULL;
+    root->visit = 0;
+    csg_node *x = root;
+    for (;;) {
+        if (!x->is_leaf && x->visit < x->nkids) {
+            csg_node *c = x->kids[x->visit];
+            c->link = x;
+            c->visit = 0;
+            x = c;
+            continue;
+        }
+        if (!x->is_leaf) {
+            if (x->op == CSG_OP_UNION && x->nkids > GROUP_MAX)
+                group_op(x, 0);
+            else if (x->op == CSG_OP_DIFFERENCE && x->nkids - 1 > GROUP_MAX)
+                group_op(x, 1);
+            op_totals(x);
+        }
+        csg_node *parent = x->link;
+        if (!parent) return;
+        parent->visit++;
+        x = parent;
+    }
+}
+
 /* Lay out a simplified tree in pre-order from node index `at` and primitive
  * index `*prim`, freeing the builder nodes.  Uses `link` as the stack. */
 static void flatten(csg_scene *s, csg_node *root, int at, int *prim)
@@ -294,6 +469,7 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
     long nodes = 0, prims = 0;
     for (int r = 0; r < n; r++) {
         roots[r] = simplify(roots[r]);
+        group_tree(roots[r]);
         if (roots[r]) {
             nodes += roots[r]->size;
             prims += roots[r]->leaves;
