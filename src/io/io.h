@@ -8,6 +8,7 @@
 #define RAYSCAD_IO_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -31,6 +32,45 @@ int io_image_read(const char *path, int *width, int *height, int *channels, floa
 /* 1 when the extension of path names an image format OpenImageIO can
  * write, else 0. */
 int io_image_format_supported(const char *path);
+
+/* ---- meshes (OpenMesh; src/io/mesh.cpp) --------------------------------- */
+
+/* Meshes cross this boundary as flat arrays: v holds 3 floats (x, y, z) per
+ * vertex, t holds 3 int32 vertex indices per triangle (counter-clockwise
+ * seen from outside), as mesh_vertices / mesh_triangles give them. */
+
+/* 1 when the extension of path (case-insensitive) is a mesh format
+ * io_mesh_write and io_mesh_read handle: stl, off, obj, ply. */
+int io_mesh_format_supported(const char *path);
+
+/* Write nv vertices and nt triangles (borrowed) to path in the format of its
+ * extension: STL binary (ascii != 0: ASCII STL), PLY binary (ascii != 0:
+ * ASCII PLY), OFF and OBJ always ASCII; ASCII numbers carry 9 significant
+ * digits, so floats survive the round trip.  STL gets face normals.
+ * The file is written to a temporary name beside path and renamed, so a
+ * failure never leaves a partial file nor touches an existing one.  Returns
+ * 0, or -1 with a message in err (unknown extension, an index out of range,
+ * a triangle that would make the mesh non-manifold, an I/O error). */
+int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, int nt, int ascii,
+                  char *err, size_t errlen);
+
+/* Read a mesh file (stl, off, obj, ply) into malloc'ed arrays *v (3 floats
+ * per vertex) and *t (3 indices per triangle) that the caller frees.  STL
+ * vertices that coincide exactly are merged into one, so a closed mesh
+ * written as STL comes back indexed.  Do not feed it OFF files with the
+ * counts on the OFF line (as OpenSCAD writes them): OpenMesh 9.0 runs out of
+ * memory on those.  Returns 0, or -1 with a message (then *v = *t = NULL). */
+int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char *err,
+                 size_t errlen);
+
+/* Simplify a closed manifold mesh with OpenMesh's decimater (quadric error
+ * metric, ModQuadricT, plus ModNormalFlippingT so no face turns over more
+ * than 60°): edges collapse while the quadric distance stays within tol
+ * (model units, >= 0).  The input is borrowed; the output arrays are
+ * malloc'ed for the caller, with the same conventions.  Returns 0, or -1
+ * with a message. */
+int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double tol, float **out_v,
+                     int *out_nv, int32_t **out_t, int *out_nt, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,671 @@
+/*
+ * contour.c — a closed 2-manifold triangle mesh from tri-dexel Hermite data.
+ *
+ * Method: the cell topology of Manifold Dual Contouring (Schaefer, Ju &
+ * Warren 2007) — one vertex per connected component of the surface inside a
+ * cell, as Marching Cubes would draw it, placed by minimising that
+ * component's QEF — but the vertices are joined through the primal patch
+ * instead of by dual quads, with the face feature points of Cubical
+ * Marching Squares (Ho et al. 2005).  Why not plain dual quads: on a uniform
+ * grid without MDC's octree clustering, a face whose four corners alternate
+ * in sign can put both of its surface segments into one component on each
+ * side (a small tunnel through the face), and the two cells' vertices are
+ * then joined by an edge of four quads.  Joining through the patch cannot do
+ * that, and the mesh is manifold by construction:
+ *
+ *   - Node signs come from the z rays only (a node is inside when an odd
+ *     number of z crossings lie at or below it), so all cells agree on them.
+ *   - On each cell face, walking the corners counter-clockwise seen from
+ *     outside the cell, every crossing where the walk enters the solid is
+ *     joined to the next crossing: the segments cut off the inside corners,
+ *     and an ambiguous face (inside corners on a diagonal) keeps them apart.
+ *     This depends on the face's signs alone, so both cells sharing a face
+ *     draw the same segments, in opposite directions.
+ *   - Each crossing starts one segment and ends another within a cell, so the
+ *     segments chain into loops (the MC components); each loop is a disc,
+ *     triangulated alone.  Every segment is shared by exactly two cells, and
+ *     every loop vertex's triangles form one fan: closed, 2-manifold, and
+ *     consistently oriented (inside is on the right of a segment seen from
+ *     outside, which makes the triangles counter-clockwise seen from outside).
+ *
+ * Vertices: one per sign-changing grid edge at the exact ray crossing (the
+ * first crossing of the right direction on the edge's ray, moved at most
+ * EPS·h away from the nodes so no two vertices meet); one per face segment
+ * whose two normals meet at more than the feature angle, at the crossing of
+ * their tangent lines within the face (where a sharp edge passes through the
+ * face), shrunk into the face by EPS·h; one per loop that holds a feature,
+ * at its QEF minimiser clamped to the cell shrunk by EPS·h.  A loop without
+ * a feature is triangulated among its own vertices when every added diagonal
+ * joins two grid edges on no common face (so no other cell can draw it) and
+ * no triangle is degenerate or folded; otherwise it is fanned around its QEF
+ * vertex.  Since consecutive loop vertices lie on one cell face and the fan
+ * centre lies at least EPS·h off every face, no fan triangle has zero area.
+ *
+ * The sweep goes up the z slabs and keeps two layers of node signs and of
+ * edge-vertex indices, so its memory beyond the output is O(n²).
+ */
+#include "dexels.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* How far (in cells) vertices keep from grid nodes, edges and faces.  It
+ * bounds the smallest triangle area from below (about EPS²·h²/2) and is the
+ * most a vertex moves off a surface that passes exactly through a node; at
+ * 1/256 even a model far from the origin keeps EPS·h hundreds of float ulps
+ * wide. */
+#define EPS (1.0 / 256)
+
+/* Corner c of a cell is at offset (c & 1, c >> 1 & 1, c >> 2 & 1).  Edge e
+ * runs along axis e / 4; its other two offsets are the bits of e % 4 (the
+ * lower axis first).  Faces: 2·axis + side, corners listed counter-clockwise
+ * seen from outside the cell. */
+static const int face_corner[6][4] = {
+    {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6},
+};
+
+static int edge_of(int ca, int cb)
+{
+    int x = ca ^ cb;
+    int axis = x == 1 ? 0 : x == 2 ? 1 : 2;
+    int lo = ca & cb;
+    int b0, b1;
+    if (axis == 0) {
+        b0 = lo >> 1 & 1;
+        b1 = lo >> 2 & 1;
+    } else if (axis == 1) {
+        b0 = lo & 1;
+        b1 = lo >> 2 & 1;
+    } else {
+        b0 = lo & 1;
+        b1 = lo >> 1 & 1;
+    }
+    return axis * 4 + b0 + 2 * b1;
+}
+
+static int edge_corner(int e, int which)
+{
+    int axis = e / 4, b0 = e & 1, b1 = e >> 1 & 1, c;
+    if (axis == 0)
+        c = 2 * b0 + 4 * b1;
+    else if (axis == 1)
+        c = b0 + 4 * b1;
+    else
+        c = b0 + 2 * b1;
+    return which ? c | 1 << axis : c;
+}
+
+typedef struct tables {
+    int face_edge[6][4]; /* edge between corner m and m+1 of the face */
+    int edge_faces[12];  /* bit mask of the two faces holding the edge */
+} tables;
+
+static void tables_init(tables *tb)
+{
+    memset(tb, 0, sizeof *tb);
+    for (int f = 0; f < 6; f++)
+        for (int m = 0; m < 4; m++) {
+            int e = edge_of(face_corner[f][m], face_corner[f][(m + 1) & 3]);
+            tb->face_edge[f][m] = e;
+            tb->edge_faces[e] |= 1 << f;
+        }
+}
+
+/* ---- a small open-addressing map for face vertices ---------------------- */
+
+typedef struct fmap {
+    uint64_t *key; /* 0 = empty; keys are (a + 1) << 32 | (b + 1) */
+    int32_t *val;
+    size_t cap, n;
+} fmap;
+
+static uint64_t mix(uint64_t k)
+{
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdULL;
+    k ^= k >> 33;
+    return k;
+}
+
+static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
+{
+    if (2 * (m->n + 1) > m->cap) {
+        size_t cap = m->cap ? 2 * m->cap : 256;
+        uint64_t *k = calloc(cap, sizeof *k);
+        int32_t *v = malloc(cap * sizeof *v);
+        if (!k || !v) {
+            free(k);
+            free(v);
+            return NULL;
+        }
+        for (size_t i = 0; i < m->cap; i++) {
+            if (!m->key[i])
+                continue;
+            size_t p = mix(m->key[i]) & (cap - 1);
+            while (k[p])
+                p = (p + 1) & (cap - 1);
+            k[p] = m->key[i];
+            v[p] = m->val[i];
+        }
+        free(m->key);
+        free(m->val);
+        m->key = k;
+        m->val = v;
+        m->cap = cap;
+    }
+    size_t p = mix(key) & (m->cap - 1);
+    while (m->key[p] && m->key[p] != key)
+        p = (p + 1) & (m->cap - 1);
+    *fresh = !m->key[p];
+    if (*fresh) {
+        m->key[p] = key;
+        m->n++;
+    }
+    return &m->val[p];
+}
+
+/* ---- the sweep state ---------------------------------------------------- */
+
+typedef struct sample {
+    double p[3];
+    double n[3];
+    int32_t vid;
+} sample;
+
+typedef struct sweep {
+    const mesh_dexels *d;
+    mesh *m;
+    tables tb;
+    double cos_feature;
+    int nx, ny, nz; /* cells */
+    int k;          /* current slab */
+    uint8_t *sign[2];  /* node signs of layers k, k+1: i + (nx+1) j */
+    size_t *cursor;    /* per z ray: crossings at or below the last layer */
+    int32_t *xv[2];    /* x-edge vertices of layers k, k+1: i + nx j */
+    int32_t *yv[2];    /* y-edge vertices: i + (nx+1) j */
+    int32_t *zv;       /* z-edge vertices of slab k: i + (nx+1) j */
+    fmap faces;
+    int oom;
+} sweep;
+
+static void layer_signs(sweep *s, int k, uint8_t *out)
+{
+    const mesh_dexels *d = s->d;
+    double t = k * d->h;
+    size_t nr = (size_t)(s->nx + 1) * (s->ny + 1);
+    for (size_t r = 0; r < nr; r++) {
+        size_t base = d->off[2][r], end = d->off[2][r + 1], c = s->cursor[r];
+        while (base + c < end && d->hit[2][base + c].t <= t)
+            c++;
+        s->cursor[r] = c;
+        out[r] = (uint8_t)(c & 1);
+    }
+}
+
+/* The crossing on grid edge `seg` (from node seg to seg+1 along axis a) of
+ * ray r of family a, going the right way (enter when the lower node is
+ * outside).  Node signs come from the z rays; an x or y ray that disagrees
+ * near a grazing contact may have no such crossing on the edge, and then the
+ * nearest one within a cell is clamped onto it, or failing that the midpoint
+ * with the axis as normal is used: the topology never depends on it. */
+static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, const double base[3],
+                        sample *out)
+{
+    const mesh_dexels *d = s->d;
+    const mesh_hit *hp = d->hit[a] + d->off[a][r];
+    size_t nh = d->off[a][r + 1] - d->off[a][r];
+    double h = d->h, t0 = seg * h, t1 = t0 + h;
+    /* First crossing with t > t0 (binary search). */
+    size_t lo = 0, hi = nh;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (hp[mid].t <= t0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    const mesh_hit *best = NULL;
+    for (size_t q = lo; q < nh && hp[q].t <= t1; q++)
+        if (hp[q].enter == enter) {
+            best = &hp[q];
+            break;
+        }
+    if (!best) {
+        double bd = h;
+        for (size_t q = lo > 2 ? lo - 2 : 0; q < nh && q < lo + 3; q++) {
+            if (hp[q].enter != enter)
+                continue;
+            double dist = hp[q].t < t0 ? t0 - hp[q].t : hp[q].t - t1;
+            if (dist <= bd) {
+                bd = dist;
+                best = &hp[q];
+            }
+        }
+    }
+    double t;
+    for (int c = 0; c < 3; c++)
+        out->p[c] = base[c];
+    if (best) {
+        t = best->t;
+        for (int c = 0; c < 3; c++)
+            out->n[c] = best->n[c];
+    } else {
+        t = 0.5 * (t0 + t1);
+        for (int c = 0; c < 3; c++)
+            out->n[c] = 0;
+        out->n[a] = enter ? -1 : 1;
+    }
+    if (t < t0 + EPS * h)
+        t = t0 + EPS * h;
+    if (t > t1 - EPS * h)
+        t = t1 - EPS * h;
+    out->p[a] = d->org[a] + t;
+}
+
+/* Fill sample e of cell (i, j, k): position, normal, vertex index. */
+static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
+{
+    const mesh_dexels *d = s->d;
+    int a = e / 4, b0 = e & 1, b1 = e >> 1 & 1;
+    int k = s->k;
+    double h = d->h;
+    double base[3] = {d->org[0] + i * h, d->org[1] + j * h, d->org[2] + k * h};
+    int32_t *slot;
+    size_t r;
+    int seg;
+    if (a == 0) {
+        base[1] += b0 * h;
+        base[2] += b1 * h;
+        slot = &s->xv[b1][i + (size_t)s->nx * (j + b0)];
+        r = (size_t)(j + b0) + (size_t)(s->ny + 1) * (k + b1);
+        seg = i;
+    } else if (a == 1) {
+        base[0] += b0 * h;
+        base[2] += b1 * h;
+        slot = &s->yv[b1][(i + b0) + (size_t)(s->nx + 1) * j];
+        r = (size_t)(i + b0) + (size_t)(s->nx + 1) * (k + b1);
+        seg = j;
+    } else {
+        base[0] += b0 * h;
+        base[1] += b1 * h;
+        slot = &s->zv[(i + b0) + (size_t)(s->nx + 1) * (j + b1)];
+        r = (size_t)(i + b0) + (size_t)(s->nx + 1) * (j + b1);
+        seg = k;
+    }
+    edge_sample(s, a, r, seg, enter, base, out);
+    if (*slot < 0) {
+        *slot = mesh_push_vertex(s->m, out->p[0], out->p[1], out->p[2]);
+        if (*slot < 0)
+            return -1;
+    }
+    out->vid = *slot;
+    return 0;
+}
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* The point where the tangent lines of samples a and b cross within face f
+ * of the cell at lo (side h), or 0 when they meet at less than the feature
+ * angle, are nearly parallel in the face, or cross outside it.  The inputs
+ * are put in a canonical order first so both cells compute the same bits. */
+static int face_point(const sweep *s, const sample *a, const sample *b, int f, const double lo[3],
+                      double out[3])
+{
+    if (a->vid > b->vid) {
+        const sample *t = a;
+        a = b;
+        b = t;
+    }
+    if (dot3(a->n, b->n) >= s->cos_feature)
+        return 0;
+    int fa = f / 2, u, v;
+    mesh_axes_other(fa, &u, &v);
+    double h = s->d->h;
+    double au = a->n[u], av = a->n[v], bu = b->n[u], bv = b->n[v];
+    double det = au * bv - av * bu;
+    double la = hypot(au, av), lb = hypot(bu, bv);
+    if (!(fabs(det) > 0.2 * la * lb)) /* lines within ~11.5° of parallel */
+        return 0;
+    double ca = au * a->p[u] + av * a->p[v], cb = bu * b->p[u] + bv * b->p[v];
+    double x = (ca * bv - av * cb) / det, y = (au * cb - ca * bu) / det;
+    double tol = EPS * h;
+    if (!(x >= lo[u] - tol && x <= lo[u] + h + tol && y >= lo[v] - tol && y <= lo[v] + h + tol))
+        return 0;
+    double mn = EPS * h, mx = (1 - EPS) * h;
+    x = fmin(fmax(x, lo[u] + mn), lo[u] + mx);
+    y = fmin(fmax(y, lo[v] + mn), lo[v] + mx);
+    out[fa] = lo[fa] + (f & 1) * h;
+    out[u] = x;
+    out[v] = y;
+    return 1;
+}
+
+/* Eigen-decomposition of the symmetric 3×3 matrix a (cyclic Jacobi), then
+ * the minimum-norm least-squares solution of a x = b, dropping eigenvalues
+ * below 5 % of the largest (those directions are left at the mass point:
+ * a flat patch keeps its vertex at the patch centre, an edge keeps it on the
+ * edge nearest the centre). */
+static void qef_solve(double a[3][3], const double b[3], double x[3])
+{
+    double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int sweep_i = 0; sweep_i < 12; sweep_i++) {
+        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        if (off < 1e-24)
+            break;
+        for (int p = 0; p < 2; p++)
+            for (int q = p + 1; q < 3; q++) {
+                if (fabs(a[p][q]) < 1e-30)
+                    continue;
+                double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+                double t = (theta >= 0 ? 1 : -1) / (fabs(theta) + sqrt(theta * theta + 1));
+                double c = 1 / sqrt(t * t + 1), sn = t * c;
+                for (int k = 0; k < 3; k++) {
+                    double akp = a[k][p], akq = a[k][q];
+                    a[k][p] = c * akp - sn * akq;
+                    a[k][q] = sn * akp + c * akq;
+                }
+                for (int k = 0; k < 3; k++) {
+                    double apk = a[p][k], aqk = a[q][k];
+                    a[p][k] = c * apk - sn * aqk;
+                    a[q][k] = sn * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; k++) {
+                    double vkp = v[k][p], vkq = v[k][q];
+                    v[k][p] = c * vkp - sn * vkq;
+                    v[k][q] = sn * vkp + c * vkq;
+                }
+            }
+    }
+    double lmax = fmax(fabs(a[0][0]), fmax(fabs(a[1][1]), fabs(a[2][2])));
+    x[0] = x[1] = x[2] = 0;
+    for (int e = 0; e < 3; e++) {
+        double l = a[e][e];
+        if (!(fabs(l) > 0.05 * lmax) || lmax == 0)
+            continue;
+        double proj = (v[0][e] * b[0] + v[1][e] * b[1] + v[2][e] * b[2]) / l;
+        for (int k = 0; k < 3; k++)
+            x[k] += proj * v[k][e];
+    }
+}
+
+/* The QEF vertex of a loop's samples, clamped to the cell shrunk by EPS·h. */
+static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int nl,
+                        const double lo[3], double out[3])
+{
+    double mass[3] = {0, 0, 0};
+    for (int q = 0; q < nl; q++)
+        for (int c = 0; c < 3; c++)
+            mass[c] += smp[loop[q]].p[c] / nl;
+    double a[3][3] = {{0}}, b[3] = {0, 0, 0};
+    for (int q = 0; q < nl; q++) {
+        const sample *e = &smp[loop[q]];
+        double rel[3] = {e->p[0] - mass[0], e->p[1] - mass[1], e->p[2] - mass[2]};
+        double nd = dot3(e->n, rel);
+        for (int r = 0; r < 3; r++) {
+            b[r] += e->n[r] * nd;
+            for (int c = 0; c < 3; c++)
+                a[r][c] += e->n[r] * e->n[c];
+        }
+    }
+    double x[3];
+    qef_solve(a, b, x);
+    double h = s->d->h;
+    for (int c = 0; c < 3; c++) {
+        double p = mass[c] + x[c];
+        out[c] = fmin(fmax(p, lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
+    }
+}
+
+typedef struct lvert {
+    int32_t vid;
+    int edge; /* cell edge, or -1 for a face point */
+    double p[3];
+} lvert;
+
+static void sub3(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[0] - b[0];
+    o[1] = a[1] - b[1];
+    o[2] = a[2] - b[2];
+}
+
+static void cross3(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Normal (twice the area) of triangle a, b, c. */
+static void tri_normal(const double a[3], const double b[3], const double c[3], double n[3])
+{
+    double e1[3], e2[3];
+    sub3(b, a, e1);
+    sub3(c, a, e2);
+    cross3(e1, e2, n);
+}
+
+/* Triangulate a featureless loop among its own vertices, as a fan from some
+ * start vertex, if that is safe (see the file comment); 1 when done. */
+static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
+{
+    double h = s->d->h;
+    /* Twice the smallest area a fan triangle around a QEF vertex can have
+     * (see the file comment), squared: below it, prefer the fan. */
+    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    for (int st = 0; st < nl; st++) {
+        int ok = 1;
+        for (int q = 2; q < nl - 1 && ok; q++) {
+            int e0 = lv[st].edge, e1 = lv[(st + q) % nl].edge;
+            if (e0 < 0 || e1 < 0 || (s->tb.edge_faces[e0] & s->tb.edge_faces[e1]))
+                ok = 0;
+        }
+        for (int q = 1; q + 1 < nl && ok; q++) {
+            double n[3];
+            tri_normal(lv[st].p, lv[(st + q) % nl].p, lv[(st + q + 1) % nl].p, n);
+            if (!(dot3(n, n) > min2) || !(dot3(n, navg) > 0))
+                ok = 0;
+        }
+        if (!ok)
+            continue;
+        for (int q = 1; q + 1 < nl; q++)
+            if (mesh_push_triangle(s->m, lv[st].vid, lv[(st + q) % nl].vid,
+                                   lv[(st + q + 1) % nl].vid) < 0)
+                s->oom = 1;
+        return 1;
+    }
+    return 0;
+}
+
+static void cell(sweep *s, int i, int j, int mask)
+{
+    const mesh_dexels *d = s->d;
+    const tables *tb = &s->tb;
+    double h = d->h;
+    double lo[3] = {d->org[0] + i * h, d->org[1] + j * h, d->org[2] + s->k * h};
+    sample smp[12];
+    int next[12], segface[12], has[12] = {0};
+    for (int e = 0; e < 12; e++) {
+        int c0 = edge_corner(e, 0), c1 = edge_corner(e, 1);
+        int s0 = mask >> c0 & 1, s1 = mask >> c1 & 1;
+        if (s0 == s1)
+            continue;
+        has[e] = 1;
+        if (cell_edge(s, i, j, e, s1, &smp[e]) != 0) {
+            s->oom = 1;
+            return;
+        }
+    }
+    for (int f = 0; f < 6; f++) {
+        int in[4];
+        for (int m = 0; m < 4; m++)
+            in[m] = mask >> face_corner[f][m] & 1;
+        for (int m = 0; m < 4; m++) {
+            if (in[m] || !in[(m + 1) & 3])
+                continue; /* not an outside-to-inside crossing */
+            for (int q = 1; q < 4; q++) {
+                int mm = (m + q) & 3;
+                if (in[mm] != in[(mm + 1) & 3]) {
+                    int e = tb->face_edge[f][m];
+                    next[e] = tb->face_edge[f][mm];
+                    segface[e] = f;
+                    break;
+                }
+            }
+        }
+    }
+    int done[12] = {0};
+    for (int e0 = 0; e0 < 12; e0++) {
+        if (!has[e0] || done[e0])
+            continue;
+        int loop[12], nl = 0;
+        for (int e = e0; !done[e]; e = next[e]) {
+            done[e] = 1;
+            loop[nl++] = e;
+        }
+        /* Loop vertices: edge crossings with feature points between. */
+        lvert lv[24];
+        int nv = 0, feature = 0;
+        double navg[3] = {0, 0, 0};
+        for (int q = 0; q < nl; q++) {
+            const sample *a = &smp[loop[q]], *b = &smp[loop[(q + 1) % nl]];
+            lv[nv].vid = a->vid;
+            lv[nv].edge = loop[q];
+            memcpy(lv[nv].p, a->p, sizeof a->p);
+            nv++;
+            for (int c = 0; c < 3; c++)
+                navg[c] += a->n[c];
+            for (int r = q + 1; r < nl; r++)
+                if (dot3(a->n, smp[loop[r]].n) < s->cos_feature)
+                    feature = 1;
+            double fp[3];
+            if (face_point(s, a, b, segface[loop[q]], lo, fp)) {
+                int32_t lo_id = a->vid < b->vid ? a->vid : b->vid;
+                int32_t hi_id = a->vid < b->vid ? b->vid : a->vid;
+                uint64_t key = (uint64_t)(lo_id + 1) << 32 | (uint64_t)(hi_id + 1);
+                int fresh;
+                int32_t *slot = fmap_slot(&s->faces, key, &fresh);
+                if (!slot) {
+                    s->oom = 1;
+                    return;
+                }
+                if (fresh && (*slot = mesh_push_vertex(s->m, fp[0], fp[1], fp[2])) < 0) {
+                    s->oom = 1;
+                    return;
+                }
+                lv[nv].vid = *slot;
+                lv[nv].edge = -1;
+                memcpy(lv[nv].p, fp, sizeof fp);
+                nv++;
+                feature = 1;
+            }
+        }
+        if (!feature && fan_plain(s, lv, nv, navg))
+            continue;
+        double c[3];
+        loop_vertex(s, smp, loop, nl, lo, c);
+        int32_t cv = mesh_push_vertex(s->m, c[0], c[1], c[2]);
+        if (cv < 0) {
+            s->oom = 1;
+            return;
+        }
+        for (int q = 0; q < nv; q++)
+            if (mesh_push_triangle(s->m, cv, lv[q].vid, lv[(q + 1) % nv].vid) < 0)
+                s->oom = 1;
+    }
+}
+
+int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
+                        size_t errlen)
+{
+    *out = NULL;
+    mesh *m = calloc(1, sizeof *m);
+    if (!m) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    if (!d->off[0]) {
+        *out = m;
+        return 0;
+    }
+    sweep s;
+    memset(&s, 0, sizeof s);
+    s.d = d;
+    s.m = m;
+    tables_init(&s.tb);
+    double fdeg = o && o->feature_angle_deg > 0 ? o->feature_angle_deg : 30;
+    s.cos_feature = cos(fdeg * 3.14159265358979323846 / 180);
+    s.nx = d->n[0];
+    s.ny = d->n[1];
+    s.nz = d->n[2];
+    size_t nodes = (size_t)(s.nx + 1) * (s.ny + 1);
+    size_t nxe = (size_t)s.nx * (s.ny + 1), nye = (size_t)(s.nx + 1) * s.ny;
+    s.cursor = calloc(nodes, sizeof *s.cursor);
+    s.zv = malloc(nodes * sizeof *s.zv);
+    for (int l = 0; l < 2; l++) {
+        s.sign[l] = malloc(nodes);
+        s.xv[l] = malloc(nxe * sizeof *s.xv[l]);
+        s.yv[l] = malloc(nye * sizeof *s.yv[l]);
+    }
+    int rc = -1;
+    if (!s.cursor || !s.zv || !s.sign[0] || !s.sign[1] || !s.xv[0] || !s.xv[1] || !s.yv[0] ||
+        !s.yv[1]) {
+        snprintf(err, errlen, "out of memory contouring");
+        goto done;
+    }
+    layer_signs(&s, 0, s.sign[1]);
+    memset(s.xv[1], 0xff, nxe * sizeof *s.xv[1]);
+    memset(s.yv[1], 0xff, nye * sizeof *s.yv[1]);
+    for (int k = 0; k < s.nz && !s.oom; k++) {
+        s.k = k;
+        /* Roll: the top layer of slab k-1 is the bottom of slab k. */
+        uint8_t *ts = s.sign[0];
+        s.sign[0] = s.sign[1];
+        s.sign[1] = ts;
+        int32_t *tx = s.xv[0], *ty = s.yv[0];
+        s.xv[0] = s.xv[1];
+        s.xv[1] = tx;
+        s.yv[0] = s.yv[1];
+        s.yv[1] = ty;
+        layer_signs(&s, k + 1, s.sign[1]);
+        memset(s.xv[1], 0xff, nxe * sizeof *s.xv[1]);
+        memset(s.yv[1], 0xff, nye * sizeof *s.yv[1]);
+        memset(s.zv, 0xff, nodes * sizeof *s.zv);
+        const uint8_t *b = s.sign[0], *t = s.sign[1];
+        size_t w = (size_t)s.nx + 1;
+        for (int j = 0; j < s.ny && !s.oom; j++) {
+            const uint8_t *b0 = b + w * j, *b1 = b0 + w, *t0 = t + w * j, *t1 = t0 + w;
+            for (int i = 0; i < s.nx; i++) {
+                int mask = b0[i] | b0[i + 1] << 1 | b1[i] << 2 | b1[i + 1] << 3 | t0[i] << 4 |
+                           t0[i + 1] << 5 | t1[i] << 6 | t1[i + 1] << 7;
+                if (mask != 0 && mask != 255)
+                    cell(&s, i, j, mask);
+            }
+        }
+    }
+    if (s.oom) {
+        snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");
+        goto done;
+    }
+    rc = 0;
+done:
+    free(s.cursor);
+    free(s.zv);
+    for (int l = 0; l < 2; l++) {
+        free(s.sign[l]);
+        free(s.xv[l]);
+        free(s.yv[l]);
+    }
+    free(s.faces.key);
+    free(s.faces.val);
+    if (rc == 0)
+        *out = m;
+    else
+        mesh_free(m);
+    return rc;
+}

@@ -1,0 +1,51 @@
+/*
+ * dexels.h — private to src/mesh: the layout of a tri-dexel sampling and of
+ * a mesh under construction, shared by dexels.c, contour.c and mesh.c.
+ */
+#ifndef RAYSCAD_MESH_DEXELS_H
+#define RAYSCAD_MESH_DEXELS_H
+
+#include "mesh.h"
+
+/* One crossing of a ray with the surface.  t is measured from the grid
+ * origin along the ray's axis (world coordinate = origin[axis] + t). */
+typedef struct mesh_hit {
+    double t;
+    float n[3];    /* outward unit normal at the crossing */
+    int32_t enter; /* 1: the ray (going +axis) enters the solid here */
+} mesh_hit;
+
+/* Family a holds the rays along axis a.  Its rays are indexed by the other
+ * two axes u < v: ray (iu, iv) is number iu + (n[u] + 1) * iv, and its
+ * crossings are hit[a][off[a][r] .. off[a][r + 1]), sorted by t, alternating
+ * enter / exit starting with an enter (they are the ends of disjoint
+ * spans). */
+struct mesh_dexels {
+    double h;
+    double org[3]; /* world position of node (0, 0, 0) */
+    int n[3];      /* cells per axis; nodes are 0 .. n[a] */
+    size_t *off[3];
+    mesh_hit *hit[3];
+    size_t nhit[3];
+};
+
+/* The other two axes of a, in increasing order. */
+static inline void mesh_axes_other(int a, int *u, int *v)
+{
+    *u = a == 0 ? 1 : 0;
+    *v = a == 2 ? 1 : 2;
+}
+
+struct mesh {
+    float *v;
+    int32_t *t;
+    int nv, nt;
+    int capv, capt;
+};
+
+/* Append a vertex / a triangle; return its index, or -1 when out of memory
+ * or past INT32_MAX. */
+int mesh_push_vertex(mesh *m, double x, double y, double z);
+int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c);
+
+#endif

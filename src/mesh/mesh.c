@@ -1,0 +1,158 @@
+/*
+ * mesh.c — the indexed triangle mesh: growing arrays of float vertices and
+ * int32 triangles, and the whole-mesh sums (signed volume, area).
+ *
+ * Invariant: 0 <= nv <= capv, 0 <= nt <= capt, and every index in t[0 ..
+ * 3·nt) is in [0, nv).  Arrays grow by doubling, so appending is amortised
+ * O(1) and the mesh never holds more than twice what it uses.
+ */
+#include "dexels.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+
+static int grow(void **p, int *cap, int need, size_t elem)
+{
+    if (need <= *cap)
+        return 0;
+    long long c = *cap ? *cap : 1024;
+    while (c < need)
+        c *= 2;
+    if (c > INT32_MAX)
+        c = INT32_MAX;
+    void *q = realloc(*p, (size_t)c * elem);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = (int)c;
+    return 0;
+}
+
+int mesh_push_vertex(mesh *m, double x, double y, double z)
+{
+    if (m->nv == INT32_MAX || grow((void **)&m->v, &m->capv, m->nv + 1, 3 * sizeof(float)) != 0)
+        return -1;
+    float *p = m->v + 3 * (size_t)m->nv;
+    p[0] = (float)x;
+    p[1] = (float)y;
+    p[2] = (float)z;
+    return m->nv++;
+}
+
+int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c)
+{
+    if (m->nt == INT32_MAX ||
+        grow((void **)&m->t, &m->capt, m->nt + 1, 3 * sizeof(int32_t)) != 0)
+        return -1;
+    int32_t *p = m->t + 3 * (size_t)m->nt;
+    p[0] = a;
+    p[1] = b;
+    p[2] = c;
+    return m->nt++;
+}
+
+void mesh_free(mesh *m)
+{
+    if (!m)
+        return;
+    free(m->v);
+    free(m->t);
+    free(m);
+}
+
+int mesh_vertex_count(const mesh *m) { return m->nv; }
+int mesh_triangle_count(const mesh *m) { return m->nt; }
+const float *mesh_vertices(const mesh *m) { return m->v; }
+const int32_t *mesh_triangles(const mesh *m) { return m->t; }
+
+mesh *mesh_new_from_arrays(const float *v, int nv, const int32_t *t, int nt)
+{
+    if (nv < 0 || nt < 0)
+        return NULL;
+    for (long long q = 0; q < 3LL * nt; q++)
+        if (t[q] < 0 || t[q] >= nv)
+            return NULL;
+    mesh *m = calloc(1, sizeof *m);
+    if (!m)
+        return NULL;
+    if (grow((void **)&m->v, &m->capv, nv, 3 * sizeof(float)) != 0 ||
+        grow((void **)&m->t, &m->capt, nt, 3 * sizeof(int32_t)) != 0) {
+        mesh_free(m);
+        return NULL;
+    }
+    if (nv)
+        memcpy(m->v, v, 3 * (size_t)nv * sizeof(float));
+    if (nt)
+        memcpy(m->t, t, 3 * (size_t)nt * sizeof(int32_t));
+    m->nv = nv;
+    m->nt = nt;
+    return m;
+}
+
+/* Each triangle, taken from the first vertex's position (which keeps the
+ * products small and the sums accurate far from the origin). */
+static void sums(const mesh *m, double *vol, double *area)
+{
+    double sv = 0, sa = 0;
+    const float *o = m->nv ? m->v : NULL;
+    for (int q = 0; q < m->nt; q++) {
+        const int32_t *t = m->t + 3 * (size_t)q;
+        double p[3][3];
+        for (int k = 0; k < 3; k++)
+            for (int c = 0; c < 3; c++)
+                p[k][c] = (double)m->v[3 * (size_t)t[k] + c] - o[c];
+        double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+        double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        sa += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        /* det(p0, p1, p2) / 6 = p0 · (p1 × p2) / 6 */
+        sv += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+               p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
+              6;
+    }
+    *vol = sv;
+    *area = sa;
+}
+
+double mesh_signed_volume(const mesh *m)
+{
+    double v, a;
+    sums(m, &v, &a);
+    return v;
+}
+
+double mesh_area(const mesh *m)
+{
+    double v, a;
+    sums(m, &v, &a);
+    return a;
+}
+
+int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_measure *m,
+                    char *err, size_t errlen)
+{
+    mesh_dexels *d;
+    *out = NULL;
+    if (mesh_dexels_new(s, o, &d, err, errlen) != 0)
+        return -1;
+    if (m)
+        mesh_dexels_measure(d, m);
+    int rc = mesh_dexels_contour(d, o, out, err, errlen);
+    mesh_dexels_free(d);
+    return rc;
+}
+
+int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *out, char *err,
+                       size_t errlen)
+{
+    mesh_dexels *d;
+    if (mesh_dexels_new(s, o, &d, err, errlen) != 0)
+        return -1;
+    mesh_dexels_measure(d, out);
+    mesh_dexels_free(d);
+    return 0;
+}

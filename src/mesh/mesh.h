@@ -1,0 +1,134 @@
+/*
+ * mesh.h — triangle meshes and measurements from the same ray queries the
+ * renderer makes.
+ *
+ * A model is sampled by three families of axis-aligned rays (tri-dexels): one
+ * ray along x through every (y, z) node of a regular grid of spacing h, one
+ * along y through every (x, z) node, one along z through every (x, y) node.
+ * Every grid edge lies on one of those rays, so where the surface crosses an
+ * edge is known exactly, with the exact normal there (Hermite data).
+ *
+ *   mesh_dexels_new      cast the rays once (the expensive step);
+ *   mesh_dexels_measure  volume, area, bounds, centre of mass from them;
+ *   mesh_dexels_contour  a closed, 2-manifold, outward-oriented triangle mesh.
+ *
+ * mesh_from_scene and mesh_measure_scene do both steps in one call.  Nothing
+ * here prints; fallible calls return 0 or -1 with a message in err.
+ */
+#ifndef RAYSCAD_MESH_H
+#define RAYSCAD_MESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "../csg/csg.h"
+
+typedef struct mesh_options {
+    /* Grid spacing in model units.  <= 0: the longest side of the root's
+     * bounding box / cells_per_side. */
+    double h;
+    /* Used when h <= 0; <= 0 means 128. */
+    int cells_per_side;
+    /* Worker threads for ray casting; <= 0: one per online CPU. */
+    int threads;
+    /* Which root of the scene (0 = the model). */
+    int root;
+    /* Dihedral angle in degrees above which the normals met in a cell or on
+     * a cell face count as a sharp feature (a QEF vertex is placed on it).
+     * <= 0 means 30. */
+    double feature_angle_deg;
+} mesh_options;
+
+/* Fill o with the defaults (h derived from the model, all CPUs, root 0). */
+void mesh_options_default(mesh_options *o);
+
+/* ---- sampling ----------------------------------------------------------- */
+
+/* The crossings of the three ray families with one root of a scene: O(surface)
+ * memory (a few dozen bytes per crossing plus one offset per ray). */
+typedef struct mesh_dexels mesh_dexels;
+
+/* Cast the rays through root o->root of s (o may be NULL: defaults).  The
+ * scene is borrowed for the duration of the call only.  An empty root gives
+ * an empty sampling (volume 0, empty mesh).  Returns 0 and the sampling in
+ * *out (owned by the caller, free with mesh_dexels_free), or -1 with a
+ * message in err (errlen bytes): unbounded root (a halfspace left
+ * unintersected), a grid larger than 65536 cells per side or 2^31 rays per
+ * family, out of memory. */
+int mesh_dexels_new(const csg_scene *s, const mesh_options *o, mesh_dexels **out, char *err,
+                    size_t errlen);
+void mesh_dexels_free(mesh_dexels *d);
+
+/* The grid actually used: spacing h, the world position of node (0,0,0) and
+ * the number of cells per axis (nodes = cells + 1).  An empty sampling
+ * reports n = {0,0,0}. */
+void mesh_dexels_grid(const mesh_dexels *d, double *h, double origin[3], int n[3]);
+
+/* ---- measurement -------------------------------------------------------- */
+
+typedef struct mesh_measure {
+    /* ∫ dV: each family sums its rays' total interval length × h²
+     * (a midpoint rule over the ray grid); the three estimates are averaged. */
+    double volume;
+    /* Surface area from the ray crossings (a Crofton-type estimator): a
+     * crossing on an axis-a ray stands for h²/|n_a| of surface, and
+     * weighting the three families by |n_a|/|n|₁ gives each crossing
+     * h²/|n|₁ exactly, with no division by a small |n_a|. */
+    double area;
+    /* Centre of mass (uniform density), from the first moments of the
+     * intervals, averaged like the volume.  0 when the volume is 0. */
+    double centroid[3];
+    /* Bounds of the sampled surface points (never larger than the true
+     * bounds; within O(h²) of them for smooth surfaces, exact for faces
+     * that some ray crosses).  lo > hi when empty. */
+    double lo[3], hi[3];
+    long long crossings; /* number of ray–surface crossings used */
+} mesh_measure;
+
+/* Measure a sampling.  Never fails. */
+void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *out);
+
+/* ---- meshes ------------------------------------------------------------- */
+
+/* An indexed triangle mesh: vertices as 3 floats (x, y, z in model units),
+ * triangles as 3 vertex indices, counter-clockwise seen from outside (the
+ * right-hand normal points out of the solid). */
+typedef struct mesh mesh;
+
+/* Contour a sampling (o may be NULL: defaults; only feature_angle_deg is
+ * read).  The result is closed and 2-manifold (every edge in exactly two
+ * triangles, with opposite directions; every vertex's triangles form one
+ * fan), oriented outward, without zero-area triangles, and every vertex lies
+ * within its grid cell (so within about h·√3 of the surface).  Features
+ * thinner than about h may be lost or merged.  Returns 0 and the mesh in
+ * *out (owned by the caller, free with mesh_free), or -1 with a message
+ * (out of memory, more than 2^31 vertices). */
+int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
+                        size_t errlen);
+
+/* mesh_dexels_new + mesh_dexels_contour (+ measure when m is not NULL). */
+int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_measure *m,
+                    char *err, size_t errlen);
+/* mesh_dexels_new + mesh_dexels_measure. */
+int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *out, char *err,
+                       size_t errlen);
+
+void mesh_free(mesh *m);
+int mesh_vertex_count(const mesh *m);
+int mesh_triangle_count(const mesh *m);
+/* 3 × mesh_vertex_count floats, borrowed from m (valid until mesh_free). */
+const float *mesh_vertices(const mesh *m);
+/* 3 × mesh_triangle_count indices, borrowed from m. */
+const int32_t *mesh_triangles(const mesh *m);
+
+/* Build a mesh from copies of caller arrays (e.g. one read back from a
+ * file).  Indices are checked to lie in [0, nv).  Returns NULL when out of
+ * memory or an index is out of range. */
+mesh *mesh_new_from_arrays(const float *v, int nv, const int32_t *t, int nt);
+
+/* Signed volume enclosed (positive for an outward-oriented closed mesh) and
+ * total area, summed in double precision. */
+double mesh_signed_volume(const mesh *m);
+double mesh_area(const mesh *m);
+
+#endif

@@ -1,0 +1,630 @@
+/*
+ * test_mesh.c — tri-dexel measurement and contouring, checked against closed
+ * forms (box, sphere, cone volumes and areas; the cube minus sphere minus
+ * three cylinders of the OpenSCAD manual, 2404.778358 by exact integration)
+ * and against properties checked here independently of src/mesh: every
+ * directed edge once and its reverse once, one fan per vertex, positive
+ * signed volume close to the measured one, no zero-area triangle, every
+ * vertex near the analytic surface (distance from the shape's formula).
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../src/csg/csg.h"
+#include "../src/io/io.h"
+#include "../src/mesh/mesh.h"
+
+#define PI 3.14159265358979323846
+#define CSG_VOLUME 2404.778358 /* cube(20,center) - sphere(11) - 3 cylinders r=6.5 */
+
+/* ---- scene builders ----------------------------------------------------- */
+
+static const csg_material plain = {{1, 1, 1, 1}, 0};
+
+static csg_node *box_node(double x0, double y0, double z0, double x1, double y1, double z1)
+{
+    iv_shape s = {.kind = IV_SHAPE_BOX};
+    double lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
+    memcpy(s.u.box.lo, lo, sizeof lo);
+    memcpy(s.u.box.hi, hi, sizeof hi);
+    return csg_node_shape(&s, csg_affine_identity, &plain);
+}
+
+static csg_node *sphere_node(double r, double cx, double cy, double cz)
+{
+    iv_shape s = {.kind = IV_SHAPE_SPHERE};
+    s.u.sphere.r = r;
+    csg_affine m = {1, 0, 0, cx, 0, 1, 0, cy, 0, 0, 1, cz};
+    return csg_node_shape(&s, m, &plain);
+}
+
+/* A cone/cylinder of height h along `axis`, centred on the origin along it
+ * when centred, else from 0 to h. */
+static csg_node *cone_node(double r1, double r2, double h, int axis, int centred)
+{
+    iv_shape s = {.kind = IV_SHAPE_CONE};
+    s.u.cone.r1 = r1;
+    s.u.cone.r2 = r2;
+    s.u.cone.h = h;
+    double off = centred ? -h / 2 : 0;
+    /* Object z goes to world `axis`; the map is a cyclic permutation. */
+    csg_affine m;
+    if (axis == 2) {
+        csg_affine z = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, off};
+        memcpy(m, z, sizeof m);
+    } else if (axis == 0) {
+        csg_affine x = {0, 0, 1, off, 1, 0, 0, 0, 0, 1, 0, 0};
+        memcpy(m, x, sizeof m);
+    } else {
+        csg_affine y = {0, 1, 0, 0, 0, 0, 1, off, 1, 0, 0, 0};
+        memcpy(m, y, sizeof m);
+    }
+    return csg_node_shape(&s, m, &plain);
+}
+
+static csg_scene *scene_of(csg_node *root)
+{
+    char err[256] = "";
+    csg_node *roots[1] = {root};
+    csg_scene *s = csg_scene_new(roots, 1, err, sizeof err);
+    cr_assert(s, "csg_scene_new: %s", err);
+    return s;
+}
+
+/* difference() { cube(20, center=true); sphere(11); three cylinders r=6.5 } */
+static csg_scene *csg_example(void)
+{
+    csg_node *d = csg_node_op(CSG_OP_DIFFERENCE);
+    cr_assert(csg_node_add(d, box_node(-10, -10, -10, 10, 10, 10)) == 0);
+    cr_assert(csg_node_add(d, sphere_node(11, 0, 0, 0)) == 0);
+    for (int a = 0; a < 3; a++)
+        cr_assert(csg_node_add(d, cone_node(6.5, 6.5, 30, a, 1)) == 0);
+    return scene_of(d);
+}
+
+/* Lower bound of the distance to the surface of csg_example (exact near the
+ * box faces and on the sphere/cylinder surfaces away from edges). */
+static double sd_box(const double p[3], const double lo[3], const double hi[3])
+{
+    double q[3], out = 0, in = -INFINITY;
+    for (int c = 0; c < 3; c++) {
+        double ctr = 0.5 * (lo[c] + hi[c]), half = 0.5 * (hi[c] - lo[c]);
+        q[c] = fabs(p[c] - ctr) - half;
+        out += q[c] > 0 ? q[c] * q[c] : 0;
+        in = fmax(in, q[c]);
+    }
+    return sqrt(out) + fmin(in, 0);
+}
+
+static double sd_csg_example(const double p[3])
+{
+    double lo[3] = {-10, -10, -10}, hi[3] = {10, 10, 10};
+    double d = sd_box(p, lo, hi);
+    d = fmax(d, 11 - sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    d = fmax(d, 6.5 - hypot(p[1], p[2]));
+    d = fmax(d, 6.5 - hypot(p[0], p[2]));
+    d = fmax(d, 6.5 - hypot(p[0], p[1]));
+    return d;
+}
+
+static mesh_options opts_h(double h)
+{
+    mesh_options o;
+    mesh_options_default(&o);
+    o.h = h;
+    o.threads = 2;
+    return o;
+}
+
+static mesh_measure measure(const csg_scene *s, double h)
+{
+    mesh_options o = opts_h(h);
+    mesh_measure m;
+    char err[256] = "";
+    cr_assert(mesh_measure_scene(s, &o, &m, err, sizeof err) == 0, "%s", err);
+    return m;
+}
+
+/* ---- independent mesh checks -------------------------------------------- */
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int has_key(const uint64_t *k, size_t n, uint64_t key)
+{
+    return bsearch(&key, k, n, sizeof *k, cmp_u64) != NULL;
+}
+
+/* Closed, 2-manifold, consistently oriented: each directed edge occurs once
+ * and its reverse once; around every vertex the triangles form one cycle;
+ * every vertex is used.  Returns a message, or NULL. */
+static const char *check_manifold(const mesh *m)
+{
+    int nt = mesh_triangle_count(m), nv = mesh_vertex_count(m);
+    const int32_t *t = mesh_triangles(m);
+    size_t ne = 3 * (size_t)nt;
+    uint64_t *k = malloc((ne ? ne : 1) * sizeof *k);
+    cr_assert(k);
+    for (size_t q = 0; q < ne; q++) {
+        uint32_t a = (uint32_t)t[q], b = (uint32_t)t[q % 3 == 2 ? q - 2 : q + 1];
+        if (a == b) {
+            free(k);
+            return "a triangle repeats a vertex";
+        }
+        k[q] = (uint64_t)a << 32 | b;
+    }
+    qsort(k, ne, sizeof *k, cmp_u64);
+    const char *msg = NULL;
+    for (size_t q = 0; q < ne && !msg; q++) {
+        if (q + 1 < ne && k[q] == k[q + 1])
+            msg = "a directed edge occurs twice (non-manifold or misoriented)";
+        else if (!has_key(k, ne, (k[q] & 0xffffffffu) << 32 | k[q] >> 32))
+            msg = "an edge has no opposite (hole)";
+    }
+    /* One fan per vertex: link a -> (b -> c) for each triangle (a, b, c);
+     * keyed (a, b), sorted, the links around a must form a single cycle. */
+    if (!msg) {
+        typedef struct link {
+            uint64_t key; /* a << 32 | b */
+            uint32_t c;
+        } link;
+        link *l = malloc((ne ? ne : 1) * sizeof *l);
+        cr_assert(l);
+        for (size_t q = 0; q < (size_t)nt; q++)
+            for (int r = 0; r < 3; r++) {
+                uint32_t a = (uint32_t)t[3 * q + r], b = (uint32_t)t[3 * q + (r + 1) % 3],
+                         c = (uint32_t)t[3 * q + (r + 2) % 3];
+                l[3 * q + r] = (link){(uint64_t)a << 32 | b, c};
+            }
+        qsort(l, ne, sizeof *l, cmp_u64); /* key is the first member */
+        char *used = calloc((size_t)nv + 1, 1);
+        cr_assert(used);
+        size_t q = 0;
+        while (q < ne && !msg) {
+            uint32_t a = (uint32_t)(l[q].key >> 32);
+            size_t end = q;
+            while (end < ne && (uint32_t)(l[end].key >> 32) == a)
+                end++;
+            used[a] = 1;
+            /* Walk from the first link; count steps back to the start. */
+            size_t steps = 0, cur = q;
+            do {
+                uint64_t want = (uint64_t)a << 32 | l[cur].c;
+                link key = {want, 0};
+                link *nx = bsearch(&key, l + q, end - q, sizeof *l, cmp_u64);
+                if (!nx) {
+                    msg = "a vertex fan is open";
+                    break;
+                }
+                cur = (size_t)(nx - l);
+                steps++;
+            } while (cur != q && steps <= end - q);
+            if (!msg && steps != end - q)
+                msg = "a vertex has more than one fan (pinched)";
+            q = end;
+        }
+        for (int v = 0; v < nv && !msg; v++)
+            if (!used[v])
+                msg = "an unused vertex";
+        free(used);
+        free(l);
+    }
+    free(k);
+    return msg;
+}
+
+/* Smallest triangle area. */
+static double min_area(const mesh *m)
+{
+    const float *v = mesh_vertices(m);
+    const int32_t *t = mesh_triangles(m);
+    double best = INFINITY;
+    for (int q = 0; q < mesh_triangle_count(m); q++) {
+        const float *a = v + 3 * t[3 * q], *b = v + 3 * t[3 * q + 1], *c = v + 3 * t[3 * q + 2];
+        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        best = fmin(best, 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+    }
+    return best;
+}
+
+/* Signed volume from the raw arrays, independent of mesh_signed_volume. */
+static double volume_of(const mesh *m)
+{
+    const float *v = mesh_vertices(m);
+    const int32_t *t = mesh_triangles(m);
+    double s = 0;
+    for (int q = 0; q < mesh_triangle_count(m); q++) {
+        const float *a = v + 3 * t[3 * q], *b = v + 3 * t[3 * q + 1], *c = v + 3 * t[3 * q + 2];
+        s += (a[0] * ((double)b[1] * c[2] - (double)b[2] * c[1]) -
+              a[1] * ((double)b[0] * c[2] - (double)b[2] * c[0]) +
+              a[2] * ((double)b[0] * c[1] - (double)b[1] * c[0])) /
+             6;
+    }
+    return s;
+}
+
+static double max_dist(const mesh *m, double (*sd)(const double p[3], const void *ctx),
+                       const void *ctx)
+{
+    const float *v = mesh_vertices(m);
+    double worst = 0;
+    for (int q = 0; q < mesh_vertex_count(m); q++) {
+        double p[3] = {v[3 * q], v[3 * q + 1], v[3 * q + 2]};
+        worst = fmax(worst, fabs(sd(p, ctx)));
+    }
+    return worst;
+}
+
+static double sd_sphere_ctx(const double p[3], const void *ctx)
+{
+    const double *c = ctx; /* cx, cy, cz, r */
+    return sqrt((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) +
+                (p[2] - c[2]) * (p[2] - c[2])) -
+           c[3];
+}
+
+static double sd_box_ctx(const double p[3], const void *ctx)
+{
+    const double *b = ctx;
+    return sd_box(p, b, b + 3);
+}
+
+static double sd_csg_ctx(const double p[3], const void *ctx)
+{
+    (void)ctx;
+    return sd_csg_example(p);
+}
+
+static mesh *contour(const csg_scene *s, double h, mesh_measure *mm)
+{
+    mesh_options o = opts_h(h);
+    mesh *m = NULL;
+    char err[256] = "";
+    cr_assert(mesh_from_scene(s, &o, &m, mm, err, sizeof err) == 0, "%s", err);
+    return m;
+}
+
+/* The common checks; returns the mesh for more. */
+static void check_mesh(const mesh *m, const mesh_measure *mm, double h, double vol_rel_tol,
+                       const char *what)
+{
+    cr_assert_gt(mesh_triangle_count(m), 0, "%s: empty mesh", what);
+    const char *msg = check_manifold(m);
+    cr_assert_null(msg, "%s (h=%g): %s", what, h, msg);
+    double a = min_area(m);
+    cr_assert_gt(a, 1e-7 * h * h, "%s (h=%g): smallest triangle area %g", what, h, a);
+    double sv = volume_of(m);
+    cr_assert_gt(sv, 0, "%s: signed volume %g is not positive (inward?)", what, sv);
+    cr_assert_lt(fabs(sv - mm->volume), vol_rel_tol * mm->volume,
+                 "%s (h=%g): mesh volume %.6f vs measured %.6f", what, h, sv, mm->volume);
+    cr_assert_lt(fabs(mesh_signed_volume(m) - sv), 1e-9 * fabs(sv) + 1e-9);
+}
+
+/* ---- measurement -------------------------------------------------------- */
+
+Test(mesh_measure, box_exact_when_sides_are_multiples_of_h)
+{
+    csg_scene *s = scene_of(box_node(-3, -2, 1, 5, 2, 3)); /* 8 × 4 × 2 */
+    mesh_measure m = measure(s, 8.0 / 128);
+    cr_assert_float_eq(m.volume, 64.0, 1e-9, "volume %.12f", m.volume);
+    /* csg pads the bounds by 1e-9 relative, which shifts the grid by that
+     * much: not enough to change which rays hit, but the centroid moves. */
+    cr_assert_float_eq(m.centroid[0], 1.0, 1e-7);
+    cr_assert_float_eq(m.centroid[1], 0.0, 1e-7);
+    cr_assert_float_eq(m.centroid[2], 2.0, 1e-7);
+    double lo[3] = {-3, -2, 1}, hi[3] = {5, 2, 3};
+    for (int c = 0; c < 3; c++) {
+        cr_assert_float_eq(m.lo[c], lo[c], 1e-9, "lo[%d] %.12f", c, m.lo[c]);
+        cr_assert_float_eq(m.hi[c], hi[c], 1e-9, "hi[%d] %.12f", c, m.hi[c]);
+    }
+    cr_assert_float_eq(m.area, 2 * (8 * 4 + 8 * 2 + 4 * 2), 1e-9, "area %.12f", m.area);
+    /* The default h (8/128) is the same grid. */
+    mesh_options o;
+    mesh_options_default(&o);
+    mesh_measure d;
+    char err[256];
+    cr_assert(mesh_measure_scene(s, &o, &d, err, sizeof err) == 0);
+    cr_assert_float_eq(d.volume, 64.0, 1e-9);
+    csg_scene_free(s);
+}
+
+Test(mesh_measure, box_off_grid_converges)
+{
+    csg_scene *s = scene_of(box_node(-3.1, -2.05, 1, 4.9, 2.3, 3.7));
+    double v = 8 * 4.35 * 2.7, prev = INFINITY;
+    for (double h = 0.2; h > 0.04; h /= 2) {
+        mesh_measure m = measure(s, h);
+        double e = fabs(m.volume - v);
+        /* Each family miscounts at most a row of rays per face: O(h·area). */
+        cr_assert_lt(e, h * 2 * (8 * 4.35 + 8 * 2.7 + 4.35 * 2.7), "h=%g error %g", h, e);
+        cr_assert_lt(e, prev * 0.75 + 1e-12, "h=%g error %g not shrinking (was %g)", h, e, prev);
+        prev = e;
+    }
+    csg_scene_free(s);
+}
+
+Test(mesh_measure, sphere_converges)
+{
+    double r = 5, c[3] = {1.5, -2, 3.25};
+    csg_scene *s = scene_of(sphere_node(r, c[0], c[1], c[2]));
+    double v = 4.0 / 3 * PI * r * r * r, area = 4 * PI * r * r;
+    for (int cells = 16; cells <= 128; cells *= 2) {
+        double h = 2 * r / cells;
+        mesh_measure m = measure(s, h);
+        double ev = fabs(m.volume - v) / v, ea = fabs(m.area - area) / area;
+        cr_log_info("sphere h=%g: volume rel error %.2e, area rel error %.2e", h, ev, ea);
+        /* Midpoint rule with square-root silhouettes: O(h^1.5); a generous
+         * constant, but the bound shrinks ~2.8x per halving. */
+        cr_assert_lt(ev, 2 * pow(h / r, 1.5), "h=%g volume %.6f vs %.6f", h, m.volume, v);
+        cr_assert_lt(ea, 4 * pow(h / r, 1.5), "h=%g area %.6f vs %.6f", h, m.area, area);
+        for (int k = 0; k < 3; k++) {
+            cr_assert_lt(fabs(m.centroid[k] - c[k]), 2 * h * pow(h / r, 1.5), "centroid[%d]", k);
+            cr_assert_leq(m.lo[k], c[k] - r + h * h / r + 1e-12);
+            cr_assert_geq(m.lo[k], c[k] - r - 1e-12);
+            cr_assert_geq(m.hi[k], c[k] + r - h * h / r - 1e-12);
+            cr_assert_leq(m.hi[k], c[k] + r + 1e-12);
+        }
+    }
+    csg_scene_free(s);
+}
+
+Test(mesh_measure, cone_frustum_volume)
+{
+    double r1 = 4, r2 = 1.5, hh = 6;
+    csg_scene *s = scene_of(cone_node(r1, r2, hh, 2, 0));
+    double v = PI * hh / 3 * (r1 * r1 + r1 * r2 + r2 * r2);
+    mesh_measure m = measure(s, 8.0 / 128);
+    cr_assert_lt(fabs(m.volume - v) / v, 2e-3, "volume %.6f vs %.6f", m.volume, v);
+    /* Centroid height of a frustum. */
+    double zc = hh * (r1 * r1 + 2 * r1 * r2 + 3 * r2 * r2) / (4 * (r1 * r1 + r1 * r2 + r2 * r2));
+    cr_assert_lt(fabs(m.centroid[2] - zc), 5e-3, "zc %.6f vs %.6f", m.centroid[2], zc);
+    csg_scene_free(s);
+}
+
+Test(mesh_measure, csg_example_converges)
+{
+    csg_scene *s = csg_example();
+    double prev = INFINITY;
+    for (int cells = 64; cells <= 256; cells *= 2) {
+        double h = 20.0 / cells;
+        mesh_measure m = measure(s, h);
+        double e = fabs(m.volume - CSG_VOLUME) / CSG_VOLUME;
+        cr_log_info("csg example h=%g: volume %.6f, rel error %.2e", h, m.volume, e);
+        cr_assert_lt(e, 0.5 * pow(h / 10, 1.5), "h=%g volume %.6f", h, m.volume);
+        cr_assert_lt(e, prev, "error not shrinking at h=%g", h);
+        prev = e;
+        for (int k = 0; k < 3; k++)
+            cr_assert_lt(fabs(m.centroid[k]), 1e-3, "centroid[%d] %g", k, m.centroid[k]);
+    }
+    csg_scene_free(s);
+}
+
+Test(mesh_measure, empty_and_unbounded)
+{
+    csg_scene *s = scene_of(NULL);
+    mesh_measure m = measure(s, 0);
+    cr_assert_eq(m.volume, 0);
+    mesh *me = contour(s, 0, &m);
+    cr_assert_eq(mesh_triangle_count(me), 0);
+    mesh_free(me);
+    csg_scene_free(s);
+
+    iv_shape hs = {.kind = IV_SHAPE_HALFSPACE};
+    hs.u.halfspace.n[2] = 1;
+    hs.u.halfspace.d = 0;
+    s = scene_of(csg_node_shape(&hs, csg_affine_identity, &plain));
+    mesh_options o = opts_h(0);
+    char err[256] = "";
+    cr_assert_eq(mesh_measure_scene(s, &o, &m, err, sizeof err), -1);
+    cr_assert(strstr(err, "unbounded"), "message: %s", err);
+    csg_scene_free(s);
+}
+
+/* ---- meshes ------------------------------------------------------------- */
+
+Test(mesh_contour, box_is_exact)
+{
+    double b[6] = {-3.1, -2.05, 1, 4.9, 2.3, 3.7};
+    csg_scene *s = scene_of(box_node(b[0], b[1], b[2], b[3], b[4], b[5]));
+    double dim[3] = {8, 4.35, 2.7};
+    double v = dim[0] * dim[1] * dim[2], area = 2 * (8 * 4.35 + 8 * 2.7 + 4.35 * 2.7);
+    double hs[4] = {0.3, 0.15, 0.075, 0.21};
+    for (int q = 0; q < 4; q++) {
+        double h = hs[q];
+        /* The grid puts the lower faces midway between nodes; an upper face
+         * at a half-integer number of cells lies on a node plane, and its
+         * vertices keep h/256 off it (no vertex may sit on a node). */
+        int on_node = 0;
+        for (int c = 0; c < 3; c++) {
+            double f = dim[c] / h - 0.5;
+            on_node |= fabs(f - round(f)) < 1e-6;
+        }
+        double tol = on_node ? h / 256 * 1.01 + 1e-5 : 1e-5;
+        mesh_measure mm;
+        mesh *m = contour(s, h, &mm);
+        check_mesh(m, &mm, h, 0.05, "box");
+        double d = max_dist(m, sd_box_ctx, b);
+        cr_log_info("box h=%g (face on node plane: %d): %d triangles, volume error %.2e, max "
+                    "vertex distance %.2e",
+                    h, on_node, mesh_triangle_count(m), volume_of(m) - v, d);
+        /* Sharp corners and edges: the mesh is the box up to float rounding
+         * (and the h/256 offset of a face on a node plane). */
+        cr_assert_lt(d, tol, "h=%g: a vertex is %g off the box", h, d);
+        cr_assert_lt(fabs(volume_of(m) - v), tol * area + 1e-5 * v, "h=%g mesh volume %.9f", h,
+                     volume_of(m));
+        cr_assert_lt(fabs(mesh_area(m) - area), 1e-5 * area + tol * 40, "h=%g area %.9f", h,
+                     mesh_area(m));
+        mesh_free(m);
+    }
+    csg_scene_free(s);
+}
+
+Test(mesh_contour, sphere)
+{
+    double c[4] = {0.3, -0.2, 0.1, 5};
+    csg_scene *s = scene_of(sphere_node(c[3], c[0], c[1], c[2]));
+    double v = 4.0 / 3 * PI * 125;
+    for (int cells = 8; cells <= 64; cells *= 2) {
+        double h = 10.0 / cells;
+        mesh_measure mm;
+        mesh *m = contour(s, h, &mm);
+        check_mesh(m, &mm, h, 2 * (h / 5) * (h / 5) + 0.01, "sphere");
+        double d = max_dist(m, sd_sphere_ctx, c);
+        cr_log_info("sphere h=%g: %d triangles, max vertex distance %.3g h, mesh volume err %.2e",
+                    h, mesh_triangle_count(m), d / h, fabs(volume_of(m) - v) / v);
+        cr_assert_lt(d, 0.5 * h, "h=%g: a vertex is %g from the sphere", h, d);
+        mesh_free(m);
+    }
+    csg_scene_free(s);
+}
+
+Test(mesh_contour, csg_example)
+{
+    csg_scene *s = csg_example();
+    double prev = INFINITY;
+    for (int cells = 32; cells <= 128; cells *= 2) {
+        double h = 20.0 / cells;
+        mesh_measure mm;
+        mesh *m = contour(s, h, &mm);
+        check_mesh(m, &mm, h, 0.02, "csg example");
+        double d = max_dist(m, sd_csg_ctx, NULL);
+        double e = fabs(volume_of(m) - CSG_VOLUME) / CSG_VOLUME;
+        cr_log_info("csg h=%g: %d triangles, max vertex distance %.3g h, mesh volume err %.2e", h,
+                    mesh_triangle_count(m), d / h, e);
+        cr_assert_lt(d, h, "h=%g: a vertex is %g from the surface", h, d);
+        cr_assert_lt(e, prev, "mesh volume error not shrinking at h=%g", h);
+        prev = e;
+        mesh_free(m);
+    }
+    csg_scene_free(s);
+}
+
+/* Shapes that stress the topology: touching and nearly touching boxes, thin
+ * walls, a small tunnel, cones with sharp rims and tips, features below h. */
+Test(mesh_contour, stress_manifold)
+{
+    for (int variant = 0; variant < 6; variant++) {
+        csg_node *root = csg_node_op(CSG_OP_UNION);
+        switch (variant) {
+        case 0: /* two boxes sharing only an edge, and one sharing a corner */
+            csg_node_add(root, box_node(0, 0, 0, 1, 1, 1));
+            csg_node_add(root, box_node(1, 1, 0, 2, 2, 1));
+            csg_node_add(root, box_node(2, 2, 1, 3, 3, 2));
+            break;
+        case 1: /* a thin wall, thinner than h */
+            csg_node_add(root, box_node(0, 0, 0, 4, 4, 0.5));
+            csg_node_add(root, box_node(0, 0, 0, 0.03, 4, 4));
+            break;
+        case 2: { /* plate with a pin hole smaller than a cell */
+            csg_node *d = csg_node_op(CSG_OP_DIFFERENCE);
+            csg_node_add(d, box_node(0, 0, 0, 4, 4, 0.3));
+            csg_node_add(d, cone_node(0.04, 0.04, 2, 2, 1));
+            csg_node_add(root, d);
+            break;
+        }
+        case 3: /* cones: tip, sharp rims, a tilted union */
+            csg_node_add(root, cone_node(2, 0, 3, 2, 0));
+            csg_node_add(root, cone_node(1, 1.7, 4, 0, 1));
+            break;
+        case 4: /* many small spheres near each other */
+            for (int q = 0; q < 12; q++)
+                csg_node_add(root, sphere_node(0.13 + 0.02 * q, 0.27 * q, 0.1 * (q % 3), 0));
+            break;
+        default: { /* intersection of a sphere and a box: sharp circles */
+            csg_node *x = csg_node_op(CSG_OP_INTERSECTION);
+            csg_node_add(x, sphere_node(1.3, 0, 0, 0));
+            csg_node_add(x, box_node(-1, -1, -1, 1, 1, 1));
+            csg_node_add(root, x);
+            break;
+        }
+        }
+        csg_scene *s = scene_of(root);
+        for (int cells = 24; cells <= 48; cells += 11) {
+            mesh_options o;
+            mesh_options_default(&o);
+            o.cells_per_side = cells;
+            o.threads = 2;
+            mesh *m = NULL;
+            mesh_measure mm;
+            char err[256] = "";
+            cr_assert(mesh_from_scene(s, &o, &m, &mm, err, sizeof err) == 0, "%s", err);
+            const char *msg = check_manifold(m);
+            cr_assert_null(msg, "variant %d, %d cells: %s", variant, cells, msg);
+            double h;
+            double org[3];
+            int n[3];
+            mesh_dexels *dx;
+            cr_assert(mesh_dexels_new(s, &o, &dx, err, sizeof err) == 0);
+            mesh_dexels_grid(dx, &h, org, n);
+            mesh_dexels_free(dx);
+            cr_assert_gt(min_area(m), 1e-7 * h * h, "variant %d: zero-area triangle", variant);
+            cr_assert_gt(volume_of(m), 0, "variant %d: not outward", variant);
+            mesh_free(m);
+        }
+        csg_scene_free(s);
+    }
+}
+
+/* ---- files through OpenMesh --------------------------------------------- */
+
+Test(mesh_io, write_read_round_trip)
+{
+    csg_scene *s = csg_example();
+    mesh_measure mm;
+    mesh *m = contour(s, 20.0 / 48, &mm);
+    char dir[] = "/tmp/rayscad_mesh_XXXXXX";
+    cr_assert(mkdtemp(dir));
+    const char *ext[] = {"stl", "stl", "off", "obj", "ply"};
+    for (int q = 0; q < 5; q++) {
+        char path[256], err[256] = "";
+        snprintf(path, sizeof path, "%s/out%d.%s", dir, q, ext[q]);
+        int ascii = q == 1;
+        cr_assert(io_mesh_write(path, mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
+                                mesh_triangle_count(m), ascii, err, sizeof err) == 0,
+                  "%s: %s", path, err);
+        float *v = NULL;
+        int32_t *t = NULL;
+        int nv = 0, nt = 0;
+        cr_assert(io_mesh_read(path, &v, &nv, &t, &nt, err, sizeof err) == 0, "%s: %s", path,
+                  err);
+        cr_assert_eq(nv, mesh_vertex_count(m), "%s: %d vertices back, wrote %d", path, nv,
+                     mesh_vertex_count(m));
+        cr_assert_eq(nt, mesh_triangle_count(m), "%s: triangles", path);
+        mesh *back = mesh_new_from_arrays(v, nv, t, nt);
+        cr_assert(back);
+        cr_assert_null(check_manifold(back), "%s: read back not manifold", path);
+        cr_assert_lt(fabs(volume_of(back) - volume_of(m)), 1e-4 * volume_of(m), "%s", path);
+        mesh_free(back);
+        free(v);
+        free(t);
+        unlink(path);
+    }
+    /* A failed write leaves nothing behind. */
+    char bad[300], err[256] = "";
+    snprintf(bad, sizeof bad, "%s/no/such/dir/x.stl", dir);
+    cr_assert_eq(io_mesh_write(bad, mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
+                               mesh_triangle_count(m), 0, err, sizeof err),
+                 -1);
+    cr_assert_neq(err[0], 0);
+    char unk[300];
+    snprintf(unk, sizeof unk, "%s/x.unknownext", dir);
+    cr_assert_eq(io_mesh_write(unk, mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
+                               mesh_triangle_count(m), 0, err, sizeof err),
+                 -1);
+    cr_assert_eq(access(unk, F_OK), -1);
+    cr_assert_eq(rmdir(dir), 0, "temporary files left in %s", dir);
+    mesh_free(m);
+    csg_scene_free(s);
+}
