@@ -295,7 +295,7 @@ Test(iv_list, contains_closed_ends)
 static iv_list random_list(int base)
 {
     int n = rng_int(5);
-    double ts[10];
+    double ts[10] = {0};
     int g = -10 + rng_int(3);
     for (int i = 0; i < 2 * n; i++) {
         g += 1 + rng_int(3);
