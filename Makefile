@@ -98,7 +98,8 @@ deps:
 demo: deps
 	$(MAKE) $(BUILD)/rayscad
 	@mkdir -p out
-	$(BUILD)/rayscad models/demo.scad -o out/demo.png --imgsize=800,600
+	$(BUILD)/rayscad models/demo.scad -o out/demo.png --samples 3 \
+		$$(sed -n 's|^// args: *||p' models/demo.scad)
 	@echo "wrote out/demo.png"
 
 unit: all
