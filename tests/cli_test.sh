@@ -8,6 +8,7 @@ rayscad=$(realpath "$build/rayscad")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
+umask 022
 passed=0
 failed=0
 
@@ -64,6 +65,7 @@ check "no temporary file left behind" test -z "$(ls -A | grep -v -e '\.scad$' -e
 
 run ok.scad -o good.png --imgsize=64,48
 check "render exits 0" test "$rc" -eq 0
+check "output gets the umask's permissions" test "$(stat -c %a good.png)" = 644
 check "render writes a PNG" sh -c "head -c 8 good.png | od -c | grep -q 'P   N   G'"
 
 run echo.scad -o e.echo

@@ -1,55 +1,32 @@
 /*
- * atomic_file.c — see atomic_file.h.  mkstemp in the target's directory keeps
- * the rename on one file system, so it is atomic.
+ * atomic_file.c — see atomic_file.h.  The temporary file comes from the io
+ * module's io_temp_beside, like every other output, so permissions and
+ * clean-up are the same for text, images and meshes.
  */
 #include "atomic_file.h"
 
+#include "../io/temp_file.h"
+
 #include <errno.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 int atomic_file_write(const char *path, const char *data, size_t len, char *err, size_t errlen)
 {
-    size_t n = strlen(path);
-    char *tmp = malloc(n + 16);
-    if (!tmp) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    const char *slash = strrchr(path, '/');
-    size_t dir = slash ? (size_t)(slash - path + 1) : 0;
-    snprintf(tmp, n + 16, "%.*s.%s.XXXXXX", (int)dir, path, path + dir);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    size_t done = 0;
-    while (done < len) {
-        ssize_t w = write(fd, data + done, len - done);
-        if (w < 0) {
-            if (errno == EINTR) continue;
-            break;
-        }
-        done += (size_t)w;
-    }
-    int bad = done < len;
+    char tmp[4096];
+    if (io_temp_beside(path, tmp, sizeof tmp, err, errlen) != 0) return -1;
+    FILE *f = fopen(tmp, "wb");
+    int bad = !f || fwrite(data, 1, len, f) != len;
     int saved = errno;
-    if (close(fd) != 0 && !bad) {
-        bad = 1;
-        saved = errno;
-    }
-    if (!bad && rename(tmp, path) != 0) {
+    if (f && fclose(f) != 0 && !bad) {
         bad = 1;
         saved = errno;
     }
     if (bad) {
         snprintf(err, errlen, "cannot write '%s': %s", path, strerror(saved));
         unlink(tmp);
+        return -1;
     }
-    free(tmp);
-    return bad ? -1 : 0;
+    return io_temp_commit(tmp, path, err, errlen);
 }

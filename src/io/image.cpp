@@ -13,6 +13,7 @@
  * Every exception stops at the extern "C" functions; nothing here prints.
  */
 #include "io.h"
+#include "temp_file.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -133,22 +134,9 @@ int write_image(const char *path, int width, int height, int channels, const flo
                     quantise(pixels[i * (size_t)channels + (size_t)c]);
     }
 
-    /* A unique temporary beside the target: ".NAME.XXXXXX.EXT". */
-    size_t slash = target.find_last_of('/');
-    std::string dir = slash == std::string::npos ? "" : target.substr(0, slash + 1);
-    std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
-    std::string suffix = "." + target.substr(target.find_last_of('.') + 1);
-    std::string tmpl = dir + "." + base + ".XXXXXX" + suffix;
-    std::vector<char> tmp(tmpl.begin(), tmpl.end());
-    tmp.push_back('\0');
-    int fd = mkstemps(tmp.data(), (int)suffix.size());
-    if (fd < 0) {
-        set_err(err, errlen,
-                target + ": cannot create a temporary file: " + std::string(std::strerror(errno)));
-        return -1;
-    }
-    close(fd);
-    const std::string tmp_path(tmp.data());
+    char tmp[4096];
+    if (io_temp_beside(target.c_str(), tmp, sizeof tmp, err, errlen) != 0) return -1;
+    const std::string tmp_path(tmp);
     /* Removes the temporary on every way out but the rename, exceptions too. */
     struct guard {
         const std::string &p;
@@ -186,12 +174,8 @@ int write_image(const char *path, int width, int height, int channels, const flo
         return -1;
     }
     out.reset();
-    if (std::rename(tmp_path.c_str(), target.c_str()) != 0) {
-        std::string e = std::strerror(errno);
-        set_err(err, errlen, target + ": cannot rename the finished image into place: " + e);
-        return -1;
-    }
     tmp_guard.armed = false;
+    if (io_temp_commit(tmp_path.c_str(), target.c_str(), err, errlen) != 0) return -1;
     return 0;
 }
 

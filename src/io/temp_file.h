@@ -1,0 +1,31 @@
+/*
+ * temp_file.h — whole-or-nothing output files: write to a temporary file
+ * beside the target, then rename it into place.  Shared by every writer (the
+ * OpenImageIO and OpenMesh adapters, the CLI's text outputs), so they agree
+ * on names, permissions and clean-up.
+ */
+#ifndef RAYSCAD_IO_TEMP_FILE_H
+#define RAYSCAD_IO_TEMP_FILE_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Create an empty temporary file in the directory of `path`, named
+ * ".NAME.XXXXXX.EXT" so that it keeps path's extension (writers pick their
+ * format by it), with the permissions the target should get: an existing
+ * target's mode, else 0666 & ~umask.  Its name goes to tmp (tmplen bytes).
+ * Returns 0, or -1 with a message in err (then nothing was created). */
+int io_temp_beside(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen);
+
+/* Rename tmp over path.  Returns 0, or -1 with a message in err; on failure
+ * tmp is removed and path untouched. */
+int io_temp_commit(const char *tmp, const char *path, char *err, size_t errlen);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
