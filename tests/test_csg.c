@@ -84,7 +84,7 @@ static iv_shape halfspace(double nx, double ny, double nz, double d)
 
 static csg_material mat(float id)
 {
-    csg_material m = {{id, 0, 0, 1}, 1};
+    csg_material m = {.rgba = {id, 0, 0, 1}, .has_color = 1};
     return m;
 }
 
@@ -802,8 +802,6 @@ Test(csg_scene, deep_chains_free_and_commit_without_recursion)
         cr_assert_eq(csg_node_add(u, t), 0);
         t = u;
     }
-    csg_node *copy = t;
-    (void)copy;
     csg_scene *s = commit1(t);
     cr_assert_eq(csg_scene_prim_count(s), 1);
     csg_scene_free(s);

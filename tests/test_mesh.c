@@ -25,7 +25,7 @@
 
 /* ---- scene builders ----------------------------------------------------- */
 
-static const csg_material plain = {{1, 1, 1, 1}, 0};
+static const csg_material plain = {.rgba = {1, 1, 1, 1}};
 
 static csg_node *box_node(double x0, double y0, double z0, double x1, double y1, double z1)
 {

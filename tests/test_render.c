@@ -401,7 +401,7 @@ static csg_node *box_node(double x0, double y0, double z0, double x1, double y1,
     s.u.box.hi[0] = x1;
     s.u.box.hi[1] = y1;
     s.u.box.hi[2] = z1;
-    csg_material m = {{1, 1, 1, 1}, 0};
+    csg_material m = {.rgba = {1, 1, 1, 1}};
     if (rgba) {
         memcpy(m.rgba, rgba, sizeof m.rgba);
         m.has_color = 1;
@@ -416,7 +416,7 @@ static csg_node *sphere_node(double cx, double cy, double cz, double r, const fl
     iv_shape s = {.kind = IV_SHAPE_SPHERE};
     s.u.sphere.r = r;
     csg_affine m = {1, 0, 0, cx, 0, 1, 0, cy, 0, 0, 1, cz};
-    csg_material mat = {{1, 1, 1, 1}, 0};
+    csg_material mat = {.rgba = {1, 1, 1, 1}};
     if (rgba) {
         memcpy(mat.rgba, rgba, sizeof mat.rgba);
         mat.has_color = 1;

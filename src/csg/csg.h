@@ -25,6 +25,14 @@ typedef enum csg_op {
 typedef struct csg_material {
     float rgba[4];  /* sRGB-encoded colour and alpha, each in [0, 1] */
     int has_color;  /* 0: no color() applied; the renderer uses its scheme */
+    /* Optics for the renderer's opt-in light model (all 0: none, which is
+     * OpenSCAD's look).  Set from $rs_ variables (src/scad/material.c). */
+    float reflect; /* mirror reflectivity in [0, 1] */
+    float absorb;  /* Beer–Lambert coefficient per unit length, >= 0; 0: the
+                      colour's alpha applies per surface instead */
+    float ior;     /* index of refraction (> 1 refracts; 0: none) */
+    float emit;    /* > 0: a light of this intensity (see light[]) */
+    float light[4]; /* emitters: world centre x, y, z and radius */
 } csg_material;
 
 /* Affine transforms are 3×4 row-major: x' = m[0]x + m[1]y + m[2]z + m[3], … */

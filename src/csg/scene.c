@@ -545,7 +545,7 @@ int csg_scene_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
     return 0;
 }
 
-static const csg_material default_material = {{1, 1, 1, 1}, 0};
+static const csg_material default_material = {.rgba = {1, 1, 1, 1}};
 
 const csg_material *csg_scene_material(const csg_scene *s, int32_t prim)
 {

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "eval.h"
+#include "material.h"
 
 static int num_of(scad_value v, double *x)
 {
@@ -36,11 +37,14 @@ static int vec3_of(scad_value v, double out[3])
     return 1;
 }
 
-static scad_geom *leaf(scad_eval *ev, const iv_shape *s, const scad_state *state,
-                       const csg_affine local)
+/* A leaf at state's transform (then local, when given); its material is the
+ * inherited colour plus the $rs_ optics visible here (material.c). */
+static scad_geom *leaf(scad_eval *ev, scad_env *env, const scad_argv *a, const iv_shape *s,
+                       const scad_state *state, const csg_affine local)
 {
     scad_state st = *state;
     if (local) csg_affine_mul(state->xf, local, st.xf);
+    scad_material_apply(ev, env, a, s, st.xf, &st.mat);
     return scad_geom_leaf(ev, s, &st);
 }
 
@@ -73,7 +77,7 @@ static scad_geom *m_cube(scad_eval *ev, scad_env *env, const scad_stmt *st, cons
         sh.u.box.lo[i] = center ? -s[i] / 2 : 0;
         sh.u.box.hi[i] = center ? s[i] / 2 : s[i];
     }
-    return leaf(ev, &sh, state, NULL);
+    return leaf(ev, env, a, &sh, state, NULL);
 }
 
 /* OpenSCAD's lookup_radius: d/2 wins over r, with a warning when both. */
@@ -111,7 +115,7 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     memset(&sh, 0, sizeof sh);
     sh.kind = IV_SHAPE_SPHERE;
     sh.u.sphere.r = r;
-    return leaf(ev, &sh, state, NULL);
+    return leaf(ev, env, a, &sh, state, NULL);
 }
 
 static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
@@ -140,9 +144,9 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, 
     sh.u.cone.r1 = r1;
     sh.u.cone.r2 = r2;
     sh.u.cone.h = h;
-    if (!center) return leaf(ev, &sh, state, NULL);
+    if (!center) return leaf(ev, env, a, &sh, state, NULL);
     csg_affine t = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -h / 2};
-    return leaf(ev, &sh, state, t);
+    return leaf(ev, env, a, &sh, state, t);
 }
 
 static scad_geom *with_matrix(scad_eval *ev, scad_env *env, const scad_stmt *st,
