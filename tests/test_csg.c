@@ -481,6 +481,8 @@ static double shape_sdf(const iv_shape *s, const double p[3])
             (sqrt(p[0] * p[0] + p[1] * p[1]) - rz) / sqrt(1 + (r2 - r1) * (r2 - r1) / (h * h));
         return fmax(fmax(-p[2], p[2] - h), side);
     }
+    default: /* kinds these tests do not generate */
+        break;
     }
     return 1;
 }

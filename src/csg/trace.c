@@ -6,9 +6,10 @@
  * limited by arena memory, never by the C stack: there is no depth limit.
  * Lists live on a second stack, an array of spans from the arena: a frame's
  * accumulated list sits at `base`, the child being evaluated is written right
- * after it, and a merge writes past both and is copied back to `base`.  The
- * spans of disjoint subtrees never exceed their leaf count, so this array
- * stays within twice the number of primitives the ray meets.
+ * after it, and a merge writes past both and is copied back to `base`.  A
+ * merge's output is at most as long as its inputs together, so the array
+ * holds at most twice the spans the leaves along the ray produce (one per
+ * convex primitive); it grows by doubling, so the waste stays bounded too.
  *
  * Invariant: a subtree evaluated for the range [t0, t1] yields exactly its
  * true interval list clipped to [t0, t1].  That is what lets a node whose
@@ -79,8 +80,12 @@ static int hits_box(const ray *r, const csg_fnode *n, double t0, double t1)
     return t0 <= t1;
 }
 
-/* A leaf's list, clipped to [t0, t1], written at span index `at`. */
-static int trace_leaf(const ray *r, int32_t prim, double t0, double t1, int at)
+/* A leaf's list, clipped to [t0, t1], written at span index `at`; its
+ * length, or -1 when the arena is out of memory.  Convex shapes append one
+ * span, but the shape gets all the room left on the span stack (at least 16)
+ * and, should it report that is not enough, twice as much again, so shapes
+ * with more spans need no size query here. */
+static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
 {
     const csg_prim *p = &r->s->prims[prim];
     double o[3], d[3];
@@ -88,10 +93,15 @@ static int trace_leaf(const ray *r, int32_t prim, double t0, double t1, int at)
      * same point in both spaces. */
     csg_affine_point(p->object_from_world, r->o, o);
     csg_affine_vector(p->object_from_world, r->d, d);
-    iv_list l = {r->sp + at, 0, 1};
-    iv_shape_intersect(&p->shape, o, d, prim, &l);
-    iv_list_clip(&l, t0, t1);
-    return l.n;
+    if (reserve(r, at + 16L, at) != 0) return -1;
+    for (;;) {
+        iv_list l = {r->sp + at, 0, r->cap - at};
+        if (iv_shape_intersect(&p->shape, o, d, prim, &l) >= 0) {
+            iv_list_clip(&l, t0, t1);
+            return l.n;
+        }
+        if (reserve(r, at + 2L * (r->cap - at), at) != 0) return -1;
+    }
 }
 
 int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
@@ -120,8 +130,8 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
         if (s->cull && !hits_box(&r, n, t0, t1)) {
             nres = 0;
         } else if (n->op == FNODE_LEAF) {
-            if (reserve(&r, at + 1L, at) != 0) return -1;
             nres = trace_leaf(&r, n->prim, t0, t1, at);
+            if (nres < 0) return -1;
         } else {
             fr[depth++] = (frame){cur, cur + 1, at, -1, t0, t1};
             cur = cur + 1;
