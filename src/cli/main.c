@@ -72,7 +72,7 @@ static int write_image(const cli_options *o, csg_scene *scene)
     int have_bounds = 0;
     for (int r = 0; r < csg_scene_root_count(scene); r++) {
         double l[3], h[3];
-        if (csg_scene_bounds(scene, r, l, h) != 0) continue;
+        if (csg_scene_view_bounds(scene, r, l, h) != 0) continue;
         for (int k = 0; k < 3; k++) {
             lo[k] = have_bounds && lo[k] < l[k] ? lo[k] : l[k];
             hi[k] = have_bounds && hi[k] > h[k] ? hi[k] : h[k];

@@ -75,6 +75,12 @@ int csg_scene_prim_count(const csg_scene *s);
  * (then lo/hi are untouched).  Components may be infinite (halfspaces). */
 int csg_scene_bounds(const csg_scene *s, int r, double lo[3], double hi[3]);
 
+/* The box OpenSCAD 2021.01 frames for root r (--viewall, --autocenter, the
+ * default view): the union of the world bounds of every leaf that is not
+ * subtracted, however intersections and differences trim the solid.
+ * Returns 0, or -1 when the root has no such leaf. */
+int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3]);
+
 /* The interval list of root r along the world ray o + t·d, clipped to
  * [tmin, tmax].  Scratch and the result's storage come from arena a (the
  * result stays valid until the arena is reset).  Subtrees whose bounds the

@@ -1,0 +1,41 @@
+/*
+ * view_bounds.c — the box OpenSCAD frames.  OpenSCAD 2021.01 fits its view
+ * (--viewall, --autocenter, the default view) to CSGProduct::getBoundingBox:
+ * the union of the boxes of every leaf that is not subtracted, however the
+ * intersections and differences above them trim the solid.  To line our
+ * images up with OpenSCAD's we frame the same box, computed on the flattened
+ * scene: in pre-order a parent precedes its children, so one forward pass
+ * marks each node subtracted or not (a difference's operands after the first
+ * are subtracted, and so is everything below a subtracted node).
+ */
+#include "csg_internal.h"
+
+#include <stdlib.h>
+
+int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
+{
+    if (r < 0 || r >= s->nroots || s->roots[r] < 0) return -1;
+    int first = s->roots[r], end = s->nodes[first].next;
+    unsigned char *neg = calloc((size_t)(end - first), 1);
+    if (!neg) { /* fall back to the exact bounds, which lie inside */
+        return csg_scene_bounds(s, r, lo, hi);
+    }
+    int found = 0;
+    for (int i = first; i < end; i++) {
+        const csg_fnode *f = &s->nodes[i];
+        int ni = neg[i - first];
+        if (f->op == FNODE_LEAF) {
+            if (ni) continue;
+            for (int k = 0; k < 3; k++) {
+                lo[k] = found && lo[k] < f->lo[k] ? lo[k] : f->lo[k];
+                hi[k] = found && hi[k] > f->hi[k] ? hi[k] : f->hi[k];
+            }
+            found = 1;
+            continue;
+        }
+        for (int c = i + 1; c < f->next; c = s->nodes[c].next)
+            neg[c - first] = (unsigned char)(ni || (f->op == CSG_OP_DIFFERENCE && c != i + 1));
+    }
+    free(neg);
+    return found ? 0 : -1;
+}
