@@ -131,9 +131,10 @@ int main(int argc, char **argv)
         return 0;
     }
     int echo_out = has_extension(o.output, ".echo");
-    if (!echo_out && !io_image_format_supported(o.output)) {
+    int csg_out = has_extension(o.output, ".csg");
+    if (!echo_out && !csg_out && !io_image_format_supported(o.output)) {
         fprintf(stderr, "rayscad: cannot tell the output format from '%s' "
-                        "(use .png .jpg .tif .exr or .echo)\n",
+                        "(use .png .jpg .tif .exr .echo or .csg)\n",
                 o.output);
         return EXIT_USAGE;
     }
@@ -145,6 +146,18 @@ int main(int argc, char **argv)
         .message = on_message,
         .ud = &msgs,
     };
+    if (csg_out) { /* OpenSCAD's evaluated tree; messages go to stderr */
+        char *text;
+        size_t len;
+        if (scad_dump_csg_file(o.input, &so, &text, &len) != 0) return EXIT_MODEL;
+        int rc = atomic_file_write(o.output, text, len, err, sizeof err);
+        free(text);
+        if (rc != 0) {
+            fprintf(stderr, "rayscad: error: %s\n", err);
+            return EXIT_MODEL;
+        }
+        return 0;
+    }
     scad_result res;
     if (scad_eval_file(o.input, &so, &res) != 0) {
         free(msgs.buf);
