@@ -162,28 +162,23 @@ static void identity(csg_affine m)
     memcpy(m, csg_affine_identity, sizeof(csg_affine));
 }
 
-static scad_geom *m_translate(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                              const scad_state *state)
+static void translate_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m)
 {
     static const char *const known[] = {"v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
     double v[3] = {0, 0, 0};
-    csg_affine m;
     identity(m);
     if (vec3_of(scad_argv_get(a, "v", 0), v)) {
         m[3] = v[0];
         m[7] = v[1];
         m[11] = v[2];
     }
-    return with_matrix(ev, env, st, state, m);
 }
 
-static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state)
+static void rotate_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m)
 {
     static const char *const known[] = {"a", "v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
-    csg_affine m;
     identity(m);
     scad_value av = scad_argv_get(a, "a", 0);
     scad_value vv = scad_argv_get(a, "v", 1);
@@ -206,7 +201,7 @@ static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st, co
                         cy * sx,
                         cx * cy,
                         0};
-        memcpy(m, r, sizeof m);
+        memcpy(m, r, sizeof r);
     } else {
         double ang;
         if (num_of(av, &ang) && isfinite(ang)) {
@@ -229,20 +224,18 @@ static scad_geom *m_rotate(scad_eval *ev, scad_env *env, const scad_stmt *st, co
             if (x == 0 && y == 0 && z == 0) {
                 /* Eigen's AngleAxis of a zero axis: cos(a) on the diagonal */
                 csg_affine r = {c, 0, 0, 0, 0, c, 0, 0, 0, 0, c, 0};
-                memcpy(m, r, sizeof m);
+                memcpy(m, r, sizeof r);
             } else {
                 csg_affine r = {t * x * x + c,     t * x * y - s * z, t * x * z + s * y, 0,
                                 t * x * y + s * z, t * y * y + c,     t * y * z - s * x, 0,
                                 t * x * z - s * y, t * y * z + s * x, t * z * z + c,     0};
-                memcpy(m, r, sizeof m);
+                memcpy(m, r, sizeof r);
             }
         }
     }
-    return with_matrix(ev, env, st, state, m);
 }
 
-static scad_geom *m_scale(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                          const scad_state *state)
+static void scale_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m)
 {
     static const char *const known[] = {"v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
@@ -252,17 +245,15 @@ static scad_geom *m_scale(scad_eval *ev, scad_env *env, const scad_stmt *st, con
         v[0] = v[1] = v[2] = x;
     else
         vec3_of(sv, v);
-    csg_affine m = {v[0], 0, 0, 0, 0, v[1], 0, 0, 0, 0, v[2], 0};
-    return with_matrix(ev, env, st, state, m);
+    csg_affine r = {v[0], 0, 0, 0, 0, v[1], 0, 0, 0, 0, v[2], 0};
+    memcpy(m, r, sizeof r);
 }
 
-static scad_geom *m_mirror(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state)
+static void mirror_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m)
 {
     static const char *const known[] = {"v", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
     double v[3] = {0, 0, 0};
-    csg_affine m;
     identity(m);
     if (vec3_of(scad_argv_get(a, "v", 0), v)) {
         double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -271,18 +262,15 @@ static scad_geom *m_mirror(scad_eval *ev, scad_env *env, const scad_stmt *st, co
             csg_affine r = {1 - 2 * x * x, -2 * y * x,    -2 * z * x,    0,
                             -2 * x * y,    1 - 2 * y * y, -2 * z * y,    0,
                             -2 * x * z,    -2 * y * z,    1 - 2 * z * z, 0};
-            memcpy(m, r, sizeof m);
+            memcpy(m, r, sizeof r);
         }
     }
-    return with_matrix(ev, env, st, state, m);
 }
 
-static scad_geom *m_multmatrix(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                               const scad_argv *a, const scad_state *state)
+static void multmatrix_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m)
 {
     static const char *const known[] = {"m", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
-    csg_affine m;
     identity(m);
     scad_value mv = scad_argv_get(a, "m", 0);
     if (mv.kind == SV_VEC) {
@@ -293,10 +281,37 @@ static scad_geom *m_multmatrix(scad_eval *ev, scad_env *env, const scad_stmt *st
                 num_of(row.u.vec->v[j], &m[i * 4 + j]);
         }
     }
+}
+
+int scad_transform_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m)
+{
+    static const struct {
+        const char *name;
+        void (*fn)(scad_eval *, const scad_stmt *, const scad_argv *, csg_affine);
+    } xf[] = {{"translate", translate_matrix},
+              {"rotate", rotate_matrix},
+              {"scale", scale_matrix},
+              {"mirror", mirror_matrix},
+              {"multmatrix", multmatrix_matrix}};
+    for (size_t i = 0; i < sizeof xf / sizeof xf[0]; i++) {
+        if (strcmp(xf[i].name, st->name) == 0) {
+            xf[i].fn(ev, st, a, m);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static scad_geom *m_transform(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_argv *a, const scad_state *state)
+{
+    csg_affine m;
+    identity(m);
+    scad_transform_matrix(ev, st, a, m);
     return with_matrix(ev, env, st, state, m);
 }
 
-static int parse_hex(const char *s, float rgba[4])
+int scad_color_by_hex(const char *s, float rgba[4])
 {
     size_t n = strlen(s);
     if (s[0] != '#' || !(n == 4 || n == 5 || n == 7 || n == 9)) return 0;
@@ -349,7 +364,7 @@ static scad_geom *m_color(scad_eval *ev, scad_env *env, const scad_stmt *st, con
         }
         name[n] = 0;
         if (c.u.str->len >= sizeof name ||
-            (!scad_color_by_name(name, rgba) && !parse_hex(name, rgba))) {
+            (!scad_color_by_name(name, rgba) && !scad_color_by_hex(name, rgba))) {
             char shown[64];
             memcpy(shown, name, n + 1);
             scad_diag_warning(ev->d, st->loc, "Unable to parse color \"%s\"", shown);
@@ -389,10 +404,10 @@ static const struct {
     {"color", m_color},         {"cube", m_cube},
     {"cylinder", m_cylinder},   {"difference", m_group},
     {"group", m_group},         {"intersection", m_group},
-    {"mirror", m_mirror},       {"multmatrix", m_multmatrix},
-    {"render", m_group},        {"rotate", m_rotate},
-    {"scale", m_scale},         {"sphere", m_sphere},
-    {"translate", m_translate}, {"union", m_group},
+    {"mirror", m_transform},       {"multmatrix", m_transform},
+    {"render", m_group},        {"rotate", m_transform},
+    {"scale", m_transform},         {"sphere", m_sphere},
+    {"translate", m_transform}, {"union", m_group},
 };
 
 scad_builtin_mod scad_builtin_module(const char *name)

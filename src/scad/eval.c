@@ -1075,6 +1075,11 @@ scad_geom *scad_geom_op(scad_eval *ev, csg_op op)
 void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child)
 {
     if (!parent || !child) return;
+    if (ev->dump && !child->text) { /* a bare list: its children in its place */
+        for (int i = 0; i < child->n; i++)
+            scad_geom_add(ev, parent, child->kids[i]);
+        return;
+    }
     if (parent->n == parent->cap) {
         int cap = parent->cap ? parent->cap * 2 : 4;
         scad_geom **k = scad_arena_alloc(ev->arena, sizeof *k * (size_t)cap);
@@ -1098,6 +1103,11 @@ typedef struct gather {
 static void gather_add(scad_eval *ev, gather *g, scad_geom *x)
 {
     if (!x) return;
+    if (ev->dump && !x->text) {
+        for (int i = 0; i < x->n; i++)
+            gather_add(ev, g, x->kids[i]);
+        return;
+    }
     if (g->n == g->cap) {
         int cap = g->cap ? g->cap * 2 : 8;
         scad_geom **v = realloc(g->v, sizeof *v * (size_t)cap);
@@ -1112,11 +1122,16 @@ static void gather_add(scad_eval *ev, gather *g, scad_geom *x)
 }
 
 /* Empty children are skipped (as OpenSCAD's CSG tree drops them); a single
- * child stands for itself. */
+ * child stands for itself.  In dump mode the result is a bare list of all
+ * of them (NULL when none). */
 static scad_geom *finish(scad_eval *ev, gather *g, csg_op op)
 {
     scad_geom *r = NULL;
-    if (g->n == 1) {
+    if (ev->dump) {
+        if (g->n > 0) r = scad_geom_op(ev, op);
+        for (int i = 0; r && i < g->n; i++)
+            scad_geom_add(ev, r, g->v[i]);
+    } else if (g->n == 1) {
         r = g->v[0];
     } else if (g->n > 1) {
         r = scad_geom_op(ev, op);
@@ -1237,6 +1252,7 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
         run_assignments(ev, me, m->body);
         run_stmts(ev, me, m->body, state, &g, NULL, 0);
         r = finish(ev, &g, CSG_OP_UNION);
+        if (ev->dump) r = scad_dump_node(ev, "group()", r);
         env_free(me);
         ev->module_depth--;
     }
@@ -1251,10 +1267,14 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
     scad_env *m = env;
     while (m && !m->is_module)
         m = m->parent;
-    if (!m || !m->children || m->children->nstmts == 0) return NULL;
-    int n = m->children->nstmts;
-    if (a->n == 0)
-        return child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, NULL, 0);
+    if (!m) return NULL;
+    int n = m->children ? m->children->nstmts : 0;
+    if (a->n == 0) {
+        scad_geom *r =
+            n ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, NULL, 0)
+              : NULL;
+        return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+    }
     scad_value sel = scad_argv_get(a, "index", 0);
     vlist idx = {0};
     if (sel.kind == SV_NUM) {
@@ -1270,6 +1290,27 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
             "Bad parameter type (%s) for children, only accept: empty, number, vector, range.",
             scad_value_type_name(sel));
         return NULL;
+    }
+    if (ev->dump && sel.kind != SV_NUM) {
+        /* OpenSCAD evaluates each index on its own, into one group */
+        gather g = {0};
+        for (int i = 0; i < idx.n && !ev->aborted; i++) {
+            if (idx.v[i].kind != SV_NUM) continue;
+            double k = idx.v[i].u.num;
+            if (k < 0 || k >= n || isnan(k)) {
+                char line[128];
+                snprintf(line, sizeof line,
+                         "WARNING: Children index (%d) out of bounds (%d children)", (int)k, n);
+                scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
+                continue;
+            }
+            int one = (int)k;
+            gather_add(ev, &g,
+                       child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION,
+                                   &one, 1));
+        }
+        vlist_free(&idx);
+        return scad_dump_node(ev, "group()", finish(ev, &g, CSG_OP_UNION));
     }
     int *pick = malloc(sizeof *pick * (size_t)(idx.n ? idx.n : 1));
     int np = 0;
@@ -1319,6 +1360,14 @@ static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const sc
     vlist_free(&items);
 }
 
+/* Stands for builtin modules that only dump mode knows (no geometry yet). */
+static scad_geom *m_dump_only(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_argv *a, const scad_state *state)
+{
+    (void)ev, (void)env, (void)st, (void)a, (void)state;
+    return NULL;
+}
+
 static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                     const scad_state *state)
 {
@@ -1327,8 +1376,10 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_value c = scad_eval_expr(ev, env, st->cond);
         int t = scad_value_truthy(c);
         scad_value_drop(c);
-        return child_scope(ev, env, env, t ? st->children : st->else_children, state, CSG_OP_UNION,
-                           NULL, 0);
+        scad_geom *r = child_scope(ev, env, env, t ? st->children : st->else_children, state,
+                                   CSG_OP_UNION, NULL, 0);
+        if (ev->dump && (t || st->else_children)) r = scad_dump_node(ev, "group()", r);
+        return r;
     }
     scad_env *def_env;
     const scad_moddef *m = find_module(env, name, &def_env);
@@ -1340,13 +1391,15 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         assign_seq(ev, le, &st->args);
         scad_geom *r = child_scope(ev, le, le, st->children, state, CSG_OP_UNION, NULL, 0);
         env_free(le);
-        return r;
+        return ev->dump ? scad_dump_node(ev, "group()", r) : r;
     }
     if (strcmp(name, "assert") == 0) {
         if (check_assert(ev, env, &st->args, st->loc)) return NULL;
-        return scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+        scad_geom *r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+        return ev->dump && r ? scad_dump_node(ev, "group()", r) : r;
     }
     scad_builtin_mod bm = scad_builtin_module(name);
+    if (!bm && ev->dump && scad_dump_is_builtin(name)) bm = m_dump_only;
     int control = !strcmp(name, "for") || !strcmp(name, "intersection_for") ||
                   !strcmp(name, "echo") || !strcmp(name, "children");
     if (!bm && !control) {
@@ -1362,11 +1415,15 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         gather g = {0};
         for_loop(ev, env, st, &a, 0, env, state, &g);
         r = finish(ev, &g, name[0] == 'f' ? CSG_OP_UNION : CSG_OP_INTERSECTION);
+        if (ev->dump) r = scad_dump_node(ev, name[0] == 'f' ? "group()" : "intersection()", r);
     } else if (!strcmp(name, "echo")) {
         echo_line(ev, &a);
         r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+        if (ev->dump && r) r = scad_dump_node(ev, "group()", r);
     } else if (!strcmp(name, "children")) {
         r = do_children(ev, env, st, &a, state);
+    } else if (ev->dump) {
+        r = scad_dump_builtin(ev, env, st, &a);
     } else {
         r = bm(ev, env, st, &a, state);
     }
@@ -1378,6 +1435,20 @@ static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state)
 {
     if (st->disable || ev->aborted) return NULL;
+    if (ev->dump && (st->highlight || st->background) && !st->root) {
+        scad_geom *g = instantiate_plain(ev, env, st, state);
+        if (g && g->text) {
+            size_t n = strlen(g->text);
+            char *t = scad_arena_alloc(ev->arena, n + 3);
+            if (!t) return g;
+            size_t k = 0;
+            if (st->background) t[k++] = '%';
+            if (st->highlight) t[k++] = '#';
+            memcpy(t + k, g->text, n + 1);
+            g->text = t;
+        }
+        return g;
+    }
     if (st->root) {
         scad_state fresh;
         memcpy(fresh.xf, csg_affine_identity, sizeof fresh.xf);

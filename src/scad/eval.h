@@ -11,7 +11,14 @@
 /* ---- geometry ---------------------------------------------------------------
  * The evaluator builds a light tree of scad_geom in its arena; at the end it
  * is turned into csg nodes (a '#' subtree twice: in the model and in the
- * highlight tree). */
+ * highlight tree).
+ *
+ * In dump mode (scad_eval.dump) the same tree holds OpenSCAD's node tree
+ * instead, for the .csg text: every node has its header in `text`
+ * ("cube(size = [1, 1, 1], center = false)", with any '#'/'%' prefix), no
+ * geometry, and keeps all its children, empty groups included.  A node with
+ * text NULL is a bare list (the children one scope produced): adding it to
+ * a parent adds its children in its place. */
 typedef struct scad_geom scad_geom;
 struct scad_geom {
     int is_leaf;
@@ -21,6 +28,7 @@ struct scad_geom {
     csg_material mat;
     scad_geom **kids;
     int n, cap;
+    const char *text; /* dump mode only */
 };
 
 /* What a subtree inherits: the accumulated world_from_object transform and
@@ -70,6 +78,7 @@ typedef struct scad_eval {
     int nhighlights, caphighlights;
     scad_geom **backgrounds;
     int nbackgrounds, capbackgrounds;
+    int dump; /* build OpenSCAD's node tree for .csg output, no geometry */
 } scad_eval;
 
 /* Evaluated call arguments: names[i] is NULL for positional ones. */
@@ -148,8 +157,28 @@ int scad_argv_given(const scad_argv *a, const char *name, int pos);
 void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc,
                           const char *const *known);
 
+/* ---- dump mode (dump.c) ------------------------------------------------------ */
+
+/* A dump node with a copy of text as its header and the children of list
+ * (a bare list, a node, or NULL) spliced in. */
+scad_geom *scad_dump_node(scad_eval *ev, const char *text, scad_geom *list);
+/* The dump node of a builtin geometry module (primitives, transforms,
+ * colour, CSG operations, extrusions, import …) with its children
+ * evaluated; NULL when name is not one of OpenSCAD's builtin modules. */
+scad_geom *scad_dump_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                             const scad_argv *a);
+/* 1 when name is a builtin module scad_dump_builtin knows. */
+int scad_dump_is_builtin(const char *name);
+/* The tree as OpenSCAD's .csg text into b (each top-level node unindented). */
+void scad_dump_write(scad_buf *b, const scad_geom *list);
+/* The world_from_object matrix of translate/rotate/scale/mirror/multmatrix
+ * (builtin_modules.c): 1 when name is one of them. */
+int scad_transform_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m);
+
 /* Web colour by lower-case name; returns 1 and fills rgba (0..1) or 0. */
 int scad_color_by_name(const char *name, float rgba[4]);
+/* "#rgb", "#rgba", "#rrggbb" or "#rrggbbaa"; returns 1 and fills rgba, or 0. */
+int scad_color_by_hex(const char *s, float rgba[4]);
 
 /* A number from a value: 1 when v is a finite-or-not number. */
 static inline int scad_to_num(scad_value v, double *out)

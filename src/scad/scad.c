@@ -102,6 +102,7 @@ typedef struct job {
     scad_result *out;
     size_t stack_size;
     int status;
+    scad_buf *dump; /* non-NULL: write the .csg text here, build no trees */
 } job;
 
 static void set_num(scad_env *e, const char *name, double x)
@@ -133,6 +134,7 @@ static void run_job(job *j)
     ev.stack_budget =
         j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;
     ev.rand_state = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
+    ev.dump = j->dump != NULL;
     j->status = -1;
     if (!ev.arena) {
         scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
@@ -151,7 +153,13 @@ static void run_job(job *j)
         set_vec3(builtins, "$vpr", 0, 0, 0);
         set_vec3(builtins, "$vpt", 0, 0, 0);
         scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
-        if (!ev.aborted) {
+        if (!ev.aborted && j->dump) {
+            scad_dump_write(j->dump, ev.has_root ? ev.root : model);
+            if (j->dump->oom)
+                scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
+            else
+                j->status = 0;
+        } else if (!ev.aborted) {
             int oom = 0;
             if (ev.has_root) model = ev.root;
             j->out->model = to_csg(model, &oom);
@@ -219,7 +227,7 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const sca
 /* ---- public ----------------------------------------------------------------------- */
 
 static int eval_source(const char *name, const char *src, scad_arena *a, const scad_options *opt,
-                       scad_result *out)
+                       scad_result *out, scad_buf *dump)
 {
     scad_diag d;
     memset(&d, 0, sizeof d);
@@ -235,7 +243,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
         if (d.errors == 0) scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
         return -1;
     }
-    job j = {opt, &d, top, out, EVAL_STACK, -1};
+    job j = {opt, &d, top, out, EVAL_STACK, -1, dump};
     pthread_attr_t attr;
     pthread_t th;
     int started = 0;
@@ -266,12 +274,12 @@ int scad_eval_string(const char *name, const char *src, const scad_options *opt,
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
     if (!a) return -1;
-    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out);
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out, NULL);
     scad_arena_free(a);
     return r;
 }
 
-int scad_eval_file(const char *path, const scad_options *opt, scad_result *out)
+static int eval_path(const char *path, const scad_options *opt, scad_result *out, scad_buf *dump)
 {
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
@@ -285,9 +293,54 @@ int scad_eval_file(const char *path, const scad_options *opt, scad_result *out)
         scad_arena_free(a);
         return -1;
     }
-    int r = eval_source(path, src, a, opt, out);
+    int r = eval_source(path, src, a, opt, out, dump);
     scad_arena_free(a);
     return r;
+}
+
+int scad_eval_file(const char *path, const scad_options *opt, scad_result *out)
+{
+    return eval_path(path, opt, out, NULL);
+}
+
+static int dump_finish(int r, scad_buf *b, char **text, size_t *len)
+{
+    if (r != 0 || b->oom) {
+        scad_buf_free(b);
+        return -1;
+    }
+    if (!b->p) scad_buf_put(b, "", 0);
+    *text = b->p;
+    if (len) *len = b->n;
+    if (!*text) {
+        *text = calloc(1, 1);
+        if (!*text) return -1;
+    }
+    return 0;
+}
+
+int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, size_t *len)
+{
+    scad_buf b = {0};
+    scad_result res;
+    *text = NULL;
+    if (len) *len = 0;
+    return dump_finish(eval_path(path, opt, &res, &b), &b, text, len);
+}
+
+int scad_dump_csg_string(const char *name, const char *src, const scad_options *opt, char **text,
+                         size_t *len)
+{
+    scad_buf b = {0};
+    scad_result res;
+    *text = NULL;
+    if (len) *len = 0;
+    memset(&res, 0, sizeof res);
+    scad_arena *a = scad_arena_new();
+    if (!a) return -1;
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, &res, &b);
+    scad_arena_free(a);
+    return dump_finish(r, &b, text, len);
 }
 
 void scad_result_free(scad_result *r)

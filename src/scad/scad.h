@@ -50,4 +50,21 @@ int scad_eval_string(const char *name, const char *src, const scad_options *opt,
 
 void scad_result_free(scad_result *r);
 
+/* The evaluated tree of the file at path in OpenSCAD's .csg format, as
+ * `openscad -o x.csg` (2021.01) writes it: modules expanded into group(),
+ * transforms as multmatrix([[…]]), $fn/$fa/$fs resolved on the shapes,
+ * color([r, g, b, a]), every builtin node (2D shapes, extrusions, text,
+ * import …) with its arguments, one node per line, tab-indented.  This is a
+ * separate evaluation from scad_eval_file (it sends the same messages) and
+ * builds no csg trees.  On success returns 0 and sets *text to a
+ * NUL-terminated string the caller frees with free(), and *len (may be
+ * NULL) to its length; on failure returns -1 with *text NULL, having sent
+ * at least one SCAD_MSG_ERROR line. */
+int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, size_t *len);
+
+/* The same for source text in memory; `name` is used in messages and as
+ * the folder that file names are relative to. */
+int scad_dump_csg_string(const char *name, const char *src, const scad_options *opt, char **text,
+                         size_t *len);
+
 #endif
