@@ -1,7 +1,7 @@
 /*
  * render.c — the image loop: 32×32 tiles handed out by a shared atomic
  * counter to `threads` pthreads, each with its own iv_arena that is reset
- * after every ray.
+ * after every primary sample.
  *
  * Per ray (deferred shading): trace every root of the scene into interval
  * lists, merge their boundaries by depth (a three-way merge: each list is
@@ -12,7 +12,17 @@
  * counts, entering and exiting — OpenSCAD's preview draws back faces too,
  * which only transparency reveals.  Boundaries made by the camera's clip
  * planes are not surfaces and are skipped, as the GL near plane opens a
- * solid rather than capping it.
+ * solid rather than capping it.  Since the order is the depth order of the
+ * exact boundaries, permuting the objects of a file cannot change a pixel
+ * (ties between roots go to the one OpenSCAD draws last).
+ *
+ * The opt-in light model (render_options below `ud`, $rs_ materials) adds,
+ * in the same walk: shadow rays that multiply the transmittances of every
+ * surface they cross (Beer–Lambert for absorbing spans); mirror rays and
+ * refracted rays, recursively, to a depth limit; area lights sampled over
+ * stratified discs; a thin lens; and jittered strata.  Random numbers come
+ * from a counter hash of (seed, pixel, draw), so they too depend only on
+ * the pixel.
  *
  * Invariant: a pixel's value depends only on its position and the inputs —
  * never on the tile order or the thread that drew it — so any thread count
@@ -24,13 +34,14 @@
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 
-enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_THREADS = 256 };
+enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_THREADS = 256, MAX_LIGHT_SAMPLES = 16 };
 
 /* Opacity past which the surfaces behind cannot change a byte. */
 #define OPAQUE (1.0 - 1.0 / 4096)
@@ -42,7 +53,16 @@ typedef struct job {
     float *rgba;
     int nroots;
     int tiles_x, ntiles;
-    double tmin_scale, tmax_scale; /* see ray_range */
+    /* the light model, resolved once */
+    int lit;     /* shadow rays and the lights below */
+    int keylight; /* lit by the preview's own pair, the key one shadowed */
+    int jitter;  /* stratified samples jittered (stochastic features on) */
+    render_light lights[RENDER_MAX_LIGHTS];
+    int nlights;
+    int light_n;                   /* shadow rays per light: light_n² */
+    int max_depth;                 /* secondary rays */
+    double eps;                    /* offset of secondary ray origins */
+    double focus;                  /* thin lens */
     atomic_int next;               /* next tile to hand out */
     atomic_int done;               /* tiles finished */
     atomic_int failed;             /* a worker ran out of memory */
@@ -54,6 +74,83 @@ typedef struct job {
 static void set_err(char *err, size_t errlen, const char *msg)
 {
     if (err && errlen) snprintf(err, errlen, "%s", msg);
+}
+
+/* ---- random numbers --------------------------------------------------------
+ * splitmix64 over a counter: the stream of a pixel is fixed by (seed, x, y),
+ * whatever thread draws it. */
+typedef struct rng {
+    uint64_t s;
+} rng;
+
+static uint64_t mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+static rng rng_for_pixel(unsigned seed, int x, int y)
+{
+    rng g = {mix64(((uint64_t)seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^ (uint32_t)x)};
+    return g;
+}
+
+/* Uniform in [0, 1): the top 53 bits. */
+static double rng_next(rng *g)
+{
+    g->s += 0x9e3779b97f4a7c15ULL;
+    return (double)(mix64(g->s) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Shirley–Chiu concentric map of the unit square onto the unit disc: keeps
+ * strata compact, so stratified squares give stratified discs. */
+static void square_to_disc(double u, double v, double *x, double *y)
+{
+    double a = 2 * u - 1, b = 2 * v - 1, r, phi;
+    if (a == 0 && b == 0) {
+        *x = *y = 0;
+        return;
+    }
+    const double quarter = 0.78539816339744831; /* π/4 */
+    if (fabs(a) > fabs(b)) {
+        r = a;
+        phi = quarter * (b / a);
+    } else {
+        r = b;
+        phi = 2 * quarter - quarter * (a / b);
+    }
+    *x = r * cos(phi);
+    *y = r * sin(phi);
+}
+
+/* ---- small vector helpers --------------------------------------------------- */
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void normalize3(double v[3])
+{
+    double l = sqrt(dot3(v, v));
+    if (l > 0)
+        for (int i = 0; i < 3; i++)
+            v[i] /= l;
+}
+
+/* Two unit vectors orthogonal to unit w and to each other. */
+static void basis_of(const double w[3], double u[3], double v[3])
+{
+    double a[3] = {0, 0, 0};
+    a[fabs(w[0]) < 0.6 ? 0 : fabs(w[1]) < 0.6 ? 1 : 2] = 1;
+    u[0] = a[1] * w[2] - a[2] * w[1];
+    u[1] = a[2] * w[0] - a[0] * w[2];
+    u[2] = a[0] * w[1] - a[1] * w[0];
+    normalize3(u);
+    v[0] = w[1] * u[2] - w[2] * u[1];
+    v[1] = w[2] * u[0] - w[0] * u[2];
+    v[2] = w[0] * u[1] - w[1] * u[0];
 }
 
 /* The parameter range [tmin, tmax] along o + t·d that the camera keeps: its
@@ -91,22 +188,175 @@ static void surface_color(const job *J, int r, const iv_bound *b, float c[4])
         memcpy(c, b->flip ? cs->back : cs->face, 3 * sizeof(float));
         c[3] = 1;
     }
+    if (c[3] > 1) c[3] = 1;
+    if (J->opt->xray > 0 && c[3] > J->opt->xray) c[3] = (float)J->opt->xray;
+}
+
+/* The Beer–Lambert coefficient (per unit length) of a solid whose surface
+ * has material m and alpha a, or 0 when its surfaces composite one by one:
+ * $rs_absorb wins; otherwise, in absorption mode, a transparent colour's
+ * alpha is the opacity of opt->absorb units of it, so
+ * σ = -ln(1 - a) / thickness.  Opaque solids stay surfaces. */
+static double absorption(const job *J, const csg_material *m, double a)
+{
+    if (m && m->absorb > 0) return m->absorb;
+    if (J->opt->absorb > 0 && a > 0 && a < 1) return -log1p(-a) / J->opt->absorb;
+    return 0;
+}
+
+/* ---- shadows ------------------------------------------------------------------ */
+
+/* The fraction of light that passes along o + t·d, t in (0, tmax), through
+ * the model: the product of (1 - alpha) of every surface crossed, and
+ * exp(-σ·L) over absorbing spans.  Emitters cast no shadow.  Returns -1
+ * when the arena is out of memory. */
+static double transmittance(const job *J, iv_arena *a, const double o[3], const double d[3],
+                            double tmax)
+{
+    iv_list l;
+    memset(&l, 0, sizeof l);
+    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, a, &l) != 0) return -1;
+    double T = 1;
+    for (int i = 0; i < l.n && T > 1.0 / 4096; i++) {
+        const iv_span *sp = &l.v[i];
+        for (int e = 0; e < 2; e++) {
+            const iv_bound *b = e ? &sp->exit : &sp->enter;
+            if (b->prim == IV_PRIM_NONE) continue;
+            const csg_material *m = csg_scene_material(J->scene, b->prim);
+            if (m->emit > 0) continue;
+            float c[4];
+            surface_color(J, RENDER_ROOT_MODEL, b, c);
+            double sigma = absorption(J, m, c[3]);
+            if (sigma > 0) {
+                if (e == 0) T *= exp(-sigma * (sp->exit.t - sp->enter.t));
+            } else {
+                T *= 1 - c[3];
+            }
+        }
+        /* a span entered before o (clipped) still absorbs up to its exit */
+        if (sp->enter.prim == IV_PRIM_NONE && sp->exit.prim != IV_PRIM_NONE) {
+            const csg_material *m = csg_scene_material(J->scene, sp->exit.prim);
+            float c[4];
+            surface_color(J, RENDER_ROOT_MODEL, &sp->exit, c);
+            double sigma = m->emit > 0 ? 0 : absorption(J, m, c[3]);
+            if (sigma > 0) T *= exp(-sigma * (sp->exit.t - sp->enter.t));
+        }
+    }
+    return T < 1.0 / 4096 ? 0 : T;
+}
+
+/* The lighting factor at point p with unit normal nf (turned toward the
+ * viewer) under the opt-in model: ambient 0.2 plus, per light, intensity ×
+ * cos θ × the mean transmittance of its shadow rays.  The preview's pair of
+ * opposite directional lights when no light is given: the key light
+ * (-1,-1,1)/√3 in the viewer's frame casts shadows, its opposite fill does
+ * not, so an unshadowed point gets exactly the preview's factor.  Returns
+ * -1 when out of memory. */
+static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3],
+                           const double nf[3])
+{
+    const render_camera *c = J->cam;
+    double o[3];
+    for (int i = 0; i < 3; i++)
+        o[i] = p[i] + J->eps * nf[i];
+    double f = 0.2;
+    if (J->keylight) {
+        const double k = 0.57735026918962576;
+        double L[3];
+        for (int i = 0; i < 3; i++)
+            L[i] = k * (-c->right[i] - c->forward[i] + c->up[i]);
+        double cs = dot3(nf, L);
+        if (cs > 0) {
+            double T = transmittance(J, a, o, L, INFINITY);
+            if (T < 0) return -1;
+            f += cs * T;
+        } else {
+            f -= cs;
+        }
+        return f;
+    }
+    int n = J->light_n;
+    for (int li = 0; li < J->nlights; li++) {
+        const render_light *L = &J->lights[li];
+        double w[3], u[3], v[3];
+        for (int i = 0; i < 3; i++)
+            w[i] = L->pos[i] - p[i];
+        double dist = sqrt(dot3(w, w));
+        if (!(dist > 0)) continue;
+        normalize3(w);
+        int ns = L->radius > 0 ? n : 1;
+        if (ns > 1) basis_of(w, u, v);
+        double sum = 0;
+        for (int sj = 0; sj < ns; sj++)
+            for (int si = 0; si < ns; si++) {
+                double q[3];
+                memcpy(q, L->pos, sizeof q);
+                if (ns > 1) {
+                    double dx, dy;
+                    square_to_disc((si + rng_next(g)) / ns, (sj + rng_next(g)) / ns, &dx, &dy);
+                    for (int i = 0; i < 3; i++)
+                        q[i] += L->radius * (dx * u[i] + dy * v[i]);
+                }
+                double dir[3];
+                for (int i = 0; i < 3; i++)
+                    dir[i] = q[i] - o[i];
+                double len = sqrt(dot3(dir, dir));
+                if (!(len > 0)) continue;
+                for (int i = 0; i < 3; i++)
+                    dir[i] /= len;
+                double cs = dot3(nf, dir);
+                if (cs <= 0) continue;
+                double T = transmittance(J, a, o, dir, len);
+                if (T < 0) return -1;
+                sum += cs * T;
+            }
+        f += L->intensity * sum / (ns * ns);
+    }
+    return f;
+}
+
+/* ---- the walk ------------------------------------------------------------------ */
+
+/* Refraction direction of unit d through a surface with unit normal nf
+ * facing d's origin (nf·d < 0), index ratio eta = n_from / n_to.  Returns 0
+ * at total internal reflection. */
+static int refract_dir(const double d[3], const double nf[3], double eta, double out[3])
+{
+    double ci = -dot3(nf, d);
+    double k = 1 - eta * eta * (1 - ci * ci);
+    if (k < 0) return 0;
+    for (int i = 0; i < 3; i++)
+        out[i] = eta * d[i] + (eta * ci - sqrt(k)) * nf[i];
+    normalize3(out);
+    return 1;
+}
+
+static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const double d[3],
+                     double tmin, double tmax, int depth, double out[3]);
+
+/* A secondary ray from p (offset along the side dir points to). */
+static int trace_from(const job *J, iv_arena *a, rng *g, const double p[3], const double nf[3],
+                      const double dir[3], int depth, double out[3])
+{
+    double o[3], side = dot3(dir, nf) >= 0 ? 1 : -1;
+    for (int i = 0; i < 3; i++)
+        o[i] = p[i] + side * J->eps * nf[i];
+    return trace_ray(J, a, g, o, dir, 0, INFINITY, depth, out);
 }
 
 /* One ray: composite every surface of every root front to back over the
  * scheme's background.  Returns 0, or -1 when the arena is out of memory. */
-static int shade_ray(const job *J, iv_arena *a, double px, double py, float out[3])
+static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const double d[3],
+                     double tmin, double tmax, int depth, double out[3])
 {
     const render_camera *cam = J->cam;
-    double o[3], d[3], tmin, tmax;
-    render_camera_ray(cam, J->opt->width, J->opt->height, px, py, o, d);
-    ray_range(cam, d, &tmin, &tmax);
-
     iv_list lists[MAX_ROOTS];
-    int pos[MAX_ROOTS]; /* next boundary of each list: span pos/2, exit if odd */
+    int pos[MAX_ROOTS];      /* next boundary of each list: span pos/2, exit if odd */
+    int volume[MAX_ROOTS];   /* the current span was composited as a volume */
     for (int r = 0; r < J->nroots; r++) {
         memset(&lists[r], 0, sizeof lists[r]);
         pos[r] = 0;
+        volume[r] = 0;
         if (csg_trace(J->scene, r, o, d, tmin, tmax, a, &lists[r]) != 0) return -1;
     }
 
@@ -124,25 +374,115 @@ static int shade_ray(const job *J, iv_arena *a, double px, double py, float out[
             }
         }
         if (best < 0) break;
+        const iv_span *span = &lists[best].v[pos[best] / 2];
+        int is_exit = pos[best] & 1;
         pos[best]++;
-        if (bb->prim == IV_PRIM_NONE || !isfinite(bb->t)) continue;
+        if (!isfinite(bb->t)) continue;
+        const iv_bound *sb = bb; /* the surface whose material fills the span */
+        if (bb->prim == IV_PRIM_NONE) {
+            /* A clip: the ray starts inside a solid (a secondary ray) or
+             * the camera's near plane opened one.  Only an absorbing solid
+             * shows, as a volume from here to its exit. */
+            if (is_exit || span->exit.prim == IV_PRIM_NONE) continue;
+            sb = &span->exit;
+        }
 
         float c[4];
-        surface_color(J, best, bb, c);
-        if (!(c[3] > 0)) continue;
-        double n[3];
-        csg_scene_normal(J->scene, bb, o, d, n);
-        float lit[3];
-        render_shade_apply(c, render_shade_factor(cam, n), lit);
-        double w = (1 - acc_a) * (c[3] > 1 ? 1 : c[3]);
+        surface_color(J, best, sb, c);
+        const csg_material *m = csg_scene_material(J->scene, sb->prim);
+        double alpha = c[3];
+        double sigma = absorption(J, m, alpha);
+        if (sigma > 0) {
+            if (is_exit) {
+                int was = volume[best];
+                volume[best] = 0;
+                if (was) continue;
+            } else {
+                double len = span->exit.t - span->enter.t;
+                alpha = isfinite(len) ? -expm1(-sigma * len) : 1;
+                volume[best] = 1;
+            }
+        } else if (bb->prim == IV_PRIM_NONE) {
+            continue;
+        }
+        if (!(alpha > 0)) continue;
+
+        double n[3], p[3], nf[3];
+        csg_scene_normal(J->scene, sb, o, d, n);
         for (int i = 0; i < 3; i++)
-            acc[i] += w * lit[i];
+            p[i] = o[i] + bb->t * d[i];
+        double side = dot3(n, d) > 0 ? -1 : 1;
+        for (int i = 0; i < 3; i++)
+            nf[i] = side * n[i];
+
+        float lit[3];
+        if (m->emit > 0) {
+            for (int i = 0; i < 3; i++)
+                lit[i] = c[i];
+        } else if (J->lit) {
+            double f = light_factor(J, a, g, p, nf);
+            if (f < 0) return -1;
+            render_shade_apply(c, f, lit);
+        } else {
+            render_shade_apply(c, render_shade_factor(cam, n), lit);
+        }
+        double local[3] = {lit[0], lit[1], lit[2]};
+
+        if (m->reflect > 0 && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
+            double rd[3], rc[3], dn = dot3(d, nf);
+            for (int i = 0; i < 3; i++)
+                rd[i] = d[i] - 2 * dn * nf[i];
+            if (trace_from(J, a, g, p, nf, rd, depth + 1, rc) != 0) return -1;
+            for (int i = 0; i < 3; i++)
+                local[i] = (1 - m->reflect) * local[i] + m->reflect * rc[i];
+        }
+
+        double w = (1 - acc_a) * alpha;
+        for (int i = 0; i < 3; i++)
+            acc[i] += w * local[i];
         acc_a += w;
+
+        double ior = m->ior > 1 ? m->ior : J->opt->ior > 1 && alpha < 1 ? J->opt->ior : 0;
+        if (ior > 1 && acc_a < OPAQUE && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
+            /* What lies behind is seen along the refracted ray, not the
+             * straight one: entering a solid bends by 1/ior, leaving it by
+             * ior; total internal reflection mirrors instead. */
+            double td[3], tc[3];
+            if (!refract_dir(d, nf, is_exit ? ior : 1 / ior, td))
+                for (int i = 0; i < 3; i++)
+                    td[i] = d[i] - 2 * dot3(d, nf) * nf[i];
+            if (trace_from(J, a, g, p, nf, td, depth + 1, tc) != 0) return -1;
+            for (int i = 0; i < 3; i++)
+                out[i] = acc[i] + (1 - acc_a) * tc[i];
+            return 0;
+        }
     }
     const float *bg = J->opt->colors.background;
     for (int i = 0; i < 3; i++)
-        out[i] = (float)(acc[i] + (1 - acc_a) * bg[i]);
+        out[i] = acc[i] + (1 - acc_a) * bg[i];
     return 0;
+}
+
+/* The primary ray of image position (px, py), through a thin lens when the
+ * aperture is open: every ray of a pixel meets the others on the plane of
+ * focus, at depth J->focus along forward. */
+static void primary_ray(const job *J, rng *g, double px, double py, double o[3], double d[3])
+{
+    const render_options *opt = J->opt;
+    render_camera_ray(J->cam, opt->width, opt->height, px, py, o, d);
+    if (!(opt->aperture > 0)) return;
+    const render_camera *c = J->cam;
+    double df = dot3(d, c->forward);
+    if (!(df > 0)) return;
+    double f[3], lx, ly;
+    for (int i = 0; i < 3; i++)
+        f[i] = o[i] + d[i] * (J->focus / df);
+    square_to_disc(rng_next(g), rng_next(g), &lx, &ly);
+    for (int i = 0; i < 3; i++) {
+        o[i] += opt->aperture / 2 * (lx * c->right[i] + ly * c->up[i]);
+        d[i] = f[i] - o[i];
+    }
+    normalize3(d);
 }
 
 static int render_tile(const job *J, iv_arena *a, int tile)
@@ -156,16 +496,21 @@ static int render_tile(const job *J, iv_arena *a, int tile)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double sum[3] = {0, 0, 0};
-            /* s×s strata, each sampled at its centre: deterministic, and
-             * s = 1 is the pixel centre where GL samples coverage. */
+            rng g = rng_for_pixel(opt->seed, x, y);
+            /* s×s strata.  The preview look samples each at its centre
+             * (deterministic, and s = 1 is the pixel centre where GL
+             * samples coverage); the light model jitters within them. */
             for (int j = 0; j < s; j++)
                 for (int i = 0; i < s; i++) {
-                    float c[3];
-                    int rc = shade_ray(J, a, x + (i + 0.5) / s, y + (j + 0.5) / s, c);
+                    double jx = J->jitter ? rng_next(&g) : 0.5, jy = J->jitter ? rng_next(&g) : 0.5;
+                    double o[3], d[3], tmin, tmax, c[3];
+                    primary_ray(J, &g, x + (i + jx) / s, y + (j + jy) / s, o, d);
+                    ray_range(J->cam, d, &tmin, &tmax);
+                    int rc = trace_ray(J, a, &g, o, d, tmin, tmax, 0, c);
                     iv_arena_reset(a);
                     if (rc != 0) return -1;
                     for (int k = 0; k < 3; k++)
-                        sum[k] += c[k];
+                        sum[k] += (float)c[k];
                 }
             float *p = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
             for (int k = 0; k < 3; k++)
@@ -200,6 +545,70 @@ static void *worker(void *arg)
     return NULL;
 }
 
+/* Resolve the opt-in light model once, before any ray: the lights (the
+ * options' and the scene's emitters), whether shadow rays are cast, the
+ * secondary-ray offset and the focal distance. */
+static int resolve_light_model(job *J, char *err, size_t errlen)
+{
+    const render_options *opt = J->opt;
+    if (opt->nlights < 0 || opt->nlights > RENDER_MAX_LIGHTS || opt->light_samples < 0 ||
+        opt->light_samples > MAX_LIGHT_SAMPLES || opt->bounces < 0 || opt->aperture < 0 ||
+        opt->focus < 0 || opt->xray < 0 || opt->xray > 1 || opt->absorb < 0 ||
+        !isfinite(opt->aperture) || !isfinite(opt->focus) || !isfinite(opt->absorb)) {
+        set_err(err, errlen,
+                "render: bad light options (at most 16 lights, 0 to 16 light samples, "
+                "x-ray opacity in 0..1, no negative aperture, focus, bounces or absorption)");
+        return -1;
+    }
+    for (int i = 0; i < opt->nlights; i++)
+        J->lights[J->nlights++] = opt->lights[i];
+    for (int i = 0; i < J->nlights; i++)
+        if (!(J->lights[i].intensity > 0)) J->lights[i].intensity = 1;
+    int emitters = 0;
+    for (int p = 0; p < csg_scene_prim_count(J->scene); p++) {
+        const csg_material *m = csg_scene_material(J->scene, p);
+        if (!(m->emit > 0)) continue;
+        emitters++;
+        if (J->nlights == RENDER_MAX_LIGHTS) continue;
+        render_light *L = &J->lights[J->nlights++];
+        for (int i = 0; i < 3; i++)
+            L->pos[i] = m->light[i];
+        L->radius = m->light[3];
+        L->intensity = m->emit;
+    }
+    J->lit = opt->shadows || J->nlights > 0;
+    J->keylight = J->lit && J->nlights == 0;
+    (void)emitters;
+    J->light_n = opt->light_samples > 0 ? opt->light_samples : 4;
+    J->max_depth = opt->bounces > 0 ? opt->bounces : 4;
+    J->jitter = J->lit || opt->aperture > 0;
+
+    /* Secondary rays leave a surface this far along its normal: about 1e-9
+     * of the model's size, far above the rounding of t (a few ulps of the
+     * distances involved) and far below any feature. */
+    double lo[3], hi[3], size = 1, centre[3] = {0, 0, 0};
+    if (csg_scene_bounds(J->scene, RENDER_ROOT_MODEL, lo, hi) == 0) {
+        double s2 = 0;
+        for (int i = 0; i < 3; i++) {
+            double e = isfinite(hi[i] - lo[i]) ? hi[i] - lo[i] : 0;
+            s2 += e * e;
+            centre[i] = isfinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0;
+        }
+        if (s2 > 0) size = sqrt(s2);
+        for (int i = 0; i < 3; i++)
+            size = fmax(size, fabs(centre[i]));
+    }
+    J->eps = 1e-7 * size;
+    if (opt->focus > 0) {
+        J->focus = opt->focus;
+    } else {
+        const render_camera *c = J->cam;
+        double v[3] = {centre[0] - c->eye[0], centre[1] - c->eye[1], centre[2] - c->eye[2]};
+        J->focus = fmax(dot3(v, c->forward), 1e-6 * size);
+    }
+    return 0;
+}
+
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
                  float *rgba, char *err, size_t errlen)
 {
@@ -219,6 +628,7 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     J.nroots = csg_scene_root_count(s);
     if (J.nroots > MAX_ROOTS) J.nroots = MAX_ROOTS;
     if (J.nroots < 0) J.nroots = 0;
+    if (resolve_light_model(&J, err, errlen) != 0) return -1;
     J.tiles_x = (opt->width + TILE - 1) / TILE;
     int tiles_y = (opt->height + TILE - 1) / TILE;
     J.ntiles = J.tiles_x * tiles_y;

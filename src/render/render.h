@@ -64,6 +64,16 @@ typedef struct render_colors {
  * names them).  Returns 0, or -1 for an unknown name. */
 int render_colors_by_name(const char *name, render_colors *out);
 
+/* A point light, or with radius > 0 a spherical area light whose shadow
+ * rays are spread, stratified, over the disc it shows each shaded point. */
+typedef struct render_light {
+    double pos[3];    /* world position */
+    double radius;    /* >= 0, world units */
+    double intensity; /* > 0; 1 gives a face squarely toward it 0.2 + 1 */
+} render_light;
+
+enum { RENDER_MAX_LIGHTS = 16 };
+
 typedef struct render_options {
     int width, height;
     int samples; /* samples per pixel is samples², stratified; >= 1 */
@@ -72,6 +82,27 @@ typedef struct render_options {
     /* Called from the calling thread with the fraction done; may be NULL. */
     void (*progress)(void *ud, double done);
     void *ud;
+
+    /* ---- opt-in light model ---------------------------------------------
+     * Every field below left 0 (and no $rs_ material in the scene) gives
+     * OpenSCAD's preview look, byte for byte as before they existed. */
+    int shadows; /* 1: shadow rays.  With no lights, the key light is the
+                    preview's own (from the viewer's upper left, at
+                    infinity) and its opposite fill stays unshadowed. */
+    render_light lights[RENDER_MAX_LIGHTS]; /* replace the preview's lights */
+    int nlights;
+    int light_samples; /* area lights: n×n shadow rays per light; 0: 4 */
+    int bounces;       /* depth limit of mirror and refraction rays; 0: 4 */
+    double ior;        /* > 1: transparent solids without $rs_ior refract
+                          with this index (--refract) */
+    double aperture;   /* thin-lens diameter, world units; 0: pinhole */
+    double focus;      /* focal distance from the eye; 0: to the centre of
+                          the model's bounds */
+    double xray;       /* in (0, 1]: every surface at most this opaque */
+    double absorb;     /* > 0: absorption mode; a transparent solid's alpha
+                          is the opacity of this thickness (world units),
+                          Beer–Lambert over the length of its spans */
+    unsigned seed;     /* the jitter's seed; pixels derive their own */
 } render_options;
 
 /* Scene roots by role: root 0 is the model; root 1, when present, the '#'
