@@ -91,6 +91,7 @@ static int write_image(const cli_options *o, csg_scene *scene)
         .threads = o->threads,
         .colors = colors,
     };
+    cli_options_apply_optics(o, &ro);
     progress bar;
     progress_start(&bar, "rendering");
     ro.progress = progress_update;

@@ -30,6 +30,21 @@ const char cli_usage[] =
     "  --colorscheme=NAME      OpenSCAD colour scheme (default Cornfield)\n"
     "  --samples N             N×N stratified samples per pixel (default 1)\n"
     "  --threads N             worker threads (default: all cores)\n"
+    "\n"
+    "Light model (opt-in; without these and $rs_ variables the image looks like\n"
+    "OpenSCAD's preview):\n"
+    "  --shadows               shadows from the preview's key light\n"
+    "  --light=x,y,z[,r[,i]]   a light at x,y,z (radius r > 0: soft shadows;\n"
+    "                          intensity i, default 1); repeatable, up to 16\n"
+    "  --light-samples N       N×N shadow rays per area light (default 4)\n"
+    "  --bounces N             mirror/refraction depth limit (default 4)\n"
+    "  --refract[=IOR]         transparent solids refract (default IOR 1.5)\n"
+    "  --aperture A            thin-lens diameter (depth of field)\n"
+    "  --focus F               focal distance (default: to the model's centre)\n"
+    "  --xray[=A]              every surface at most A opaque (default 0.25)\n"
+    "  --absorb[=T]            thickness mode: alpha is the opacity of T mm of\n"
+    "                          the solid, Beer-Lambert (default T = 10)\n"
+    "  --seed N                jitter seed (default 0)\n"
     "  --help                  this text\n"
     "  --version               the version\n"
     "\n"
@@ -87,6 +102,114 @@ static int flag_value(int argc, char **argv, int *i, const char *name, const cha
     return 1;
 }
 
+/* A flag whose value is optional: `name` alone gives 1 with *value NULL,
+ * `name=v` gives 1 with *value v. */
+static int optional_value(const char *a, const char *name, const char **value)
+{
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '=')) return 0;
+    *value = a[n] == '=' ? a + n + 1 : NULL;
+    return 1;
+}
+
+/* The light-model flags.  Returns 1 when argv[*i] was one (consumed), 0
+ * when it is not, -1 with a message in err for a bad value. */
+static int parse_optics(int argc, char **argv, int *i, render_options *p, char *err, size_t errlen)
+{
+    const char *a = argv[*i], *val = NULL;
+    double x;
+    int r;
+    if (strcmp(a, "--shadows") == 0) {
+        p->shadows = 1;
+        return 1;
+    }
+    if (optional_value(a, "--xray", &val)) {
+        p->xray = 0.25;
+        if (val && (parse_double(val, &p->xray) != 0 || !(p->xray > 0) || p->xray > 1)) {
+            snprintf(err, errlen, "--xray expects an opacity in (0, 1], got '%s'", val);
+            return -1;
+        }
+        return 1;
+    }
+    if (optional_value(a, "--absorb", &val)) {
+        p->absorb = 10;
+        if (val && (parse_double(val, &p->absorb) != 0 || !(p->absorb > 0))) {
+            snprintf(err, errlen, "--absorb expects a thickness > 0, got '%s'", val);
+            return -1;
+        }
+        return 1;
+    }
+    if (optional_value(a, "--refract", &val)) {
+        p->ior = 1.5;
+        if (val && (parse_double(val, &p->ior) != 0 || !(p->ior >= 1) || p->ior > 10)) {
+            snprintf(err, errlen, "--refract expects an index of refraction in 1..10, got '%s'",
+                     val);
+            return -1;
+        }
+        return 1;
+    }
+    if ((r = flag_value(argc, argv, i, "--light", &val)) != 0) {
+        double v[5] = {0, 0, 0, 0, 1};
+        int n = r > 0 ? parse_numbers(val, v, 5) : -1;
+        if (n < 3 || v[3] < 0 || !(v[4] > 0) || p->nlights == RENDER_MAX_LIGHTS) {
+            snprintf(err, errlen,
+                     "--light expects x,y,z[,radius[,intensity]] (radius >= 0, intensity > 0, "
+                     "at most %d lights), got '%s'",
+                     RENDER_MAX_LIGHTS, r > 0 ? val : "");
+            return -1;
+        }
+        render_light *L = &p->lights[p->nlights++];
+        for (int k = 0; k < 3; k++)
+            L->pos[k] = v[k];
+        L->radius = v[3];
+        L->intensity = v[4];
+        return 1;
+    }
+    static const struct {
+        const char *name;
+        int is_int;
+        double lo, hi;
+    } numeric[] = {{"--light-samples", 1, 1, 16}, {"--bounces", 1, 1, 64},
+                   {"--aperture", 0, 0, 1e9},     {"--focus", 0, 0, 1e9},
+                   {"--seed", 1, 0, 2147483647}};
+    for (size_t k = 0; k < sizeof numeric / sizeof *numeric; k++) {
+        r = flag_value(argc, argv, i, numeric[k].name, &val);
+        if (r == 0) continue;
+        if (r < 0 || parse_double(val, &x) != 0 || x < numeric[k].lo || x > numeric[k].hi ||
+            (numeric[k].is_int && x != floor(x)) || (k == 3 && !(x > 0))) {
+            snprintf(err, errlen, "%s expects a %s in %g..%g, got '%s'", numeric[k].name,
+                     numeric[k].is_int ? "whole number" : "number", numeric[k].lo,
+                     numeric[k].hi, r < 0 ? "" : val);
+            return -1;
+        }
+        switch (k) {
+        case 0: p->light_samples = (int)x; break;
+        case 1: p->bounces = (int)x; break;
+        case 2: p->aperture = x; break;
+        case 3: p->focus = x; break;
+        default: p->seed = (unsigned)x; break;
+        }
+        return 1;
+    }
+    return 0;
+}
+
+void cli_options_apply_optics(const cli_options *o, render_options *ro)
+{
+    const render_options *p = &o->optics;
+    ro->shadows = p->shadows;
+    memcpy(ro->lights, p->lights, sizeof ro->lights);
+    ro->nlights = p->nlights;
+    ro->light_samples = p->light_samples;
+    ro->bounces = p->bounces;
+    ro->ior = p->ior;
+    ro->aperture = p->aperture;
+    ro->focus = p->focus;
+    ro->xray = p->xray;
+    ro->absorb = p->absorb;
+    ro->seed = p->seed;
+}
+
 int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen)
 {
     memset(o, 0, sizeof *o);
@@ -118,6 +241,9 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             o->view.autocenter = 1;
             continue;
         }
+        int optic = parse_optics(argc, argv, &i, &o->optics, err, errlen);
+        if (optic < 0) return -1;
+        if (optic > 0) continue;
         if ((a[0] == '-' && (a[1] == 'o' || a[1] == 'D') && a[2] != '\0' && a[2] != '=')) {
             flag = a[1] == 'o' ? "-o" : "-D";
             val = a + 2;

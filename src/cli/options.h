@@ -20,7 +20,14 @@ typedef struct cli_options {
     int samples;
     int threads;
     int help, version;
+    /* The opt-in light model (--shadows, --light, --bounces, --refract,
+     * --aperture, --focus, --xray, --absorb, --light-samples, --seed): only
+     * the fields of render_options below `ud` are set. */
+    render_options optics;
 } cli_options;
+
+/* Copy the light-model fields of o->optics into *ro (leaving the rest). */
+void cli_options_apply_optics(const cli_options *o, render_options *ro);
 
 /* Parse argv into *o.  Returns 0, or -1 with a message in err (a usage
  * error: the caller prints it and exits 2). */
