@@ -42,7 +42,8 @@ extern const csg_affine csg_affine_identity;
 
 typedef struct csg_node csg_node;
 
-/* A leaf: shape s placed by world_from_object, with material m (both copied).
+/* A leaf: shape s placed by world_from_object, with material m (both copied;
+ * the node retains the shape's shared data, iv_shape_retain, and frees it).
  * Returns a node owned by the caller (csg_node_free, or hand it to a parent
  * or a scene), or NULL when out of memory. */
 csg_node *csg_node_shape(const iv_shape *s, const csg_affine world_from_object,

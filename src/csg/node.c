@@ -19,6 +19,7 @@ csg_node *csg_node_shape(const iv_shape *s, const csg_affine world_from_object,
     if (!n) return NULL;
     n->is_leaf = 1;
     n->shape = *s;
+    iv_shape_retain(&n->shape); /* the node's own reference to shared data */
     memcpy(n->world_from_object, world_from_object, sizeof(csg_affine));
     n->material = *m;
     return n;
@@ -73,6 +74,7 @@ void csg_node_free(csg_node *n)
             x->kids[i]->link = stack;
             stack = x->kids[i];
         }
+        if (x->is_leaf) iv_shape_release(&x->shape);
         free(x->kids);
         free(x);
     }

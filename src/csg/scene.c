@@ -514,6 +514,8 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
 void csg_scene_free(csg_scene *s)
 {
     if (!s) return;
+    for (int i = 0; i < s->nprims; i++) /* each prim holds its leaf's reference */
+        iv_shape_release(&s->prims[i].shape);
     free(s->nodes);
     free(s->prims);
     free(s->cold);

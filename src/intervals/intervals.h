@@ -87,7 +87,11 @@ typedef enum iv_shape_kind {
     IV_SHAPE_HALFSPACE, /* n·x <= d */
     IV_SHAPE_SPHERE,    /* |x| <= r, centred on the origin */
     IV_SHAPE_BOX,       /* lo <= x <= hi */
-    IV_SHAPE_CONE       /* 0 <= z <= h, x²+y² <= r(z)², r(z) = r1 + (r2-r1)·z/h */
+    IV_SHAPE_CONE,      /* 0 <= z <= h, x²+y² <= r(z)², r(z) = r1 + (r2-r1)·z/h */
+    IV_SHAPE_POLYTOPE,  /* convex: n·x <= d for every plane of an iv_polytope */
+    IV_SHAPE_MESH,      /* inside a closed triangle mesh (iv_mesh), nonzero rule */
+    IV_SHAPE_PRISM,     /* z0 <= z <= z1 and (x, y) in a 2D region (or a disc) */
+    IV_SHAPE_REVOLVE    /* (sqrt(x²+y²), z) in a 2D region, azimuth in [0, angle] */
 } iv_shape_kind;
 
 /* Parts, for iv_bound.part. */
@@ -103,8 +107,25 @@ enum {
     /* cone: the curved side and the two caps */
     IV_PART_CONE_SIDE = 0,
     IV_PART_CONE_BOTTOM, /* z = 0 */
-    IV_PART_CONE_TOP     /* z = h */
+    IV_PART_CONE_TOP,    /* z = h */
+    /* polytope: the plane index; mesh: the triangle index modulo 65536 (the
+     * normal picks the candidate whose plane passes nearest the point) */
+    /* prism: the two caps, then edge e of the region as IV_PART_PRISM_EDGE + e
+     * (modulo 65536, resolved like a mesh's) */
+    IV_PART_PRISM_BOTTOM = 0, /* z = z0 */
+    IV_PART_PRISM_TOP,        /* z = z1 */
+    IV_PART_PRISM_EDGE,
+    /* revolve: edge e of the profile, then the two end half-planes */
+    IV_PART_REVOLVE_START = 0xfffe, /* azimuth 0 */
+    IV_PART_REVOLVE_END = 0xffff    /* azimuth = angle */
 };
+
+/* Immutable, reference-counted data behind the shapes that need more than a
+ * few numbers.  Each is built once (single-threaded) and then only read, by
+ * any number of threads.  See iv_shape_retain. */
+typedef struct iv_polytope iv_polytope;
+typedef struct iv_mesh iv_mesh;
+typedef struct iv_region iv_region;
 
 typedef struct iv_shape {
     iv_shape_kind kind;
@@ -113,18 +134,85 @@ typedef struct iv_shape {
         struct { double r; } sphere;
         struct { double lo[3], hi[3]; } box;
         struct { double r1, r2, h; } cone;
+        struct { iv_polytope *p; } polytope;
+        struct { iv_mesh *m; } mesh;
+        struct { iv_region *g; double r, z0, z1; } prism; /* g NULL: the disc |xy| <= r */
+        struct { iv_region *g; double angle; } revolve;   /* angle in degrees, (0, 360] */
     } u;
 } iv_shape;
+
+/* ---- shape data and ownership --------------------------------------------
+ * A shape of kind POLYTOPE, MESH, PRISM (with a region) or REVOLVE holds one
+ * reference to its data.  iv_shape is copied by value, so whoever copies one
+ * and keeps both copies calls iv_shape_retain on the copy; whoever drops a
+ * copy calls iv_shape_release.  csg_node_shape retains its copy,
+ * csg_node_free and csg_scene_free release theirs.  Both are no-ops for the
+ * other kinds, so callers need not look at the kind.  The counts are atomic,
+ * but a scene is built before it is shared, so only builders touch them. */
+void iv_shape_retain(const iv_shape *s);
+void iv_shape_release(iv_shape *s);
+
+/* A convex polytope: the planes n·x <= d (planes[i] = {nx, ny, nz, d}, n need
+ * not be unit; it is normalised) and, for bounds and hulls, the vertices.
+ * Returns a shape holding the only reference, 0; or -1 when out of memory,
+ * n is 0 or more than 65536 planes, or a value is not finite. */
+int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes,
+                      const double (*verts)[3], int nverts);
+/* The convex hull of n points as a polytope (quickhull with a relative
+ * tolerance; coplanar input has no volume).  Returns 0, or -1 when the hull
+ * is flat or empty, or out of memory. */
+int iv_shape_hull(iv_shape *s, const double (*pts)[3], int n);
+/* The vertices of a polytope (borrowed), or NULL for other kinds. */
+const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3];
+
+/* A mesh from polygonal faces given as vertex indices (OpenSCAD's winding:
+ * clockwise seen from outside).  Each face is fan-triangulated; the hit
+ * counting is by signed crossings, so a fan is exact for any simple planar
+ * face, convex or not.  faces[face_start[i] .. face_start[i+1]) index verts.
+ * Returns 0, 1 when the mesh is not closed (every edge used once each way) —
+ * the shape is still made, best effort — or -1 on a bad index, no faces,
+ * non-finite values or out of memory (then s is untouched). */
+int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                  const int *face_start, int nfaces);
+/* Vertices of a mesh (borrowed) or NULL. */
+const double (*iv_mesh_vertices(const iv_shape *s, int *n))[3];
+/* Signed volume of a mesh (positive when its faces wind as OpenSCAD's). */
+double iv_mesh_volume(const iv_shape *s);
+
+/* A 2D region: closed paths under the even-odd rule; paths[path_start[i] ..
+ * path_start[i+1]) are the points of path i.  Returns the region holding one
+ * reference (owned by the caller: iv_region_release), or NULL when out of
+ * memory or no path has 3 points. */
+iv_region *iv_region_new(const double (*pts)[2], const int *path_start, int npaths);
+void iv_region_retain(iv_region *g);
+void iv_region_release(iv_region *g);
+/* Points of a region in path order (borrowed). */
+const double (*iv_region_points(const iv_region *g, int *n))[2];
+/* Path boundaries: path i is points [start[i], start[i+1]); *npaths set. */
+const int *iv_region_paths(const iv_region *g, int *npaths);
+/* 1 when (x, y) is inside under the even-odd rule. */
+int iv_region_contains(const iv_region *g, double x, double y);
+
+/* A prism over region g (retained by the shape) between z0 < z1. */
+void iv_shape_prism(iv_shape *s, iv_region *g, double z0, double z1);
+/* The solid swept by region g (x >= 0) about the z axis from azimuth 0 to
+ * angle degrees, counter-clockwise.  g is retained. */
+void iv_shape_revolve(iv_shape *s, iv_region *g, double angle);
+
+/* An upper bound on the spans iv_shape_intersect may append for s (1 for the
+ * convex kinds); the caller's list needs that much room. */
+int iv_shape_max_spans(const iv_shape *s);
 
 /* Intersect the whole object-space line o + t·d, t in (-inf, inf), with shape
  * s (d need not be unit length; t is the caller's parameter, so it is the same
  * in world space when o and d are mapped by the same affine transform).
- * Appends at most one span to `out` (all current shapes are convex) whose
+ * Appends at most iv_shape_max_spans(s) spans to `out` (one for the convex
+ * kinds; a mesh, prism or revolve may use its spare room as scratch) whose
  * boundaries carry `prim` and their part.  Tangent and grazing rays and
  * zero-length hits give no span; a line inside a halfspace or parallel to and
  * inside a slab gives infinite ends; the result is never NaN.  The caller
  * clips to its [tmin, tmax].
- * Returns the number of spans appended (0 or 1), or -1 when out->cap is
+ * Returns the number of spans appended, or -1 when out->cap is
  * exceeded. */
 int iv_shape_intersect(const iv_shape *s, const double o[3], const double d[3],
                        int32_t prim, iv_list *out);

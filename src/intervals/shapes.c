@@ -2,10 +2,12 @@
  * shapes.c — where a line meets each primitive, the outward normals, and the
  * object-space bounds.
  *
- * Every primitive is convex, so the points of the line o + t·d inside it form
- * one closed interval (possibly infinite, possibly empty); the functions here
- * compute that interval for all t, not just t >= 0, and append it as at most
- * one span.  The invariant that everything else relies on: a span is appended
+ * The primitives here are convex, so the points of the line o + t·d inside
+ * one form one closed interval (possibly infinite, possibly empty); the
+ * functions here compute that interval for all t, not just t >= 0, and append
+ * it as at most one span.  The kinds with shared data (polytope, mesh, prism,
+ * revolve) live in their own files and are only dispatched from here, as are
+ * their reference counts.  The invariant that everything else relies on: a span is appended
  * only when enter.t < exit.t, tested as `t0 < t1` so that a NaN (which cannot
  * arise from finite inputs here, but would from NaN inputs) never gets into a
  * list.  Tangent contact, grazing a curved surface and zero-length chords give
@@ -13,7 +15,7 @@
  * counts as inside, like the closed solid, so adjacent boxes leave no crack
  * along a shared face.
  */
-#include "intervals.h"
+#include "shape_kinds.h"
 
 #include <math.h>
 
@@ -261,8 +263,74 @@ int iv_shape_intersect(const iv_shape *s, const double o[3], const double d[3], 
         return box(s->u.box.lo, s->u.box.hi, o, d, prim, out);
     case IV_SHAPE_CONE:
         return cone(s->u.cone.r1, s->u.cone.r2, s->u.cone.h, o, d, prim, out);
+    case IV_SHAPE_POLYTOPE:
+        return polytope_intersect(s->u.polytope.p, o, d, prim, out);
+    case IV_SHAPE_MESH:
+        return mesh_intersect(s->u.mesh.m, o, d, prim, out);
+    case IV_SHAPE_PRISM:
+        return prism_intersect(s, o, d, prim, out);
+    case IV_SHAPE_REVOLVE:
+        return revolve_intersect(s, o, d, prim, out);
     }
     return 0;
+}
+
+int iv_shape_max_spans(const iv_shape *s)
+{
+    switch (s->kind) {
+    case IV_SHAPE_MESH:
+        return mesh_max_spans(s->u.mesh.m);
+    case IV_SHAPE_PRISM:
+        return prism_max_spans(s);
+    case IV_SHAPE_REVOLVE:
+        return revolve_max_spans(s);
+    default:
+        return 1;
+    }
+}
+
+void iv_shape_retain(const iv_shape *s)
+{
+    switch (s->kind) {
+    case IV_SHAPE_POLYTOPE:
+        polytope_retain(s->u.polytope.p);
+        return;
+    case IV_SHAPE_MESH:
+        mesh_retain(s->u.mesh.m);
+        return;
+    case IV_SHAPE_PRISM:
+        iv_region_retain(s->u.prism.g);
+        return;
+    case IV_SHAPE_REVOLVE:
+        iv_region_retain(s->u.revolve.g);
+        return;
+    default:
+        return;
+    }
+}
+
+void iv_shape_release(iv_shape *s)
+{
+    switch (s->kind) {
+    case IV_SHAPE_POLYTOPE:
+        polytope_release(s->u.polytope.p);
+        s->u.polytope.p = NULL;
+        return;
+    case IV_SHAPE_MESH:
+        mesh_release(s->u.mesh.m);
+        s->u.mesh.m = NULL;
+        return;
+    case IV_SHAPE_PRISM:
+        iv_region_release(s->u.prism.g);
+        s->u.prism.g = NULL;
+        return;
+    case IV_SHAPE_REVOLVE:
+        iv_region_release(s->u.revolve.g);
+        s->u.revolve.g = NULL;
+        return;
+    default:
+        return;
+    }
 }
 
 /* v / |v|, or fallback when |v| is zero or not finite. */
@@ -329,6 +397,18 @@ void iv_shape_normal(const iv_shape *s, const double p[3], int part, double n[3]
         }
         return;
     }
+    case IV_SHAPE_POLYTOPE:
+        polytope_normal(s->u.polytope.p, part, n);
+        return;
+    case IV_SHAPE_MESH:
+        mesh_normal(s->u.mesh.m, p, part, n);
+        return;
+    case IV_SHAPE_PRISM:
+        prism_normal(s, p, part, n);
+        return;
+    case IV_SHAPE_REVOLVE:
+        revolve_normal(s, p, part, n);
+        return;
     }
     n[0] = n[1] = 0;
     n[2] = 1;
@@ -384,6 +464,14 @@ int iv_shape_bounds(const iv_shape *s, double lo[3], double hi[3])
         hi[2] = h;
         return 0;
     }
+    case IV_SHAPE_POLYTOPE:
+        return polytope_bounds(s->u.polytope.p, lo, hi);
+    case IV_SHAPE_MESH:
+        return mesh_bounds(s->u.mesh.m, lo, hi);
+    case IV_SHAPE_PRISM:
+        return prism_bounds(s, lo, hi);
+    case IV_SHAPE_REVOLVE:
+        return revolve_bounds(s, lo, hi);
     }
     return -1;
 }

@@ -1,0 +1,544 @@
+/*
+ * polyhedron.c — closed triangle meshes (polyhedron(), imported meshes,
+ * twisted extrusions): a BVH over the triangles and a watertight ray test.
+ *
+ * Faces arrive as polygons wound clockwise seen from outside (OpenSCAD) and
+ * are fan-triangulated.  Inside-ness along a line is the nonzero winding
+ * rule: every triangle the line crosses adds +1 when the line enters through
+ * it and -1 when it leaves, hits at equal t are summed before the state is
+ * read, and the solid is where the running sum is positive.  A fan of a
+ * concave face has triangles of both orientations whose signed cover is
+ * exactly the face, so no ear clipping is needed — provided all triangles of
+ * one face report bitwise the same t, which is why t comes from the face's
+ * plane rather than from each triangle.
+ *
+ * The ray–triangle test is Woop, Benthin and Wald (JCGT 2013): shear the
+ * ray onto +z and evaluate three 2D edge functions.  Shared vertices map to
+ * bitwise equal sheared coordinates and an edge's function in the two
+ * triangles that share it are exact negatives, so there are no gaps.  To
+ * also avoid double hits, an edge function that is exactly zero takes the
+ * sign it would have for the ray moved by (ε, ε²) — one perturbation for all
+ * edges, so every triangle around an edge or vertex agrees, and a line
+ * through a vertex or along an edge counts exactly as a line beside it.
+ *
+ * Ownership: the mesh is immutable after iv_shape_mesh and reference
+ * counted (iv_shape_retain/release).  The triangles are stored in BVH order;
+ * a boundary's part is the triangle index modulo 65536, and the normal picks
+ * among the few candidates the one whose plane passes nearest the point.
+ */
+#include "shape_kinds.h"
+
+#include <math.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct bnode {
+    double lo[3], hi[3];
+    int start, count; /* leaf: triangles [start, start+count); inner: count 0 */
+    int right;        /* inner: right child (left is this + 1) */
+} bnode;
+
+struct iv_mesh {
+    atomic_int refs;
+    int nv, nt, nf, nn;
+    double (*v)[3];
+    int (*tri)[3];   /* in BVH order */
+    int *face;       /* source face (plane) of each triangle */
+    double (*pl)[4]; /* per face: outward unit normal, offset */
+    bnode *node;
+    double lo[3], hi[3];
+    double volume;
+};
+
+void mesh_retain(iv_mesh *m)
+{
+    atomic_fetch_add(&m->refs, 1);
+}
+
+void mesh_release(iv_mesh *m)
+{
+    if (atomic_fetch_sub(&m->refs, 1) != 1) return;
+    free(m->v);
+    free(m->tri);
+    free(m->face);
+    free(m->pl);
+    free(m->node);
+    free(m);
+}
+
+/* ---- building ------------------------------------------------------------------ */
+
+typedef struct build {
+    iv_mesh *m;
+    double (*cen)[3];
+    int *idx;
+} build;
+
+typedef struct keyed {
+    double key;
+    int idx;
+} keyed;
+
+static int cmp_keyed(const void *a, const void *b)
+{
+    double x = ((const keyed *)a)->key, y = ((const keyed *)b)->key;
+    return (x > y) - (x < y);
+}
+
+/* Node over idx[start, start+count); returns its index.  Median split on the
+ * longest axis of the centroids' box, leaves of at most 4 triangles. */
+static int build_node(build *b, int start, int count)
+{
+    iv_mesh *m = b->m;
+    int ni = m->nn++;
+    bnode *nd = &m->node[ni];
+    for (int k = 0; k < 3; k++) {
+        nd->lo[k] = INFINITY;
+        nd->hi[k] = -INFINITY;
+    }
+    double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = start; i < start + count; i++) {
+        const int *t = m->tri[b->idx[i]];
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++) {
+                nd->lo[k] = fmin(nd->lo[k], m->v[t[j]][k]);
+                nd->hi[k] = fmax(nd->hi[k], m->v[t[j]][k]);
+            }
+        for (int k = 0; k < 3; k++) {
+            clo[k] = fmin(clo[k], b->cen[b->idx[i]][k]);
+            chi[k] = fmax(chi[k], b->cen[b->idx[i]][k]);
+        }
+    }
+    nd->start = start;
+    nd->count = count;
+    nd->right = -1;
+    if (count <= 4) return ni;
+    int axis = 0;
+    for (int k = 1; k < 3; k++)
+        if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
+    keyed *ks = malloc((size_t)count * sizeof *ks);
+    if (ks) {
+        for (int i = 0; i < count; i++)
+            ks[i] = (keyed){b->cen[b->idx[start + i]][axis], b->idx[start + i]};
+        qsort(ks, (size_t)count, sizeof *ks, cmp_keyed);
+        for (int i = 0; i < count; i++)
+            b->idx[start + i] = ks[i].idx;
+        free(ks);
+    } /* out of memory: an unsorted split is slower, still correct */
+    int half = count / 2;
+    m->node[ni].count = 0;
+    build_node(b, start, half);
+    int r = build_node(b, start + half, count - half);
+    m->node[ni].right = r;
+    return ni;
+}
+
+static int cmp_edge(const void *a, const void *b)
+{
+    const long long *x = a, *y = b;
+    return (*x > *y) - (*x < *y);
+}
+
+/* 1 when every directed edge is matched by exactly one reverse edge. */
+static int is_closed(const iv_mesh *m)
+{
+    long long *e = malloc((size_t)m->nt * 3 * sizeof *e);
+    if (!e) return 1;
+    size_t ne = 0;
+    for (int i = 0; i < m->nt; i++)
+        for (int j = 0; j < 3; j++) {
+            long long a = m->tri[i][j], b = m->tri[i][(j + 1) % 3];
+            if (a == b) continue;
+            /* key: unordered pair, and direction in the low bit */
+            long long lo = a < b ? a : b, hi = a < b ? b : a;
+            e[ne++] = ((lo * (long long)m->nv + hi) << 1) | (a < b);
+        }
+    qsort(e, ne, sizeof *e, cmp_edge);
+    int closed = 1;
+    for (size_t i = 0; i < ne;) {
+        size_t j = i;
+        int fw = 0, bw = 0;
+        while (j < ne && (e[j] >> 1) == (e[i] >> 1)) {
+            if (e[j] & 1)
+                fw++;
+            else
+                bw++;
+            j++;
+        }
+        /* Fan diagonals are used once each way inside one face, like any
+         * manifold edge. */
+        if (fw != bw) closed = 0;
+        i = j;
+    }
+    free(e);
+    return closed;
+}
+
+int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                  const int *face_start, int nfaces)
+{
+    if (nverts <= 0 || nfaces <= 0) return -1;
+    for (int i = 0; i < nverts; i++)
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(verts[i][k])) return -1;
+    long nt = 0;
+    for (int f = 0; f < nfaces; f++) {
+        int len = face_start[f + 1] - face_start[f];
+        if (len < 0) return -1;
+        for (int j = face_start[f]; j < face_start[f + 1]; j++)
+            if (faces[j] < 0 || faces[j] >= nverts) return -1;
+        if (len >= 3) nt += len - 2;
+    }
+    if (nt == 0 || nt > (1L << 28)) return -1;
+    iv_mesh *m = calloc(1, sizeof *m);
+    if (!m) return -1;
+    int rc = -1;
+    build b = {m, NULL, NULL};
+    int(*tri)[3] = malloc((size_t)nt * sizeof *tri);
+    int *face = malloc((size_t)nt * sizeof *face);
+    m->v = malloc((size_t)nverts * sizeof *m->v);
+    /* A non-planar face is split into its fan triangles, each its own
+     * plane, so at most nt planes. */
+    m->pl = malloc((size_t)nt * sizeof *m->pl);
+    m->tri = malloc((size_t)nt * sizeof *m->tri);
+    m->face = malloc((size_t)nt * sizeof *m->face);
+    m->node = malloc((size_t)(2 * nt) * sizeof *m->node);
+    b.cen = malloc((size_t)nt * sizeof *b.cen);
+    b.idx = malloc((size_t)nt * sizeof *b.idx);
+    if (!tri || !face || !m->v || !m->pl || !m->tri || !m->face || !m->node || !b.cen || !b.idx)
+        goto done;
+    memcpy(m->v, verts, (size_t)nverts * sizeof *m->v);
+    m->nv = nverts;
+    for (int k = 0; k < 3; k++) {
+        m->lo[k] = INFINITY;
+        m->hi[k] = -INFINITY;
+    }
+    for (int i = 0; i < nverts; i++)
+        for (int k = 0; k < 3; k++) {
+            m->lo[k] = fmin(m->lo[k], verts[i][k]);
+            m->hi[k] = fmax(m->hi[k], verts[i][k]);
+        }
+    double vol = 0;
+    int t = 0, np = 0;
+    for (int f = 0; f < nfaces; f++) {
+        const int *F = faces + face_start[f];
+        int len = face_start[f + 1] - face_start[f];
+        if (len < 3) continue;
+        /* Newell's normal: right-handed, so it points inward for
+         * OpenSCAD's clockwise-from-outside winding. */
+        double n[3] = {0, 0, 0}, c[3] = {0, 0, 0};
+        for (int j = 0; j < len; j++) {
+            const double *p = verts[F[j]], *q = verts[F[(j + 1) % len]];
+            n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+            n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+            n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+            for (int k = 0; k < 3; k++)
+                c[k] += p[k] / len;
+        }
+        double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        int planar = l > 0;
+        if (planar && len > 3) {
+            double ext = 0;
+            for (int k = 0; k < 3; k++)
+                ext = fmax(ext, m->hi[k] - m->lo[k]);
+            for (int j = 0; j < len; j++) {
+                const double *p = verts[F[j]];
+                double dist =
+                    ((p[0] - c[0]) * n[0] + (p[1] - c[1]) * n[1] + (p[2] - c[2]) * n[2]) / l;
+                if (fabs(dist) > 1e-9 * ext) planar = 0;
+            }
+        }
+        for (int j = 1; j + 1 < len; j++) {
+            tri[t][0] = F[0];
+            tri[t][1] = F[j];
+            tri[t][2] = F[j + 1];
+            const double *a = verts[F[0]], *p = verts[F[j]], *q = verts[F[j + 1]];
+            /* signed volume: OpenSCAD's winding is clockwise from outside,
+             * so the right-handed triple product is negative for a proper
+             * solid; negate it. */
+            vol -= (a[0] * (p[1] * q[2] - p[2] * q[1]) - a[1] * (p[0] * q[2] - p[2] * q[0]) +
+                    a[2] * (p[0] * q[1] - p[1] * q[0])) /
+                   6;
+            if (!planar) {
+                double u[3], w[3], tn[3];
+                for (int k = 0; k < 3; k++) {
+                    u[k] = p[k] - a[k];
+                    w[k] = q[k] - a[k];
+                }
+                tn[0] = u[1] * w[2] - u[2] * w[1];
+                tn[1] = u[2] * w[0] - u[0] * w[2];
+                tn[2] = u[0] * w[1] - u[1] * w[0];
+                double tl = sqrt(tn[0] * tn[0] + tn[1] * tn[1] + tn[2] * tn[2]);
+                if (!(tl > 0)) tl = 1;
+                for (int k = 0; k < 3; k++)
+                    m->pl[np][k] = -tn[k] / tl;
+                m->pl[np][3] = m->pl[np][0] * a[0] + m->pl[np][1] * a[1] + m->pl[np][2] * a[2];
+                face[t] = np++;
+            } else {
+                face[t] = np;
+            }
+            t++;
+        }
+        if (planar) {
+            for (int k = 0; k < 3; k++)
+                m->pl[np][k] = -n[k] / l;
+            m->pl[np][3] = m->pl[np][0] * c[0] + m->pl[np][1] * c[1] + m->pl[np][2] * c[2];
+            np++;
+        }
+    }
+    m->nt = t;
+    m->nf = np;
+    if (vol < 0) {
+        /* Wound the other way round as a whole: turn it inside out rather
+         * than render an inverted solid (OpenSCAD's preview shows it
+         * solid). */
+        for (int i = 0; i < t; i++) {
+            int x = tri[i][1];
+            tri[i][1] = tri[i][2];
+            tri[i][2] = x;
+        }
+        for (int i = 0; i < np; i++)
+            for (int k = 0; k < 4; k++)
+                m->pl[i][k] = -m->pl[i][k];
+        vol = -vol;
+    }
+    m->volume = vol;
+    for (int i = 0; i < t; i++) {
+        b.idx[i] = i;
+        for (int k = 0; k < 3; k++)
+            b.cen[i][k] = (verts[tri[i][0]][k] + verts[tri[i][1]][k] + verts[tri[i][2]][k]) / 3;
+    }
+    memcpy(m->tri, tri, (size_t)t * sizeof *tri); /* build_node reads m->tri */
+    build_node(&b, 0, t);
+    for (int i = 0; i < t; i++) {
+        memcpy(m->tri[i], tri[b.idx[i]], sizeof *tri);
+        m->face[i] = face[b.idx[i]];
+    }
+    atomic_init(&m->refs, 1);
+    memset(s, 0, sizeof *s);
+    s->kind = IV_SHAPE_MESH;
+    s->u.mesh.m = m;
+    rc = is_closed(m) ? 0 : 1;
+done:
+    free(tri);
+    free(face);
+    free(b.cen);
+    free(b.idx);
+    if (rc < 0) {
+        m->refs = 1;
+        mesh_release(m);
+    }
+    return rc;
+}
+
+const double (*iv_mesh_vertices(const iv_shape *s, int *n))[3]
+{
+    if (s->kind != IV_SHAPE_MESH) return NULL;
+    *n = s->u.mesh.m->nv;
+    return (const double(*)[3])s->u.mesh.m->v;
+}
+
+double iv_mesh_volume(const iv_shape *s)
+{
+    return s->kind == IV_SHAPE_MESH ? s->u.mesh.m->volume : 0;
+}
+
+int mesh_max_spans(const iv_mesh *m)
+{
+    return m->nt / 2 + 1;
+}
+
+int mesh_bounds(const iv_mesh *m, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        if (!(m->lo[k] <= m->hi[k])) return -1;
+        lo[k] = m->lo[k];
+        hi[k] = m->hi[k];
+    }
+    /* a flat mesh has no volume, but keep it (best effort) */
+    return 0;
+}
+
+/* ---- queries ------------------------------------------------------------------- */
+
+/* The sign of an edge function, with zero resolved by moving the ray by
+ * (ε, ε²) in the sheared plane: e(δ) = e + δx·gx + δy·gy. */
+static int edge_sign(double e, double gx, double gy)
+{
+    if (e > 0) return 1;
+    if (e < 0) return -1;
+    if (gx != 0) return gx > 0 ? 1 : -1;
+    if (gy != 0) return gy > 0 ? 1 : -1;
+    return 0; /* the edge projects to a point: it has no side */
+}
+
+static int cmp_bound(const void *a, const void *b)
+{
+    double x = ((const iv_bound *)a)->t, y = ((const iv_bound *)b)->t;
+    return (x > y) - (x < y);
+}
+
+int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32_t prim,
+                   iv_list *out)
+{
+    int kz = 0;
+    for (int k = 1; k < 3; k++)
+        if (fabs(d[k]) > fabs(d[kz])) kz = k;
+    if (d[kz] == 0) return 0;
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d[kz] < 0) {
+        int x = kx;
+        kx = ky;
+        ky = x;
+    }
+    const double Sx = d[kx] / d[kz], Sy = d[ky] / d[kz];
+    double inv[3];
+    for (int k = 0; k < 3; k++)
+        inv[k] = 1 / d[k];
+    /* Hits go to the list's spare room, read as an array of bounds; the
+     * flip field holds the crossing's sign (+1 enter: 1, -1 exit: 0) until
+     * the sweep below rewrites them as spans. */
+    iv_bound *hit = &out->v[out->n].enter;
+    const long room = 2L * (out->cap - out->n);
+    long nh = 0;
+    int stack[64], sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const bnode *nd = &m->node[stack[--sp]];
+        double t0 = -INFINITY, t1 = INFINITY;
+        int miss = 0;
+        for (int k = 0; k < 3 && !miss; k++) {
+            if (d[k] == 0) {
+                if (o[k] < nd->lo[k] || o[k] > nd->hi[k]) miss = 1;
+                continue;
+            }
+            double ta = (nd->lo[k] - o[k]) * inv[k], tb = (nd->hi[k] - o[k]) * inv[k];
+            if (ta > tb) {
+                double x = ta;
+                ta = tb;
+                tb = x;
+            }
+            /* 1e-9 relative slack: the box test must never reject a
+             * triangle the exact test below would accept. */
+            double slack = 1e-9 * (fabs(ta) + fabs(tb)) + 1e-300;
+            t0 = fmax(t0, ta - slack);
+            t1 = fmin(t1, tb + slack);
+        }
+        if (miss || t0 > t1) continue;
+        if (nd->count == 0) {
+            if (sp + 2 > 64) return -1; /* depth is ~log2(n) + small; cannot happen */
+            stack[sp++] = nd->right;
+            stack[sp++] = (int)(nd - m->node) + 1;
+            continue;
+        }
+        for (int i = nd->start; i < nd->start + nd->count; i++) {
+            const int *tv = m->tri[i];
+            double X[3], Y[3];
+            for (int j = 0; j < 3; j++) {
+                const double *p = m->v[tv[j]];
+                double az = p[kz] - o[kz];
+                X[j] = (p[kx] - o[kx]) - Sx * az;
+                Y[j] = (p[ky] - o[ky]) - Sy * az;
+            }
+            /* A = 0, B = 1, C = 2 */
+            double U = X[2] * Y[1] - Y[2] * X[1];
+            double V = X[0] * Y[2] - Y[0] * X[2];
+            double W = X[1] * Y[0] - Y[1] * X[0];
+            int su = edge_sign(U, Y[2] - Y[1], X[1] - X[2]);
+            int sv = edge_sign(V, Y[0] - Y[2], X[2] - X[0]);
+            int sw = edge_sign(W, Y[1] - Y[0], X[0] - X[1]);
+            int pos = (su > 0) + (sv > 0) + (sw > 0), neg = (su < 0) + (sv < 0) + (sw < 0);
+            if ((pos && neg) || (!pos && !neg)) continue;
+            const double *q = m->pl[m->face[i]];
+            double a = q[0] * d[0] + q[1] * d[1] + q[2] * d[2];
+            if (a == 0) continue;
+            double t = (q[3] - (q[0] * o[0] + q[1] * o[1] + q[2] * o[2])) / a;
+            if (!isfinite(t)) continue;
+            if (nh >= room) return -1;
+            /* pos: det > 0, the triangle turns its outward side away
+             * from the ray (see the file comment): an exit. */
+            hit[nh++] = (iv_bound){t, prim, (uint16_t)(i & 0xffff), (uint16_t)(neg ? 1 : 0)};
+        }
+    }
+    if (nh == 0) return 0;
+    if (nh < 24) {
+        for (long i = 1; i < nh; i++) {
+            iv_bound x = hit[i];
+            long j = i;
+            while (j > 0 && hit[j - 1].t > x.t) {
+                hit[j] = hit[j - 1];
+                j--;
+            }
+            hit[j] = x;
+        }
+    } else {
+        qsort(hit, (size_t)nh, sizeof *hit, cmp_bound);
+    }
+    /* Sweep: sum the signs at each distinct t, emit on state changes.  The
+     * write index never passes the read index. */
+    long w = 0;
+    int count = 0, inside = 0;
+    iv_bound last = hit[nh - 1];
+    for (long i = 0; i < nh;) {
+        long j = i;
+        int delta = 0;
+        iv_bound first_in = hit[i], first_out = hit[i];
+        int have_in = 0, have_out = 0;
+        while (j < nh && hit[j].t == hit[i].t) {
+            if (hit[j].flip) {
+                delta++;
+                if (!have_in) first_in = hit[j], have_in = 1;
+            } else {
+                delta--;
+                if (!have_out) first_out = hit[j], have_out = 1;
+            }
+            j++;
+        }
+        count += delta;
+        int now = count > 0;
+        if (now != inside) {
+            iv_bound bnd = now ? first_in : first_out;
+            bnd.flip = 0;
+            hit[w++] = bnd;
+            inside = now;
+        }
+        i = j;
+    }
+    if (inside) {
+        /* Not closed along this line (best effort for open meshes): end at
+         * the last hit. */
+        if (hit[w - 1].t < last.t) {
+            last.flip = 0;
+            hit[w++] = last;
+        } else {
+            w--;
+        }
+    }
+    int ns = (int)(w / 2);
+    out->n += ns;
+    return ns;
+}
+
+void mesh_normal(const iv_mesh *m, const double p[3], int part, double n[3])
+{
+    int best = -1;
+    double bd = INFINITY;
+    for (int i = part; i < m->nt; i += 65536) {
+        const double *q = m->pl[m->face[i]];
+        double dist = fabs(q[0] * p[0] + q[1] * p[1] + q[2] * p[2] - q[3]);
+        if (dist < bd) {
+            bd = dist;
+            best = i;
+        }
+    }
+    if (best < 0) {
+        n[0] = n[1] = 0;
+        n[2] = 1;
+        return;
+    }
+    const double *q = m->pl[m->face[best]];
+    n[0] = q[0];
+    n[1] = q[1];
+    n[2] = q[2];
+}
