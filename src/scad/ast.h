@@ -208,7 +208,16 @@ struct scad_scope {
     int nmods, capmods;
     scad_funcdef **funcs;
     int nfuncs, capfuncs;
+    scad_scope **uses; /* top scopes of the files `use`d here, in order */
+    int nuses, capuses;
 };
+
+/* The file a `use <name>` / `include <name>` in file `from` refers to, in
+ * OpenSCAD's search order: from's own folder, then each folder of
+ * $OPENSCADPATH (':'-separated), then /usr/share/openscad/libraries.
+ * Absolute names are taken as they are.  Returns a path in the arena, or
+ * NULL when no readable file is found. */
+char *scad_find_library(scad_arena *a, const char *from, const char *name);
 
 /* Parse a whole file.  Returns the top-level scope (in arena a), or NULL
  * when any syntax error was reported through d (all are reported). */

@@ -222,9 +222,7 @@ static void rotate_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a
             double s = scad_sin_degrees(ang), c = scad_cos_degrees(ang), t = 1 - c;
             double x = ax[0], y = ax[1], z = ax[2];
             if (x == 0 && y == 0 && z == 0) {
-                /* Eigen's AngleAxis of a zero axis: cos(a) on the diagonal */
-                csg_affine r = {c, 0, 0, 0, 0, c, 0, 0, 0, 0, c, 0};
-                memcpy(m, r, sizeof r);
+                /* OpenSCAD 2021.01 skips the rotation for a zero axis */
             } else {
                 csg_affine r = {t * x * x + c,     t * x * y - s * z, t * x * z + s * y, 0,
                                 t * x * y + s * z, t * y * y + c,     t * y * z - s * x, 0,

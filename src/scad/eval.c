@@ -165,32 +165,78 @@ scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_
     return scad_undef();
 }
 
-static const scad_funcdef *find_function(scad_env *env, const char *name, scad_env **def_env)
+static void run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s);
+
+/* The environment of a `use`d file: its top-level variables, evaluated
+ * once, the first time one of its functions or modules is called. */
+static scad_env *use_env(scad_eval *ev, const scad_scope *u)
+{
+    for (int i = 0; i < ev->nuse; i++)
+        if (ev->use_scopes[i] == u) return ev->use_envs[i];
+    if (ev->nuse == ev->capuse) {
+        int cap = ev->capuse ? ev->capuse * 2 : 8;
+        const scad_scope **ns = realloc(ev->use_scopes, sizeof *ns * (size_t)cap);
+        if (ns) ev->use_scopes = ns;
+        scad_env **ne = ns ? realloc(ev->use_envs, sizeof *ne * (size_t)cap) : NULL;
+        if (ne) ev->use_envs = ne;
+        if (!ns || !ne) {
+            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            return NULL;
+        }
+        ev->capuse = cap;
+    }
+    scad_env *e = env_new(ev, ev->builtins, ev->builtins, u);
+    if (!e) return NULL;
+    ev->use_scopes[ev->nuse] = u;
+    ev->use_envs[ev->nuse] = e;
+    ev->nuse++;
+    run_assignments(ev, e, u);
+    return e;
+}
+
+void scad_eval_free_uses(scad_eval *ev)
+{
+    for (int i = 0; i < ev->nuse; i++)
+        env_free(ev->use_envs[i]);
+    free(ev->use_envs);
+    free(ev->use_scopes);
+    ev->use_envs = NULL;
+    ev->use_scopes = NULL;
+    ev->nuse = ev->capuse = 0;
+}
+
+/* A function (want_module 0) or module by name: the innermost scope that
+ * defines it, then the files that scope `use`s (not what they use). */
+static const void *find_def(scad_eval *ev, scad_env *env, const char *name, int want_module,
+                            scad_env **def_env)
 {
     for (scad_env *e = env; e; e = e->parent) {
         if (!e->defs) continue;
-        for (int i = e->defs->nfuncs - 1; i >= 0; i--) {
-            if (strcmp(e->defs->funcs[i]->name, name) == 0) {
-                *def_env = e;
-                return e->defs->funcs[i];
+        for (int k = -1; k < e->defs->nuses; k++) {
+            const scad_scope *s = k < 0 ? e->defs : e->defs->uses[k];
+            int n = want_module ? s->nmods : s->nfuncs;
+            for (int i = n - 1; i >= 0; i--) {
+                const char *dn = want_module ? s->mods[i]->name : s->funcs[i]->name;
+                if (strcmp(dn, name) != 0) continue;
+                *def_env = k < 0 ? e : use_env(ev, s);
+                if (!*def_env) return NULL;
+                return want_module ? (const void *)s->mods[i] : (const void *)s->funcs[i];
             }
         }
     }
     return NULL;
 }
 
-static const scad_moddef *find_module(scad_env *env, const char *name, scad_env **def_env)
+static const scad_funcdef *find_function(scad_eval *ev, scad_env *env, const char *name,
+                                         scad_env **def_env)
 {
-    for (scad_env *e = env; e; e = e->parent) {
-        if (!e->defs) continue;
-        for (int i = e->defs->nmods - 1; i >= 0; i--) {
-            if (strcmp(e->defs->mods[i]->name, name) == 0) {
-                *def_env = e;
-                return e->defs->mods[i];
-            }
-        }
-    }
-    return NULL;
+    return find_def(ev, env, name, 0, def_env);
+}
+
+static const scad_moddef *find_module(scad_eval *ev, scad_env *env, const char *name,
+                                      scad_env **def_env)
+{
+    return find_def(ev, env, name, 1, def_env);
 }
 
 /* ---- arguments ---------------------------------------------------------------- */
@@ -620,9 +666,34 @@ static int iter_values(scad_eval *ev, scad_value v, scad_loc loc, vlist *out)
 
 /* ---- expressions -------------------------------------------------------------- */
 
+static void echo_line(scad_eval *ev, const scad_argv *a);
+static int check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_loc loc);
+static void assign_seq(scad_eval *ev, scad_env *env, const scad_args *args);
+
+enum { MAX_TAIL_CALLS = 1000000 };
+
+/* Is x a call of the named function def itself (not of a variable that
+ * holds a function literal, nor of another definition)? */
+static int is_self_call(scad_eval *ev, scad_env *env, const scad_expr *x, const scad_funcdef *def)
+{
+    if (!def || x->kind != EX_CALL || x->a[0]->kind != EX_VAR) return 0;
+    if (strcmp(x->a[0]->str, def->name) != 0) return 0;
+    int found;
+    scad_value v = scad_env_lookup(ev, env, def->name, x->loc, 1, &found);
+    if (found && v.kind == SV_FUNC) return 0;
+    scad_env *where;
+    return find_function(ev, env, def->name, &where) == def;
+}
+
+/* A user function call.  As OpenSCAD 2021.01's evaluate_function does, the
+ * body is followed through ?:, let, assert and echo without recursion, and a
+ * call of the function itself in that tail position reuses this frame: the
+ * new arguments are bound in a fresh environment and the loop goes on, so
+ * tail recursion runs in constant C stack (up to MAX_TAIL_CALLS). */
 static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_expr *call,
                                      const char *name, const scad_args *params,
-                                     const scad_expr *body, scad_env *def_env)
+                                     const scad_expr *body, scad_env *def_env,
+                                     const scad_funcdef *def)
 {
     scad_argv argv;
     if (eval_args(ev, env, &call->args, &argv)) return scad_undef();
@@ -632,13 +703,69 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
     }
     scad_value r = scad_undef();
     scad_env *fe = env_new(ev, def_env, env, NULL);
-    if (fe) {
+    long tail_calls = 0;
+    while (fe && !ev->aborted) {
         scad_bind_args(ev, fe, def_env, params, &argv, call->loc);
-        r = scad_eval_expr(ev, fe, body);
+        argv_free(&argv);
+        /* follow the body; lets stack up environments below fe */
+        scad_env *cur = fe;
+        const scad_expr *x = body;
+        const scad_expr *tail = NULL;
+        while (x && !ev->aborted) {
+            if (x->kind == EX_TERNARY) {
+                scad_value c = scad_eval_expr(ev, cur, x->a[0]);
+                int t = scad_value_truthy(c);
+                scad_value_drop(c);
+                x = x->a[t ? 1 : 2];
+            } else if (x->kind == EX_ASSERT) {
+                if (check_assert(ev, cur, &x->args, x->loc)) break;
+                x = x->a[0];
+            } else if (x->kind == EX_ECHO) {
+                scad_argv ea;
+                if (eval_args(ev, cur, &x->args, &ea)) break;
+                if (!ev->aborted) echo_line(ev, &ea);
+                argv_free(&ea);
+                x = x->a[0];
+            } else if (x->kind == EX_LET) {
+                scad_env *le = env_new(ev, cur, cur, NULL);
+                if (!le) break;
+                assign_seq(ev, le, &x->args);
+                cur = le;
+                x = x->a[0];
+            } else if (is_self_call(ev, cur, x, def)) {
+                tail = x;
+                break;
+            } else {
+                r = scad_eval_expr(ev, cur, x);
+                break;
+            }
+        }
+        if (tail && !ev->aborted) {
+            if (++tail_calls > MAX_TAIL_CALLS) {
+                scad_eval_error(ev, tail->loc,
+                                "recursion detected calling function '%s' (more than %d tail "
+                                "calls)",
+                                name, MAX_TAIL_CALLS);
+                tail = NULL;
+            } else if (eval_args(ev, cur, &tail->args, &argv)) {
+                tail = NULL;
+            }
+        }
+        while (cur != fe) {
+            scad_env *up = cur->parent;
+            env_free(cur);
+            cur = up;
+        }
         env_free(fe);
+        fe = NULL;
+        if (tail && !ev->aborted) {
+            fe = env_new(ev, def_env, env, NULL);
+            if (!fe) argv_free(&argv);
+        } else if (tail) {
+            argv_free(&argv);
+        }
     }
     leave_call(ev);
-    argv_free(&argv);
     return r;
 }
 
@@ -652,7 +779,7 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
         scad_env *found_env;
         fv = scad_env_lookup(ev, env, callee->str, callee->loc, 1, &found);
         if (fv.kind != SV_FUNC && !strcmp(callee->str, "is_undef") && e->args.n == 1 &&
-            e->args.v[0].value->kind == EX_VAR && !find_function(env, "is_undef", &found_env)) {
+            e->args.v[0].value->kind == EX_VAR && !find_function(ev, env, "is_undef", &found_env)) {
             /* OpenSCAD looks the variable up silently here */
             int there;
             scad_env_lookup(ev, env, e->args.v[0].value->str, e->loc, 1, &there);
@@ -660,8 +787,8 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
         }
         if (fv.kind != SV_FUNC) {
             scad_env *def_env;
-            const scad_funcdef *f = find_function(env, callee->str, &def_env);
-            if (f) return call_user_function(ev, env, e, f->name, &f->params, f->body, def_env);
+            const scad_funcdef *f = find_function(ev, env, callee->str, &def_env);
+            if (f) return call_user_function(ev, env, e, f->name, &f->params, f->body, def_env, f);
             scad_builtin_fn b = scad_builtin_function(callee->str);
             if (b) {
                 scad_argv argv;
@@ -688,7 +815,8 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
     if (owned) scad_value_drop(fv);
     const scad_expr *lit = keep.u.func->lit;
     scad_value r =
-        call_user_function(ev, env, e, "function literal", &lit->args, lit->a[0], keep.u.func->env);
+        call_user_function(ev, env, e, "function literal", &lit->args, lit->a[0], keep.u.func->env,
+                           NULL);
     scad_value_drop(keep);
     return r;
 }
@@ -1360,11 +1488,17 @@ static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const sc
     vlist_free(&items);
 }
 
-/* Stands for builtin modules that only dump mode knows (no geometry yet). */
+/* Stands for OpenSCAD's builtin modules that have no geometry here (yet):
+ * their children are still evaluated, for what they echo, and dropped. */
 static scad_geom *m_dump_only(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_argv *a, const scad_state *state)
 {
-    (void)ev, (void)env, (void)st, (void)a, (void)state;
+    if (!strcmp(st->name, "polyhedron") && !scad_argv_given(a, "faces", 1) &&
+        scad_argv_get(a, "triangles", -1).kind != SV_UNDEF)
+        scad_diag_line(ev->d, SCAD_MSG_WARNING,
+                       "DEPRECATED: polyhedron(triangles=[]) will be removed in future releases. "
+                       "Use polyhedron(faces=[]) instead.");
+    scad_eval_children(ev, env, st, state, CSG_OP_UNION);
     return NULL;
 }
 
@@ -1382,7 +1516,7 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         return r;
     }
     scad_env *def_env;
-    const scad_moddef *m = find_module(env, name, &def_env);
+    const scad_moddef *m = find_module(ev, env, name, &def_env);
     if (m) return call_module(ev, env, st, m, def_env, state);
 
     if (strcmp(name, "let") == 0) {
@@ -1399,7 +1533,7 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         return ev->dump && r ? scad_dump_node(ev, "group()", r) : r;
     }
     scad_builtin_mod bm = scad_builtin_module(name);
-    if (!bm && ev->dump && scad_dump_is_builtin(name)) bm = m_dump_only;
+    if (!bm && scad_dump_is_builtin(name)) bm = m_dump_only;
     int control = !strcmp(name, "for") || !strcmp(name, "intersection_for") ||
                   !strcmp(name, "echo") || !strcmp(name, "children");
     if (!bm && !control) {
@@ -1409,6 +1543,14 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
     scad_argv a;
     if (eval_args(ev, env, &st->args, &a)) return NULL;
     scad_geom *r = NULL;
+    /* $-arguments of a builtin are seen by its children (dynamic scope) */
+    scad_env *dollar = NULL;
+    for (int i = 0; i < a.n; i++) {
+        if (!a.names[i] || a.names[i][0] != '$') continue;
+        if (!dollar && !(dollar = env_new(ev, env, env, NULL))) break;
+        scad_env_set(dollar, a.names[i], scad_value_ref(a.v[i]));
+    }
+    if (dollar) env = dollar;
     if (ev->aborted) {
         /* nothing */
     } else if (!strcmp(name, "for") || !strcmp(name, "intersection_for")) {
@@ -1428,6 +1570,7 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         r = bm(ev, env, st, &a, state);
     }
     argv_free(&a);
+    env_free(dollar);
     return r;
 }
 

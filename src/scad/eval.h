@@ -79,6 +79,12 @@ typedef struct scad_eval {
     scad_geom **backgrounds;
     int nbackgrounds, capbackgrounds;
     int dump; /* build OpenSCAD's node tree for .csg output, no geometry */
+    scad_env *builtins; /* the root environment (PI, $fn …) */
+    /* environments of `use`d files: their top-level variables, evaluated
+     * once, below builtins */
+    const scad_scope **use_scopes;
+    scad_env **use_envs;
+    int nuse, capuse;
 } scad_eval;
 
 /* Evaluated call arguments: names[i] is NULL for positional ones. */
@@ -114,6 +120,8 @@ scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *
  * scad_env_free (a no-op for environments a closure captured). */
 scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
 void scad_env_free(scad_env *e);
+/* Frees the environments of `use`d files; call once at the end. */
+void scad_eval_free_uses(scad_eval *ev);
 /* Frees the environments closures kept alive; call once at the end. */
 void scad_eval_free_captured(scad_eval *ev);
 /* Values in a range, OpenSCAD's count (UINT32_MAX for endless ones). */

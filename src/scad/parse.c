@@ -27,7 +27,16 @@ typedef struct parser {
     int errors;
     int oom;
     int include_depth;
+    struct used_files *used; /* shared by a parse and its includes and uses */
 } parser;
+
+/* Files already `use`d in this parse, so that each is parsed once (and a
+ * cycle of uses ends). */
+typedef struct used_files {
+    const char **path;
+    scad_scope **scope;
+    int n, cap;
+} used_files;
 
 /* Raised by a failing rule: the whole statement is abandoned. */
 #define FAIL_IF(cond)                                                                              \
@@ -687,6 +696,8 @@ static int definition(parser *P, scad_scope *s)
 }
 
 static void include_file(parser *P, scad_scope *s, scad_token *t);
+static void use_file(parser *P, scad_scope *s, scad_token *t);
+static int parse_into(parser *P, scad_scope *s);
 
 /* Skip to just after the next ';' or before the '}' closing the current
  * block, so that parsing can resume after an error. */
@@ -744,7 +755,7 @@ static int statement(parser *P, scad_scope *s)
     }
     if (t->kind == TK_USE) {
         next(P);
-        scad_diag_warning(P->d, t->loc, "use <%s> is not supported; ignored", t->text);
+        use_file(P, s, t);
         return 1;
     }
     if (t->kind == TK_ID && is_ch(peek2(P), '=')) {
@@ -778,31 +789,129 @@ static int parse_into(parser *P, scad_scope *s)
 
 enum { MAX_INCLUDE_DEPTH = 64 };
 
-static void include_file(parser *P, scad_scope *s, scad_token *t)
+static char *join_path(scad_arena *a, const char *dir, size_t dl, const char *name)
 {
-    const char *from = t->loc.file;
+    size_t nl = strlen(name);
+    int sep = dl > 0 && dir[dl - 1] != '/';
+    char *p = scad_arena_alloc(a, dl + (size_t)sep + nl + 1);
+    if (!p) return NULL;
+    memcpy(p, dir, dl);
+    if (sep) p[dl] = '/';
+    memcpy(p + dl + (size_t)sep, name, nl + 1);
+    return p;
+}
+
+static int readable(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    /* a folder opens on Linux but does not read */
+    char c;
+    size_t got = fread(&c, 1, 1, f);
+    int ok = !ferror(f);
+    (void)got;
+    fclose(f);
+    return ok;
+}
+
+char *scad_find_library(scad_arena *a, const char *from, const char *name)
+{
+    if (name[0] == '/') return readable(name) ? scad_arena_strndup(a, name, strlen(name)) : NULL;
     const char *slash = strrchr(from, '/');
-    size_t dl = slash ? (size_t)(slash - from + 1) : 0;
-    size_t pl = strlen(t->text);
-    char *path = scad_arena_alloc(P->a, dl + pl + 1);
+    char *p = join_path(a, from, slash ? (size_t)(slash - from + 1) : 0, name);
+    if (p && readable(p)) return p;
+    const char *env = getenv("OPENSCADPATH");
+    while (env && *env) {
+        const char *end = strchr(env, ':');
+        size_t n = end ? (size_t)(end - env) : strlen(env);
+        if (n > 0) {
+            p = join_path(a, env, n, name);
+            if (p && readable(p)) return p;
+        }
+        env += n + (end ? 1 : 0);
+    }
+    p = join_path(a, "/usr/share/openscad/libraries", 29, name);
+    if (p && readable(p)) return p;
+    return NULL;
+}
+
+static void use_file(parser *P, scad_scope *s, scad_token *t)
+{
+    char *path = scad_find_library(P->a, t->loc.file, t->text);
     if (!path) {
-        P->oom = 1;
+        char line[600];
+        snprintf(line, sizeof line, "WARNING: Can't open library '%.500s'.", t->text);
+        scad_diag_line(P->d, SCAD_MSG_WARNING, line);
         return;
     }
-    if (t->text[0] == '/') {
-        memcpy(path, t->text, pl + 1);
-    } else {
-        memcpy(path, from, dl);
-        memcpy(path + dl, t->text, pl + 1);
+    used_files *u = P->used;
+    scad_scope *scope = NULL;
+    for (int i = 0; i < u->n; i++)
+        if (strcmp(u->path[i], path) == 0) scope = u->scope[i];
+    if (!scope) {
+        if (P->include_depth >= MAX_INCLUDE_DEPTH) {
+            scad_diag_error(P->d, t->loc, "includes nested deeper than %d files",
+                            MAX_INCLUDE_DEPTH);
+            P->errors++;
+            return;
+        }
+        scope = new_scope(P);
+        char *src = scope ? scad_read_file(P->a, path) : NULL;
+        if (!src) {
+            P->oom = 1;
+            return;
+        }
+        if (u->n == u->cap) {
+            int cap = u->cap ? u->cap * 2 : 8;
+            const char **np = alloc(P, sizeof *np * (size_t)cap);
+            scad_scope **ns = alloc(P, sizeof *ns * (size_t)cap);
+            if (!np || !ns) return;
+            if (u->n) {
+                memcpy(np, u->path, sizeof *np * (size_t)u->n);
+                memcpy(ns, u->scope, sizeof *ns * (size_t)u->n);
+            }
+            u->path = np;
+            u->scope = ns;
+            u->cap = cap;
+        }
+        u->path[u->n] = path;
+        u->scope[u->n] = scope;
+        u->n++;
+        scad_token *toks;
+        int n = scad_lex(P->a, P->d, path, src, &toks);
+        if (!toks) {
+            P->oom = 1;
+            return;
+        }
+        parser sub = *P;
+        sub.t = toks;
+        sub.ntok = n;
+        sub.pos = 0;
+        sub.depth = 0;
+        sub.include_depth++;
+        parse_into(&sub, scope);
+        P->errors = sub.errors;
+        P->oom |= sub.oom;
     }
+    for (int i = 0; i < s->nuses; i++)
+        if (s->uses[i] == scope) return;
+    s->uses = grow(P, s->uses, s->nuses, &s->capuses, sizeof *s->uses);
+    if (s->uses) s->uses[s->nuses++] = scope;
+}
+
+static void include_file(parser *P, scad_scope *s, scad_token *t)
+{
     if (P->include_depth >= MAX_INCLUDE_DEPTH) {
         scad_diag_error(P->d, t->loc, "includes nested deeper than %d files", MAX_INCLUDE_DEPTH);
         P->errors++;
         return;
     }
-    char *src = scad_read_file(P->a, path);
+    char *path = scad_find_library(P->a, t->loc.file, t->text);
+    char *src = path ? scad_read_file(P->a, path) : NULL;
     if (!src) {
-        scad_diag_warning(P->d, t->loc, "Can't open include file '%s'.", t->text);
+        char line[600];
+        snprintf(line, sizeof line, "WARNING: Can't open include file '%.500s'.", t->text);
+        scad_diag_line(P->d, SCAD_MSG_WARNING, line);
         return;
     }
     scad_token *toks;
@@ -823,7 +932,8 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
 
 scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file, const char *src)
 {
-    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0};
+    used_files used = {NULL, NULL, 0, 0};
+    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, &used};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, file, src, &P.t);
     if (!P.t) {

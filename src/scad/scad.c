@@ -142,6 +142,7 @@ static void run_job(job *j)
     }
     scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
     scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
+    ev.builtins = builtins;
     if (file) {
         set_num(builtins, "PI", 3.14159265358979323846);
         set_num(builtins, "$fn", 0);
@@ -153,6 +154,18 @@ static void run_job(job *j)
         set_vec3(builtins, "$vpr", 0, 0, 0);
         set_vec3(builtins, "$vpt", 0, 0, 0);
         scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
+        /* openscad's camera takes the file's own $vp* values over its
+         * --viewall/--autocenter defaults, and says so */
+        int vp = 0;
+        for (int i = 0; i < file->nvars; i++) {
+            const char *n = file->vars[i].name;
+            if (!strncmp(n, "$vp", 3) && strchr("drtf", n[3]) && !n[4] &&
+                file->vars[i].v.kind != SV_UNDEF)
+                vp = 1;
+        }
+        if (vp && !ev.aborted)
+            scad_diag_line(j->d, SCAD_MSG_WARNING,
+                           "WARNING: Viewall and autocenter disabled in favor of $vp*");
         if (!ev.aborted && j->dump) {
             scad_dump_write(j->dump, ev.has_root ? ev.root : model);
             if (j->dump->oom)
@@ -174,6 +187,7 @@ static void run_job(job *j)
         }
     }
     scad_env_free(file);
+    scad_eval_free_uses(&ev);
     scad_env_free(builtins);
     scad_eval_free_captured(&ev);
     free(ev.highlights);
