@@ -57,7 +57,7 @@ CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare asan bench clean format
+.PHONY: all deps demo test unit cli compare conformance asan bench clean format
 .DEFAULT_GOAL := all
 
 all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
@@ -111,16 +111,21 @@ cli: all
 compare: all
 	tests/compare_openscad.sh $(BUILD)
 
+conformance: all
+	tests/conformance.sh $(BUILD)
+
 test: deps
 	$(MAKE) all
 	$(MAKE) unit
 	$(MAKE) cli
+	$(MAKE) conformance
 	$(MAKE) compare
 
 asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" all
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" unit
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" cli
+	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" conformance
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" compare
 
 bench: deps all
