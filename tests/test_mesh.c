@@ -577,13 +577,141 @@ Test(mesh_contour, stress_manifold)
     }
 }
 
+/* Random scenes: unions, differences and intersections of boxes, spheres and
+ * cones under random rotations, at random resolutions.  The seed is fixed
+ * and printed with any failure. */
+static uint64_t rng;
+static double urand(double lo, double hi)
+{
+    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(rng >> 11) / 9007199254740992.0;
+}
+
+static csg_node *random_leaf(void)
+{
+    /* A random rotation (from a random unit quaternion) and translation. */
+    double q[4], n = 0;
+    for (int k = 0; k < 4; k++) {
+        q[k] = urand(-1, 1);
+        n += q[k] * q[k];
+    }
+    n = sqrt(n);
+    double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
+    csg_affine m = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), urand(-2, 2),
+                    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), urand(-2, 2),
+                    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), urand(-2, 2)};
+    iv_shape s;
+    memset(&s, 0, sizeof s);
+    int kind = (int)urand(0, 3);
+    if (kind == 0) {
+        s.kind = IV_SHAPE_BOX;
+        for (int c = 0; c < 3; c++) {
+            s.u.box.lo[c] = urand(-2.5, -0.2);
+            s.u.box.hi[c] = urand(0.2, 2.5);
+        }
+    } else if (kind == 1) {
+        s.kind = IV_SHAPE_SPHERE;
+        s.u.sphere.r = urand(0.3, 2.5);
+    } else {
+        s.kind = IV_SHAPE_CONE;
+        s.u.cone.r1 = urand(0, 2);
+        s.u.cone.r2 = urand(0, 2);
+        if (s.u.cone.r1 + s.u.cone.r2 < 0.2)
+            s.u.cone.r1 = 0.5;
+        s.u.cone.h = urand(0.3, 4);
+    }
+    return csg_node_shape(&s, m, &plain);
+}
+
+static csg_node *random_tree(int depth)
+{
+    if (depth == 0 || urand(0, 1) < 0.3)
+        return random_leaf();
+    static const csg_op ops[3] = {CSG_OP_UNION, CSG_OP_DIFFERENCE, CSG_OP_INTERSECTION};
+    csg_node *n = csg_node_op(ops[(int)urand(0, 3)]);
+    int kids = 2 + (int)urand(0, 2);
+    for (int k = 0; k < kids; k++)
+        cr_assert(csg_node_add(n, random_tree(depth - 1)) == 0);
+    return n;
+}
+
+Test(mesh_contour, random_scenes_are_manifold)
+{
+    const uint64_t seed = 20240611;
+    rng = seed;
+    int meshed = 0;
+    for (int trial = 0; trial < 40; trial++) {
+        csg_scene *s = scene_of(random_tree(3));
+        mesh_options o;
+        mesh_options_default(&o);
+        o.cells_per_side = 12 + (int)urand(0, 40);
+        o.threads = 2;
+        mesh *m = NULL;
+        mesh_measure mm;
+        char err[256] = "";
+        cr_assert(mesh_from_scene(s, &o, &m, &mm, err, sizeof err) == 0, "seed %llu trial %d: %s",
+                  (unsigned long long)seed, trial, err);
+        if (mesh_triangle_count(m) > 0) {
+            meshed++;
+            const char *msg = check_manifold(m);
+            cr_assert_null(msg, "seed %llu trial %d (%d cells): %s", (unsigned long long)seed,
+                           trial, o.cells_per_side, msg);
+            mesh_dexels *dx;
+            double h, org[3];
+            int n[3];
+            cr_assert(mesh_dexels_new(s, &o, &dx, err, sizeof err) == 0);
+            mesh_dexels_grid(dx, &h, org, n);
+            mesh_dexels_free(dx);
+            cr_assert_gt(min_area(m), 1e-7 * h * h, "seed %llu trial %d: zero-area triangle",
+                         (unsigned long long)seed, trial);
+            double sv = volume_of(m);
+            /* Thin parts below h may be lost or added: a loose bound. */
+            cr_assert_lt(fabs(sv - mm.volume), 0.1 * mm.volume + 2 * mm.area * h,
+                         "seed %llu trial %d: mesh volume %g vs measured %g",
+                         (unsigned long long)seed, trial, sv, mm.volume);
+        }
+        mesh_free(m);
+        csg_scene_free(s);
+    }
+    cr_assert_gt(meshed, 20, "only %d of 40 random scenes were non-empty", meshed);
+}
+
+Test(mesh_io, decimate_keeps_shape)
+{
+    csg_scene *s = csg_example();
+    mesh_measure mm;
+    double h = 20.0 / 24;
+    mesh *m = contour(s, h, &mm);
+    float *v = NULL;
+    int32_t *t = NULL;
+    int nv = 0, nt = 0;
+    char err[256] = "";
+    cr_assert(io_mesh_decimate(mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
+                               mesh_triangle_count(m), h / 20, &v, &nv, &t, &nt, err,
+                               sizeof err) == 0,
+              "%s", err);
+    mesh *d = mesh_new_from_arrays(v, nv, t, nt);
+    cr_assert(d);
+    cr_log_info("decimate tol h/20: %d -> %d triangles", mesh_triangle_count(m), nt);
+    cr_assert_lt(nt, mesh_triangle_count(m) / 2, "decimation removed too little");
+    cr_assert_null(check_manifold(d));
+    cr_assert_lt(fabs(volume_of(d) - volume_of(m)), 5e-3 * volume_of(m), "volume %g vs %g",
+                 volume_of(d), volume_of(m));
+    cr_assert_lt(max_dist(d, sd_csg_ctx, NULL), h, "decimated vertex off the surface");
+    free(v);
+    free(t);
+    mesh_free(d);
+    mesh_free(m);
+    csg_scene_free(s);
+}
+
 /* ---- files through OpenMesh --------------------------------------------- */
 
 Test(mesh_io, write_read_round_trip)
 {
     csg_scene *s = csg_example();
     mesh_measure mm;
-    mesh *m = contour(s, 20.0 / 48, &mm);
+    mesh *m = contour(s, 20.0 / 24, &mm);
     char dir[] = "/tmp/rayscad_mesh_XXXXXX";
     cr_assert(mkdtemp(dir));
     const char *ext[] = {"stl", "stl", "off", "obj", "ply"};

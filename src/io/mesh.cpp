@@ -295,6 +295,12 @@ int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double to
         typedef OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle Flipping;
         m.request_face_normals();
         m.update_face_normals();
+        /* Held here too, so they outlive the decimater (which releases its
+         * own requests) until garbage_collection has used them. */
+        m.request_vertex_status();
+        m.request_edge_status();
+        m.request_halfedge_status();
+        m.request_face_status();
         {
             Decimater dec(m);
             Quadric q;
