@@ -144,6 +144,7 @@ int main(int argc, char **argv)
     scad_options so = {
         .defines = o.defines,
         .define_count = o.define_count,
+        .facets = o.facets,
         .message = on_message,
         .ud = &msgs,
     };

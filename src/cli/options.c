@@ -6,6 +6,8 @@
  */
 #include "options.h"
 
+#include "../scad/scad.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -31,6 +33,8 @@ const char cli_usage[] =
     "  --colorscheme=NAME      OpenSCAD colour scheme (default Cornfield)\n"
     "  --samples N             N×N stratified samples per pixel (default 1)\n"
     "  --threads N             worker threads (default: all cores)\n"
+    "  --facets=MODE           round primitives: auto (default; smooth unless\n"
+    "                          $fn <= 16), smooth (exact), openscad (its facets)\n"
     "\n"
     "Light model (opt-in; without these and $rs_ variables the image looks like\n"
     "OpenSCAD's preview):\n"
@@ -221,7 +225,8 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
     o->view.kind = RENDER_CAMERA_DEFAULT;
 
     static const char *const valued[] = {"-o",         "-D",        "--camera",  "--imgsize",
-                                         "--projection", "--colorscheme", "--samples", "--threads"};
+                                         "--projection", "--colorscheme", "--samples", "--threads",
+                                         "--facets"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = NULL;
@@ -302,6 +307,14 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             else if (val[0] == 'p' || val[0] == 'P') o->view.ortho = 0;
             else {
                 snprintf(err, errlen, "--projection expects p or o, got '%s'", val);
+                return -1;
+            }
+        } else if (strcmp(flag, "--facets") == 0) {
+            if (strcmp(val, "auto") == 0) o->facets = SCAD_FACETS_AUTO;
+            else if (strcmp(val, "smooth") == 0) o->facets = SCAD_FACETS_SMOOTH;
+            else if (strcmp(val, "openscad") == 0) o->facets = SCAD_FACETS_OPENSCAD;
+            else {
+                snprintf(err, errlen, "--facets expects auto, smooth or openscad, got '%s'", val);
                 return -1;
             }
         } else if (strcmp(flag, "--colorscheme") == 0) {

@@ -20,6 +20,7 @@ typedef struct cli_options {
     int samples;
     int threads;
     int help, version;
+    int facets; /* a scad_facets: --facets=auto|smooth|openscad */
     /* The opt-in light model (--shadows, --light, --bounces, --refract,
      * --aperture, --focus, --xray, --absorb, --light-samples, --seed): only
      * the fields of render_options below `ud` are set. */

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "builtin_geometry.h"
 #include "eval.h"
 #include "material.h"
 
@@ -410,6 +411,8 @@ static const struct {
 
 scad_builtin_mod scad_builtin_module(const char *name)
 {
+    scad_builtin_mod g = scad_geometry_module(name); /* 2D, extrusions, facets */
+    if (g) return g;
     for (size_t i = 0; i < sizeof table / sizeof table[0]; i++)
         if (strcmp(table[i].name, name) == 0) return table[i].fn;
     return NULL;

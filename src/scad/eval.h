@@ -85,6 +85,11 @@ typedef struct scad_eval {
     const scad_scope **use_scopes;
     scad_env **use_envs;
     int nuse, capuse;
+    int facets; /* scad_facets, from the options */
+    /* shape data made by builtin_geometry.c, one reference each, dropped by
+     * scad_geometry_release */
+    iv_shape *owned;
+    int nowned, capowned;
 } scad_eval;
 
 /* Evaluated call arguments: names[i] is NULL for positional ones. */

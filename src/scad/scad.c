@@ -17,6 +17,7 @@
 #include <sys/resource.h>
 #include <time.h>
 
+#include "builtin_geometry.h"
 #include "eval.h"
 
 enum { DEFAULT_MAX_RECURSION = 10000 };
@@ -143,6 +144,7 @@ static void run_job(job *j)
     scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
     scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
     ev.builtins = builtins;
+    ev.facets = j->opt ? j->opt->facets : SCAD_FACETS_AUTO;
     if (file) {
         set_num(builtins, "PI", 3.14159265358979323846);
         set_num(builtins, "$fn", 0);
@@ -190,6 +192,7 @@ static void run_job(job *j)
     scad_eval_free_uses(&ev);
     scad_env_free(builtins);
     scad_eval_free_captured(&ev);
+    scad_geometry_release(&ev); /* after to_csg: the nodes hold their own */
     free(ev.highlights);
     free(ev.backgrounds);
     scad_arena_free(ev.arena);

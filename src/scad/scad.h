@@ -28,7 +28,18 @@ typedef struct scad_options {
     void *ud;
     /* Limits; 0 picks the default. */
     int max_recursion; /* nested module/function calls, default 10000 */
+    /* How round primitives are built (a scad_facets; 0 is AUTO). */
+    int facets;
 } scad_options;
+
+/* SMOOTH: spheres, cylinders and circles are exact; OPENSCAD: each is the
+ * polytope or polygon OpenSCAD 2021.01 tessellates it into; AUTO: smooth,
+ * unless $fn is set to at most 16, where facets are meant to show. */
+typedef enum scad_facets {
+    SCAD_FACETS_AUTO = 0,
+    SCAD_FACETS_SMOOTH,
+    SCAD_FACETS_OPENSCAD
+} scad_facets;
 
 /* What a file evaluates to.  Each tree may be NULL (nothing there). */
 typedef struct scad_result {

@@ -1,0 +1,853 @@
+/*
+ * builtin_geometry.c — the geometry modules beyond cube/sphere/cylinder and
+ * the transforms: square, circle, polygon, polyhedron, linear_extrude,
+ * rotate_extrude, hull, and sphere/cylinder again with OpenSCAD's facets.
+ *
+ * Facets (scad_options.facets): SMOOTH keeps every round primitive
+ * analytic; OPENSCAD builds each sphere, cylinder and circle exactly as
+ * OpenSCAD 2021.01 tessellates it (get_fragments_from_r, the sphere's rings
+ * at polar angles 180·(i + ½)/rings) — a convex polytope, or a polygon;
+ * AUTO, the default, is smooth unless $fn is set to a count of at most 16,
+ * where the facets are meant to be seen.
+ *
+ * 2D objects are prisms over a region (or a disc) between z = -1 and z = 1,
+ * which is how OpenSCAD's preview draws them.  The extrusions are point maps
+ * from 3D to the plane — p is in linear_extrude(h) of S when its shadow is
+ * in S and 0 <= z <= h; p is in rotate_extrude of S when (|p_xy|, p_z) is —
+ * and a preimage commutes with union, intersection and difference.  So an
+ * extrusion keeps its children's CSG tree and only replaces each 2D leaf by
+ * the extrusion of that leaf: the prism's z range for linear_extrude, a
+ * revolve of the leaf's region (with the leaf's own 2D transform baked in)
+ * for rotate_extrude.
+ *
+ * Ownership: every shape with shared data made here is recorded in
+ * ev->owned, which holds one reference; scad_geometry_release drops them all
+ * once the csg nodes (which retain their own) exist.
+ */
+#include "builtin_geometry.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define GRID_FINE 0.00000095367431640625 /* OpenSCAD's smallest radius */
+
+/* ---- small helpers ---------------------------------------------------------- */
+
+static int num_of(scad_value v, double *x)
+{
+    if (v.kind != SV_NUM) return 0;
+    *x = v.u.num;
+    return 1;
+}
+
+/* Keep a reference to s's data until the end of the evaluation.  Returns 0,
+ * or -1 when out of memory (then s's data is already released). */
+static int own(scad_eval *ev, iv_shape *s)
+{
+    if (ev->nowned == ev->capowned) {
+        int cap = ev->capowned ? 2 * ev->capowned : 16;
+        iv_shape *v = realloc(ev->owned, (size_t)cap * sizeof *v);
+        if (!v) {
+            iv_shape_release(s);
+            return -1;
+        }
+        ev->owned = v;
+        ev->capowned = cap;
+    }
+    ev->owned[ev->nowned++] = *s;
+    return 0;
+}
+
+void scad_geometry_release(scad_eval *ev)
+{
+    for (int i = 0; i < ev->nowned; i++)
+        iv_shape_release(&ev->owned[i]);
+    free(ev->owned);
+    ev->owned = NULL;
+    ev->nowned = ev->capowned = 0;
+}
+
+static scad_geom *leaf_at(scad_eval *ev, const iv_shape *s, const scad_state *state,
+                          const csg_affine local)
+{
+    scad_state st = *state;
+    if (local) csg_affine_mul(state->xf, local, st.xf);
+    return scad_geom_leaf(ev, s, &st);
+}
+
+/* ---- facets ------------------------------------------------------------------ */
+
+typedef struct facets {
+    double fn, fa, fs;
+} facets;
+
+static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name,
+                      scad_loc loc, double dflt)
+{
+    double x;
+    if (num_of(scad_argv_get(a, name, -1), &x)) return x;
+    int found;
+    if (num_of(scad_env_lookup(ev, env, name, loc, 1, &found), &x)) return x;
+    return dflt;
+}
+
+static facets facets_of(scad_eval *ev, scad_env *env, const scad_argv *a, scad_loc loc)
+{
+    facets f = {special(ev, env, a, "$fn", loc, 0), special(ev, env, a, "$fa", loc, 12),
+                special(ev, env, a, "$fs", loc, 2)};
+    return f;
+}
+
+/* OpenSCAD 2021.01 Calc::get_fragments_from_r, with its guards: $fa and
+ * $fs below 0.01 are raised to it there, which only matters for nonsense
+ * input; a count is capped so that one primitive stays a few MB. */
+static int fragments(double r, facets f)
+{
+    if (r < GRID_FINE) return 3;
+    if (f.fn > 0) return f.fn >= 3 ? (f.fn > 100000 ? 100000 : (int)f.fn) : 3;
+    double fa = f.fa < 0.01 ? 0.01 : f.fa, fs = f.fs < 0.01 ? 0.01 : f.fs;
+    double n = ceil(fmax(fmin(360.0 / fa, r * 2 * PI / fs), 5));
+    return n > 100000 ? 100000 : (int)n;
+}
+
+static int faceted(const scad_eval *ev, facets f)
+{
+    if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
+    if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
+    return f.fn > 0 && f.fn <= 16;
+}
+
+/* Circle point i of n at radius r, OpenSCAD's generate_circle. */
+static void circle_pt(double r, int i, int n, double out[2])
+{
+    double a = 360.0 * i / n;
+    out[0] = r * scad_cos_degrees(a);
+    out[1] = r * scad_sin_degrees(a);
+}
+
+/* ---- sphere, cylinder ------------------------------------------------------- */
+
+/* OpenSCAD's lookup_radius: d/2 wins over r, with a warning when both. */
+static int radius(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *dname,
+                  const char *rname, int rpos, double *out)
+{
+    scad_value d = scad_argv_get(a, dname, -1);
+    scad_value r = scad_argv_get(a, rname, rpos);
+    double x;
+    if (num_of(d, &x)) {
+        if (r.kind == SV_NUM)
+            scad_diag_warning(ev->d, loc,
+                              "Ignoring radius variable '%s' as diameter '%s' is defined too.",
+                              rname, dname);
+        *out = x / 2;
+        return 1;
+    }
+    if (num_of(r, &x)) {
+        *out = x;
+        return 1;
+    }
+    return 0;
+}
+
+static scad_geom *hull_leaf(scad_eval *ev, const double (*P)[3], int n, const scad_state *state,
+                            const csg_affine local)
+{
+    iv_shape s;
+    if (iv_shape_hull(&s, P, n) != 0 || own(ev, &s) != 0) return NULL;
+    return leaf_at(ev, &s, state, local);
+}
+
+static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
+{
+    static const char *const known[] = {"r", "d", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double r = 1;
+    radius(ev, a, st->loc, "d", "r", 0, &r);
+    if (!(r > 0) || !isfinite(r)) return NULL;
+    facets f = facets_of(ev, env, a, st->loc);
+    iv_shape sh;
+    memset(&sh, 0, sizeof sh);
+    if (!faceted(ev, f)) {
+        sh.kind = IV_SHAPE_SPHERE;
+        sh.u.sphere.r = r;
+        return leaf_at(ev, &sh, state, NULL);
+    }
+    int n = fragments(r, f), rings = (n + 1) / 2;
+    double(*P)[3] = malloc((size_t)n * (size_t)rings * sizeof *P);
+    if (!P) return NULL;
+    for (int i = 0; i < rings; i++) {
+        double phi = 180.0 * (i + 0.5) / rings;
+        double rr = r * scad_sin_degrees(phi), z = r * scad_cos_degrees(phi);
+        for (int j = 0; j < n; j++) {
+            double c[2];
+            circle_pt(rr, j, n, c);
+            P[i * n + j][0] = c[0];
+            P[i * n + j][1] = c[1];
+            P[i * n + j][2] = z;
+        }
+    }
+    scad_geom *g = hull_leaf(ev, (const double(*)[3])P, n * rings, state, NULL);
+    free(P);
+    return g;
+}
+
+static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                             const scad_state *state)
+{
+    static const char *const known[] = {"h", "r1", "r2", "center", "r", "d", "d1", "d2", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double h = 1, r1 = 1, r2 = 1, r;
+    num_of(scad_argv_get(a, "h", 0), &h);
+    int has_r = radius(ev, a, st->loc, "d", "r", -1, &r);
+    double x1, x2;
+    int has_r1 = radius(ev, a, st->loc, "d1", "r1", 1, &x1);
+    int has_r2 = radius(ev, a, st->loc, "d2", "r2", 2, &x2);
+    if (has_r) r1 = r2 = r;
+    if (has_r1) r1 = x1;
+    if (has_r2) r2 = x2;
+    scad_value c = scad_argv_get(a, "center", 3);
+    int center = c.kind == SV_BOOL && c.u.b;
+    if (!(h > 0) || !isfinite(h) || !(r1 >= 0) || !(r2 >= 0) || !isfinite(r1) || !isfinite(r2) ||
+        (r1 == 0 && r2 == 0))
+        return NULL;
+    csg_affine t = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, center ? -h / 2 : 0};
+    facets f = facets_of(ev, env, a, st->loc);
+    iv_shape sh;
+    memset(&sh, 0, sizeof sh);
+    if (!faceted(ev, f)) {
+        sh.kind = IV_SHAPE_CONE;
+        sh.u.cone.r1 = r1;
+        sh.u.cone.r2 = r2;
+        sh.u.cone.h = h;
+        return leaf_at(ev, &sh, state, t);
+    }
+    int n = fragments(fmax(r1, r2), f), np = 0;
+    double(*P)[3] = malloc((size_t)(2 * n) * sizeof *P);
+    if (!P) return NULL;
+    for (int k = 0; k < 2; k++) {
+        double rr = k ? r2 : r1;
+        if (rr == 0) { /* an apex: one point */
+            P[np][0] = P[np][1] = 0;
+            P[np++][2] = k ? h : 0;
+            continue;
+        }
+        for (int j = 0; j < n; j++) {
+            double cp[2];
+            circle_pt(rr, j, n, cp);
+            P[np][0] = cp[0];
+            P[np][1] = cp[1];
+            P[np++][2] = k ? h : 0;
+        }
+    }
+    scad_geom *g = hull_leaf(ev, (const double(*)[3])P, np, state, t);
+    free(P);
+    return g;
+}
+
+/* ---- 2D ------------------------------------------------------------------------- */
+
+/* A 2D leaf: region g (its reference passes to the evaluation) in the
+ * preview slab. */
+static scad_geom *region_leaf(scad_eval *ev, iv_region *g, const scad_state *state)
+{
+    if (!g) return NULL;
+    iv_shape s;
+    iv_shape_prism(&s, g, -1, 1);
+    iv_region_release(g); /* the shape holds it now */
+    if (own(ev, &s) != 0) return NULL;
+    return leaf_at(ev, &s, state, NULL);
+}
+
+static iv_region *circle_region(double r, int n)
+{
+    double(*P)[2] = malloc((size_t)n * sizeof *P);
+    if (!P) return NULL;
+    for (int i = 0; i < n; i++)
+        circle_pt(r, i, n, P[i]);
+    int st[2] = {0, n};
+    iv_region *g = iv_region_new((const double(*)[2])P, st, 1);
+    free(P);
+    return g;
+}
+
+static scad_geom *m_square(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"size", "center", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double s[2] = {1, 1}, x;
+    scad_value size = scad_argv_get(a, "size", 0);
+    if (num_of(size, &x)) {
+        s[0] = s[1] = x;
+    } else if (size.kind == SV_VEC) {
+        if (size.u.vec->n < 2 || !num_of(size.u.vec->v[0], &s[0]) ||
+            !num_of(size.u.vec->v[1], &s[1]))
+            return NULL;
+    }
+    if (!(s[0] > 0) || !(s[1] > 0) || !isfinite(s[0]) || !isfinite(s[1])) return NULL;
+    scad_value c = scad_argv_get(a, "center", 1);
+    int center = c.kind == SV_BOOL && c.u.b;
+    double x0 = center ? -s[0] / 2 : 0, y0 = center ? -s[1] / 2 : 0;
+    double P[4][2] = {{x0, y0}, {x0 + s[0], y0}, {x0 + s[0], y0 + s[1]}, {x0, y0 + s[1]}};
+    int ps[2] = {0, 4};
+    return region_leaf(ev, iv_region_new((const double(*)[2])P, ps, 1), state);
+}
+
+static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
+{
+    static const char *const known[] = {"r", "d", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double r = 1;
+    radius(ev, a, st->loc, "d", "r", 0, &r);
+    if (!(r > 0) || !isfinite(r)) return NULL;
+    facets f = facets_of(ev, env, a, st->loc);
+    if (faceted(ev, f)) return region_leaf(ev, circle_region(r, fragments(r, f)), state);
+    iv_shape s;
+    memset(&s, 0, sizeof s);
+    s.kind = IV_SHAPE_PRISM;
+    s.u.prism.r = r;
+    s.u.prism.z0 = -1;
+    s.u.prism.z1 = 1;
+    return leaf_at(ev, &s, state, NULL);
+}
+
+/* A vector of n-vectors of numbers (n = 2 or 3; a 2-vector is read with z
+ * = 0 when n is 3) into a malloc'd array; NULL when v is not one. */
+static double *points_of(scad_value v, int n, int *count)
+{
+    if (v.kind != SV_VEC || v.u.vec->n == 0) return NULL;
+    int m = v.u.vec->n;
+    double *P = calloc((size_t)m * (size_t)n, sizeof *P);
+    if (!P) return NULL;
+    for (int i = 0; i < m; i++) {
+        scad_value p = v.u.vec->v[i];
+        if (p.kind != SV_VEC || p.u.vec->n < 2) goto bad;
+        for (int k = 0; k < n && k < p.u.vec->n; k++)
+            if (!num_of(p.u.vec->v[k], &P[i * n + k]) || !isfinite(P[i * n + k])) goto bad;
+    }
+    *count = m;
+    return P;
+bad:
+    free(P);
+    return NULL;
+}
+
+/* Index lists (paths or faces) flattened: idx and start (count + 1). */
+static int index_lists(scad_value v, int npts, int **idx, int **start, int *count)
+{
+    *idx = NULL;
+    *start = NULL;
+    if (v.kind != SV_VEC) return -1;
+    int m = v.u.vec->n, total = 0;
+    for (int i = 0; i < m; i++) {
+        if (v.u.vec->v[i].kind != SV_VEC) return -1;
+        total += v.u.vec->v[i].u.vec->n;
+    }
+    *idx = malloc((size_t)(total ? total : 1) * sizeof **idx);
+    *start = malloc((size_t)(m + 1) * sizeof **start);
+    if (!*idx || !*start) return -1;
+    int k = 0;
+    for (int i = 0; i < m; i++) {
+        (*start)[i] = k;
+        const scad_vec *f = v.u.vec->v[i].u.vec;
+        for (int j = 0; j < f->n; j++) {
+            double x;
+            if (!num_of(f->v[j], &x) || !(x >= 0) || !(x < npts)) return -1;
+            (*idx)[k++] = (int)x;
+        }
+    }
+    (*start)[m] = k;
+    *count = m;
+    return 0;
+}
+
+static scad_geom *m_polygon(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                            const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"points", "paths", "convexity", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    int n = 0;
+    double *P = points_of(scad_argv_get(a, "points", 0), 2, &n);
+    if (!P) return NULL;
+    scad_value paths = scad_argv_get(a, "paths", 1);
+    iv_region *g = NULL;
+    if (paths.kind == SV_UNDEF) {
+        int ps[2] = {0, n};
+        g = iv_region_new((const double(*)[2])P, ps, 1);
+    } else {
+        int *idx, *start, np;
+        if (index_lists(paths, n, &idx, &start, &np) == 0 && np > 0) {
+            double(*Q)[2] = malloc((size_t)(start[np] ? start[np] : 1) * sizeof *Q);
+            if (Q) {
+                for (int i = 0; i < start[np]; i++) {
+                    Q[i][0] = P[2 * idx[i]];
+                    Q[i][1] = P[2 * idx[i] + 1];
+                }
+                g = iv_region_new((const double(*)[2])Q, start, np);
+                free(Q);
+            }
+        } else {
+            scad_diag_warning(ev->d, st->loc, "polygon(): paths must be lists of point indices");
+        }
+        free(idx);
+        free(start);
+    }
+    free(P);
+    return region_leaf(ev, g, state);
+}
+
+/* ---- polyhedron ----------------------------------------------------------------- */
+
+static scad_geom *m_polyhedron(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_argv *a, const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"points", "faces", "triangles", "convexity", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    int n = 0;
+    double *P = points_of(scad_argv_get(a, "points", 0), 3, &n);
+    if (!P) return NULL;
+    scad_value faces = scad_argv_get(a, "faces", 1);
+    if (faces.kind == SV_UNDEF) {
+        faces = scad_argv_get(a, "triangles", -1);
+        if (faces.kind != SV_UNDEF)
+            scad_diag_warning(ev->d, st->loc,
+                              "polyhedron(triangles=[]) will be removed in future releases. "
+                              "Use polyhedron(faces=[]) instead.");
+    }
+    int *idx, *start, nf;
+    scad_geom *g = NULL;
+    if (index_lists(faces, n, &idx, &start, &nf) != 0 || nf == 0) {
+        scad_diag_warning(ev->d, st->loc, "polyhedron(): faces must be lists of point indices");
+    } else {
+        iv_shape s;
+        int rc = iv_shape_mesh(&s, (const double(*)[3])P, n, idx, start, nf);
+        if (rc == 1)
+            scad_diag_warning(ev->d, st->loc,
+                              "polyhedron() is not closed (an edge is not shared by exactly "
+                              "two faces); it is rendered best effort");
+        if (rc >= 0 && own(ev, &s) == 0) g = leaf_at(ev, &s, state, NULL);
+    }
+    free(idx);
+    free(start);
+    free(P);
+    return g;
+}
+
+/* ---- extrusions ------------------------------------------------------------------ */
+
+/* The leaf's 2D transform in the extrusion's frame: local_from_world ∘
+ * leaf.xf with its z row and column dropped (OpenSCAD extrudes the
+ * shadow). */
+static void leaf_2d(const csg_affine local_from_world, const csg_affine leaf_xf, csg_affine out)
+{
+    csg_affine t;
+    csg_affine_mul(local_from_world, leaf_xf, t);
+    csg_affine r = {t[0], t[1], 0, t[3], t[4], t[5], 0, t[7], 0, 0, 1, 0};
+    memcpy(out, r, sizeof r);
+}
+
+/* A node that is the empty set. */
+static void make_empty(scad_geom *g)
+{
+    g->is_leaf = 0;
+    g->op = CSG_OP_UNION;
+    g->n = 0;
+}
+
+static void linear_tree(scad_geom *g, const csg_affine local_from_world,
+                        const csg_affine world_from_local, double z0, double z1)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            linear_tree(g->kids[i], local_from_world, world_from_local, z0, z1);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) { /* a 3D child: OpenSCAD ignores it */
+        make_empty(g);
+        return;
+    }
+    csg_affine t;
+    leaf_2d(local_from_world, g->xf, t);
+    csg_affine_mul(world_from_local, t, g->xf);
+    g->shape.u.prism.z0 = z0;
+    g->shape.u.prism.z1 = z1;
+}
+
+static scad_geom *m_linear_extrude(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                   const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"height", "center", "convexity", "twist",  "slices",
+                                        "scale",  "file",   "layer",     "origin", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double h = 100, x;
+    /* OpenSCAD reads a first positional number as the height */
+    if (num_of(scad_argv_get(a, "height", 0), &x)) h = x;
+    if (!(h > 0) || !isfinite(h)) return NULL;
+    scad_value c = scad_argv_get(a, "center", -1);
+    int center = c.kind == SV_BOOL && c.u.b;
+    /* twist and scale are not built yet: the straight prism (README) */
+    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
+    linear_tree(kids, inv, state->xf, center ? -h / 2 : 0, center ? h / 2 : h);
+    return kids;
+}
+
+typedef struct revolve_ctx {
+    scad_eval *ev;
+    const double *local_from_world;
+    const double *world_place; /* world_from_local ∘ the flips */
+    double xmin, xmax;
+    double angle;
+    double sign; /* -1: the profile is on the negative side, mirrored */
+    int disc_fragments_smooth;
+    facets f;
+} revolve_ctx;
+
+/* The region of a 2D leaf in the extrusion's frame (a new reference), with
+ * x multiplied by sign; NULL when out of memory. */
+static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
+{
+    csg_affine t;
+    leaf_2d(c->local_from_world, g->xf, t);
+    const iv_region *src = g->shape.u.prism.g;
+    iv_region *tmp = NULL;
+    if (!src) {
+        double r = g->shape.u.prism.r;
+        int n = faceted(c->ev, c->f) ? fragments(r, c->f) : c->disc_fragments_smooth;
+        tmp = circle_region(r, n);
+        if (!tmp) return NULL;
+        src = tmp;
+    }
+    int n, np;
+    const double(*P)[2] = iv_region_points(src, &n);
+    const int *ps = iv_region_paths(src, &np);
+    double(*Q)[2] = malloc((size_t)n * sizeof *Q);
+    iv_region *out = NULL;
+    if (Q) {
+        for (int i = 0; i < n; i++) {
+            Q[i][0] = sign * (t[0] * P[i][0] + t[1] * P[i][1] + t[3]);
+            Q[i][1] = t[4] * P[i][0] + t[5] * P[i][1] + t[7];
+        }
+        out = iv_region_new((const double(*)[2])Q, ps, np);
+        free(Q);
+    }
+    if (tmp) iv_region_release(tmp);
+    return out;
+}
+
+static void revolve_scan(revolve_ctx *c, const scad_geom *g)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            revolve_scan(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) return;
+    iv_region *r = leaf_region(c, g, 1);
+    if (!r) return;
+    int n;
+    const double(*P)[2] = iv_region_points(r, &n);
+    for (int i = 0; i < n; i++) {
+        c->xmin = fmin(c->xmin, P[i][0]);
+        c->xmax = fmax(c->xmax, P[i][0]);
+    }
+    iv_region_release(r);
+}
+
+static void revolve_tree(revolve_ctx *c, scad_geom *g)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            revolve_tree(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) {
+        make_empty(g);
+        return;
+    }
+    iv_region *r = leaf_region(c, g, c->sign);
+    if (!r) {
+        make_empty(g);
+        return;
+    }
+    iv_shape s;
+    iv_shape_revolve(&s, r, c->angle);
+    iv_region_release(r);
+    if (own(c->ev, &s) != 0) {
+        make_empty(g);
+        return;
+    }
+    g->shape = s;
+    memcpy(g->xf, c->world_place, sizeof(csg_affine));
+}
+
+static scad_geom *m_rotate_extrude(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                   const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"angle",  "convexity", "file", "layer",
+                                        "origin", "scale",     NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double angle = 360;
+    num_of(scad_argv_get(a, "angle", -1), &angle);
+    if (!isfinite(angle) || angle == 0) return NULL;
+    if (angle <= -360 || angle > 360) angle = 360;
+    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
+    revolve_ctx c = {
+        ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, facets_of(ev, env, a, st->loc)};
+    revolve_scan(&c, kids);
+    if (!(c.xmin <= c.xmax)) return NULL;
+    if (c.xmin < 0 && c.xmax > 0) {
+        scad_diag_warning(ev->d, st->loc,
+                          "all points for rotate_extrude() must have the same X coordinate sign "
+                          "(range is %.2f -> %.2f)",
+                          c.xmin, c.xmax);
+        return NULL;
+    }
+    /* A profile on the negative side is the mirrored profile turned by
+     * 180°; a negative angle sweeps clockwise: the mirror image in y. */
+    csg_affine place = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    if (c.xmax <= 0 && c.xmin < 0) {
+        c.sign = -1;
+        place[0] = place[5] = -1;
+    }
+    if (angle < 0) {
+        place[1] = -place[1];
+        place[5] = -place[5];
+    }
+    csg_affine world;
+    csg_affine_mul(state->xf, place, world);
+    c.world_place = world;
+    revolve_tree(&c, kids);
+    return kids;
+}
+
+/* ---- hull ------------------------------------------------------------------------ */
+
+typedef struct pts {
+    double (*p)[3];
+    int n, cap;
+    int any3d, any2d;
+} pts;
+
+static void pts_add(pts *P, const double local_from_world[12], const double xf[12], double x,
+                    double y, double z)
+{
+    if (P->n == P->cap) {
+        int cap = P->cap ? 2 * P->cap : 256;
+        double(*v)[3] = realloc(P->p, (size_t)cap * sizeof *v);
+        if (!v) return;
+        P->p = v;
+        P->cap = cap;
+    }
+    double o[3] = {x, y, z}, w[3];
+    csg_affine_point(xf, o, w);
+    csg_affine_point(local_from_world, w, P->p[P->n++]);
+}
+
+/* The points whose hull is the leaf's solid as OpenSCAD tessellates it. */
+static void hull_points(pts *P, const scad_geom *g, const double lfw[12], facets f)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        /* The hull of a difference is at most the hull of its first
+         * operand; of an intersection, at most the hull of all. */
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
+        for (int i = 0; i < n; i++)
+            hull_points(P, g->kids[i], lfw, f);
+        return;
+    }
+    const iv_shape *s = &g->shape;
+    switch (s->kind) {
+    case IV_SHAPE_BOX:
+        P->any3d = 1;
+        for (int i = 0; i < 8; i++)
+            pts_add(P, lfw, g->xf, (i & 1) ? s->u.box.hi[0] : s->u.box.lo[0],
+                    (i & 2) ? s->u.box.hi[1] : s->u.box.lo[1],
+                    (i & 4) ? s->u.box.hi[2] : s->u.box.lo[2]);
+        return;
+    case IV_SHAPE_SPHERE: {
+        P->any3d = 1;
+        double r = s->u.sphere.r;
+        int n = fragments(r, f), rings = (n + 1) / 2;
+        for (int i = 0; i < rings; i++) {
+            double phi = 180.0 * (i + 0.5) / rings;
+            for (int j = 0; j < n; j++) {
+                double c[2];
+                circle_pt(r * scad_sin_degrees(phi), j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], r * scad_cos_degrees(phi));
+            }
+        }
+        return;
+    }
+    case IV_SHAPE_CONE: {
+        P->any3d = 1;
+        int n = fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
+        for (int k = 0; k < 2; k++)
+            for (int j = 0; j < n; j++) {
+                double c[2];
+                circle_pt(k ? s->u.cone.r2 : s->u.cone.r1, j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], k ? s->u.cone.h : 0);
+            }
+        return;
+    }
+    case IV_SHAPE_POLYTOPE:
+    case IV_SHAPE_MESH: {
+        P->any3d = 1;
+        int n;
+        const double(*V)[3] =
+            s->kind == IV_SHAPE_MESH ? iv_mesh_vertices(s, &n) : iv_polytope_vertices(s, &n);
+        for (int i = 0; i < n; i++)
+            pts_add(P, lfw, g->xf, V[i][0], V[i][1], V[i][2]);
+        return;
+    }
+    case IV_SHAPE_PRISM: {
+        P->any2d = 1;
+        if (!s->u.prism.g) {
+            int n = fragments(s->u.prism.r, f);
+            for (int j = 0; j < n; j++) {
+                double c[2];
+                circle_pt(s->u.prism.r, j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], 0);
+            }
+        } else {
+            int n;
+            const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
+            for (int i = 0; i < n; i++)
+                pts_add(P, lfw, g->xf, V[i][0], V[i][1], 0);
+        }
+        return;
+    }
+    default:
+        P->any3d = 1; /* a revolve: its bounds' corners, an over-estimate */
+        double lo[3], hi[3];
+        if (iv_shape_bounds(s, lo, hi) != 0) return;
+        for (int i = 0; i < 8; i++)
+            pts_add(P, lfw, g->xf, (i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1],
+                    (i & 4) ? hi[2] : lo[2]);
+        return;
+    }
+}
+
+static int cmp_xy(const void *a, const void *b)
+{
+    const double *p = a, *q = b;
+    if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
+    return (p[1] > q[1]) - (p[1] < q[1]);
+}
+
+static double turn(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+/* Andrew's monotone chain over the xy of P (sorted in place); the hull
+ * counter-clockwise into H (room for n + 1), returns its size. */
+static int hull2d(double (*P)[3], int n, double (*H)[2])
+{
+    qsort(P, (size_t)n, sizeof *P, cmp_xy);
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        while (k >= 2 && turn(H[k - 2], H[k - 1], P[i]) <= 0)
+            k--;
+        H[k][0] = P[i][0];
+        H[k++][1] = P[i][1];
+    }
+    for (int i = n - 2, lo = k + 1; i >= 0; i--) {
+        while (k >= lo && turn(H[k - 2], H[k - 1], P[i]) <= 0)
+            k--;
+        H[k][0] = P[i][0];
+        H[k++][1] = P[i][1];
+    }
+    return k > 1 ? k - 1 : k;
+}
+
+static scad_geom *m_hull(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                         const scad_state *state)
+{
+    static const char *const none[] = {NULL};
+    scad_check_arg_names(ev, a, st->loc, none);
+    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
+    pts P = {NULL, 0, 0, 0, 0};
+    hull_points(&P, kids, inv, facets_of(ev, env, a, st->loc));
+    scad_geom *g = NULL;
+    if (P.any3d && P.n >= 4) {
+        iv_shape s;
+        if (iv_shape_hull(&s, (const double(*)[3])P.p, P.n) == 0 && own(ev, &s) == 0)
+            g = leaf_at(ev, &s, state, NULL);
+    } else if (!P.any3d && P.n >= 3) {
+        double(*H)[2] = malloc((size_t)(P.n + 1) * sizeof *H);
+        if (H) {
+            int k = hull2d(P.p, P.n, H);
+            int ps[2] = {0, k};
+            if (k >= 3) g = region_leaf(ev, iv_region_new((const double(*)[2])H, ps, 1), state);
+            free(H);
+        }
+    }
+    free(P.p);
+    return g;
+}
+
+/* ---- the table -------------------------------------------------------------------- */
+
+/* OpenSCAD modules rayscad does not build yet.  Their children are still
+ * evaluated (their echo() lines are part of the output), and no message is
+ * added, so the .echo output stays OpenSCAD's; README lists them.  offset,
+ * minkowski and resize show their children unchanged (the nearest shape);
+ * projection, import, surface and text show nothing. */
+static scad_geom *m_unsupported(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                const scad_argv *a, const scad_state *state)
+{
+    (void)a;
+    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    if (!strcmp(st->name, "offset") || !strcmp(st->name, "minkowski") ||
+        !strcmp(st->name, "resize"))
+        return kids;
+    return NULL;
+}
+
+static const struct {
+    const char *name;
+    scad_builtin_mod fn;
+} table[] = {
+    {"circle", m_circle},
+    {"cylinder", m_cylinder},
+    {"hull", m_hull},
+    {"import", m_unsupported},
+    {"linear_extrude", m_linear_extrude},
+    {"minkowski", m_unsupported},
+    {"offset", m_unsupported},
+    {"polygon", m_polygon},
+    {"polyhedron", m_polyhedron},
+    {"projection", m_unsupported},
+    {"resize", m_unsupported},
+    {"rotate_extrude", m_rotate_extrude},
+    {"sphere", m_sphere},
+    {"square", m_square},
+    {"surface", m_unsupported},
+    {"text", m_unsupported},
+};
+
+scad_builtin_mod scad_geometry_module(const char *name)
+{
+    for (size_t i = 0; i < sizeof table / sizeof table[0]; i++)
+        if (strcmp(table[i].name, name) == 0) return table[i].fn;
+    return NULL;
+}
