@@ -10,7 +10,7 @@
  * AUTO, the default, is smooth unless $fn is set to a count of at most 16,
  * where the facets are meant to be seen.
  *
- * 2D objects are prisms over a region (or a disc) between z = -1 and z = 1,
+ * 2D objects are prisms over a region (or a disc) between z = -½ and z = ½,
  * which is how OpenSCAD's preview draws them.  The extrusions are point maps
  * from 3D to the plane — p is in linear_extrude(h) of S when its shadow is
  * in S and 0 <= z <= h; p is in rotate_extrude of S when (|p_xy|, p_z) is —
@@ -32,6 +32,9 @@
 
 #define PI 3.14159265358979323846
 #define GRID_FINE 0.00000095367431640625 /* OpenSCAD's smallest radius */
+/* Half the thickness of the slab OpenSCAD 2021.01 previews a 2D object as
+ * (measured: a side view of square(10) shows z from -0.5 to 0.5). */
+#define SLAB 0.5
 
 /* ---- small helpers ---------------------------------------------------------- */
 
@@ -255,7 +258,7 @@ static scad_geom *region_leaf(scad_eval *ev, iv_region *g, const scad_state *sta
 {
     if (!g) return NULL;
     iv_shape s;
-    iv_shape_prism(&s, g, -1, 1);
+    iv_shape_prism(&s, g, -SLAB, SLAB);
     iv_region_release(g); /* the shape holds it now */
     if (own(ev, &s) != 0) return NULL;
     return leaf_at(ev, &s, state, NULL);
@@ -311,8 +314,8 @@ static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     memset(&s, 0, sizeof s);
     s.kind = IV_SHAPE_PRISM;
     s.u.prism.r = r;
-    s.u.prism.z0 = -1;
-    s.u.prism.z1 = 1;
+    s.u.prism.z0 = -SLAB;
+    s.u.prism.z1 = SLAB;
     return leaf_at(ev, &s, state, NULL);
 }
 
