@@ -50,9 +50,12 @@ static int nums(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *nam
 }
 
 /* Degrees, exact at the angles where the answer is exact. */
+/* Beyond 2^52 turns a degree has no meaning left; OpenSCAD answers NaN. */
+#define TRIG_HUGE (4503599627370496.0 * 360.0)
+
 static double sin_deg(double x)
 {
-    if (!isfinite(x)) return NAN;
+    if (!(fabs(x) < TRIG_HUGE)) return NAN;
     x = fmod(x, 360.0);
     if (x < 0) x += 360.0;
     int neg = x >= 180.0;
@@ -78,21 +81,24 @@ static double sin_deg(double x)
 
 static double cos_deg(double x)
 {
-    if (!isfinite(x)) return NAN;
+    if (!(fabs(x) < TRIG_HUGE)) return NAN;
     x = fmod(x, 360.0);
     if (x < 0) x += 360.0;
     return sin_deg(x + 90.0 > 360.0 ? x - 270.0 : x + 90.0);
 }
 
-/* Exact at multiples of 45 degrees; ±90 (mod 180) is +inf as in OpenSCAD. */
+/* Exact at multiples of 45 degrees; 90 (mod 360) is +inf and 270 -inf, as
+ * OpenSCAD's tan_degrees gives them. */
 static double tan_deg(double x)
 {
     if (!isfinite(x)) return NAN;
-    double r = fmod(x, 180.0);
-    if (r < 0) r += 180.0;
+    double r = fmod(x, 360.0);
+    if (r < 0) r += 360.0;
+    if (r == 90.0) return INFINITY;
+    if (r == 270.0) return -INFINITY;
+    r = fmod(r, 180.0);
     if (r == 0) return 0;
     if (r == 45.0) return 1;
-    if (r == 90.0) return INFINITY;
     if (r == 135.0) return -1;
     return tan(r * M_PI / 180.0);
 }
@@ -232,7 +238,7 @@ static scad_value f_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     }
     const scad_vec *p = a->v[0].u.vec, *q = a->v[1].u.vec;
     if (p->n != q->n || (p->n != 2 && p->n != 3)) {
-        scad_diag_warning(ev->d, loc, "Invalid vector size in call of 'cross' function");
+        scad_diag_warning(ev->d, loc, "Invalid vector size of parameter for cross()");
         return scad_undef();
     }
     double x[3], y[3];
@@ -354,7 +360,10 @@ static scad_value f_ord(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
         return scad_undef();
     }
     if (a->v[0].kind != SV_STR) {
-        conv_warning(ev, loc, name);
+        scad_buf b = {0};
+        scad_value_format(&b, a->v[0], 1);
+        scad_diag_warning(ev->d, loc, "ord() argument %s is not of type string", scad_buf_str(&b));
+        scad_buf_free(&b);
         return scad_undef();
     }
     const unsigned char *s = (const unsigned char *)a->v[0].u.str->s;
@@ -382,10 +391,16 @@ static int get_num(scad_value v, double *x)
 static scad_value f_lookup(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     double p;
-    if (a->n != 2 || !get_num(a->v[0], &p) || a->v[1].kind != SV_VEC || a->v[1].u.vec->n == 0) {
-        conv_warning(ev, loc, name);
+    if (a->n < 2) return scad_undef();
+    if (!get_num(a->v[0], &p)) {
+        scad_buf b = {0};
+        scad_value_format(&b, a->v[0], 1);
+        scad_diag_warning(ev->d, loc, "lookup(%s, ...) first argument is not a number",
+                          scad_buf_str(&b));
+        scad_buf_free(&b);
         return scad_undef();
     }
+    if (a->v[1].kind != SV_VEC || a->v[1].u.vec->n == 0) return scad_undef();
     const scad_vec *t = a->v[1].u.vec;
     double low_p, low_v, high_p, high_v;
     if (t->v[0].kind != SV_VEC || t->v[0].u.vec->n < 2 || !get_num(t->v[0].u.vec->v[0], &low_p) ||
@@ -604,7 +619,7 @@ static scad_value f_is(scad_eval *ev, const scad_argv *a, scad_loc loc, const ch
 {
     if (a->n != 1) {
         count_warning(ev, loc, name);
-        return scad_bool(0);
+        return scad_undef();
     }
     scad_value v = a->v[0];
     const char *t = name + 3;
@@ -614,6 +629,36 @@ static scad_value f_is(scad_eval *ev, const scad_argv *a, scad_loc loc, const ch
     if (!strcmp(t, "string")) return scad_bool(v.kind == SV_STR);
     if (!strcmp(t, "list")) return scad_bool(v.kind == SV_VEC);
     return scad_bool(v.kind == SV_FUNC);
+}
+
+/* parent_module(n): the name of the n-th user module up the instantiation
+ * stack (1, the default, is the caller of the current one). */
+static scad_value f_parent_module(scad_eval *ev, const scad_argv *a, scad_loc loc,
+                                  const char *name)
+{
+    (void)name;
+    double d = 1;
+    if (a->n == 1) {
+        if (a->v[0].kind != SV_NUM) return scad_undef();
+        d = a->v[0].u.num;
+    } else if (a->n > 1) {
+        return scad_undef();
+    }
+    int depth = ev->module_depth < ev->module_names_cap ? ev->module_depth : ev->module_names_cap;
+    double n = trunc(d);
+    if (n < 0) {
+        scad_diag_warning(ev->d, loc, "Negative parent module index (%d) not allowed", (int)n);
+        return scad_undef();
+    }
+    if (!(n < depth)) {
+        scad_diag_warning(ev->d, loc,
+                          "Parent module index (%d) greater than the number of modules on the "
+                          "stack",
+                          n < 2147483647.0 ? (int)n : 2147483647);
+        return scad_undef();
+    }
+    const char *m = ev->module_names[depth - 1 - (int)n];
+    return scad_str_new(m, strlen(m));
 }
 
 static scad_value f_version(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
@@ -661,6 +706,7 @@ static const entry table[] = {
     {"min", f_minmax},
     {"norm", f_norm},
     {"ord", f_ord},
+    {"parent_module", f_parent_module},
     {"pow", f_pow},
     {"rands", f_rands},
     {"round", f_unary},

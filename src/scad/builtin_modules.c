@@ -58,14 +58,24 @@ static scad_geom *m_cube(scad_eval *ev, scad_env *env, const scad_stmt *st, cons
     double s[3] = {1, 1, 1};
     scad_value size = scad_argv_get(a, "size", 0);
     double x;
+    int ok = size.kind == SV_UNDEF;
     if (num_of(size, &x)) {
         s[0] = s[1] = s[2] = x;
-    } else if (size.kind == SV_VEC) {
-        if (size.u.vec->n != 3) return NULL;
+        ok = 1;
+    } else if (size.kind == SV_VEC && size.u.vec->n == 3) {
+        /* as Value::getVec3: elements that are numbers are taken */
+        ok = 1;
         for (int i = 0; i < 3; i++)
-            if (!num_of(size.u.vec->v[i], &s[i])) return NULL;
-    } else if (size.kind != SV_UNDEF) {
-        return NULL;
+            if (!num_of(size.u.vec->v[i], &s[i])) ok = 0;
+    }
+    if (!ok) {
+        scad_buf b = {0};
+        scad_value_format(&b, size, 1);
+        scad_diag_warning(ev->d, st->loc,
+                          "Unable to convert cube(size=%s, ...) parameter to a number or a vec3 "
+                          "of numbers",
+                          scad_buf_str(&b));
+        scad_buf_free(&b);
     }
     for (int i = 0; i < 3; i++)
         if (!(s[i] > 0) || !isfinite(s[i])) return NULL;

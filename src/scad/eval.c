@@ -1365,6 +1365,16 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
         me->children_env = env;
         scad_bind_args(ev, me, def_env, &m->params, &argv, st->loc);
         scad_env_set(me, "$children", scad_num(st->children ? st->children->nstmts : 0));
+        if (ev->module_depth == ev->module_names_cap) {
+            int cap = ev->module_names_cap ? ev->module_names_cap * 2 : 64;
+            const char **nn = realloc(ev->module_names, sizeof *nn * (size_t)cap);
+            if (nn) {
+                ev->module_names = nn;
+                ev->module_names_cap = cap;
+            }
+        }
+        if (ev->module_depth < ev->module_names_cap)
+            ev->module_names[ev->module_depth] = m->name;
         ev->module_depth++;
         scad_env_set(me, "$parent_modules", scad_num(ev->module_depth));
         for (int i = 0; i < m->body->nassigns; i++) {

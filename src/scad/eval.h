@@ -67,6 +67,8 @@ typedef struct scad_eval {
     scad_arena *arena; /* geometry */
     int depth, max_depth;
     int module_depth; /* user modules being instantiated: $parent_modules */
+    const char **module_names; /* their names, outermost first (parent_module) */
+    int module_names_cap;
     int aborted;      /* an error stopped the evaluation */
     char *stack_base;
     size_t stack_budget;

@@ -498,9 +498,11 @@ static scad_expr *expr(parser *P)
 /* One element of a vector: an expression or a list comprehension. */
 static scad_expr *lc_element(parser *P, int parens_ok);
 
+/* A vector's own elements may not be a parenthesised comprehension (only
+ * the bodies of for/if/let/each may), as in OpenSCAD 2021.01's grammar. */
 static scad_expr *vector_element(parser *P)
 {
-    return lc_element(P, 1);
+    return lc_element(P, 0);
 }
 
 static scad_expr *lc_element(parser *P, int parens_ok)

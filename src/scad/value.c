@@ -145,7 +145,7 @@ int scad_value_truthy(scad_value v)
     case SV_BOOL:
         return v.u.b;
     case SV_NUM:
-        return v.u.num != 0 && !isnan(v.u.num);
+        return v.u.num != 0; /* NaN is true, as in OpenSCAD 2021.01 */
     case SV_STR:
         return v.u.str->len > 0;
     case SV_VEC:

@@ -92,7 +92,7 @@ scad_value scad_func_new(const scad_expr *lit, scad_env *env);
 scad_value scad_value_ref(scad_value v);
 void scad_value_drop(scad_value v);
 
-/* OpenSCAD's truth: false, 0, "", [] and undef are false; NaN is false. */
+/* OpenSCAD's truth: false, 0, "", [] and undef are false; NaN is true. */
 int scad_value_truthy(scad_value v);
 /* Deep equality (==): same kind and equal; 1 == true is false. */
 int scad_value_equal(scad_value a, scad_value b);

@@ -1,0 +1,1 @@
+deeper_value = 100;

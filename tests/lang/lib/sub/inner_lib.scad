@@ -1,0 +1,1 @@
+function inner_value() = "from inner";

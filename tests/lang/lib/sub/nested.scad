@@ -1,0 +1,2 @@
+include <deeper.scad>
+nested_value = deeper_value + 1;
