@@ -82,8 +82,8 @@ static csg_scene *scene1(csg_node *model)
 
 /* Top view, orthographic: +x right, +y up, looking down -z; a W×W image
  * spans 2·50·tan(11.25°) world units (OpenSCAD's scale at dist 50). */
-static const render_view top = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50},
-                                .ortho = 1};
+static const render_view top = {
+    .kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
 enum { W = 41 };
 
 static render_options opts(void)
@@ -177,8 +177,8 @@ Test(light_composite, union_of_transparent_spheres_has_no_inner_face)
     double n_in[3] = {x / 5, y / 5, z / 5}, n_out[3] = {x / 5, y / 5, -z / 5};
     double f1 = preview_factor(n_in), f2 = preview_factor(n_out), a = c[3], want[3];
     for (int i = 0; i < 3; i++)
-        want[i] = a * c[i] * f1 + (1 - a) * a * c[i] * f2 +
-                  (1 - a) * (1 - a) * o.colors.background[i];
+        want[i] =
+            a * c[i] * f1 + (1 - a) * a * c[i] * f2 + (1 - a) * (1 - a) * o.colors.background[i];
     expect_rgb(pix(img, px, py), want, 1e-5, "lens of the union");
     free(img);
     csg_scene_free(s);
@@ -243,8 +243,13 @@ Test(light_order, permutations_render_bit_for_bit)
         "#translate([-14,4,-2]) cylinder(h=9, r=3);\n",
         "color([0.4,0.9,0.4],0.3) translate([3,-3,-10]) cube([12,12,3], $rs_reflect=0.4);\n",
     };
-    render_options lit = {.width = 48, .height = 36, .samples = 2, .threads = 3,
-                          .shadows = 1, .xray = 0.6, .nlights = 1};
+    render_options lit = {.width = 48,
+                          .height = 36,
+                          .samples = 2,
+                          .threads = 3,
+                          .shadows = 1,
+                          .xray = 0.6,
+                          .nlights = 1};
     lit.lights[0] = (render_light){{20, -30, 40}, 3, 1};
     cr_assert_eq(render_colors_by_name("Cornfield", &lit.colors), 0);
     render_options plain = {.width = 48, .height = 36, .samples = 2, .threads = 3};
@@ -269,7 +274,8 @@ Test(light_order, permutations_render_bit_for_bit)
                           perm[0], perm[1], perm[2], perm[3], perm[4]);
                 free(img);
             }
-            while (i < 5 && c[i] >= i) c[i++] = 0;
+            while (i < 5 && c[i] >= i)
+                c[i++] = 0;
             if (i == 5) break;
             int j = i % 2 ? c[i] : 0, t = perm[j];
             perm[j] = perm[i];
@@ -293,8 +299,8 @@ static void key_light_shadow(double alpha)
 {
     const float grey[4] = {0.5f, 0.5f, 0.5f, 1};
     const float cube_c[4] = {0.9f, 0.1f, 0.1f, (float)alpha};
-    csg_scene *s = scene1(op(CSG_OP_UNION, box(-12, -12, -1, 12, 12, 0, grey),
-                             box(-2, -2, 0, 2, 2, 4, cube_c)));
+    csg_scene *s = scene1(
+        op(CSG_OP_UNION, box(-12, -12, -1, 12, 12, 0, grey), box(-2, -2, 0, 2, 2, 4, cube_c)));
     render_camera cam = top_camera();
     render_options o = opts();
     o.shadows = 1;
@@ -332,8 +338,8 @@ Test(light_shadow, key_light_transparent_occluder_attenuates)
 Test(light_shadow, point_light_darkens_by_the_expected_factor)
 {
     const float grey[4] = {0.6f, 0.6f, 0.6f, 1};
-    csg_scene *s = scene1(op(CSG_OP_UNION, box(-12, -12, -1, 12, 12, 0, grey),
-                             box(-2, -2, 0, 2, 2, 4, grey)));
+    csg_scene *s =
+        scene1(op(CSG_OP_UNION, box(-12, -12, -1, 12, 12, 0, grey), box(-2, -2, 0, 2, 2, 4, grey)));
     render_camera cam = top_camera();
     render_options o = opts();
     o.nlights = 1;
@@ -342,7 +348,8 @@ Test(light_shadow, point_light_darkens_by_the_expected_factor)
     int sx, sy, lx, ly;
     pixel_at(&cam, -4, 0, &sx, &sy);
     pixel_at(&cam, 6, 6, &lx, &ly);
-    double dl[3] = {40 - 6, -6, 40}, cosl = dl[2] / sqrt(dl[0] * dl[0] + dl[1] * dl[1] + dl[2] * dl[2]);
+    double dl[3] = {40 - 6, -6, 40},
+           cosl = dl[2] / sqrt(dl[0] * dl[0] + dl[1] * dl[1] + dl[2] * dl[2]);
     double shadow[3], lit[3];
     for (int i = 0; i < 3; i++) {
         shadow[i] = grey[i] * 0.2;
@@ -402,7 +409,8 @@ Test(light_mirror, reflection_shows_what_geometry_says)
     csg_material mirror = material(silver);
     mirror.reflect = 1;
     const double lo[3] = {-6, -6, -2}, hi[3] = {6, 6, 0};
-    csg_scene *s = scene1(op(CSG_OP_UNION, box_m(lo, hi, turn, &mirror), box(-30, -3, -3, -20, 3, 3, red)));
+    csg_scene *s =
+        scene1(op(CSG_OP_UNION, box_m(lo, hi, turn, &mirror), box(-30, -3, -3, -20, 3, 3, red)));
     mirror_checks(s);
     csg_scene_free(s);
 }
@@ -497,8 +505,14 @@ Test(light_determinism, stochastic_features_identical_for_any_thread_count)
     render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 25, 90}};
     render_camera cam;
     cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, 64, 48, &cam), 0);
-    render_options o = {.width = 64, .height = 48, .samples = 2, .threads = 1, .nlights = 1,
-                        .aperture = 2, .ior = 1.4, .seed = 7};
+    render_options o = {.width = 64,
+                        .height = 48,
+                        .samples = 2,
+                        .threads = 1,
+                        .nlights = 1,
+                        .aperture = 2,
+                        .ior = 1.4,
+                        .seed = 7};
     o.lights[0] = (render_light){{10, -20, 30}, 4, 1};
     cr_assert_eq(render_colors_by_name("Cornfield", &o.colors), 0);
     float *one = render(s, &cam, &o);

@@ -174,8 +174,10 @@ static int parse_optics(int argc, char **argv, int *i, render_options *p, char *
         const char *name;
         int is_int;
         double lo, hi;
-    } numeric[] = {{"--light-samples", 1, 1, 16}, {"--bounces", 1, 1, 64},
-                   {"--aperture", 0, 0, 1e9},     {"--focus", 0, 0, 1e9},
+    } numeric[] = {{"--light-samples", 1, 1, 16},
+                   {"--bounces", 1, 1, 64},
+                   {"--aperture", 0, 0, 1e9},
+                   {"--focus", 0, 0, 1e9},
                    {"--seed", 1, 0, 2147483647}};
     for (size_t k = 0; k < sizeof numeric / sizeof *numeric; k++) {
         r = flag_value(argc, argv, i, numeric[k].name, &val);
@@ -183,16 +185,26 @@ static int parse_optics(int argc, char **argv, int *i, render_options *p, char *
         if (r < 0 || parse_double(val, &x) != 0 || x < numeric[k].lo || x > numeric[k].hi ||
             (numeric[k].is_int && x != floor(x)) || (k == 3 && !(x > 0))) {
             snprintf(err, errlen, "%s expects a %s in %g..%g, got '%s'", numeric[k].name,
-                     numeric[k].is_int ? "whole number" : "number", numeric[k].lo,
-                     numeric[k].hi, r < 0 ? "" : val);
+                     numeric[k].is_int ? "whole number" : "number", numeric[k].lo, numeric[k].hi,
+                     r < 0 ? "" : val);
             return -1;
         }
         switch (k) {
-        case 0: p->light_samples = (int)x; break;
-        case 1: p->bounces = (int)x; break;
-        case 2: p->aperture = x; break;
-        case 3: p->focus = x; break;
-        default: p->seed = (unsigned)x; break;
+        case 0:
+            p->light_samples = (int)x;
+            break;
+        case 1:
+            p->bounces = (int)x;
+            break;
+        case 2:
+            p->aperture = x;
+            break;
+        case 3:
+            p->focus = x;
+            break;
+        default:
+            p->seed = (unsigned)x;
+            break;
         }
         return 1;
     }

@@ -54,18 +54,18 @@ typedef struct job {
     int nroots;
     int tiles_x, ntiles;
     /* the light model, resolved once */
-    int lit;     /* shadow rays and the lights below */
+    int lit;      /* shadow rays and the lights below */
     int keylight; /* lit by the preview's own pair, the key one shadowed */
-    int jitter;  /* stratified samples jittered (stochastic features on) */
+    int jitter;   /* stratified samples jittered (stochastic features on) */
     render_light lights[RENDER_MAX_LIGHTS];
     int nlights;
-    int light_n;                   /* shadow rays per light: light_n² */
-    int max_depth;                 /* secondary rays */
-    double eps;                    /* offset of secondary ray origins */
-    double focus;                  /* thin lens */
-    atomic_int next;               /* next tile to hand out */
-    atomic_int done;               /* tiles finished */
-    atomic_int failed;             /* a worker ran out of memory */
+    int light_n;       /* shadow rays per light: light_n² */
+    int max_depth;     /* secondary rays */
+    double eps;        /* offset of secondary ray origins */
+    double focus;      /* thin lens */
+    atomic_int next;   /* next tile to hand out */
+    atomic_int done;   /* tiles finished */
+    atomic_int failed; /* a worker ran out of memory */
     pthread_mutex_t mu;
     pthread_cond_t cv;
     int exited; /* workers that returned; guarded by mu */
@@ -252,8 +252,7 @@ static double transmittance(const job *J, iv_arena *a, const double o[3], const 
  * (-1,-1,1)/√3 in the viewer's frame casts shadows, its opposite fill does
  * not, so an unshadowed point gets exactly the preview's factor.  Returns
  * -1 when out of memory. */
-static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3],
-                           const double nf[3])
+static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3], const double nf[3])
 {
     const render_camera *c = J->cam;
     double o[3];
@@ -351,8 +350,8 @@ static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const
 {
     const render_camera *cam = J->cam;
     iv_list lists[MAX_ROOTS];
-    int pos[MAX_ROOTS];      /* next boundary of each list: span pos/2, exit if odd */
-    int volume[MAX_ROOTS];   /* the current span was composited as a volume */
+    int pos[MAX_ROOTS];    /* next boundary of each list: span pos/2, exit if odd */
+    int volume[MAX_ROOTS]; /* the current span was composited as a volume */
     for (int r = 0; r < J->nroots; r++) {
         memset(&lists[r], 0, sizeof lists[r]);
         pos[r] = 0;

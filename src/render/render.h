@@ -10,13 +10,13 @@
 
 /* A resolved pinhole or orthographic camera in world space. */
 typedef struct render_camera {
-    double eye[3];     /* position (perspective) / reference point (ortho) */
-    double forward[3]; /* unit view direction */
-    double up[3];      /* unit, orthogonal to forward */
-    double right[3];   /* unit, forward × up */
-    double fovy_deg;   /* vertical field of view, perspective */
+    double eye[3];            /* position (perspective) / reference point (ortho) */
+    double forward[3];        /* unit view direction */
+    double up[3];             /* unit, orthogonal to forward */
+    double right[3];          /* unit, forward × up */
+    double fovy_deg;          /* vertical field of view, perspective */
     double ortho_half_height; /* half the visible height, orthographic */
-    int ortho;         /* 1: orthographic projection */
+    int ortho;                /* 1: orthographic projection */
     /* The depth range OpenSCAD's projection keeps, measured along forward
      * from eye: perspective [0.1·dist, 100·dist], orthographic
      * [-100·dist, 100·dist] (GLView::setupCamera).  Both 0: no clipping. */
@@ -54,9 +54,9 @@ void render_camera_ray(const render_camera *c, int width, int height, double px,
 /* An OpenSCAD colour scheme, sRGB in [0, 1]. */
 typedef struct render_colors {
     float background[3];
-    float face[3]; /* objects with no color() */
-    float back[3]; /* subtracted surfaces with no color() */
-    float highlight[4];  /* '#' subtrees: OpenSCAD's transparent pink */
+    float face[3];                /* objects with no color() */
+    float back[3];                /* subtracted surfaces with no color() */
+    float highlight[4];           /* '#' subtrees: OpenSCAD's transparent pink */
     float background_modifier[4]; /* '%' subtrees: transparent grey */
 } render_colors;
 
@@ -86,9 +86,9 @@ typedef struct render_options {
     /* ---- opt-in light model ---------------------------------------------
      * Every field below left 0 (and no $rs_ material in the scene) gives
      * OpenSCAD's preview look, byte for byte as before they existed. */
-    int shadows; /* 1: shadow rays.  With no lights, the key light is the
-                    preview's own (from the viewer's upper left, at
-                    infinity) and its opposite fill stays unshadowed. */
+    int shadows;                            /* 1: shadow rays.  With no lights, the key light is the
+                                               preview's own (from the viewer's upper left, at
+                                               infinity) and its opposite fill stays unshadowed. */
     render_light lights[RENDER_MAX_LIGHTS]; /* replace the preview's lights */
     int nlights;
     int light_samples; /* area lights: n×n shadow rays per light; 0: 4 */
@@ -114,7 +114,10 @@ enum { RENDER_ROOT_MODEL = 0, RENDER_ROOT_HIGHLIGHT = 1, RENDER_ROOT_BACKGROUND 
 /* Render the roots of scene s, composited front to back, into
  * rgba: width*height*4 floats, row-major from the top row, sRGB-encoded,
  * alpha 1 where the background shows.  The result is identical for any
- * thread count.  Returns 0, or -1 with a message in err (out of memory,
+ * thread count (random numbers, when the light model draws any, come from
+ * per-pixel streams).  The light model is on when opt asks for shadows,
+ * lights or a lens, or when the scene has emitters ($rs_light); materials
+ * with reflect, absorb or ior take effect in either look.  Returns 0, or -1 with a message in err (out of memory,
  * bad options). */
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
                  float *rgba, char *err, size_t errlen);

@@ -26,7 +26,8 @@ static int lookup(scad_eval *ev, scad_env *env, const scad_argv *a, const char *
     scad_value v = scad_undef();
     if (a && scad_argv_given(a, name, -1)) v = scad_argv_get(a, name, -1);
     int found = 0;
-    if (v.kind == SV_UNDEF && env) v = scad_env_lookup(ev, env, name, (scad_loc){"?", 0, 0}, 1, &found);
+    if (v.kind == SV_UNDEF && env)
+        v = scad_env_lookup(ev, env, name, (scad_loc){"?", 0, 0}, 1, &found);
     if (v.kind == SV_BOOL) {
         *out = v.u.b ? 1 : 0;
         return 1;
@@ -68,8 +69,8 @@ static void light_shape(const iv_shape *s, const csg_affine xf, float light[4])
     }
     double w[3];
     csg_affine_point(xf, c, w);
-    double det = xf[0] * (xf[5] * xf[10] - xf[6] * xf[9]) - xf[1] * (xf[4] * xf[10] - xf[6] * xf[8]) +
-                 xf[2] * (xf[4] * xf[9] - xf[5] * xf[8]);
+    double det = xf[0] * (xf[5] * xf[10] - xf[6] * xf[9]) -
+                 xf[1] * (xf[4] * xf[10] - xf[6] * xf[8]) + xf[2] * (xf[4] * xf[9] - xf[5] * xf[8]);
     double scale = cbrt(fabs(det));
     for (int i = 0; i < 3; i++)
         light[i] = (float)w[i];
