@@ -577,6 +577,31 @@ Test(mesh_contour, stress_manifold)
     }
 }
 
+Test(mesh_contour, same_mesh_on_any_thread_count)
+{
+    csg_scene *s = csg_example();
+    mesh *m[3];
+    for (int q = 0; q < 3; q++) {
+        mesh_options o;
+        mesh_options_default(&o);
+        o.cells_per_side = 40;
+        o.threads = q + 1;
+        char err[256] = "";
+        cr_assert(mesh_from_scene(s, &o, &m[q], NULL, err, sizeof err) == 0, "%s", err);
+    }
+    for (int q = 1; q < 3; q++) {
+        cr_assert_eq(mesh_vertex_count(m[q]), mesh_vertex_count(m[0]));
+        cr_assert_eq(mesh_triangle_count(m[q]), mesh_triangle_count(m[0]));
+        cr_assert(!memcmp(mesh_vertices(m[q]), mesh_vertices(m[0]),
+                          3 * sizeof(float) * (size_t)mesh_vertex_count(m[0])));
+        cr_assert(!memcmp(mesh_triangles(m[q]), mesh_triangles(m[0]),
+                          3 * sizeof(int32_t) * (size_t)mesh_triangle_count(m[0])));
+    }
+    for (int q = 0; q < 3; q++)
+        mesh_free(m[q]);
+    csg_scene_free(s);
+}
+
 /* Random scenes: unions, differences and intersections of boxes, spheres and
  * cones under random rotations, at random resolutions.  The seed is fixed
  * and printed with any failure. */

@@ -458,13 +458,46 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
                 a[r][c] += e->n[r] * e->n[c];
         }
     }
-    double x[3];
-    qef_solve(a, b, x);
-    double h = s->d->h;
+    /* Minimise within the shrunk cell by a small active-set loop: solve,
+     * pin every coordinate that leaves the cell to the wall it crossed,
+     * re-solve for the others.  Plain clamping would leave a vertex whose
+     * feature passes just outside the cell off both of its planes; pinned,
+     * it slides along the wall to the best point there. */
+    double h = s->d->h, blo[3], bhi[3], x[3] = {0, 0, 0};
     for (int c = 0; c < 3; c++) {
-        double p = mass[c] + x[c];
-        out[c] = fmin(fmax(p, lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
+        blo[c] = lo[c] + EPS * h - mass[c];
+        bhi[c] = lo[c] + (1 - EPS) * h - mass[c];
     }
+    int fixed = 0;
+    for (int it = 0; it < 3; it++) {
+        double ar[3][3], br[3], y[3];
+        for (int r = 0; r < 3; r++) {
+            br[r] = b[r];
+            for (int c = 0; c < 3; c++) {
+                if (fixed >> c & 1)
+                    br[r] -= a[r][c] * x[c];
+                ar[r][c] = (fixed >> r & 1) || (fixed >> c & 1) ? 0 : a[r][c];
+            }
+            if (fixed >> r & 1)
+                br[r] = 0;
+        }
+        qef_solve(ar, br, y);
+        int moved = 0;
+        for (int c = 0; c < 3; c++) {
+            if (fixed >> c & 1)
+                continue;
+            x[c] = y[c];
+            if (!(x[c] >= blo[c]) || !(x[c] <= bhi[c])) {
+                x[c] = x[c] > bhi[c] ? bhi[c] : blo[c];
+                fixed |= 1 << c;
+                moved = 1;
+            }
+        }
+        if (!moved)
+            break;
+    }
+    for (int c = 0; c < 3; c++)
+        out[c] = fmin(fmax(mass[c] + x[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
 }
 
 typedef struct lvert {

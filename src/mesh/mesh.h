@@ -49,8 +49,9 @@ void mesh_options_default(mesh_options *o);
 typedef struct mesh_dexels mesh_dexels;
 
 /* Cast the rays through root o->root of s (o may be NULL: defaults).  The
- * scene is borrowed for the duration of the call only.  An empty root gives
- * an empty sampling (volume 0, empty mesh).  Returns 0 and the sampling in
+ * scene is borrowed for the duration of the call only.  An empty root, or a
+ * root index out of range, gives an empty sampling (volume 0, empty mesh).
+ * The result does not depend on the number of threads.  Returns 0 and the sampling in
  * *out (owned by the caller, free with mesh_dexels_free), or -1 with a
  * message in err (errlen bytes): unbounded root (a halfspace left
  * unintersected), a grid larger than 65536 cells per side or 2^31 rays per
