@@ -548,12 +548,33 @@ static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double s
     return out;
 }
 
-static void revolve_scan(revolve_ctx *c, const scad_geom *g)
+/* The x range of the subtree's 2D shape, bounded by its operations: a
+ * difference by its first operand, an intersection by the overlap of its
+ * operands' ranges (so a circle cut to x >= 0 counts as x >= 0).  Empty:
+ * lo > hi. */
+static void revolve_scan(revolve_ctx *c, const scad_geom *g, double *lo, double *hi)
 {
+    *lo = INFINITY;
+    *hi = -INFINITY;
     if (!g) return;
     if (!g->is_leaf) {
-        for (int i = 0; i < g->n; i++)
-            revolve_scan(c, g->kids[i]);
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
+        for (int i = 0; i < n; i++) {
+            double a, b;
+            revolve_scan(c, g->kids[i], &a, &b);
+            if (g->op == CSG_OP_INTERSECTION) {
+                if (i == 0) {
+                    *lo = a;
+                    *hi = b;
+                } else {
+                    *lo = fmax(*lo, a);
+                    *hi = fmin(*hi, b);
+                }
+            } else {
+                *lo = fmin(*lo, a);
+                *hi = fmax(*hi, b);
+            }
+        }
         return;
     }
     if (g->shape.kind != IV_SHAPE_PRISM) return;
@@ -562,8 +583,8 @@ static void revolve_scan(revolve_ctx *c, const scad_geom *g)
     int n;
     const double(*P)[2] = iv_region_points(r, &n);
     for (int i = 0; i < n; i++) {
-        c->xmin = fmin(c->xmin, P[i][0]);
-        c->xmax = fmax(c->xmax, P[i][0]);
+        *lo = fmin(*lo, P[i][0]);
+        *hi = fmax(*hi, P[i][0]);
     }
     iv_region_release(r);
 }
@@ -612,7 +633,7 @@ static scad_geom *m_rotate_extrude(scad_eval *ev, scad_env *env, const scad_stmt
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
     revolve_ctx c = {
         ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, facets_of(ev, env, a, st->loc)};
-    revolve_scan(&c, kids);
+    revolve_scan(&c, kids, &c.xmin, &c.xmax);
     if (!(c.xmin <= c.xmax)) return NULL;
     if (c.xmin < 0 && c.xmax > 0) {
         scad_diag_warning(ev->d, st->loc,
