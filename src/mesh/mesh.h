@@ -93,7 +93,10 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *out);
 
 /* An indexed triangle mesh: vertices as 3 floats (x, y, z in model units),
  * triangles as 3 vertex indices, counter-clockwise seen from outside (the
- * right-hand normal points out of the solid). */
+ * right-hand normal points out of the solid).  Vertices are computed in
+ * double and stored as float (as STL stores them): a model smaller than
+ * about 1e-4 of its distance from the origin has h/256 below a float ulp
+ * there, and its nearly coincident vertices may round together. */
 typedef struct mesh mesh;
 
 /* Contour a sampling (o may be NULL: defaults; only feature_angle_deg is
