@@ -420,9 +420,9 @@ static scad_geom *m_polyhedron(scad_eval *ev, scad_env *env, const scad_stmt *st
     if (faces.kind == SV_UNDEF) {
         faces = scad_argv_get(a, "triangles", -1);
         if (faces.kind != SV_UNDEF)
-            scad_diag_warning(ev->d, st->loc,
-                              "polyhedron(triangles=[]) will be removed in future releases. "
-                              "Use polyhedron(faces=[]) instead.");
+            scad_diag_line(ev->d, SCAD_MSG_WARNING,
+                           "DEPRECATED: polyhedron(triangles=[]) will be removed in future "
+                           "releases. Use polyhedron(faces=[]) instead.");
     }
     int *idx, *start, nf;
     scad_geom *g = NULL;
