@@ -4,7 +4,6 @@
 #   make demo     deps + build + render models/demo.scad to out/demo.png
 #   make test     deps + build + every test (unit, language, against OpenSCAD)
 #   make asan     the same tests on a -fsanitize=address,undefined build
-#   make bench    benchmarks against peers (not tests)
 # WERROR=1 turns warnings into errors (CI).
 
 CC  ?= cc
@@ -57,7 +56,7 @@ CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare conformance asan bench clean format
+.PHONY: all deps demo test unit cli compare conformance asan clean format
 .DEFAULT_GOAL := all
 
 all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
@@ -127,9 +126,6 @@ asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" cli
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" conformance
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" compare
-
-bench: deps all
-	bench/run.sh $(BUILD)
 
 format:
 	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(IO_SRC) src/*/*.h
