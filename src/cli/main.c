@@ -7,6 +7,7 @@
 #include "atomic_file.h"
 #include "options.h"
 #include "progress.h"
+#include "services.h"
 
 #include "../io/io.h"
 #include "../render/render.h"
@@ -145,6 +146,7 @@ int main(int argc, char **argv)
         .defines = o.defines,
         .define_count = o.define_count,
         .facets = o.facets,
+        .services = cli_services(),
         .message = on_message,
         .ud = &msgs,
     };

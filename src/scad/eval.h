@@ -88,6 +88,7 @@ typedef struct scad_eval {
     scad_env **use_envs;
     int nuse, capuse;
     int facets; /* scad_facets, from the options */
+    const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by
      * scad_geometry_release */
     iv_shape *owned;

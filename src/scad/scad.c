@@ -145,6 +145,8 @@ static void run_job(job *j)
     scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
     ev.builtins = builtins;
     ev.facets = j->opt ? j->opt->facets : SCAD_FACETS_AUTO;
+    static const scad_services no_services;
+    ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
     if (file) {
         set_num(builtins, "PI", 3.14159265358979323846);
         set_num(builtins, "$fn", 0);

@@ -10,6 +10,9 @@
 #ifndef RAYSCAD_SCAD_H
 #define RAYSCAD_SCAD_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #include "../csg/csg.h"
 
 typedef enum scad_msg_kind {
@@ -17,6 +20,27 @@ typedef enum scad_msg_kind {
     SCAD_MSG_WARNING, /* "WARNING: …" as OpenSCAD prints it */
     SCAD_MSG_ERROR    /* "file:line:col: error: …" */
 } scad_msg_kind;
+
+/* What the language needs from outside src/scad — files, images, polygon
+ * clipping, fonts, meshing — injected by the caller, so that src/scad
+ * depends on csg only (src/cli wires src/io and src/mesh in: cli/services.c).
+ * Every member may be NULL; a module that needs a missing one reports an
+ * error at its call ("import() is not available here") and builds nothing.
+ * Each returns 0, or -1 with a message in err (errlen bytes); arrays it
+ * returns are malloc'ed and freed by the evaluator with free(). */
+typedef struct scad_services {
+    void *ud;
+    /* import(): a triangle mesh file (stl, off, obj, ply) as 3 floats per
+     * vertex and 3 indices per triangle, counter-clockwise seen from
+     * outside.  (Issue 4: import.) */
+    int (*read_mesh)(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
+                     char *err, size_t errlen);
+    /* surface() from an image: channels floats per pixel, row-major from
+     * the top, sRGB-encoded in [0, 1]. */
+    int (*read_image)(void *ud, const char *path, int *width, int *height, int *channels,
+                      float **pixels, char *err, size_t errlen);
+    /* --- 2D geometry (offset, projection, text, minkowski) goes below --- */
+} scad_services;
 
 typedef struct scad_options {
     /* -D overrides, each "name=value" (value is an OpenSCAD expression),
@@ -30,6 +54,8 @@ typedef struct scad_options {
     int max_recursion; /* nested module/function calls, default 10000 */
     /* How round primitives are built (a scad_facets; 0 is AUTO). */
     int facets;
+    /* Outside services (may be NULL: none). */
+    const scad_services *services;
 } scad_options;
 
 /* SMOOTH: spheres, cylinders and circles are exact; OPENSCAD: each is the
