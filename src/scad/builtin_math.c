@@ -502,13 +502,13 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
 }
 
 /* search(match, in, num_returns_per_match = 1, index_col_num = 0) */
+/* OpenSCAD 2021.01's test: with index_col_num 0 the whole entry may match
+ * too (so a list matches a list), else column col of a list entry. */
 static int search_eq(scad_value item, scad_value match, int col)
 {
-    if (item.kind == SV_VEC) {
-        if (col >= item.u.vec->n) return 0;
-        item = item.u.vec->v[col];
-    }
-    return scad_value_equal(item, match);
+    if (col == 0 && scad_value_equal(item, match)) return 1;
+    return item.kind == SV_VEC && col < item.u.vec->n &&
+           scad_value_equal(item.u.vec->v[col], match);
 }
 
 static scad_value search_one(scad_value match, scad_value in, int nret, int col, int as_list)
@@ -580,7 +580,7 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
             }
         }
     }
-    if (match.kind == SV_NUM || match.kind == SV_BOOL || match.kind == SV_UNDEF) {
+    if (match.kind == SV_NUM) {
         r = search_one(match, hay, nret, col, 1);
     } else if (match.kind == SV_STR || match.kind == SV_VEC) {
         int n = match.kind == SV_STR ? (int)match.u.str->nchars : match.u.vec->n;
@@ -600,6 +600,12 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
                 m = scad_value_ref(match.u.vec->v[i]);
             }
             scad_value hit = search_one(m, hay, nret, col, 0);
+            if (s && in.kind != SV_STR && hit.kind == SV_VEC && hit.u.vec->n == 0) {
+                scad_buf b = {0};
+                scad_value_format(&b, m, 1);
+                scad_diag_warning(ev->d, loc, "search term not found: %s", scad_buf_str(&b));
+                scad_buf_free(&b);
+            }
             scad_value_drop(m);
             if (nret == 1 && hit.kind == SV_VEC && hit.u.vec->n == 0 && s) {
                 scad_value_drop(hit); /* a character not found is left out */
