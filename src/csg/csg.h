@@ -110,4 +110,29 @@ int csg_affine_invert(const csg_affine m, csg_affine out);
 void csg_affine_point(const csg_affine m, const double p[3], double out[3]);
 void csg_affine_vector(const csg_affine m, const double v[3], double out[3]);
 
+
+/* ---- reading a committed scene (src/csg/inspect.c) -----------------------
+ * For exporters: the flattened, simplified tree as the tracer sees it.  Node
+ * indices run 0 .. csg_scene_node_count-1 in pre-order; the children of an
+ * op node i are i + 1 and then, while below info.end, each child's end. */
+
+typedef struct csg_scene_node_info {
+    int is_leaf;
+    csg_op op;           /* op nodes */
+    int32_t prim;        /* leaves: the primitive index */
+    int32_t end;         /* index just past this node's subtree */
+    double lo[3], hi[3]; /* world bounds, padded; may be infinite */
+} csg_scene_node_info;
+
+int csg_scene_node_count(const csg_scene *s);
+/* The node index of root r, or -1 when that root is empty or out of range. */
+int32_t csg_scene_root_node(const csg_scene *s, int r);
+/* Fill *out for node i (0 <= i < csg_scene_node_count). */
+void csg_scene_node_get(const csg_scene *s, int32_t i, csg_scene_node_info *out);
+/* The shape of primitive prim (borrowed from the scene). */
+const iv_shape *csg_scene_prim_shape(const csg_scene *s, int32_t prim);
+/* The world_from_object transform of primitive prim into out (the inverse
+ * of the one the tracer keeps, so equal to the built one up to rounding). */
+void csg_scene_prim_transform(const csg_scene *s, int32_t prim, csg_affine out);
+
 #endif

@@ -164,6 +164,9 @@ int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes,
 int iv_shape_hull(iv_shape *s, const double (*pts)[3], int n);
 /* The vertices of a polytope (borrowed), or NULL for other kinds. */
 const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3];
+/* The planes of a polytope (borrowed): {nx, ny, nz, d} with unit n, inside
+ * where n·x <= d; or NULL for other kinds.  For exporters. */
+const double (*iv_polytope_planes(const iv_shape *s, int *n))[4];
 
 /* A mesh from polygonal faces given as vertex indices (OpenSCAD's winding:
  * clockwise seen from outside).  Each face is fan-triangulated; the hit
@@ -176,6 +179,9 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
                   const int *face_start, int nfaces);
 /* Vertices of a mesh (borrowed) or NULL. */
 const double (*iv_mesh_vertices(const iv_shape *s, int *n))[3];
+/* Triangles of a mesh as vertex index triples (borrowed; wound as the input
+ * faces, in no particular order), or NULL for other kinds.  For exporters. */
+const int (*iv_mesh_triangles(const iv_shape *s, int *n))[3];
 /* Signed volume of a mesh (positive when its faces wind as OpenSCAD's). */
 double iv_mesh_volume(const iv_shape *s);
 

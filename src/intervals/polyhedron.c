@@ -339,6 +339,13 @@ const double (*iv_mesh_vertices(const iv_shape *s, int *n))[3]
     return (const double(*)[3])s->u.mesh.m->v;
 }
 
+const int (*iv_mesh_triangles(const iv_shape *s, int *n))[3]
+{
+    if (s->kind != IV_SHAPE_MESH) return NULL;
+    *n = s->u.mesh.m->nt;
+    return (const int(*)[3])s->u.mesh.m->tri;
+}
+
 double iv_mesh_volume(const iv_shape *s)
 {
     return s->kind == IV_SHAPE_MESH ? s->u.mesh.m->volume : 0;

@@ -94,6 +94,13 @@ const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3]
     return (const double(*)[3])s->u.polytope.p->v;
 }
 
+const double (*iv_polytope_planes(const iv_shape *s, int *n))[4]
+{
+    if (s->kind != IV_SHAPE_POLYTOPE) return NULL;
+    *n = s->u.polytope.p->n;
+    return (const double(*)[4])s->u.polytope.p->pl;
+}
+
 int polytope_intersect(const iv_polytope *p, const double o[3], const double d[3], int32_t prim,
                        iv_list *out)
 {

@@ -122,4 +122,14 @@ enum { RENDER_ROOT_MODEL = 0, RENDER_ROOT_HIGHLIGHT = 1, RENDER_ROOT_BACKGROUND 
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
                  float *rgba, char *err, size_t errlen);
 
+
+/* The roots of scene s as POV-Ray 3.7 SDL (src/render/pov_export.c): the
+ * same solids as analytic POV primitives and CSG, colours as srgbt
+ * pigments, camera cam as an image of opt->width × opt->height, the
+ * preview's lights and opt->colors' background.  On success *text is a
+ * malloc'd string of *len bytes (NUL-terminated), owned by the caller.
+ * Returns 0, or -1 with a message in err (out of memory, CSG too deep). */
+int render_pov_export(const csg_scene *s, const render_camera *cam, const render_options *opt,
+                      char **text, size_t *len, char *err, size_t errlen);
+
 #endif
