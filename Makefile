@@ -4,6 +4,7 @@
 #   make demo     deps + build + render models/demo.scad to out/demo.png
 #   make test     deps + build + every test (unit, language, against OpenSCAD)
 #   make asan     the same tests on a -fsanitize=address,undefined build
+#   make bench    rayscad against povray, openscad and manifold-3d (bench/run.py)
 # WERROR=1 turns warnings into errors (CI).
 
 CC  ?= cc
@@ -56,7 +57,7 @@ CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare conformance asan clean format
+.PHONY: all deps demo test unit cli compare conformance asan clean format bench
 .DEFAULT_GOAL := all
 
 all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
@@ -126,6 +127,13 @@ asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" cli
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" conformance
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" compare
+
+# Benchmarks against povray, openscad and manifold-3d (not a test; bench/run.py).
+bench: deps
+	$(MAKE) all
+	@test -d bench/node_modules/manifold-3d || (cd bench && npm install --no-audit --no-fund) || \
+		echo "bench: npm install failed; meshing runs without manifold-3d"
+	python3 bench/run.py $(BUILD)
 
 format:
 	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(IO_SRC) src/*/*.h

@@ -1,0 +1,291 @@
+#!/usr/bin/env python3
+"""make bench: rayscad against its peers, side by side in one run.
+
+Rendering: rayscad and POV-Ray (rendering rayscad's own .pov export of the
+same scene) at the same size, no antialiasing on either side, the same thread
+count, run alternately REPS times; medians of the whole process (wall clock)
+and of the render alone (rayscad's RAYSCAD_STATS line, POV-Ray's "Trace
+Time").  Meshing: rayscad -o x.stl against openscad -o x.stl (CGAL) and
+manifold-3d (bench/manifold_mesh.mjs), alternately, with each one's volume
+error against the exact value.  Scaling: rayscad's render time over unions
+of 10 … 10,000 primitives.
+
+Nothing here is a test: it prints medians and ratios and writes
+bench/results/<date>.json.  Usage:
+    bench/run.py BUILD_DIR [--reps N] [--quick] [--out FILE]
+"""
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import re
+import shutil
+import statistics
+import struct
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+EXAMPLES = "/usr/share/openscad/examples"
+
+# (name, path relative to bench/scenes or absolute, rayscad args)
+RENDER_SCENES = [
+    ("few", "few.scad"),
+    ("csg_deep", "csg_deep.scad"),
+    ("glass", "glass.scad"),
+    ("example001", f"{EXAMPLES}/Old/example001.scad"),
+    ("example005", f"{EXAMPLES}/Old/example005.scad"),
+    ("CSG", f"{EXAMPLES}/Basics/CSG.scad"),
+    ("logo", f"{EXAMPLES}/Basics/logo.scad"),
+    ("module_recursion", f"{EXAMPLES}/Advanced/module_recursion.scad"),
+]
+UNION_SIZES = [10, 100, 1000, 10000]
+
+# Meshing scenes: exact volumes (see the .scad files).
+MESH_SCENES = [
+    ("cube_holes", "mesh_cube_holes.scad", 2404.778358),
+    ("spheres", "mesh_spheres.scad", 7068.583471),
+]
+MESH_SIZES = [0.25, 0.125]  # rayscad --mesh-size, model units (the scenes are 20–30 wide)
+OPENSCAD_FN = 64
+MANIFOLD_SEGMENTS = [64, 128]
+
+
+def run(cmd, env=None, timeout=300):
+    t0 = time.perf_counter()
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=timeout)
+    return time.perf_counter() - t0, p
+
+
+def med(xs):
+    xs = [x for x in xs if x is not None]
+    return statistics.median(xs) if xs else None
+
+
+def gmean(xs):
+    xs = [x for x in xs if x]
+    return math.exp(sum(math.log(x) for x in xs) / len(xs)) if xs else None
+
+
+def stl_volume(path):
+    """Signed volume of a binary or ASCII STL (divergence theorem)."""
+    data = open(path, "rb").read()
+    tris = []
+    if len(data) >= 84 and 84 + 50 * struct.unpack_from("<I", data, 80)[0] == len(data):
+        n = struct.unpack_from("<I", data, 80)[0]
+        for i in range(n):
+            f = struct.unpack_from("<12f", data, 84 + 50 * i)
+            tris.append((f[3:6], f[6:9], f[9:12]))
+    else:
+        v = [tuple(map(float, m.groups())) for m in re.finditer(
+            rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)", data)]
+        tris = [(v[i], v[i + 1], v[i + 2]) for i in range(0, len(v) - 2, 3)]
+    vol = 0.0
+    for a, b, c in tris:
+        vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                a[2] * (b[0] * c[1] - b[1] * c[0]))
+    return vol / 6.0, len(tris)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("build")
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--quick", action="store_true", help="fewer scenes, 1 rep (a smoke run)")
+    ap.add_argument("--size", default="640,480")
+    ap.add_argument("--threads", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--out")
+    a = ap.parse_args()
+    reps = 1 if a.quick else a.reps
+    W, H = map(int, a.size.split(","))
+    rayscad = os.path.join(ROOT, a.build, "rayscad")
+    maskcmp = os.path.join(ROOT, a.build, "tools", "maskcmp")
+    work = os.path.join(ROOT, a.build, "bench")
+    os.makedirs(work, exist_ok=True)
+    env = dict(os.environ, RAYSCAD_STATS="1")
+    have = {t: shutil.which(t) is not None for t in ("povray", "openscad", "node")}
+    result = {
+        "date": datetime.datetime.now().isoformat(timespec="seconds"),
+        "machine": f"{platform.machine()}, {os.cpu_count()} cores, shared with other work",
+        "git": subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                              capture_output=True, text=True).stdout.strip(),
+        "settings": {"size": [W, H], "threads": a.threads, "reps": reps,
+                     "antialiasing": "none on either side (rayscad --samples 1, povray -A)"},
+        "versions": {},
+        "render": [], "scaling": [], "mesh": [], "summary": {},
+    }
+    for tool, cmd in (("povray", ["povray", "--version"]), ("openscad", ["openscad", "--version"]),
+                      ("node", ["node", "--version"])):
+        if have[tool]:
+            p = subprocess.run(cmd, capture_output=True, text=True)
+            result["versions"][tool] = (p.stdout + p.stderr).strip().splitlines()[0]
+
+    # ---- rendering -------------------------------------------------------
+    scenes = [(n, p if os.path.isabs(p) else os.path.join(HERE, "scenes", p))
+              for n, p in RENDER_SCENES]
+    sizes = UNION_SIZES[:2] if a.quick else UNION_SIZES
+    for n in sizes:
+        path = os.path.join(work, f"union_{n}.scad")
+        subprocess.run([sys.executable, os.path.join(HERE, "scenes", "gen_union.py"), str(n), path],
+                       check=True)
+        scenes.append((f"union_{n}", path))
+    if a.quick:
+        scenes = scenes[:2] + scenes[-2:]
+    print(f"render: {W}x{H}, {a.threads} threads, no antialiasing, {reps} alternating reps")
+    print(f"{'scene':18} {'rayscad s':>10} {'povray s':>10} {'ratio':>7} | "
+          f"{'ray render':>10} {'pov trace':>10} {'ratio':>7} | {'Mrays/s':>8} {'IoU':>7}")
+    for name, path in scenes:
+        pov = os.path.join(work, f"{name}.pov")
+        png_r = os.path.join(work, f"{name}.rayscad.png")
+        png_p = os.path.join(work, f"{name}.povray.png")
+        common = [f"--imgsize={W},{H}"]
+        t_export, p = run([rayscad, path, "-o", pov] + common)
+        if p.returncode != 0:
+            print(f"{name}: export failed: {p.stderr.strip()[:200]}")
+            continue
+        row = {"scene": name, "export_s": t_export, "rayscad_s": [], "rayscad_render_s": [],
+               "povray_s": [], "povray_trace_s": [], "rays_per_s": []}
+        for _ in range(reps):
+            t, p = run([rayscad, path, "-o", png_r, "--threads", str(a.threads)] + common, env=env)
+            m = re.search(r"stats: (\d+) rays in ([\d.]+) s, (\d+) rays/s", p.stderr)
+            if p.returncode == 0:
+                row["rayscad_s"].append(t)
+            if p.returncode == 0 and m:  # RAYSCAD_STATS: the render alone
+                row["rayscad_render_s"].append(float(m.group(2)))
+                row["rays_per_s"].append(float(m.group(3)))
+            if have["povray"]:
+                t, p = run(["povray", f"+W{W}", f"+H{H}", "-D", "-A", f"+WT{a.threads}",
+                            f"+I{pov}", f"+O{png_p}"], timeout=600)
+                m = re.search(r"Trace Time:.*\(([\d.]+) seconds\)", p.stderr)
+                if p.returncode == 0 and m:
+                    row["povray_s"].append(t)
+                    row["povray_trace_s"].append(float(m.group(1)))
+        for k in ("rayscad_s", "rayscad_render_s", "povray_s", "povray_trace_s", "rays_per_s"):
+            row[k + "_median"] = med(row[k])
+        rs, ps = row["rayscad_s_median"], row["povray_s_median"]
+        rr, pt = row["rayscad_render_s_median"], row["povray_trace_s_median"]
+        row["speedup_whole"] = ps / rs if rs and ps else None
+        row["speedup_render"] = pt / rr if rr and pt else None
+        if os.path.exists(png_r) and os.path.exists(png_p) and os.path.exists(maskcmp):
+            p = subprocess.run([maskcmp, png_r, png_p, "--min-iou", "0"], capture_output=True,
+                               text=True)
+            m = re.search(r"iou=([\d.]+)", p.stdout)
+            row["mask_iou"] = float(m.group(1)) if m else None
+        result["render"].append(row)
+
+        def f(x, fmt="10.3f"):
+            return format(x, fmt) if x is not None else "-".rjust(int(fmt.split(".")[0]))
+        print(f"{name:18} {f(rs)} {f(ps)} {f(row['speedup_whole'], '7.2f')} | {f(rr)} {f(pt)} "
+              f"{f(row['speedup_render'], '7.2f')} | {f((row['rays_per_s_median'] or 0) / 1e6, '8.2f')} "
+              f"{f(row.get('mask_iou'), '7.4f')}")
+        sys.stdout.flush()
+
+    # ---- scaling -----------------------------------------------------------
+    series = [r for r in result["render"] if r["scene"].startswith("union_")]
+    for r in series:
+        result["scaling"].append({"primitives": int(r["scene"].split("_")[1]),
+                                  "rayscad_render_s": r["rayscad_render_s_median"],
+                                  "povray_trace_s": r["povray_trace_s_median"]})
+    if len(series) >= 2:
+        s0, s1 = result["scaling"][0], result["scaling"][-1]
+        if s0["rayscad_render_s"] and s1["rayscad_render_s"]:
+            k = math.log(s1["rayscad_render_s"] / s0["rayscad_render_s"]) / math.log(
+                s1["primitives"] / s0["primitives"])
+            result["summary"]["scaling_exponent_rayscad"] = k
+            print(f"scaling: render time ~ n^{k:.2f} from {s0['primitives']} to "
+                  f"{s1['primitives']} primitives ({s0['rayscad_render_s']:.3f} s -> "
+                  f"{s1['rayscad_render_s']:.3f} s)")
+
+    # ---- meshing -----------------------------------------------------------
+    mesh_scenes = MESH_SCENES[:1] if a.quick else MESH_SCENES
+    manifold_ok = have["node"] and os.path.isdir(os.path.join(HERE, "node_modules", "manifold-3d"))
+    p = subprocess.run([rayscad, "--help"], capture_output=True, text=True)
+    mesh_cli = "--mesh-size" in p.stdout
+    if not mesh_cli:
+        print("mesh: this rayscad has no mesh output yet (--mesh-size); skipping rayscad meshing")
+    print(f"mesh: {reps} alternating reps; volume error against the exact value")
+    print(f"{'scene':12} {'tool':28} {'median s':>9} {'in-proc s':>9} {'triangles':>9} "
+          f"{'vol err %':>9}")
+    for name, rel, exact in mesh_scenes:
+        path = os.path.join(HERE, "scenes", rel)
+        runs = {}
+        for _ in range(reps):
+            if mesh_cli:
+                for h in MESH_SIZES:
+                    out = os.path.join(work, f"{name}.rayscad-{h}.stl")
+                    t, p = run([rayscad, path, "-o", out, "--mesh-size", str(h), "--threads",
+                                str(a.threads)])
+                    if p.returncode == 0:
+                        runs.setdefault(f"rayscad --mesh-size {h}", []).append((t, None, out))
+            if have["openscad"]:
+                out = os.path.join(work, f"{name}.openscad.stl")
+                t, p = run(["openscad", "-o", out, "-D", f"fn={OPENSCAD_FN}", path], timeout=600)
+                if p.returncode == 0:
+                    runs.setdefault(f"openscad CGAL $fn={OPENSCAD_FN}", []).append((t, None, out))
+            if manifold_ok:
+                for seg in MANIFOLD_SEGMENTS:
+                    t, p = run(["node", os.path.join(HERE, "manifold_mesh.mjs"), name, str(seg)])
+                    if p.returncode == 0:
+                        j = json.loads(p.stdout.strip().splitlines()[-1])
+                        runs.setdefault(f"manifold-3d {seg} segments", []).append(
+                            (t, j["ms"] / 1000, j))
+        for tool, rs in runs.items():
+            last = rs[-1][2]
+            if isinstance(last, dict):
+                vol, ntri = last["volume"], last["triangles"]
+            else:
+                vol, ntri = stl_volume(last)
+            row = {"scene": name, "tool": tool, "exact_volume": exact,
+                   "whole_s": [r[0] for r in rs], "inproc_s": [r[1] for r in rs],
+                   "volume": vol, "triangles": ntri,
+                   "volume_error_pct": 100 * (vol - exact) / exact}
+            row["whole_s_median"] = med(row["whole_s"])
+            row["inproc_s_median"] = med(row["inproc_s"])
+            result["mesh"].append(row)
+            ip = row["inproc_s_median"]
+            print(f"{name:12} {tool:28} {row['whole_s_median']:9.3f} "
+                  f"{(format(ip, '9.3f') if ip is not None else '-'.rjust(9))} {ntri:9d} "
+                  f"{row['volume_error_pct']:+9.3f}")
+        sys.stdout.flush()
+
+    # ---- summary -------------------------------------------------------------
+    S = result["summary"]
+    S["render_whole_speedup_gmean"] = gmean([r["speedup_whole"] for r in result["render"]])
+    S["render_only_speedup_gmean"] = gmean([r["speedup_render"] for r in result["render"]])
+    big = [r for r in result["render"] if r["scene"] in ("union_1000", "union_10000")]
+    S["render_whole_speedup_1000plus_gmean"] = gmean([r["speedup_whole"] for r in big])
+    S["render_only_speedup_1000plus_gmean"] = gmean([r["speedup_render"] for r in big])
+    for name, _, _ in mesh_scenes:
+        rows = {r["tool"]: r for r in result["mesh"] if r["scene"] == name}
+        ours = [r for t, r in rows.items() if t.startswith("rayscad")]
+        for o in ours:
+            for t, r in rows.items():
+                if t.startswith("rayscad"):
+                    continue
+                S[f"mesh_{name}: {o['tool']} vs {t}"] = {
+                    "speedup_whole": r["whole_s_median"] / o["whole_s_median"],
+                    "volume_error_pct": [o["volume_error_pct"], r["volume_error_pct"]]}
+    print("summary:")
+    for k, v in S.items():
+        if isinstance(v, float):
+            print(f"  {k}: {v:.2f}")
+        elif isinstance(v, dict):
+            print(f"  {k}: {v['speedup_whole']:.2f}x faster whole-process, volume error "
+                  f"{v['volume_error_pct'][0]:+.3f}% vs {v['volume_error_pct'][1]:+.3f}%")
+        else:
+            print(f"  {k}: {v}")
+    out = a.out or os.path.join(HERE, "results",
+                                datetime.datetime.now().strftime("%Y%m%d-%H%M%S") + ".json")
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out + ".tmp", "w") as fh:
+        json.dump(result, fh, indent=1)
+    os.replace(out + ".tmp", out)
+    print(f"wrote {os.path.relpath(out, ROOT)}")
+
+
+if __name__ == "__main__":
+    main()
