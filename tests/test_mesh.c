@@ -781,3 +781,104 @@ Test(mesh_io, write_read_round_trip)
     mesh_free(m);
     csg_scene_free(s);
 }
+
+/* ---- thin features ------------------------------------------------------ */
+
+static mesh_thin thin_of(csg_scene *s, double h)
+{
+    mesh_options o = opts_h(h);
+    mesh_dexels *d;
+    char err[256] = "";
+    cr_assert(mesh_dexels_new(s, &o, &d, err, sizeof err) == 0, "%s", err);
+    mesh_thin t;
+    mesh_dexels_thin(d, h, &t);
+    mesh_dexels_free(d);
+    return t;
+}
+
+Test(mesh_thin, plate_thinner_than_h_is_found)
+{
+    /* A 0.3-thick plate on a grid of 0.5: every z ray through it reports a
+     * wall of thickness 0.3 (its two faces have opposite normals). */
+    csg_scene *s = scene_of(box_node(-5, -5, 0.1, 5, 5, 0.4));
+    mesh_thin t = thin_of(s, 0.5);
+    cr_assert_gt(t.walls, 300, "%lld rays saw the plate", t.walls);
+    cr_assert_float_eq(t.min_wall, 0.3, 1e-9);
+    cr_assert(t.wall_at[2] > 0.1 && t.wall_at[2] < 0.4, "at z = %g", t.wall_at[2]);
+    cr_assert_eq(t.gaps, 0);
+    csg_scene_free(s);
+}
+
+Test(mesh_thin, narrow_gap_is_found)
+{
+    /* Two boxes 0.2 apart along x, on a grid of 0.5. */
+    csg_node *u = csg_node_op(CSG_OP_UNION);
+    cr_assert(csg_node_add(u, box_node(-4, -4, -4, -0.1, 4, 4)) == 0);
+    cr_assert(csg_node_add(u, box_node(0.1, -4, -4, 4, 4, 4)) == 0);
+    csg_scene *s = scene_of(u);
+    mesh_thin t = thin_of(s, 0.5);
+    cr_assert_gt(t.gaps, 100);
+    cr_assert_float_eq(t.min_gap, 0.2, 1e-9);
+    cr_assert_eq(t.walls, 0);
+    csg_scene_free(s);
+}
+
+Test(mesh_thin, curved_solids_are_not_thin)
+{
+    /* Rays that graze a sphere or the cylinders cut short chords, but their
+     * ends have nearly equal normals: nothing is reported. */
+    csg_scene *s = csg_example();
+    mesh_thin t = thin_of(s, 20.0 / 64);
+    cr_assert_eq(t.walls, 0, "%lld walls, thinnest %g", t.walls, t.min_wall);
+    cr_assert_eq(t.gaps, 0);
+    csg_scene_free(s);
+    s = scene_of(sphere_node(3, 0.1, 0.2, 0.3));
+    t = thin_of(s, 0.25);
+    cr_assert_eq(t.walls + t.gaps, 0);
+    csg_scene_free(s);
+}
+
+/* ---- the TriMesh built for OpenMesh ------------------------------------- */
+
+Test(mesh_io, write_rejects_non_manifold_and_accepts_open)
+{
+    char dir[] = "/tmp/rayscad_mesh_XXXXXX";
+    cr_assert(mkdtemp(dir));
+    char path[300], err[256] = "";
+    snprintf(path, sizeof path, "%s/x.stl", dir);
+    /* Two tetrahedra sharing only vertex 0: closed, every edge paired, but
+     * vertex 0 has two fans. */
+    const float v[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
+    const int32_t pinch[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3,
+                             0, 5, 4, 0, 4, 6, 0, 6, 5, 4, 5, 6};
+    cr_assert_eq(io_mesh_write(path, v, 7, pinch, 8, 0, err, sizeof err), -1);
+    cr_assert(strstr(err, "non-manifold"), "%s", err);
+    cr_assert_eq(access(path, F_OK), -1);
+    /* One edge in three triangles. */
+    const int32_t fin[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 1, 0, 4};
+    cr_assert_eq(io_mesh_write(path, v, 7, fin, 5, 0, err, sizeof err), -1);
+    /* A repeated vertex. */
+    const int32_t degenerate[] = {0, 1, 1};
+    cr_assert_eq(io_mesh_write(path, v, 7, degenerate, 1, 0, err, sizeof err), -1);
+    /* An open mesh (one tetrahedron face missing) goes through add_face. */
+    cr_assert(io_mesh_write(path, v, 7, pinch, 3, 0, err, sizeof err) == 0, "%s", err);
+    float *rv;
+    int32_t *rt;
+    int nv, nt;
+    cr_assert(io_mesh_read(path, &rv, &nv, &rt, &nt, err, sizeof err) == 0, "%s", err);
+    cr_assert_eq(nt, 3);
+    cr_assert_eq(nv, 4);
+    free(rv);
+    free(rt);
+    /* The closed tetrahedron comes back with its vertices in order. */
+    cr_assert(io_mesh_write(path, v, 7, pinch, 4, 0, err, sizeof err) == 0, "%s", err);
+    cr_assert(io_mesh_read(path, &rv, &nv, &rt, &nt, err, sizeof err) == 0, "%s", err);
+    cr_assert_eq(nt, 4);
+    for (int q = 0; q < 12; q++)
+        for (int c = 0; c < 3; c++)
+            cr_assert_eq(rv[3 * rt[q] + c], v[3 * pinch[q] + c], "corner %d", q);
+    free(rv);
+    free(rt);
+    unlink(path);
+    cr_assert_eq(rmdir(dir), 0, "temporary files left in %s", dir);
+}

@@ -8,9 +8,20 @@
  * this boundary: no C++ exception crosses it (every entry point catches all
  * and returns -1 with a message); nothing prints (OpenMesh's log streams are
  * disabled before each call); a written file appears complete or not at all
- * (OpenMesh writes a temporary file beside the target, with the target's
- * extension so it picks the same writer, which is renamed over the target
- * only when the writer reports success).
+ * (OpenMesh writes to io_temp_beside's temporary file, which keeps the
+ * target's extension so OpenMesh picks the same writer, and io_temp_commit
+ * renames it over the target only when the writer reports success).
+ *
+ * Building the TriMesh: a closed, consistently oriented, 2-manifold input
+ * (what mesh_dexels_contour makes) is built directly: each directed edge
+ * finds its twin in a per-vertex table, and the kernel's arrays are sized
+ * once and filled (next, face and vertex handles), then checked (every
+ * directed edge once, its reverse once, every vertex's triangles one fan).
+ * That is what add_face would build, without its per-face search around
+ * each vertex and growing arrays: 6× faster on 270k triangles.  Anything
+ * else (open meshes) goes through add_face, which rejects what OpenMesh
+ * cannot hold.  Face normals for STL are computed here, in double, from the
+ * arrays rather than by OpenMesh's face circulators.
  */
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -20,7 +31,9 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -29,11 +42,10 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <stdlib.h>
 #include <unistd.h>
 
 #include "io.h"
+#include "temp_file.h"
 
 namespace {
 
@@ -73,9 +85,23 @@ bool known_ext(const std::string &e)
     return e == "stl" || e == "off" || e == "obj" || e == "ply";
 }
 
-/* Copy the arrays into m; false (and a message) when a triangle cannot be
- * added, which happens only for a non-manifold or degenerate input. */
-bool build(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::string &msg)
+bool indices_ok(const int32_t *t, int nv, int nt, std::string &msg)
+{
+    for (int i = 0; i < nt; i++) {
+        const int32_t *f = t + 3 * (size_t)i;
+        for (int k = 0; k < 3; k++)
+            if (f[k] < 0 || f[k] >= nv) {
+                msg = "triangle " + std::to_string(i) + " has an index out of range";
+                return false;
+            }
+    }
+    return true;
+}
+
+/* The general path: add_face, which refuses a face that would make the
+ * mesh non-manifold. */
+bool build_by_faces(TriMesh &m, const float *v, int nv, const int32_t *t, int nt,
+                    std::string &msg)
 {
     m.reserve((size_t)nv, (size_t)nv + (size_t)nt, (size_t)nt);
     std::vector<TriMesh::VertexHandle> vh((size_t)nv);
@@ -84,11 +110,6 @@ bool build(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::st
                                                     v[3 * (size_t)i + 2]));
     for (int i = 0; i < nt; i++) {
         const int32_t *f = t + 3 * (size_t)i;
-        for (int k = 0; k < 3; k++)
-            if (f[k] < 0 || f[k] >= nv) {
-                msg = "triangle " + std::to_string(i) + " has an index out of range";
-                return false;
-            }
         TriMesh::FaceHandle fh = m.add_face(vh[(size_t)f[0]], vh[(size_t)f[1]], vh[(size_t)f[2]]);
         if (!fh.is_valid()) {
             msg = "triangle " + std::to_string(i) + " would make the mesh non-manifold";
@@ -96,6 +117,137 @@ bool build(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::st
         }
     }
     return true;
+}
+
+/* Corner q of triangle q / 3 starts the directed edge t[q] -> t[next(q)]. */
+inline size_t next_corner(size_t q) { return q % 3 == 2 ? q - 2 : q + 1; }
+
+/* The direct path for closed manifold input.  Returns 1 when m is built, 0
+ * when the input is not closed (some directed edge has no reverse; m is
+ * untouched), -1 with a message when it is closed but not a 2-manifold. */
+int build_closed(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::string &msg)
+{
+    size_t nc = 3 * (size_t)nt;
+    /* Corners grouped by their start vertex (CSR). */
+    std::vector<int32_t> first((size_t)nv + 1, 0);
+    for (size_t q = 0; q < nc; q++) {
+        if (t[q] == t[next_corner(q)]) {
+            msg = "triangle " + std::to_string(q / 3) + " is degenerate (a repeated vertex)";
+            return -1;
+        }
+        first[(size_t)t[q] + 1]++;
+    }
+    for (int i = 0; i < nv; i++)
+        first[(size_t)i + 1] += first[(size_t)i];
+    /* Each entry holds the edge's end vertex too, so the twin search reads
+     * one contiguous run instead of the scattered triangles. */
+    struct out_edge {
+        int32_t end, corner;
+    };
+    std::vector<out_edge> by_start(nc);
+    std::vector<int32_t> fill(first.begin(), first.end() - 1);
+    for (size_t q = 0; q < nc; q++)
+        by_start[(size_t)fill[(size_t)t[q]]++] = {t[next_corner(q)], (int32_t)q};
+
+    /* Pair each directed edge with its reverse: halfedges 2e and 2e + 1. */
+    std::vector<int32_t> he(nc, -1);
+    int32_t ne = 0;
+    for (size_t q = 0; q < nc; q++) {
+        if (he[q] >= 0)
+            continue;
+        int32_t a = t[q], b = t[next_corner(q)];
+        int twins = 0, same = 0;
+        size_t twin = 0;
+        for (int32_t k = first[(size_t)b]; k < first[(size_t)b + 1]; k++)
+            if (by_start[(size_t)k].end == a) {
+                twin = (size_t)by_start[(size_t)k].corner;
+                twins++;
+            }
+        for (int32_t k = first[(size_t)a]; k < first[(size_t)a + 1]; k++)
+            same += by_start[(size_t)k].end == b;
+        if (twins == 0)
+            return 0;
+        if (twins > 1 || same > 1 || he[twin] >= 0) {
+            msg = "triangle " + std::to_string(q / 3) +
+                  " would make the mesh non-manifold (an edge in more than two triangles, or "
+                  "two triangles that disagree on orientation)";
+            return -1;
+        }
+        he[q] = 2 * ne;
+        he[twin] = 2 * ne + 1;
+        ne++;
+    }
+
+    m.resize((size_t)nv, (size_t)ne, (size_t)nt);
+    for (int i = 0; i < nv; i++)
+        m.set_point(TriMesh::VertexHandle(i), TriMesh::Point(v[3 * (size_t)i], v[3 * (size_t)i + 1],
+                                                              v[3 * (size_t)i + 2]));
+    for (size_t q = 0; q < nc; q++) {
+        TriMesh::HalfedgeHandle h(he[q]);
+        TriMesh::FaceHandle f((int)(q / 3));
+        m.set_vertex_handle(h, TriMesh::VertexHandle(t[next_corner(q)]));
+        m.set_face_handle(h, f);
+        m.set_next_halfedge_handle(h, TriMesh::HalfedgeHandle(he[next_corner(q)]));
+        m.set_halfedge_handle(TriMesh::VertexHandle(t[q]), h);
+        /* The face's halfedge ends at its first vertex, so OpenMesh lists
+         * the vertices in the input's order (as add_face does). */
+        if (q % 3 == 2)
+            m.set_halfedge_handle(f, h);
+    }
+    /* Each vertex's outgoing halfedges must form one cycle under
+     * next(opposite(h)); two fans at one vertex (a pinch) would not. */
+    for (int i = 0; i < nv; i++) {
+        int32_t valence = first[(size_t)i + 1] - first[(size_t)i];
+        if (valence == 0)
+            continue;
+        TriMesh::HalfedgeHandle h0 = m.halfedge_handle(TriMesh::VertexHandle(i)), h = h0;
+        int32_t steps = 0;
+        do {
+            h = m.next_halfedge_handle(m.opposite_halfedge_handle(h));
+            steps++;
+        } while (h != h0 && steps <= valence);
+        if (steps != valence) {
+            m.clear();
+            msg = "vertex " + std::to_string(i) +
+                  " is non-manifold (its triangles form more than one fan)";
+            return -1;
+        }
+    }
+    return 1;
+}
+
+/* Copy the arrays into m; false (and a message) when the input cannot be a
+ * mesh: an index out of range, a non-manifold or degenerate triangle. */
+bool build(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::string &msg)
+{
+    if (!indices_ok(t, nv, nt, msg))
+        return false;
+    int rc = build_closed(m, v, nv, t, nt, msg);
+    if (rc < 0)
+        return false;
+    return rc > 0 || build_by_faces(m, v, nv, t, nt, msg);
+}
+
+/* Unit face normals, computed in double from the arrays (faces of m are
+ * the triangles in order). */
+void set_face_normals(TriMesh &m, const float *v, const int32_t *t, int nt)
+{
+    m.request_face_normals();
+    for (int i = 0; i < nt; i++) {
+        const float *p0 = v + 3 * (size_t)t[3 * (size_t)i], *p1 = v + 3 * (size_t)t[3 * (size_t)i + 1],
+                    *p2 = v + 3 * (size_t)t[3 * (size_t)i + 2];
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = (double)p1[k] - p0[k];
+            e2[k] = (double)p2[k] - p0[k];
+        }
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        double s = len > 0 ? 1 / len : 0;
+        m.set_normal(TriMesh::FaceHandle(i),
+                     TriMesh::Normal((float)(n[0] * s), (float)(n[1] * s), (float)(n[2] * s)));
+    }
 }
 
 /* Copy m (garbage-collected) out into malloc'ed arrays. */
@@ -173,44 +325,27 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
             set_err(err, errlen, std::string(path) + ": " + msg);
             return -1;
         }
-        m.request_face_normals();
-        m.update_face_normals();
-
-        /* A fresh temporary name beside path, ending in the same extension. */
-        std::string p(path);
-        size_t slash = p.rfind('/');
-        std::string dir = slash == std::string::npos ? "" : p.substr(0, slash + 1);
-        std::string base = slash == std::string::npos ? p : p.substr(slash + 1);
-        std::string suffix = "." + ext;
-        std::vector<char> name;
-        std::string pat = dir + "." + base + ".tmp-XXXXXX" + suffix;
-        name.assign(pat.begin(), pat.end());
-        name.push_back('\0');
-        int fd = mkstemps(name.data(), (int)suffix.size());
-        if (fd < 0) {
-            set_err(err, errlen, std::string(path) + ": cannot create a file there: " +
-                                     std::strerror(errno));
-            return -1;
-        }
-        close(fd);
-        tmp = name.data();
-
         OpenMesh::IO::Options opt;
-        if (ext == "stl")
+        if (ext == "stl") {
+            set_face_normals(m, v, t, nt);
             opt += OpenMesh::IO::Options::FaceNormal;
+        }
         if (!ascii && (ext == "stl" || ext == "ply"))
             opt += OpenMesh::IO::Options::Binary;
+
+        std::vector<char> name(std::strlen(path) + 64);
+        if (io_temp_beside(path, name.data(), name.size(), err, errlen) != 0)
+            return -1;
+        tmp = name.data();
         if (!OpenMesh::IO::write_mesh(m, tmp, opt, 9)) {
             unlink(tmp.c_str());
             set_err(err, errlen, std::string(path) + ": writing failed");
             return -1;
         }
-        if (rename(tmp.c_str(), path) != 0) {
-            int e = errno;
-            unlink(tmp.c_str());
-            set_err(err, errlen, std::string(path) + ": " + std::strerror(e));
+        std::string done;
+        done.swap(tmp); /* io_temp_commit removes it on failure */
+        if (io_temp_commit(done.c_str(), path, err, errlen) != 0)
             return -1;
-        }
         return 0;
     } catch (const std::bad_alloc &) {
         if (!tmp.empty())

@@ -26,6 +26,11 @@
  * smooth boundaries (the integrand has square-root edges at silhouettes) and
  * exactly for boxes whose faces lie between rays.  The three families'
  * estimates are averaged, which cancels part of the error.
+ *
+ * The thin-feature scan (mesh_dexels_thin) reads the same chords: two
+ * consecutive crossings of a ray whose normals are nearly opposite bound a
+ * wall (or a gap) whose thickness across it is the chord length times the
+ * normals' component along the ray.
  */
 #include "dexels.h"
 
@@ -424,4 +429,48 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
     m->crossings = crossings;
     for (int c = 0; c < 3; c++)
         m->centroid[c] = vol > 0 ? d->org[c] + mom[c] / vol : 0;
+}
+
+/* ---- thin features ------------------------------------------------------ */
+
+void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
+{
+    memset(out, 0, sizeof *out);
+    out->min_wall = out->min_gap = INFINITY;
+    if (!d->off[0])
+        return;
+    double h = d->h;
+    for (int a = 0; a < 3; a++) {
+        int u, v;
+        mesh_axes_other(a, &u, &v);
+        size_t rowlen = (size_t)d->n[u] + 1, rays = rowlen * ((size_t)d->n[v] + 1);
+        for (size_t r = 0; r < rays; r++) {
+            const mesh_hit *hp = d->hit[a] + d->off[a][r];
+            size_t nh = d->off[a][r + 1] - d->off[a][r];
+            for (size_t k = 0; k + 1 < nh; k++) {
+                const float *n0 = hp[k].n, *n1 = hp[k + 1].n;
+                double dot = (double)n0[0] * n1[0] + (double)n0[1] * n1[1] + (double)n0[2] * n1[2];
+                if (!(dot < MESH_THIN_COS))
+                    continue;
+                double w = (hp[k + 1].t - hp[k].t) * 0.5 * (fabs(n0[a]) + fabs(n1[a]));
+                if (!(w < thickness))
+                    continue;
+                /* Crossings alternate enter / exit from an enter, so an even
+                 * k starts a span of solid and an odd k a gap. */
+                int wall = (k & 1) == 0;
+                double *best = wall ? &out->min_wall : &out->min_gap;
+                double *at = wall ? out->wall_at : out->gap_at;
+                if (wall)
+                    out->walls++;
+                else
+                    out->gaps++;
+                if (w < *best) {
+                    *best = w;
+                    at[a] = d->org[a] + 0.5 * (hp[k].t + hp[k + 1].t);
+                    at[u] = d->org[u] + (double)(r % rowlen) * h;
+                    at[v] = d->org[v] + (double)(r / rowlen) * h;
+                }
+            }
+        }
+    }
 }

@@ -89,6 +89,33 @@ typedef struct mesh_measure {
 /* Measure a sampling.  Never fails. */
 void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *out);
 
+/* ---- thin features ------------------------------------------------------ */
+
+/* Walls (of solid) and gaps (of empty space between two surfaces) thinner
+ * than a given thickness, found along the rays.  A chord between two
+ * consecutive crossings of a ray counts when the surfaces at its ends face
+ * away from each other, nearly parallel (outward normals n0, n1 with
+ * n0·n1 < MESH_THIN_COS, i.e. within about 26° of opposite), and its
+ * thickness across them, chord length × (|n0·axis| + |n1·axis|) / 2, is
+ * below the limit.  The normal test leaves out the short chords every ray
+ * cuts where it grazes a curved surface (their two normals nearly agree)
+ * and the tips of ordinary edges and cones; it keeps parallel faces closer
+ * than the limit, which a grid of that spacing can miss entirely (both
+ * faces between two nodes) or show with holes. */
+#define MESH_THIN_COS (-0.9)
+
+typedef struct mesh_thin {
+    long long walls, gaps; /* number of such chords through solid / empty space */
+    /* The thinnest of each (model units; INFINITY when none) and the world
+     * position of its midpoint. */
+    double min_wall, min_gap;
+    double wall_at[3], gap_at[3];
+} mesh_thin;
+
+/* Find walls and gaps thinner than `thickness` (model units; the grid
+ * spacing is the limit a contour can resolve).  Never fails. */
+void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out);
+
 /* ---- meshes ------------------------------------------------------------- */
 
 /* An indexed triangle mesh: vertices as 3 floats (x, y, z in model units),
