@@ -72,6 +72,12 @@ void scad_geometry_release(scad_eval *ev)
     ev->nowned = ev->capowned = 0;
 }
 
+scad_geom *scad_geometry_leaf(scad_eval *ev, iv_shape *s, const scad_state *state)
+{
+    if (own(ev, s) != 0) return NULL;
+    return scad_geom_leaf(ev, s, state);
+}
+
 static scad_geom *leaf_at(scad_eval *ev, const iv_shape *s, const scad_state *state,
                           const csg_affine local)
 {
@@ -316,7 +322,12 @@ static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     s.u.prism.r = r;
     s.u.prism.z0 = -SLAB;
     s.u.prism.z1 = SLAB;
-    return leaf_at(ev, &s, state, NULL);
+    scad_geom *g = leaf_at(ev, &s, state, NULL);
+    /* A leaf has no children, so its cap is free: a smooth disc keeps
+     * OpenSCAD's fragment count there for a twisted or scaled extrusion,
+     * which must build OpenSCAD's polygon (disc_fragments). */
+    if (g) g->cap = fragments(r, f);
+    return g;
 }
 
 /* A vector of n-vectors of numbers (n = 2 or 3; a 2-vector is read with z
@@ -484,50 +495,20 @@ static void linear_tree(scad_geom *g, const csg_affine local_from_world,
     g->shape.u.prism.z1 = z1;
 }
 
-static scad_geom *m_linear_extrude(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                                   const scad_argv *a, const scad_state *state)
-{
-    static const char *const known[] = {"height", "center", "convexity", "twist",  "slices",
-                                        "scale",  "file",   "layer",     "origin", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    double h = 100, x;
-    /* OpenSCAD reads a first positional number as the height */
-    if (num_of(scad_argv_get(a, "height", 0), &x)) h = x;
-    if (!(h > 0) || !isfinite(h)) return NULL;
-    scad_value c = scad_argv_get(a, "center", -1);
-    int center = c.kind == SV_BOOL && c.u.b;
-    /* twist and scale are not built yet: the straight prism (README) */
-    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
-    if (!kids) return NULL;
-    csg_affine inv;
-    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
-    linear_tree(kids, inv, state->xf, center ? -h / 2 : 0, center ? h / 2 : h);
-    return kids;
-}
+/* ---- twisted and scaled linear_extrude ------------------------------------------ */
 
-typedef struct revolve_ctx {
-    scad_eval *ev;
-    const double *local_from_world;
-    const double *world_place; /* world_from_local ∘ the flips */
-    double xmin, xmax;
-    double angle;
-    double sign; /* -1: the profile is on the negative side, mirrored */
-    int disc_fragments_smooth;
-    facets f;
-} revolve_ctx;
-
-/* The region of a 2D leaf in the extrusion's frame (a new reference), with
- * x multiplied by sign; NULL when out of memory. */
-static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
+/* The region of a 2D leaf in the extrusion's frame (a new reference), x
+ * multiplied by sign; a disc becomes the polygon of disc_n points.  NULL
+ * when out of memory. */
+static iv_region *shadow_region(const double *local_from_world, const scad_geom *g, int disc_n,
+                                double sign)
 {
     csg_affine t;
-    leaf_2d(c->local_from_world, g->xf, t);
+    leaf_2d(local_from_world, g->xf, t);
     const iv_region *src = g->shape.u.prism.g;
     iv_region *tmp = NULL;
     if (!src) {
-        double r = g->shape.u.prism.r;
-        int n = faceted(c->ev, c->f) ? fragments(r, c->f) : c->disc_fragments_smooth;
-        tmp = circle_region(r, n);
+        tmp = circle_region(g->shape.u.prism.r, disc_n);
         if (!tmp) return NULL;
         src = tmp;
     }
@@ -546,6 +527,430 @@ static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double s
     }
     if (tmp) iv_region_release(tmp);
     return out;
+}
+
+/* OpenSCAD's fragment count for a disc leaf: the one m_circle recorded, or
+ * (a disc made elsewhere) the count the enclosing module's facets give. */
+static int disc_fragments(const scad_geom *g, facets f)
+{
+    return g->cap >= 3 ? g->cap : fragments(g->shape.u.prism.r, f);
+}
+
+typedef struct twist_ctx {
+    scad_eval *ev;
+    const double *local_from_world;
+    const double *world_from_local;
+    double h1, h2, twist, scale[2];
+    int slices;
+    facets f;
+    double max_r2, max_d2; /* the scan's results */
+} twist_ctx;
+
+/* The largest squared radius of the shadow's vertices, and the largest
+ * squared distance a vertex moves between bottom and top scale — what
+ * OpenSCAD sizes its default slices by.  The shadow is bounded as in
+ * revolve_scan: a difference by its first operand. */
+static void twist_scan(twist_ctx *c, const scad_geom *g)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
+        for (int i = 0; i < n; i++)
+            twist_scan(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) return;
+    iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
+    if (!r) return;
+    int n;
+    const double(*P)[2] = iv_region_points(r, &n);
+    for (int i = 0; i < n; i++) {
+        double x = P[i][0], y = P[i][1];
+        double dx = x - x * c->scale[0], dy = y - y * c->scale[1];
+        c->max_r2 = fmax(c->max_r2, x * x + y * y);
+        c->max_d2 = fmax(c->max_d2, dx * dx + dy * dy);
+    }
+    iv_region_release(r);
+}
+
+/* Calc::get_helix_slices, get_conical_helix_slices and get_diagonal_slices
+ * of OpenSCAD 2021.01: the default slice count from $fn/$fa/$fs.  A twist
+ * needs at least one slice per 120°. */
+static double archimedes_length(double a, double theta)
+{
+    return 0.5 * a * (theta * sqrt(1 + theta * theta) + asinh(theta));
+}
+
+static int default_slices(const twist_ctx *c, double h)
+{
+    double sx = c->scale[0], sy = c->scale[1];
+    facets f = c->f;
+    if (c->twist != 0) {
+        double tw = fabs(c->twist), r = sqrt(c->max_r2);
+        int min_slices = (int)fmax(ceil(tw / 120.0), 1);
+        if (r < GRID_FINE || !isfinite(f.fn)) return min_slices;
+        if (f.fn > 0) return (int)fmax(ceil(tw / 360.0 * f.fn), min_slices);
+        double len, rads = tw * PI / 180;
+        if ((sx == 1 && sy == 1) || sx != sy) { /* a helix */
+            double k = h / rads;
+            len = rads * sqrt(c->max_r2 + k * k);
+        } else { /* uniform scale: a conical helix, its plan an Archimedes spiral */
+            double end = sx > 1 ? rads * sx / (sx - 1) : rads / (1 - sx);
+            double a = r / end;
+            double spiral = archimedes_length(a, end) - archimedes_length(a, end - rads);
+            len = sqrt(spiral * spiral + h * h);
+        }
+        double fs_slices = ceil(len / fmax(f.fs, 0.01)), fa_slices = ceil(tw / fmax(f.fa, 0.01));
+        double n = fmax(fmin(fa_slices, fs_slices), min_slices);
+        return n > 100000 ? 100000 : (int)n;
+    }
+    if (sx != sy) { /* non-uniform scale alone: the longest diagonal path */
+        if (sqrt(c->max_d2) < GRID_FINE || !isfinite(f.fn)) return 1;
+        if (f.fn > 0) return f.fn > 100000 ? 100000 : (int)fmax(f.fn, 1);
+        double n = fmax(ceil(sqrt(c->max_d2 + h * h) / fmax(f.fs, 0.01)), 1);
+        return n > 100000 ? 100000 : (int)n;
+    }
+    return 1;
+}
+
+/* OpenSCAD's sgn_vdiff: compares |a| with |b|, equal within 10 ppm of
+ * their mean, so that the diagonal choice below does not flip on
+ * rounding. */
+static int length_order(double ax, double ay, double bx, double by)
+{
+    double l1 = hypot(ax, ay), l2 = hypot(bx, by);
+    return 2 * fabs(l1 - l2) * 1e5 > l1 + l2 ? (l1 < l2 ? -1 : 1) : 0;
+}
+
+typedef struct mesh_build {
+    double (*v)[3];
+    int nv, capv;
+    int *idx, nidx, capidx;
+    int *start, nf, capf;
+    int oom;
+} mesh_build;
+
+static int mb_vertex(mesh_build *m, double x, double y, double z)
+{
+    if (m->nv == m->capv) {
+        int cap = m->capv ? 2 * m->capv : 256;
+        double(*v)[3] = realloc(m->v, (size_t)cap * sizeof *v);
+        if (!v) {
+            m->oom = 1;
+            return 0;
+        }
+        m->v = v;
+        m->capv = cap;
+    }
+    m->v[m->nv][0] = x;
+    m->v[m->nv][1] = y;
+    m->v[m->nv][2] = z;
+    return m->nv++;
+}
+
+/* Append a face of k vertex indices (iv_shape_mesh's winding). */
+static void mb_face(mesh_build *m, const int *f, int k)
+{
+    if (m->nidx + k > m->capidx) {
+        int cap = m->capidx ? 2 * m->capidx : 1024;
+        while (cap < m->nidx + k)
+            cap *= 2;
+        int *v = realloc(m->idx, (size_t)cap * sizeof *v);
+        if (!v) {
+            m->oom = 1;
+            return;
+        }
+        m->idx = v;
+        m->capidx = cap;
+    }
+    if (m->nf + 2 > m->capf) {
+        int cap = m->capf ? 2 * m->capf : 256;
+        int *v = realloc(m->start, (size_t)cap * sizeof *v);
+        if (!v) {
+            m->oom = 1;
+            return;
+        }
+        m->start = v;
+        m->capf = cap;
+    }
+    if (m->nf == 0) m->start[0] = 0;
+    memcpy(m->idx + m->nidx, f, (size_t)k * sizeof *f);
+    m->nidx += k;
+    m->start[++m->nf] = m->nidx;
+}
+
+static void mb_free(mesh_build *m)
+{
+    free(m->v);
+    free(m->idx);
+    free(m->start);
+}
+
+typedef struct keyed_vertex {
+    double p[3];
+    int i;
+} keyed_vertex;
+
+static int cmp_keyed(const void *a, const void *b)
+{
+    const keyed_vertex *u = a, *v = b;
+    for (int k = 0; k < 3; k++)
+        if (u->p[k] != v->p[k]) return u->p[k] < v->p[k] ? -1 : 1;
+    return 0;
+}
+
+/* Merge vertices at exactly the same position (a zero scale collapses a
+ * layer), then drop repeated indices within each face and faces left with
+ * fewer than 3: what OpenSCAD's PolySet does when it becomes a mesh. */
+static void mb_weld(mesh_build *m)
+{
+    int n = m->nv;
+    keyed_vertex *order = malloc((size_t)(n ? n : 1) * sizeof *order);
+    int *to = malloc((size_t)(n ? n : 1) * sizeof *to);
+    if (!order || !to) {
+        free(order);
+        free(to);
+        m->oom = 1;
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        memcpy(order[i].p, m->v[i], sizeof order[i].p);
+        order[i].i = i;
+    }
+    qsort(order, (size_t)n, sizeof *order, cmp_keyed);
+    for (int i = 0; i < n; i++)
+        to[order[i].i] =
+            i > 0 && cmp_keyed(&order[i - 1], &order[i]) == 0 ? to[order[i - 1].i] : order[i].i;
+    int k = 0, nf = 0;
+    for (int f = 0; f < m->nf; f++) {
+        int s = m->start[f], e = m->start[f + 1], k0 = k;
+        for (int i = s; i < e; i++) {
+            int x = to[m->idx[i]];
+            if (k > k0 && m->idx[k - 1] == x) continue;
+            m->idx[k++] = x;
+        }
+        while (k - k0 > 1 && m->idx[k - 1] == m->idx[k0])
+            k--;
+        if (k - k0 < 3) {
+            k = k0;
+            continue;
+        }
+        m->start[nf] = k0;
+        m->start[++nf] = k;
+    }
+    m->nidx = k;
+    m->nf = nf;
+    free(order);
+    free(to);
+}
+
+/* Even-odd test of (x, y) against path P[0 .. n). */
+static int in_path(const double (*P)[2], int n, double x, double y)
+{
+    int in = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++)
+        if ((P[i][1] > y) != (P[j][1] > y) &&
+            x < P[j][0] + (y - P[j][1]) * (P[i][0] - P[j][0]) / (P[i][1] - P[j][1]))
+            in = !in;
+    return in;
+}
+
+/* The closed polyhedron OpenSCAD 2021.01 builds for region r
+ * (extrudePolygon and add_slice): the outline points at each of the
+ * slices + 1 layers turned by -twist·j/slices and scaled by 1 - (1 -
+ * scale)·j/slices about the origin, every quad between two layers split
+ * along its shorter diagonal (ties broken as OpenSCAD does: by the path's
+ * sign and the twist's direction), the caps flat.  OpenSCAD walks outer
+ * paths clockwise and holes counter-clockwise (then emits its faces
+ * counter-clockwise seen from outside); the faces here are the same
+ * triangles in iv_shape_mesh's opposite winding.  Returns 0, or -1. */
+static int twisted_mesh(const twist_ctx *c, const iv_region *r, iv_shape *out)
+{
+    int n, np;
+    const double(*P)[2] = iv_region_points(r, &n);
+    const int *ps = iv_region_paths(r, &np);
+    int S = c->slices;
+    mesh_build m = {0};
+    int *base = malloc((size_t)np * sizeof *base); /* first vertex of each path */
+    signed char *outer = malloc((size_t)(np ? np : 1));
+    if (!base || !outer) {
+        free(base);
+        free(outer);
+        return -1;
+    }
+    /* outline order: outer paths (even nesting depth) clockwise */
+    for (int p = 0; p < np; p++) {
+        const double(*Q)[2] = P + ps[p];
+        int k = ps[p + 1] - ps[p];
+        double area = 0;
+        for (int i = 0, j = k - 1; i < k; j = i++)
+            area += Q[j][0] * Q[i][1] - Q[i][0] * Q[j][1];
+        int depth = 0;
+        for (int q = 0; q < np; q++)
+            if (q != p && in_path(P + ps[q], ps[q + 1] - ps[q], Q[0][0], Q[0][1])) depth++;
+        outer[p] = depth % 2 == 0;
+        int reverse = outer[p] ? area > 0 : area < 0;
+        base[p] = m.nv;
+        for (int j = 0; j <= S; j++) {
+            double rot = c->twist * j / S;
+            double sx = 1 - (1 - c->scale[0]) * j / S, sy = 1 - (1 - c->scale[1]) * j / S;
+            double z = c->h1 + (c->h2 - c->h1) * j / S;
+            double cs = scad_cos_degrees(-rot), sn = scad_sin_degrees(-rot);
+            for (int i = 0; i < k; i++) {
+                const double *q = Q[reverse ? k - 1 - i : i];
+                mb_vertex(&m, sx * (cs * q[0] - sn * q[1]), sy * (sn * q[0] + cs * q[1]), z);
+            }
+        }
+    }
+    if (m.oom) goto fail;
+    int back_twist = c->twist <= 0;
+    for (int p = 0; p < np; p++) {
+        int k = ps[p + 1] - ps[p], b = base[p];
+        int flip = !outer[p] ^ back_twist;
+        for (int j = 0; j < S; j++) {
+            double s2x = 1 - (1 - c->scale[0]) * (j + 1) / S;
+            double s2y = 1 - (1 - c->scale[1]) * (j + 1) / S;
+            int any_zero = s2x == 0 || s2y == 0, any_non_zero = s2x != 0 || s2y != 0;
+            for (int i = 1; i <= k; i++) {
+                int p1 = b + j * k + (i - 1), c1 = b + j * k + i % k;
+                int p2 = p1 + k, c2 = c1 + k;
+                const double *P1 = m.v[p1], *C1 = m.v[c1], *P2 = m.v[p2], *C2 = m.v[c2];
+                int d = length_order(P1[0] - C2[0], P1[1] - C2[1], C1[0] - P2[0], C1[1] - P2[1]);
+                int split_first = d == -1 || (d == 0 && !flip);
+                int second = !any_zero || (any_non_zero && (P2[0] != C2[0] || P2[1] != C2[1]));
+                /* OpenSCAD's triangles, each written reversed */
+                if (split_first ^ any_zero) {
+                    mb_face(&m, (int[3]){p1, c1, c2}, 3);
+                    if (second) mb_face(&m, (int[3]){c2, p2, p1}, 3);
+                } else {
+                    mb_face(&m, (int[3]){p1, c1, p2}, 3);
+                    if (second) mb_face(&m, (int[3]){p2, c1, c2}, 3);
+                }
+            }
+        }
+    }
+    /* caps: the bottom counter-clockwise seen from above (clockwise seen
+     * from outside, below), the top clockwise; no top at a zero scale */
+    int top = c->scale[0] > 0 && c->scale[1] > 0;
+    for (int p = 0; p < np; p++) {
+        int k = ps[p + 1] - ps[p], b = base[p];
+        int *f = malloc((size_t)k * sizeof *f);
+        if (!f) {
+            m.oom = 1;
+            break;
+        }
+        for (int i = 0; i < k; i++)
+            f[i] = b + (k - 1 - i);
+        mb_face(&m, f, k);
+        if (top) {
+            for (int i = 0; i < k; i++)
+                f[i] = b + S * k + i;
+            mb_face(&m, f, k);
+        }
+        free(f);
+    }
+    if (m.oom) goto fail;
+    mb_weld(&m);
+    if (m.oom || m.nf == 0) goto fail;
+    int rc = iv_shape_mesh(out, (const double(*)[3])m.v, m.nv, m.idx, m.start, m.nf);
+    free(base);
+    free(outer);
+    mb_free(&m);
+    return rc < 0 ? -1 : 0;
+fail:
+    free(base);
+    free(outer);
+    mb_free(&m);
+    return -1;
+}
+
+static void twist_tree(twist_ctx *c, scad_geom *g)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            twist_tree(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) { /* a 3D child: OpenSCAD ignores it */
+        make_empty(g);
+        return;
+    }
+    iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
+    iv_shape s;
+    int rc = r ? twisted_mesh(c, r, &s) : -1;
+    if (r) iv_region_release(r);
+    if (rc != 0 || own(c->ev, &s) != 0) {
+        make_empty(g);
+        return;
+    }
+    g->shape = s;
+    memcpy(g->xf, c->world_from_local, sizeof(csg_affine));
+}
+
+static scad_geom *m_linear_extrude(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                   const scad_argv *a, const scad_state *state)
+{
+    static const char *const known[] = {"height", "center", "convexity", "twist",  "slices",
+                                        "scale",  "file",   "layer",     "origin", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double h = 100, x;
+    /* OpenSCAD reads a first positional number as the height */
+    if (num_of(scad_argv_get(a, "height", 0), &x)) h = x;
+    if (!(h > 0) || !isfinite(h)) return NULL;
+    scad_value c = scad_argv_get(a, "center", 5);
+    int center = c.kind == SV_BOOL && c.u.b;
+    twist_ctx t = {.ev = ev,
+                   .world_from_local = state->xf,
+                   .h1 = center ? -h / 2 : 0,
+                   .h2 = center ? h / 2 : h,
+                   .scale = {1, 1},
+                   .f = facets_of(ev, env, a, st->loc)};
+    if (num_of(scad_argv_get(a, "twist", 6), &x) && isfinite(x)) t.twist = x;
+    scad_value sv = scad_argv_get(a, "scale", 4);
+    if (num_of(sv, &x)) {
+        t.scale[0] = t.scale[1] = x;
+    } else if (sv.kind == SV_VEC && sv.u.vec->n >= 2) {
+        num_of(sv.u.vec->v[0], &t.scale[0]);
+        num_of(sv.u.vec->v[1], &t.scale[1]);
+    }
+    for (int k = 0; k < 2; k++)
+        if (!(t.scale[k] >= 0) || !isfinite(t.scale[k])) t.scale[k] = t.scale[k] > 0 ? 1 : 0;
+    if (num_of(scad_argv_get(a, "slices", 7), &x) && isfinite(x) && x >= 1)
+        t.slices = x > 100000 ? 100000 : (int)x;
+    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
+    if (t.twist == 0 && t.scale[0] == 1 && t.scale[1] == 1) {
+        /* straight: the exact prism (more slices change nothing) */
+        linear_tree(kids, inv, state->xf, t.h1, t.h2);
+        return kids;
+    }
+    t.local_from_world = inv;
+    twist_scan(&t, kids);
+    if (t.slices == 0) t.slices = default_slices(&t, h);
+    twist_tree(&t, kids);
+    return kids;
+}
+
+typedef struct revolve_ctx {
+    scad_eval *ev;
+    const double *local_from_world;
+    const double *world_place; /* world_from_local ∘ the flips */
+    double xmin, xmax;
+    double angle;
+    double sign; /* -1: the profile is on the negative side, mirrored */
+    int disc_fragments_smooth;
+    facets f;
+} revolve_ctx;
+
+/* The region of a 2D leaf in the extrusion's frame (a new reference), with
+ * x multiplied by sign; NULL when out of memory. */
+static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
+{
+    int n = faceted(c->ev, c->f) ? fragments(g->shape.u.prism.r, c->f) : c->disc_fragments_smooth;
+    return shadow_region(c->local_from_world, g, n, sign);
 }
 
 /* The x range of the subtree's 2D shape, bounded by its operations: a
@@ -829,21 +1234,128 @@ static scad_geom *m_hull(scad_eval *ev, scad_env *env, const scad_stmt *st, cons
     return g;
 }
 
+/* ---- resize ------------------------------------------------------------------------ */
+
+/* The bounding box of the subtree as OpenSCAD's geometry has it: each leaf
+ * by the points of its OpenSCAD tessellation (hull_points), a difference by
+ * its first operand, an intersection by the overlap of its operands' boxes
+ * (exact for the usual cases; an upper bound where a solid trims another).
+ * Returns 0, or -1 when empty. */
+static int tree_box(const scad_geom *g, facets f, double lo[3], double hi[3], int *any3d)
+{
+    if (!g) return -1;
+    if (!g->is_leaf) {
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n, have = 0;
+        for (int i = 0; i < n; i++) {
+            double a[3], b[3];
+            if (tree_box(g->kids[i], f, a, b, any3d) != 0) {
+                if (g->op == CSG_OP_INTERSECTION) return -1;
+                continue;
+            }
+            for (int k = 0; k < 3; k++) {
+                int meet = g->op == CSG_OP_INTERSECTION && have;
+                lo[k] = !have ? a[k] : meet ? fmax(lo[k], a[k]) : fmin(lo[k], a[k]);
+                hi[k] = !have ? b[k] : meet ? fmin(hi[k], b[k]) : fmax(hi[k], b[k]);
+            }
+            have = 1;
+        }
+        if (!have) return -1;
+        for (int k = 0; k < 3; k++)
+            if (lo[k] > hi[k]) return -1;
+        return 0;
+    }
+    pts P = {NULL, 0, 0, 0, 0};
+    hull_points(&P, g, csg_affine_identity, f);
+    *any3d |= P.any3d;
+    for (int i = 0; i < P.n; i++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = i ? fmin(lo[k], P.p[i][k]) : P.p[i][k];
+            hi[k] = i ? fmax(hi[k], P.p[i][k]) : P.p[i][k];
+        }
+    int n = P.n;
+    free(P.p);
+    return n > 0 ? 0 : -1;
+}
+
+static void place_tree(scad_geom *g, const csg_affine m)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            place_tree(g->kids[i], m);
+        return;
+    }
+    csg_affine_mul(m, g->xf, g->xf);
+}
+
+/* resize(newsize, auto): OpenSCAD's CGAL_Nef_polyhedron::resize (and its 2D
+ * twin) — scale about the origin so that the box of the children's
+ * geometry gets the new size on each axis where it is non-zero; an axis
+ * with newsize 0 keeps its size, or with auto takes the scale of the
+ * largest newsize.  2D children have two axes (their slab keeps its
+ * thickness). */
+static scad_geom *m_resize(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
+{
+    static const char *const known[] = {"newsize", "auto", "convexity", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    double ns[3] = {0, 0, 0};
+    int aut[3] = {0, 0, 0};
+    scad_value nv = scad_argv_get(a, "newsize", 0), av = scad_argv_get(a, "auto", 1);
+    if (nv.kind == SV_VEC)
+        for (int i = 0; i < 3 && i < nv.u.vec->n; i++)
+            if (!num_of(nv.u.vec->v[i], &ns[i]) || !isfinite(ns[i])) ns[i] = 0;
+    if (av.kind == SV_BOOL) {
+        aut[0] = aut[1] = aut[2] = av.u.b;
+    } else if (av.kind == SV_VEC) {
+        for (int i = 0; i < 3 && i < av.u.vec->n; i++)
+            aut[i] = scad_value_truthy(av.u.vec->v[i]);
+    }
+    /* the children in the resize's own frame, placed at the end */
+    scad_state local = *state;
+    memcpy(local.xf, csg_affine_identity, sizeof local.xf);
+    scad_geom *kids = scad_eval_children(ev, env, st, &local, CSG_OP_UNION);
+    if (!kids) return NULL;
+    double lo[3], hi[3];
+    int any3d = 0;
+    double scale[3] = {1, 1, 1};
+    if (tree_box(kids, facets_of(ev, env, a, st->loc), lo, hi, &any3d) == 0) {
+        int dim = any3d ? 3 : 2, imax = 0;
+        for (int i = 0; i < dim; i++) {
+            if (ns[i] == 0) continue;
+            if (hi[i] - lo[i] == 0) {
+                scad_diag_warning(ev->d, st->loc,
+                                  "Resize in direction normal to flat object is not implemented");
+                dim = 0;
+                scale[0] = scale[1] = scale[2] = 1;
+                break;
+            }
+            scale[i] = ns[i] / (hi[i] - lo[i]);
+            if (ns[i] > ns[imax]) imax = i;
+        }
+        double autoscale = ns[imax] != 0 && dim > 0 ? ns[imax] / (hi[imax] - lo[imax]) : 1;
+        for (int i = 0; i < dim; i++)
+            if (aut[i] && ns[i] == 0) scale[i] = autoscale;
+    }
+    csg_affine s = {scale[0], 0, 0, 0, 0, scale[1], 0, 0, 0, 0, scale[2], 0}, m;
+    csg_affine_mul(state->xf, s, m);
+    place_tree(kids, m);
+    return kids;
+}
+
 /* ---- the table -------------------------------------------------------------------- */
 
 /* OpenSCAD modules rayscad does not build yet.  Their children are still
  * evaluated (their echo() lines are part of the output), and no message is
- * added, so the .echo output stays OpenSCAD's; README lists them.  offset,
- * minkowski and resize show their children unchanged (the nearest shape);
- * projection, import, surface and text show nothing. */
+ * added, so the .echo output stays OpenSCAD's; README lists them.  offset
+ * and minkowski show their children unchanged (the nearest shape);
+ * projection and text show nothing. */
 static scad_geom *m_unsupported(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                 const scad_argv *a, const scad_state *state)
 {
     (void)a;
     scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
-    if (!strcmp(st->name, "offset") || !strcmp(st->name, "minkowski") ||
-        !strcmp(st->name, "resize"))
-        return kids;
+    if (!strcmp(st->name, "offset") || !strcmp(st->name, "minkowski")) return kids;
     return NULL;
 }
 
@@ -854,18 +1366,18 @@ static const struct {
     {"circle", m_circle},
     {"cylinder", m_cylinder},
     {"hull", m_hull},
-    {"import", m_unsupported},
+    {"import", scad_module_import},
     {"linear_extrude", m_linear_extrude},
     {"minkowski", m_unsupported},
     {"offset", m_unsupported},
     {"polygon", m_polygon},
     {"polyhedron", m_polyhedron},
     {"projection", m_unsupported},
-    {"resize", m_unsupported},
+    {"resize", m_resize},
     {"rotate_extrude", m_rotate_extrude},
     {"sphere", m_sphere},
     {"square", m_square},
-    {"surface", m_unsupported},
+    {"surface", scad_module_surface},
     {"text", m_unsupported},
 };
 

@@ -709,7 +709,7 @@ static void header(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad
             aut[0] = aut[1] = aut[2] = av.u.b;
         } else if (av.kind == SV_VEC) {
             for (int i = 0; i < 3 && i < av.u.vec->n; i++)
-                aut[i] = av.u.vec->v[i].kind == SV_BOOL && av.u.vec->v[i].u.b;
+                aut[i] = scad_value_truthy(av.u.vec->v[i]);
         }
         scad_buf_puts(b, "resize(newsize = [");
         for (int i = 0; i < 3; i++) {

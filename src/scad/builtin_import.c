@@ -1,0 +1,437 @@
+/*
+ * builtin_import.c — import() and surface(): geometry read from files, as
+ * closed triangle meshes (iv_shape_mesh).
+ *
+ * Files are named relative to the folder of the .scad file that makes the
+ * call, as OpenSCAD resolves them.  Reading goes through the injected
+ * services (scad_services: read_mesh for mesh files, read_image for PNG
+ * heightmaps), so src/scad needs no file-format library; the text .dat
+ * heightmaps are parsed here.  A file that is missing or unreadable is a
+ * warning worded as OpenSCAD words it, and builds nothing, as OpenSCAD does.
+ *
+ * surface() builds the very polyhedron of OpenSCAD 2021.01's
+ * SurfaceNode::createGeometry: each grid cell four triangles meeting at its
+ * centre (at the mean of the corner heights), four side walls down to a flat
+ * bottom at z = min(0, lowest height - 1), the bottom one polygon.
+ */
+#include "builtin_geometry.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The file name as OpenSCAD resolves it: relative to the folder of the
+ * calling file unless absolute.  Into out (freed by the caller). */
+static void resolve(const scad_stmt *st, const char *name, scad_buf *out)
+{
+    const char *from = st->loc.file ? st->loc.file : "";
+    if (name[0] != '/') {
+        const char *slash = strrchr(from, '/');
+        if (slash) scad_buf_put(out, from, (size_t)(slash - from + 1));
+    }
+    scad_buf_puts(out, name);
+}
+
+/* The extension of path, lower-cased, into ext (at most n bytes). */
+static void extension(const char *path, char *ext, size_t n)
+{
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    ext[0] = 0;
+    if (!dot || (slash && dot < slash)) return;
+    size_t i = 0;
+    for (dot++; *dot && i + 1 < n; dot++)
+        ext[i++] = (char)tolower((unsigned char)*dot);
+    ext[i] = 0;
+}
+
+/* 1 when path can be opened for reading. */
+static int readable(const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return 0;
+    fclose(fp);
+    return 1;
+}
+
+/* ---- import ------------------------------------------------------------------- */
+
+scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                              const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"file",  "layer",  "convexity", "origin",    "scale",
+                                        "width", "height", "filename",  "layername", "center",
+                                        "dpi",   "id",     NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    scad_value f = scad_argv_get(a, "file", 0);
+    if (f.kind != SV_STR) f = scad_argv_get(a, "filename", -1);
+    const char *name = f.kind == SV_STR ? f.u.str->s : "";
+    char ext[16];
+    extension(name, ext, sizeof ext);
+    int mesh =
+        !strcmp(ext, "stl") || !strcmp(ext, "off") || !strcmp(ext, "obj") || !strcmp(ext, "ply");
+    if (!strcmp(ext, "dxf") || !strcmp(ext, "svg") || !strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
+        scad_diag_warning(ev->d, st->loc,
+                          "import() of %s files is not supported by rayscad: '%s' shows nothing",
+                          ext, name);
+        return NULL;
+    }
+    if (!mesh) {
+        scad_diag_warning(ev->d, st->loc,
+                          "Unsupported file format while trying to import file '\"%s\"'", name);
+        return NULL;
+    }
+    if (!ev->services->read_mesh) {
+        scad_diag_error(ev->d, st->loc, "import() is not available here");
+        return NULL;
+    }
+    scad_buf path = {0};
+    resolve(st, name, &path);
+    float *v = NULL;
+    int32_t *t = NULL;
+    int nv = 0, nt = 0;
+    char err[512];
+    scad_geom *g = NULL;
+    if (path.oom) {
+        scad_eval_error(ev, st->loc, "out of memory");
+    } else if (!readable(scad_buf_str(&path))) {
+        scad_diag_warning(ev->d, st->loc, "Can't open import file '%s'", scad_buf_str(&path));
+    } else if (ev->services->read_mesh(ev->services->ud, scad_buf_str(&path), &v, &nv, &t, &nt, err,
+                                       sizeof err) != 0) {
+        scad_diag_warning(ev->d, st->loc, "import(): %s", err);
+    } else if (nt > 0) {
+        /* the service's triangles turn counter-clockwise seen from
+         * outside; iv_shape_mesh takes OpenSCAD's clockwise faces */
+        double(*V)[3] = malloc((size_t)nv * sizeof *V);
+        int *idx = malloc((size_t)nt * 3 * sizeof *idx);
+        int *start = malloc((size_t)(nt + 1) * sizeof *start);
+        if (V && idx && start) {
+            for (int i = 0; i < nv; i++)
+                for (int k = 0; k < 3; k++)
+                    V[i][k] = v[3 * i + k];
+            for (int i = 0; i < nt; i++) {
+                idx[3 * i] = t[3 * i];
+                idx[3 * i + 1] = t[3 * i + 2];
+                idx[3 * i + 2] = t[3 * i + 1];
+                start[i] = 3 * i;
+            }
+            start[nt] = 3 * nt;
+            iv_shape s;
+            int rc = iv_shape_mesh(&s, (const double(*)[3])V, nv, idx, start, nt);
+            if (rc < 0) {
+                scad_diag_warning(ev->d, st->loc, "import(): '%s' is not a valid mesh",
+                                  scad_buf_str(&path));
+            } else {
+                if (rc == 1)
+                    scad_diag_warning(ev->d, st->loc,
+                                      "import(): '%s' is not closed (an edge is not shared by "
+                                      "exactly two faces); it is rendered best effort",
+                                      scad_buf_str(&path));
+                g = scad_geometry_leaf(ev, &s, state);
+            }
+        } else {
+            scad_eval_error(ev, st->loc, "out of memory");
+        }
+        free(V);
+        free(idx);
+        free(start);
+    }
+    free(v);
+    free(t);
+    scad_buf_free(&path);
+    return g;
+}
+
+/* ---- surface ------------------------------------------------------------------- */
+
+/* A heightmap: w × h values, row 0 at y = 0; base is the bottom's height,
+ * OpenSCAD 2021.01's min(0, lowest - 1) for both kinds of file. */
+typedef struct heightmap {
+    double *z;
+    int w, h;
+    double base;
+} heightmap;
+
+/* OpenSCAD's read_dat: lines of numbers separated by spaces or tabs; blank
+ * lines and lines starting with '#' skipped; a ragged row is padded with 0.  A
+ * token that is not a number ends the file with a warning, keeping what was
+ * read before it, as there.  Returns 0, 1 with a warning sent, or -1 (out
+ * of memory). */
+static int read_dat(scad_eval *ev, const scad_stmt *st, const char *path, heightmap *m)
+{
+    FILE *fp = fopen(path, "r");
+    if (!fp) {
+        scad_diag_warning(ev->d, st->loc, "The file '%s' couldn't be opened.", path);
+        return 1;
+    }
+    double *val = NULL; /* row-major as read, rows of `cap_w` */
+    int *len = NULL, rows = 0, caprows = 0, cols = 0, rc = 0, bad = 0;
+    double lowest = INFINITY;
+    size_t capval = 0, nval = 0;
+    char *line = NULL;
+    size_t linecap = 0;
+    while (getline(&line, &linecap, fp) > 0) {
+        char *p = line;
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
+            p++;
+        if (*p == 0 || *p == '#') continue;
+        if (rows == caprows) {
+            caprows = caprows ? 2 * caprows : 64;
+            int *l = realloc(len, (size_t)caprows * sizeof *l);
+            if (!l) {
+                rc = -1;
+                break;
+            }
+            len = l;
+        }
+        int n = 0;
+        for (;;) {
+            while (*p == ' ' || *p == '\t')
+                p++;
+            if (*p == 0 || *p == '\r' || *p == '\n') break;
+            char *end;
+            errno = 0;
+            double x = strtod(p, &end);
+            if (end == p || (*end && !strchr(" \t\r\n", *end))) {
+                scad_diag_warning(ev->d, st->loc,
+                                  "Illegal value in '%s': bad lexical cast: source type value "
+                                  "could not be interpreted as target",
+                                  path);
+                bad = 1;
+                break;
+            }
+            if (nval == capval) {
+                capval = capval ? 2 * capval : 1024;
+                double *v = realloc(val, capval * sizeof *v);
+                if (!v) {
+                    rc = -1;
+                    break;
+                }
+                val = v;
+            }
+            val[nval++] = x;
+            lowest = fmin(lowest, x);
+            n++;
+            p = end;
+        }
+        if (rc) break;
+        if (n > 0 || !bad) len[rows++] = n;
+        if (n > cols) cols = n;
+        if (bad) break;
+    }
+    free(line);
+    fclose(fp);
+    if (rc == 0 && rows > 0 && cols > 0) {
+        m->z = calloc((size_t)rows * (size_t)cols, sizeof *m->z);
+        if (!m->z) {
+            rc = -1;
+        } else {
+            size_t k = 0;
+            for (int i = 0; i < rows; i++)
+                for (int j = 0; j < len[i]; j++)
+                    m->z[(size_t)i * (size_t)cols + (size_t)j] = val[k++];
+            m->w = cols;
+            m->h = rows;
+            m->base = fmin(lowest - 1, 0);
+        }
+    }
+    free(val);
+    free(len);
+    return rc;
+}
+
+/* OpenSCAD's PNG heightmap: the pixel as lodepng's 8-bit RGB (a 16-bit
+ * channel keeps its high byte), its luminance 0.2126 R + 0.7152 G + 0.0722 B
+ * (0..255) scaled by 100/255; invert takes 1 - luminance (not 255 -: that
+ * is OpenSCAD 2021.01's formula, heights go negative).  The image's top row
+ * is at the largest y. */
+static int read_png(scad_eval *ev, const scad_stmt *st, const char *path, int invert, heightmap *m)
+{
+    int w, h, ch;
+    float *px = NULL;
+    char err[512];
+    if (!ev->services->read_image) {
+        scad_diag_error(ev->d, st->loc, "surface() of an image is not available here");
+        return 1;
+    }
+    if (ev->services->read_image(ev->services->ud, path, &w, &h, &ch, &px, err, sizeof err) != 0) {
+        scad_diag_warning(ev->d, st->loc, "Can't read PNG image '%s'", path);
+        return 1;
+    }
+    m->z = malloc((size_t)w * (size_t)h * sizeof *m->z);
+    if (!m->z) {
+        free(px);
+        return -1;
+    }
+    double lowest = INFINITY;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const float *q = px + ((size_t)y * (size_t)w + (size_t)x) * (size_t)ch;
+            double c[3];
+            for (int k = 0; k < 3; k++) {
+                float f = q[ch >= 3 ? k : 0];
+                long v16 = lround(fmin(fmax(f, 0), 1) * 65535.0);
+                c[k] = (double)(v16 >> 8);
+            }
+            double lum = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+            double z = 100.0 / 255 * (invert ? 1 - lum : lum);
+            m->z[(size_t)(h - 1 - y) * (size_t)w + (size_t)x] = z;
+            lowest = fmin(lowest, z);
+        }
+    free(px);
+    m->w = w;
+    m->h = h;
+    m->base = fmin(lowest - 1, 0);
+    return 0;
+}
+
+/* The surface polyhedron (see the top of the file) as faces in OpenSCAD's
+ * order, each reversed into iv_shape_mesh's clockwise winding. */
+static int surface_mesh(const heightmap *m, int center, iv_shape *out)
+{
+    int W = m->w, H = m->h;
+    double ox = center ? -(W - 1) / 2.0 : 0, oy = center ? -(H - 1) / 2.0 : 0;
+    size_t cells = (size_t)(W - 1) * (size_t)(H - 1);
+    /* vertices: the grid, the cell centres, the bottom ring's grid points */
+    size_t nv = (size_t)W * H + cells + (size_t)W * H;
+    size_t nf = 4 * cells + 2 * (size_t)(H - 1) + 2 * (size_t)(W - 1) + 1;
+    size_t nidx = 12 * cells + 8 * (size_t)(H - 1) + 8 * (size_t)(W - 1) + 2 * (size_t)(W - 1) +
+                  2 * (size_t)(H - 1);
+    if (nv > 100000000 || nf > 100000000) return -1;
+    double(*V)[3] = malloc(nv * sizeof *V);
+    int *idx = malloc(nidx * sizeof *idx), *start = malloc((nf + 1) * sizeof *start);
+    if (!V || !idx || !start) {
+        free(V);
+        free(idx);
+        free(start);
+        return -1;
+    }
+#define GRID(i, j) ((int)((size_t)(i) * (size_t)W + (size_t)(j)))
+#define MID(i, j) ((int)((size_t)W * H + (size_t)((i)-1) * (size_t)(W - 1) + (size_t)((j)-1)))
+#define LOW(i, j) ((int)((size_t)W * H + cells + (size_t)(i) * (size_t)W + (size_t)(j)))
+    for (int i = 0; i < H; i++)
+        for (int j = 0; j < W; j++) {
+            double *p = V[GRID(i, j)], *q = V[LOW(i, j)];
+            p[0] = q[0] = ox + j;
+            p[1] = q[1] = oy + i;
+            p[2] = m->z[GRID(i, j)];
+            q[2] = m->base;
+        }
+    for (int i = 1; i < H; i++)
+        for (int j = 1; j < W; j++) {
+            double *p = V[MID(i, j)];
+            p[0] = ox + j - 0.5;
+            p[1] = oy + i - 0.5;
+            p[2] = (m->z[GRID(i - 1, j - 1)] + m->z[GRID(i - 1, j)] + m->z[GRID(i, j - 1)] +
+                    m->z[GRID(i, j)]) /
+                   4;
+        }
+    size_t k = 0, f = 0;
+#define FACE3(a, b, c)                                                                             \
+    do {                                                                                           \
+        start[f++] = (int)k;                                                                       \
+        idx[k++] = (c);                                                                            \
+        idx[k++] = (b);                                                                            \
+        idx[k++] = (a);                                                                            \
+    } while (0)
+#define FACE4(a, b, c, d)                                                                          \
+    do {                                                                                           \
+        start[f++] = (int)k;                                                                       \
+        idx[k++] = (d);                                                                            \
+        idx[k++] = (c);                                                                            \
+        idx[k++] = (b);                                                                            \
+        idx[k++] = (a);                                                                            \
+    } while (0)
+    for (int i = 1; i < H; i++)
+        for (int j = 1; j < W; j++) {
+            int v1 = GRID(i - 1, j - 1), v2 = GRID(i - 1, j), v3 = GRID(i, j - 1), v4 = GRID(i, j),
+                vx = MID(i, j);
+            FACE3(v1, v2, vx);
+            FACE3(v2, v4, vx);
+            FACE3(v4, v3, vx);
+            FACE3(v3, v1, vx);
+        }
+    for (int i = 1; i < H; i++) {
+        FACE4(LOW(i - 1, 0), GRID(i - 1, 0), GRID(i, 0), LOW(i, 0));
+        FACE4(LOW(i, W - 1), GRID(i, W - 1), GRID(i - 1, W - 1), LOW(i - 1, W - 1));
+    }
+    for (int j = 1; j < W; j++) {
+        FACE4(LOW(0, j), GRID(0, j), GRID(0, j - 1), LOW(0, j - 1));
+        FACE4(LOW(H - 1, j - 1), GRID(H - 1, j - 1), GRID(H - 1, j), LOW(H - 1, j));
+    }
+    /* the bottom, OpenSCAD's ring walked backwards */
+    start[f++] = (int)k;
+    size_t ring = k;
+    for (int i = 0; i < H - 1; i++)
+        idx[k++] = LOW(i, 0);
+    for (int j = 0; j < W - 1; j++)
+        idx[k++] = LOW(H - 1, j);
+    for (int i = H - 1; i > 0; i--)
+        idx[k++] = LOW(i, W - 1);
+    for (int j = W - 1; j > 0; j--)
+        idx[k++] = LOW(0, j);
+    for (size_t a = ring, b = k - 1; a < b; a++, b--) {
+        int x = idx[a];
+        idx[a] = idx[b];
+        idx[b] = x;
+    }
+    start[f] = (int)k;
+#undef FACE3
+#undef FACE4
+#undef GRID
+#undef MID
+#undef LOW
+    int rc = iv_shape_mesh(out, (const double(*)[3])V, (int)nv, idx, start, (int)f);
+    free(V);
+    free(idx);
+    free(start);
+    return rc < 0 ? -1 : 0;
+}
+
+scad_geom *scad_module_surface(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_argv *a, const scad_state *state)
+{
+    (void)env;
+    static const char *const known[] = {"file", "center", "invert", "convexity", NULL};
+    scad_check_arg_names(ev, a, st->loc, known);
+    scad_value fv = scad_argv_get(a, "file", 0);
+    scad_value cv = scad_argv_get(a, "center", 1), iv = scad_argv_get(a, "invert", -1);
+    int center = cv.kind == SV_BOOL && cv.u.b, invert = iv.kind == SV_BOOL && iv.u.b;
+    scad_buf path = {0};
+    resolve(st, fv.kind == SV_STR ? fv.u.str->s : "", &path);
+    if (path.oom) {
+        scad_eval_error(ev, st->loc, "out of memory");
+        return NULL;
+    }
+    const char *p = scad_buf_str(&path);
+    /* PNG by its signature, as OpenSCAD tells them apart; else text */
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char head[8] = {0};
+    FILE *fp = fopen(p, "rb");
+    if (!fp) {
+        scad_diag_warning(ev->d, st->loc, "The file '%s' couldn't be opened.", p);
+        scad_buf_free(&path);
+        return NULL;
+    }
+    size_t got = fread(head, 1, sizeof head, fp);
+    fclose(fp);
+    heightmap m = {NULL, 0, 0, 0};
+    int rc = got == sizeof head && !memcmp(head, sig, sizeof sig) ? read_png(ev, st, p, invert, &m)
+                                                                  : read_dat(ev, st, p, &m);
+    scad_buf_free(&path);
+    scad_geom *g = NULL;
+    if (rc < 0) {
+        scad_eval_error(ev, st->loc, "out of memory");
+    } else if (rc == 0 && m.w > 1 && m.h > 1) {
+        iv_shape s;
+        if (surface_mesh(&m, center, &s) == 0)
+            g = scad_geometry_leaf(ev, &s, state);
+        else
+            scad_eval_error(ev, st->loc, "surface(): out of memory");
+    }
+    free(m.z);
+    return g;
+}
