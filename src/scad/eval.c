@@ -168,47 +168,24 @@ scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_
 static void run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s);
 
 /* The environment of a `use`d file: its top-level variables, evaluated
- * once, the first time one of its functions or modules is called. */
+ * afresh for every call from outside that file into one of its functions
+ * or modules, as OpenSCAD 2021.01 does (FileContext::initializeModule runs
+ * at each such call, echo() side effects included).  The caller frees it
+ * with env_free after the call. */
 static scad_env *use_env(scad_eval *ev, const scad_scope *u)
 {
-    for (int i = 0; i < ev->nuse; i++)
-        if (ev->use_scopes[i] == u) return ev->use_envs[i];
-    if (ev->nuse == ev->capuse) {
-        int cap = ev->capuse ? ev->capuse * 2 : 8;
-        const scad_scope **ns = realloc(ev->use_scopes, sizeof *ns * (size_t)cap);
-        if (ns) ev->use_scopes = ns;
-        scad_env **ne = ns ? realloc(ev->use_envs, sizeof *ne * (size_t)cap) : NULL;
-        if (ne) ev->use_envs = ne;
-        if (!ns || !ne) {
-            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
-            return NULL;
-        }
-        ev->capuse = cap;
-    }
     scad_env *e = env_new(ev, ev->builtins, ev->builtins, u);
-    if (!e) return NULL;
-    ev->use_scopes[ev->nuse] = u;
-    ev->use_envs[ev->nuse] = e;
-    ev->nuse++;
-    run_assignments(ev, e, u);
+    if (e) run_assignments(ev, e, u);
     return e;
 }
 
-void scad_eval_free_uses(scad_eval *ev)
-{
-    for (int i = 0; i < ev->nuse; i++)
-        env_free(ev->use_envs[i]);
-    free(ev->use_envs);
-    free(ev->use_scopes);
-    ev->use_envs = NULL;
-    ev->use_scopes = NULL;
-    ev->nuse = ev->capuse = 0;
-}
-
 /* A function (want_module 0) or module by name: the innermost scope that
- * defines it, then the files that scope `use`s (not what they use). */
+ * defines it, then the files that scope `use`s (not what they use).  With
+ * def_env NULL only the definition is looked up; else *def_env is where it
+ * was defined, and *fresh says whether that is a new environment of a used
+ * file, which the caller frees after the call. */
 static const void *find_def(scad_eval *ev, scad_env *env, const char *name, int want_module,
-                            scad_env **def_env)
+                            scad_env **def_env, int *fresh)
 {
     for (scad_env *e = env; e; e = e->parent) {
         if (!e->defs) continue;
@@ -218,8 +195,11 @@ static const void *find_def(scad_eval *ev, scad_env *env, const char *name, int 
             for (int i = n - 1; i >= 0; i--) {
                 const char *dn = want_module ? s->mods[i]->name : s->funcs[i]->name;
                 if (strcmp(dn, name) != 0) continue;
-                *def_env = k < 0 ? e : use_env(ev, s);
-                if (!*def_env) return NULL;
+                if (def_env) {
+                    *fresh = k >= 0;
+                    *def_env = k < 0 ? e : use_env(ev, s);
+                    if (!*def_env) return NULL;
+                }
                 return want_module ? (const void *)s->mods[i] : (const void *)s->funcs[i];
             }
         }
@@ -228,20 +208,39 @@ static const void *find_def(scad_eval *ev, scad_env *env, const char *name, int 
 }
 
 static const scad_funcdef *find_function(scad_eval *ev, scad_env *env, const char *name,
-                                         scad_env **def_env)
+                                         scad_env **def_env, int *fresh)
 {
-    return find_def(ev, env, name, 0, def_env);
+    return find_def(ev, env, name, 0, def_env, fresh);
 }
 
 static const scad_moddef *find_module(scad_eval *ev, scad_env *env, const char *name,
-                                      scad_env **def_env)
+                                      scad_env **def_env, int *fresh)
 {
-    return find_def(ev, env, name, 1, def_env);
+    return find_def(ev, env, name, 1, def_env, fresh);
 }
 
 /* ---- arguments ---------------------------------------------------------------- */
 
-static int eval_args(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out)
+/* Evaluate a call's arguments in env, in OpenSCAD 2021.01's order, which
+ * shows in echo() output and warnings.
+ *
+ * Builtin functions, echo, assert, for and let (resolve 0): first to last.
+ *
+ * User functions and modules (params given) and the other builtin modules
+ * (params NULL), resolve 1: 2021.01 first resolves the arguments to names in
+ * an std::unordered_map (EvalContext::resolveArguments).  A positional
+ * argument takes the next parameter's name (past the last one: "Too many
+ * unnamed arguments supplied", once, and it is dropped unevaluated); a later
+ * argument of the same name replaces an earlier one, which is never
+ * evaluated (a named one warns "argument x supplied more than once"); a
+ * named argument that is no parameter warns "variable q not specified as
+ * parameter" but is bound all the same.  Then the map is evaluated in its
+ * iteration order, which in libstdc++ is the reverse of first insertion
+ * while the keys fall in distinct buckets (collisions are not modelled).
+ * With params, every argument in *out carries its resolved name; without,
+ * positional arguments keep their relative order. */
+static int eval_args_ordered(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out,
+                             int resolve, const scad_args *params, scad_loc loc)
 {
     out->n = 0;
     out->v = NULL;
@@ -251,23 +250,70 @@ static int eval_args(scad_eval *ev, scad_env *env, const scad_args *args, scad_a
     out->v = malloc(sizeof *out->v * (size_t)args->n);
     out->names = malloc(sizeof *out->names * (size_t)args->n);
     out->locs = malloc(sizeof *out->locs * (size_t)args->n);
-    if (!out->v || !out->names || !out->locs) {
+    int *arg_of = resolve ? malloc(sizeof *arg_of * (size_t)args->n) : NULL;
+    if (!out->v || !out->names || !out->locs || (resolve && !arg_of)) {
         free(out->v);
         free(out->names);
         free(out->locs);
+        free(arg_of);
         out->v = NULL;
         out->names = NULL;
         out->locs = NULL;
         scad_eval_error(ev, args->v[0].loc, "out of memory");
         return -1;
     }
-    for (int i = 0; i < args->n; i++) {
-        out->v[i] = args->v[i].value ? scad_eval_expr(ev, env, args->v[i].value) : scad_undef();
-        out->names[i] = args->v[i].name;
-        out->locs[i] = args->v[i].loc;
-        out->n++;
+    if (!resolve) {
+        for (int i = 0; i < args->n; i++) {
+            out->v[i] = args->v[i].value ? scad_eval_expr(ev, env, args->v[i].value) : scad_undef();
+            out->names[i] = args->v[i].name;
+            out->locs[i] = args->v[i].loc;
+        }
+        out->n = args->n;
+        return 0;
     }
+    int nkeys = 0, pos = 0, too_many = 0;
+    for (int i = 0; i < args->n; i++) {
+        const char *name = args->v[i].name;
+        int named = name != NULL;
+        if (!named && params) {
+            if (pos >= params->n) {
+                if (!too_many) scad_diag_warning(ev->d, loc, "Too many unnamed arguments supplied");
+                too_many = 1;
+                continue;
+            }
+            name = params->v[pos++].name;
+        }
+        if (named && params && name[0] != '$') {
+            int known = 0;
+            for (int k = 0; k < params->n && !known; k++)
+                known = strcmp(params->v[k].name, name) == 0;
+            if (!known)
+                scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", name);
+        }
+        int k = 0;
+        while (name && k < nkeys && !(out->names[k] && strcmp(out->names[k], name) == 0))
+            k++;
+        if (name && k < nkeys) {
+            if (named) scad_diag_warning(ev->d, loc, "argument %s supplied more than once", name);
+        } else {
+            k = nkeys++;
+            out->names[k] = name;
+        }
+        arg_of[k] = i;
+    }
+    for (int k = nkeys - 1; k >= 0; k--) {
+        const scad_arg *a = &args->v[arg_of[k]];
+        out->v[k] = a->value ? scad_eval_expr(ev, env, a->value) : scad_undef();
+        out->locs[k] = a->loc;
+    }
+    out->n = nkeys;
+    free(arg_of);
     return 0;
+}
+
+static int eval_args(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out)
+{
+    return eval_args_ordered(ev, env, args, out, 0, NULL, (scad_loc){0});
 }
 
 static void argv_free(scad_argv *a)
@@ -320,36 +366,20 @@ void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     }
 }
 
-void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env, const scad_args *params,
-                    const scad_argv *argv, scad_loc loc)
+void scad_bind_defaults(scad_eval *ev, scad_env *target, scad_env *def_env,
+                        const scad_args *params)
 {
     for (int i = 0; i < params->n; i++) {
         scad_value v =
             params->v[i].value ? scad_eval_expr(ev, def_env, params->v[i].value) : scad_undef();
         scad_env_set(target, params->v[i].name, v);
     }
-    int pos = 0, too_many = 0;
-    for (int i = 0; i < argv->n; i++) {
-        if (argv->names[i]) continue;
-        if (pos < params->n) {
-            scad_env_set(target, params->v[pos].name, scad_value_ref(argv->v[i]));
-        } else {
-            too_many = 1;
-        }
-        pos++;
-    }
-    for (int i = 0; i < argv->n; i++) {
-        const char *name = argv->names[i];
-        if (!name) continue;
-        int known = name[0] == '$';
-        for (int k = 0; k < params->n && !known; k++)
-            if (strcmp(params->v[k].name, name) == 0) known = 1;
-        if (known)
-            scad_env_set(target, name, scad_value_ref(argv->v[i]));
-        else
-            scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", name);
-    }
-    if (too_many) scad_diag_warning(ev->d, loc, "Too many unnamed arguments supplied");
+}
+
+void scad_bind_given(scad_env *target, const scad_argv *argv)
+{
+    for (int i = 0; i < argv->n; i++)
+        scad_env_set(target, argv->names[i], scad_value_ref(argv->v[i]));
 }
 
 /* ---- operators ---------------------------------------------------------------- */
@@ -681,8 +711,7 @@ static int is_self_call(scad_eval *ev, scad_env *env, const scad_expr *x, const 
     int found;
     scad_value v = scad_env_lookup(ev, env, def->name, x->loc, 1, &found);
     if (found && v.kind == SV_FUNC) return 0;
-    scad_env *where;
-    return find_function(ev, env, def->name, &where) == def;
+    return find_function(ev, env, def->name, NULL, NULL) == def;
 }
 
 /* A user function call.  As OpenSCAD 2021.01's evaluate_function does, the
@@ -696,16 +725,22 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
                                      const scad_funcdef *def)
 {
     scad_argv argv;
-    if (eval_args(ev, env, &call->args, &argv)) return scad_undef();
+    scad_env *fe = env_new(ev, def_env, env, NULL);
+    if (!fe) return scad_undef();
+    scad_bind_defaults(ev, fe, def_env, params);
+    if (eval_args_ordered(ev, env, &call->args, &argv, 1, params, call->loc)) {
+        env_free(fe);
+        return scad_undef();
+    }
     if (enter_call(ev, call->loc, "function", name)) {
         argv_free(&argv);
+        env_free(fe);
         return scad_undef();
     }
     scad_value r = scad_undef();
-    scad_env *fe = env_new(ev, def_env, env, NULL);
     long tail_calls = 0;
     while (fe && !ev->aborted) {
-        scad_bind_args(ev, fe, def_env, params, &argv, call->loc);
+        scad_bind_given(fe, &argv);
         argv_free(&argv);
         /* follow the body; lets stack up environments below fe */
         scad_env *cur = fe;
@@ -740,15 +775,20 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
                 break;
             }
         }
+        /* the next frame: defaults, then the tail call's arguments (in cur) */
+        scad_env *next = NULL;
         if (tail && !ev->aborted) {
             if (++tail_calls > MAX_TAIL_CALLS) {
                 scad_eval_error(ev, tail->loc,
                                 "recursion detected calling function '%s' (more than %d tail "
                                 "calls)",
                                 name, MAX_TAIL_CALLS);
-                tail = NULL;
-            } else if (eval_args(ev, cur, &tail->args, &argv)) {
-                tail = NULL;
+            } else if ((next = env_new(ev, def_env, env, NULL))) {
+                scad_bind_defaults(ev, next, def_env, params);
+                if (eval_args_ordered(ev, cur, &tail->args, &argv, 1, params, tail->loc)) {
+                    env_free(next);
+                    next = NULL;
+                }
             }
         }
         while (cur != fe) {
@@ -757,12 +797,11 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
             cur = up;
         }
         env_free(fe);
-        fe = NULL;
-        if (tail && !ev->aborted) {
-            fe = env_new(ev, def_env, env, NULL);
-            if (!fe) argv_free(&argv);
-        } else if (tail) {
+        fe = next;
+        if (fe && ev->aborted) {
             argv_free(&argv);
+            env_free(fe);
+            fe = NULL;
         }
     }
     leave_call(ev);
@@ -776,10 +815,9 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
     int owned = 0;
     if (callee->kind == EX_VAR) {
         int found;
-        scad_env *found_env;
         fv = scad_env_lookup(ev, env, callee->str, callee->loc, 1, &found);
         if (fv.kind != SV_FUNC && !strcmp(callee->str, "is_undef") && e->args.n == 1 &&
-            e->args.v[0].value->kind == EX_VAR && !find_function(ev, env, "is_undef", &found_env)) {
+            e->args.v[0].value->kind == EX_VAR && !find_function(ev, env, "is_undef", NULL, NULL)) {
             /* OpenSCAD looks the variable up silently here */
             int there;
             scad_env_lookup(ev, env, e->args.v[0].value->str, e->loc, 1, &there);
@@ -787,8 +825,14 @@ static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
         }
         if (fv.kind != SV_FUNC) {
             scad_env *def_env;
-            const scad_funcdef *f = find_function(ev, env, callee->str, &def_env);
-            if (f) return call_user_function(ev, env, e, f->name, &f->params, f->body, def_env, f);
+            int fresh;
+            const scad_funcdef *f = find_function(ev, env, callee->str, &def_env, &fresh);
+            if (f) {
+                scad_value r =
+                    call_user_function(ev, env, e, f->name, &f->params, f->body, def_env, f);
+                if (fresh) env_free(def_env);
+                return r;
+            }
             scad_builtin_fn b = scad_builtin_function(callee->str);
             if (b) {
                 scad_argv argv;
@@ -1042,9 +1086,10 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
     case EX_VAR:
         return scad_value_ref(scad_env_lookup(ev, env, e->str, e->loc, 0, NULL));
     case EX_RANGE: {
+        /* OpenSCAD 2021.01's order: begin, end, step */
         scad_value b = scad_eval_expr(ev, env, e->a[0]);
-        scad_value s = e->a[1] ? scad_eval_expr(ev, env, e->a[1]) : scad_num(1);
         scad_value en = scad_eval_expr(ev, env, e->a[2]);
+        scad_value s = e->a[1] ? scad_eval_expr(ev, env, e->a[1]) : scad_num(1);
         scad_value r = scad_undef();
         if (b.kind == SV_NUM && s.kind == SV_NUM && en.kind == SV_NUM) {
             double bb = b.u.num, ss = s.u.num, ee = en.u.num;
@@ -1098,8 +1143,8 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
         return r;
     }
     case EX_BINARY: {
-        scad_value a = scad_eval_expr(ev, env, e->a[0]);
         if (e->op == TK_AND || e->op == TK_OR) {
+            scad_value a = scad_eval_expr(ev, env, e->a[0]);
             int t = scad_value_truthy(a);
             scad_value_drop(a);
             if (e->op == TK_AND ? !t : t) return scad_bool(t);
@@ -1108,7 +1153,10 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
             scad_value_drop(b);
             return scad_bool(t);
         }
+        /* the right operand first, as OpenSCAD 2021.01 (built by GCC) does:
+         * its echo() output and warnings come first */
         scad_value b = scad_eval_expr(ev, env, e->a[1]);
+        scad_value a = scad_eval_expr(ev, env, e->a[0]);
         scad_value r = ev->aborted ? scad_undef() : binary(ev, e, a, b);
         scad_value_drop(a);
         scad_value_drop(b);
@@ -1123,8 +1171,8 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
     case EX_CALL:
         return eval_call(ev, env, e);
     case EX_INDEX: {
+        scad_value i = scad_eval_expr(ev, env, e->a[1]); /* the index first */
         scad_value v = scad_eval_expr(ev, env, e->a[0]);
-        scad_value i = scad_eval_expr(ev, env, e->a[1]);
         scad_value r = eval_index(v, i);
         scad_value_drop(v);
         scad_value_drop(i);
@@ -1352,48 +1400,52 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_moddef *m, scad_env *def_env, const scad_state *state)
 {
     scad_argv argv;
-    if (eval_args(ev, env, &st->args, &argv)) return NULL;
+    scad_env *me = env_new(ev, def_env, env, m->body);
+    if (!me) return NULL;
+    scad_bind_defaults(ev, me, def_env, &m->params);
+    if (eval_args_ordered(ev, env, &st->args, &argv, 1, &m->params, st->loc)) {
+        env_free(me);
+        return NULL;
+    }
     if (enter_call(ev, st->loc, "module", m->name)) {
         argv_free(&argv);
+        env_free(me);
         return NULL;
     }
     scad_geom *r = NULL;
-    scad_env *me = env_new(ev, def_env, env, m->body);
-    if (me) {
-        me->is_module = 1;
-        me->children = st->children;
-        me->children_env = env;
-        scad_bind_args(ev, me, def_env, &m->params, &argv, st->loc);
-        scad_env_set(me, "$children", scad_num(st->children ? st->children->nstmts : 0));
-        if (ev->module_depth == ev->module_names_cap) {
-            int cap = ev->module_names_cap ? ev->module_names_cap * 2 : 64;
-            const char **nn = realloc(ev->module_names, sizeof *nn * (size_t)cap);
-            if (nn) {
-                ev->module_names = nn;
-                ev->module_names_cap = cap;
-            }
+    me->is_module = 1;
+    me->children = st->children;
+    me->children_env = env;
+    scad_bind_given(me, &argv);
+    scad_env_set(me, "$children", scad_num(st->children ? st->children->nstmts : 0));
+    if (ev->module_depth == ev->module_names_cap) {
+        int cap = ev->module_names_cap ? ev->module_names_cap * 2 : 64;
+        const char **nn = realloc(ev->module_names, sizeof *nn * (size_t)cap);
+        if (nn) {
+            ev->module_names = nn;
+            ev->module_names_cap = cap;
         }
-        if (ev->module_depth < ev->module_names_cap)
-            ev->module_names[ev->module_depth] = m->name;
-        ev->module_depth++;
-        scad_env_set(me, "$parent_modules", scad_num(ev->module_depth));
-        for (int i = 0; i < m->body->nassigns; i++) {
-            const scad_assign *as = &m->body->assigns[i];
-            if (!is_literal(as->value)) continue;
-            for (int k = 0; k < m->params.n; k++)
-                if (strcmp(m->params.v[k].name, as->name) == 0)
-                    scad_diag_warning(ev->d, as->loc,
-                                      "Module %s: Parameter %s is overwritten with a literal",
-                                      m->name, as->name);
-        }
-        gather g = {0};
-        run_assignments(ev, me, m->body);
-        run_stmts(ev, me, m->body, state, &g, NULL, 0);
-        r = finish(ev, &g, CSG_OP_UNION);
-        if (ev->dump) r = scad_dump_node(ev, "group()", r);
-        env_free(me);
-        ev->module_depth--;
     }
+    if (ev->module_depth < ev->module_names_cap)
+        ev->module_names[ev->module_depth] = m->name;
+    ev->module_depth++;
+    scad_env_set(me, "$parent_modules", scad_num(ev->module_depth));
+    for (int i = 0; i < m->body->nassigns; i++) {
+        const scad_assign *as = &m->body->assigns[i];
+        if (!is_literal(as->value)) continue;
+        for (int k = 0; k < m->params.n; k++)
+            if (strcmp(m->params.v[k].name, as->name) == 0)
+                scad_diag_warning(ev->d, as->loc,
+                                  "Module %s: Parameter %s is overwritten with a literal",
+                                  m->name, as->name);
+    }
+    gather g = {0};
+    run_assignments(ev, me, m->body);
+    run_stmts(ev, me, m->body, state, &g, NULL, 0);
+    r = finish(ev, &g, CSG_OP_UNION);
+    if (ev->dump) r = scad_dump_node(ev, "group()", r);
+    env_free(me);
+    ev->module_depth--;
     leave_call(ev);
     argv_free(&argv);
     return r;
@@ -1526,8 +1578,13 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         return r;
     }
     scad_env *def_env;
-    const scad_moddef *m = find_module(ev, env, name, &def_env);
-    if (m) return call_module(ev, env, st, m, def_env, state);
+    int fresh;
+    const scad_moddef *m = find_module(ev, env, name, &def_env, &fresh);
+    if (m) {
+        scad_geom *r = call_module(ev, env, st, m, def_env, state);
+        if (fresh) env_free(def_env);
+        return r;
+    }
 
     if (strcmp(name, "let") == 0) {
         scad_env *le = env_new(ev, env, env, NULL);
@@ -1551,7 +1608,8 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         return NULL;
     }
     scad_argv a;
-    if (eval_args(ev, env, &st->args, &a)) return NULL;
+    int in_order = control || !strcmp(name, "assert") || !strcmp(name, "let");
+    if (eval_args_ordered(ev, env, &st->args, &a, !in_order, NULL, st->loc)) return NULL;
     scad_geom *r = NULL;
     /* $-arguments of a builtin are seen by its children (dynamic scope) */
     scad_env *dollar = NULL;

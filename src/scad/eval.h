@@ -82,11 +82,6 @@ typedef struct scad_eval {
     int nbackgrounds, capbackgrounds;
     int dump; /* build OpenSCAD's node tree for .csg output, no geometry */
     scad_env *builtins; /* the root environment (PI, $fn …) */
-    /* environments of `use`d files: their top-level variables, evaluated
-     * once, below builtins */
-    const scad_scope **use_scopes;
-    scad_env **use_envs;
-    int nuse, capuse;
     int facets; /* scad_facets, from the options */
     const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by
@@ -111,12 +106,14 @@ scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_
 /* Set (or replace) a variable in env; takes ownership of v. */
 void scad_env_set(scad_env *env, const char *name, scad_value v);
 
-/* Bind call arguments to parameters, OpenSCAD style: defaults evaluated in
- * def_env, then positional, then named arguments; $-named arguments are set
- * even when not declared.  Warns like OpenSCAD about unknown names and extra
- * positional arguments.  The values in argv are borrowed (referenced). */
-void scad_bind_args(scad_eval *ev, scad_env *target, scad_env *def_env, const scad_args *params,
-                    const scad_argv *argv, scad_loc loc);
+/* Bind a call to parameters in two steps, in OpenSCAD 2021.01's order:
+ * scad_bind_defaults evaluates every default in def_env (given or not);
+ * then the caller evaluates the call's arguments, resolved to parameter
+ * names (eval.c: eval_args_ordered), and scad_bind_given sets each of them
+ * by name.  The values in argv are borrowed. */
+void scad_bind_defaults(scad_eval *ev, scad_env *target, scad_env *def_env,
+                        const scad_args *params);
+void scad_bind_given(scad_env *target, const scad_argv *argv);
 
 /* Error: reports "file:line:col: error: …" and stops the evaluation. */
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
@@ -128,8 +125,6 @@ scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *
  * scad_env_free (a no-op for environments a closure captured). */
 scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
 void scad_env_free(scad_env *e);
-/* Frees the environments of `use`d files; call once at the end. */
-void scad_eval_free_uses(scad_eval *ev);
 /* Frees the environments closures kept alive; call once at the end. */
 void scad_eval_free_captured(scad_eval *ev);
 /* Values in a range, OpenSCAD's count (UINT32_MAX for endless ones). */

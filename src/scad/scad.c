@@ -191,7 +191,6 @@ static void run_job(job *j)
         }
     }
     scad_env_free(file);
-    scad_eval_free_uses(&ev);
     free(ev.module_names);
     scad_env_free(builtins);
     scad_eval_free_captured(&ev);
