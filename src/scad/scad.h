@@ -18,7 +18,10 @@
 typedef enum scad_msg_kind {
     SCAD_MSG_ECHO,    /* "ECHO: …" as OpenSCAD prints it */
     SCAD_MSG_WARNING, /* "WARNING: …" as OpenSCAD prints it */
-    SCAD_MSG_ERROR    /* "file:line:col: error: …" */
+    SCAD_MSG_ERROR,   /* "file:line:col: error: …" */
+    SCAD_MSG_NOTE     /* rayscad's own warning about input OpenSCAD accepts but
+                         rayscad does not fully build ("file:line:col: warning:
+                         …"): never part of OpenSCAD's .echo stream */
 } scad_msg_kind;
 
 /* What the language needs from outside src/scad — files, images, polygon
