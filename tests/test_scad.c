@@ -42,7 +42,7 @@ static void lines_free(lines *l)
 /* Messages are split at newlines, as they appear in an .echo file. */
 static void collect(void *ud, scad_msg_kind kind, const char *line)
 {
-    (void)kind;
+    if (kind == SCAD_MSG_NOTE) return; /* rayscad's own, never in openscad's .echo */
     lines *l = ud;
     const char *p = line;
     for (;;) {

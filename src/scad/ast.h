@@ -48,6 +48,10 @@ void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* "DEPRECATED: <fmt> in file <relative path>, line N", sent as a warning. */
+/* A rayscad-only warning (SCAD_MSG_NOTE): "file:line:col: warning: …",
+ * for what OpenSCAD accepts but rayscad does not build; not counted. */
+void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 void scad_diag_deprecated(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* A line sent as is, of the given kind (ECHO, DEPRECATED warnings …). */

@@ -74,9 +74,9 @@ scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st,
     int mesh =
         !strcmp(ext, "stl") || !strcmp(ext, "off") || !strcmp(ext, "obj") || !strcmp(ext, "ply");
     if (!strcmp(ext, "dxf") || !strcmp(ext, "svg") || !strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
-        scad_diag_warning(ev->d, st->loc,
-                          "import() of %s files is not supported by rayscad: '%s' shows nothing",
-                          ext, name);
+        scad_diag_note(ev->d, st->loc,
+                       "import() of %s files is not supported by rayscad: '%s' shows nothing", ext,
+                       name);
         return NULL;
     }
     if (!mesh) {

@@ -1,7 +1,8 @@
 /*
  * diag.c — formatting of messages for the caller's callback.
  *
- * Errors are compiler-style "file:line:col: error: …"; warnings follow
+ * Errors and rayscad's own notes are compiler-style "file:line:col: error:
+ * …" / "…: warning: …"; OpenSCAD's warnings follow
  * OpenSCAD 2021.01 ("WARNING: … in file x.scad, line N") so that an .echo
  * file written by openscad compares line for line.  Counters in scad_diag
  * say how many of each were sent; nothing here prints.
@@ -31,6 +32,18 @@ void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
     snprintf(line, sizeof line, "%s:%d:%d: error: %s", loc.file ? loc.file : "?", loc.line, loc.col,
              msg);
     scad_diag_line(d, SCAD_MSG_ERROR, line);
+}
+
+void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(line, sizeof line, "%s:%d:%d: warning: %s", loc.file ? loc.file : "?", loc.line,
+             loc.col, msg);
+    scad_diag_line(d, SCAD_MSG_NOTE, line);
 }
 
 static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
