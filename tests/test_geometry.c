@@ -622,8 +622,8 @@ Test(import, missing_and_unsupported_files_warn, .init = setup, .fini = teardown
                  0);
     cr_expect_str_eq(m.text,
                      "WARNING: Can't open import file 'nowhere.stl' in file t.scad, line 1\n"
-                     "WARNING: import() of dxf files is not supported by rayscad: 'a.dxf' "
-                     "shows nothing in file t.scad, line 2\n"
+                     "t.scad:2:1: warning: import() of dxf files is not supported by "
+                     "rayscad: 'a.dxf' shows nothing\n"
                      "WARNING: The file 'nowhere.dat' couldn't be opened. in file t.scad, line 3\n"
                      "WARNING: Unsupported file format while trying to import file "
                      "'\"x.abc\"' in file t.scad, line 4\n");
