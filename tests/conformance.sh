@@ -2,7 +2,8 @@
 # Language conformance against the real openscad 2021.01 binary.  For every
 # bundled example (/usr/share/openscad/examples/**/*.scad) and every file in
 # tests/lang/, both programs write `-o x.echo` and `-o x.csg`:
-#   echo: compared line for line (ECHO, WARNING, DEPRECATED lines);
+#   echo: compared line for line (ECHO, WARNING, DEPRECATED lines, and an
+#         error's ERROR/TRACE lines);
 #   csg:  compared token by token, numbers equal within a relative 1e-9
 #         (absolute 1e-12 near zero) and -0 read as 0.
 # A mismatch fails unless tests/lang/known_differences.txt lists it, one
@@ -85,8 +86,9 @@ check_one() {
         (cd "$dir" && timeout 120 "$rayscad" "$base" -o "$ours") >"$ours.log" 2>&1
         [ -f "$ours" ] || : >"$ours"
         if [ "$kind" = echo ]; then
-            why=$(diff <(grep -E '^(ECHO|WARNING|DEPRECATED)' "$ref") \
-                <(grep -E '^(ECHO|WARNING|DEPRECATED)' "$ours") | head -n 4 | tr '\n' ' ')
+            why=$(diff <(grep -E "^(ECHO|WARNING|DEPRECATED|ERROR|TRACE|Can't parse)" "$ref") \
+                <(grep -E "^(ECHO|WARNING|DEPRECATED|ERROR|TRACE|Can't parse)" "$ours") |
+                head -n 4 | tr '\n' ' ')
         else
             why=$(csgcmp "$ref" "$ours")
         fi

@@ -39,6 +39,7 @@ typedef struct scad_diag {
                              "in file x.scad, line N" */
     int errors;
     int warnings;
+    scad_loc first_syntax; /* file NULL until a syntax error */
 } scad_diag;
 
 /* "file:line:col: error: <fmt>" as a SCAD_MSG_ERROR line. */
@@ -48,6 +49,15 @@ void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* "DEPRECATED: <fmt> in file <relative path>, line N", sent as a warning. */
+/* A line of OpenSCAD's own account of an error, as its echo stream holds
+ * it (SCAD_MSG_TRACE): "<fmt> in file x.scad, line N". */
+void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* Record where the first syntax error was, for scad_diag_parse_failed. */
+void scad_diag_syntax(scad_diag *d, scad_loc loc);
+/* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in
+ * file x, line N" and "Can't parse file 'main.scad'!" (SCAD_MSG_TRACE). */
+void scad_diag_parse_failed(scad_diag *d, const char *main_file);
 /* A rayscad-only warning (SCAD_MSG_NOTE): "file:line:col: warning: …",
  * for what OpenSCAD accepts but rayscad does not build; not counted. */
 void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)

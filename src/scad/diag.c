@@ -46,15 +46,52 @@ void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
     scad_diag_line(d, SCAD_MSG_NOTE, line);
 }
 
+/* A file name as OpenSCAD prints it: relative to the main file's folder. */
+static const char *shown_file(const scad_diag *d, const char *file)
+{
+    if (!file) return "?";
+    size_t n = d->base_dir ? strlen(d->base_dir) : 0;
+    if (n && strncmp(file, d->base_dir, n) == 0) file += n;
+    return file;
+}
+
 static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
     vsnprintf(msg, sizeof msg, fmt, ap);
-    const char *file = loc.file ? loc.file : "?";
-    size_t n = d->base_dir ? strlen(d->base_dir) : 0;
-    if (n && strncmp(file, d->base_dir, n) == 0) file += n;
-    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, file, loc.line);
+    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg,
+             shown_file(d, loc.file), loc.line);
     scad_diag_line(d, SCAD_MSG_WARNING, line);
+}
+
+void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(line, sizeof line, "%s in file %s, line %d", msg, shown_file(d, loc.file), loc.line);
+    scad_diag_line(d, SCAD_MSG_TRACE, line);
+}
+
+void scad_diag_syntax(scad_diag *d, scad_loc loc)
+{
+    if (!d->first_syntax.file) d->first_syntax = loc;
+}
+
+/* Unlike its other messages, openscad's parser names files as given. */
+void scad_diag_parse_failed(scad_diag *d, const char *main_file)
+{
+    char line[LINE_MAX_BYTES];
+    if (d->first_syntax.file) {
+        snprintf(line, sizeof line, "ERROR: Parser error: syntax error in file %s, line %d",
+                 d->first_syntax.file, d->first_syntax.line);
+        scad_diag_line(d, SCAD_MSG_TRACE, line);
+    }
+    snprintf(line, sizeof line, "Can't parse file '%s'!", main_file);
+    scad_diag_line(d, SCAD_MSG_TRACE, line);
+    scad_diag_line(d, SCAD_MSG_TRACE, ""); /* openscad ends it with an empty line */
 }
 
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)

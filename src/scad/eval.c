@@ -26,6 +26,24 @@ enum { MAX_LOOP_ELEMENTS = 1000000 };
 
 /* ---- errors and limits ------------------------------------------------------ */
 
+/* OpenSCAD 2021.01 prints at most this many "TRACE: called by" lines
+ * (its default trace depth). */
+enum { TRACE_DEPTH = 12 };
+
+/* Report msg as the error that stops the evaluation; in OpenSCAD's echo
+ * stream it reads echo_msg (its own wording, when ours says more). */
+static void eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *msg)
+{
+    if (!ev->aborted) {
+        scad_diag_error(ev->d, loc, "%s", msg);
+        scad_diag_trace(ev->d, loc, "ERROR: %s", echo_msg);
+        for (int i = ev->nframes - 1, k = 0; i >= 0 && k < TRACE_DEPTH; i--, k++)
+            scad_diag_trace(ev->d, ev->frames[i].loc, "TRACE: called by '%s'",
+                            ev->frames[i].name);
+    }
+    ev->aborted = 1;
+}
+
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
 {
     char msg[1024];
@@ -33,8 +51,30 @@ void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    if (!ev->aborted) scad_diag_error(ev->d, loc, "%s", msg);
-    ev->aborted = 1;
+    eval_error_worded(ev, loc, msg, msg);
+}
+
+/* Enter a module instantiation or function call for the error trace.
+ * Returns 0, or -1 when out of memory (the frame is then not recorded: a
+ * shorter trace, nothing worse). */
+static int push_frame(scad_eval *ev, const char *name, scad_loc loc)
+{
+    if (ev->nframes == ev->capframes) {
+        int cap = ev->capframes ? 2 * ev->capframes : 64;
+        struct scad_frame *f = realloc(ev->frames, sizeof *f * (size_t)cap);
+        if (!f) return -1;
+        ev->frames = f;
+        ev->capframes = cap;
+    }
+    ev->frames[ev->nframes].name = name;
+    ev->frames[ev->nframes].loc = loc;
+    ev->nframes++;
+    return 0;
+}
+
+static void pop_frame(scad_eval *ev, int pushed)
+{
+    if (pushed == 0) ev->nframes--;
 }
 
 /* Called on entry to every user function or module: 0 to go on. */
@@ -42,17 +82,20 @@ static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char 
 {
     char here;
     if (ev->aborted) return -1;
-    if (ev->depth >= ev->max_depth) {
-        scad_eval_error(ev, loc, "recursion deeper than %d calls (calling %s '%s')", ev->max_depth,
-                        what, name);
-        return -1;
-    }
     size_t used = ev->stack_base > &here ? (size_t)(ev->stack_base - &here)
                                          : (size_t)(&here - ev->stack_base);
-    if (ev->stack_budget && used > ev->stack_budget) {
-        scad_eval_error(ev, loc,
-                        "recursion deeper than the stack allows (%d calls, calling %s '%s')",
-                        ev->depth, what, name);
+    int too_deep = ev->depth >= ev->max_depth;
+    if (too_deep || (ev->stack_budget && used > ev->stack_budget)) {
+        char msg[512], echo_msg[512];
+        if (too_deep)
+            snprintf(msg, sizeof msg, "recursion deeper than %d calls (calling %s '%s')",
+                     ev->max_depth, what, name);
+        else
+            snprintf(msg, sizeof msg,
+                     "recursion deeper than the stack allows (%d calls, calling %s '%s')",
+                     ev->depth, what, name);
+        snprintf(echo_msg, sizeof echo_msg, "Recursion detected calling %s '%s'", what, name);
+        eval_error_worded(ev, loc, echo_msg, msg);
         return -1;
     }
     ev->depth++;
@@ -808,7 +851,19 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
     return r;
 }
 
+static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr *e);
+
 static scad_value eval_call(scad_eval *ev, scad_env *env, const scad_expr *e)
+{
+    const scad_expr *callee = e->a[0];
+    int pushed =
+        push_frame(ev, callee->kind == EX_VAR ? callee->str : "function literal", e->loc);
+    scad_value r = eval_call_framed(ev, env, e);
+    pop_frame(ev, pushed);
+    return r;
+}
+
+static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr *e)
 {
     const scad_expr *callee = e->a[0];
     scad_value fv = scad_undef();
@@ -1642,10 +1697,22 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
     return r;
 }
 
+static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                     const scad_state *state);
+
 static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state)
 {
     if (st->disable || ev->aborted) return NULL;
+    int pushed = push_frame(ev, st->name, st->loc);
+    scad_geom *g = instantiate_framed(ev, env, st, state);
+    pop_frame(ev, pushed);
+    return g;
+}
+
+static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                     const scad_state *state)
+{
     if (ev->dump && (st->highlight || st->background) && !st->root) {
         scad_geom *g = instantiate_plain(ev, env, st, state);
         if (g && g->text) {

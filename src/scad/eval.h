@@ -82,6 +82,13 @@ typedef struct scad_eval {
     int nbackgrounds, capbackgrounds;
     int dump; /* build OpenSCAD's node tree for .csg output, no geometry */
     scad_env *builtins; /* the root environment (PI, $fn …) */
+    /* The module instantiations and function calls being evaluated,
+     * outermost first: OpenSCAD's "TRACE: called by" lines after an error. */
+    struct scad_frame {
+        const char *name;
+        scad_loc loc;
+    } *frames;
+    int nframes, capframes;
     int facets; /* scad_facets, from the options */
     const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by

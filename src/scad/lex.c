@@ -136,6 +136,7 @@ static void lex_string(lexer *L, scad_loc loc)
     for (;;) {
         char c = *L->p;
         if (c == 0) {
+            scad_diag_syntax(L->d, loc);
             scad_diag_error(L->d, loc, "unterminated string");
             L->failed = 1;
             break;
@@ -231,6 +232,7 @@ static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kin
     if (*q != '<') return 0;
     const char *end = strchr(q, '>');
     if (!end || memchr(q, '\n', (size_t)(end - q))) {
+        scad_diag_syntax(L->d, loc);
         scad_diag_error(L->d, loc, "unterminated file name after '%s'",
                         kind == TK_USE ? "use" : "include");
         advance(L, (size_t)(q - L->p) + 1);
@@ -266,6 +268,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
         if (c == '/' && L.p[1] == '*') {
             const char *end = strstr(L.p + 2, "*/");
             if (!end) {
+                scad_diag_syntax(d, loc);
                 scad_diag_error(d, loc, "unterminated comment");
                 advance(&L, strlen(L.p));
                 break;
@@ -336,6 +339,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
             advance(&L, 1);
             continue;
         }
+        scad_diag_syntax(d, loc);
         scad_diag_error(d, loc, "unexpected character '%c'", isprint((unsigned char)c) ? c : '?');
         advance(&L, 1);
     }

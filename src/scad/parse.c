@@ -97,6 +97,11 @@ static void syntax_error(parser *P, const char *want)
 {
     char buf[64];
     scad_token *t = peek(P);
+    /* openscad parses the text with a newline appended: its end of file
+     * is one line further down */
+    scad_loc at = t->loc;
+    if (t->kind == TK_EOF) at.line++;
+    scad_diag_syntax(P->d, at);
     if (P->errors < MAX_ERRORS)
         scad_diag_error(P->d, t->loc, "syntax error: expected %s before %s", want,
                         describe(t, buf, sizeof buf));

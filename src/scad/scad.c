@@ -192,6 +192,7 @@ static void run_job(job *j)
     }
     scad_env_free(file);
     free(ev.module_names);
+    free(ev.frames);
     scad_env_free(builtins);
     scad_eval_free_captured(&ev);
     scad_geometry_release(&ev); /* after to_csg: the nodes hold their own */
@@ -256,6 +257,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
     scad_scope *top = scad_parse(a, &d, name, src);
     if (!top) {
         if (d.errors == 0) scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
+        scad_diag_parse_failed(&d, name);
         return -1;
     }
     if (apply_defines(a, &d, top, opt)) {

@@ -19,9 +19,13 @@ typedef enum scad_msg_kind {
     SCAD_MSG_ECHO,    /* "ECHO: …" as OpenSCAD prints it */
     SCAD_MSG_WARNING, /* "WARNING: …" as OpenSCAD prints it */
     SCAD_MSG_ERROR,   /* "file:line:col: error: …" */
-    SCAD_MSG_NOTE     /* rayscad's own warning about input OpenSCAD accepts but
+    SCAD_MSG_NOTE,    /* rayscad's own warning about input OpenSCAD accepts but
                          rayscad does not fully build ("file:line:col: warning:
                          …"): never part of OpenSCAD's .echo stream */
+    SCAD_MSG_TRACE    /* after an ERROR: the error as OpenSCAD's .echo stream
+                         has it ("ERROR: … in file x.scad, line N", "TRACE:
+                         called by 'm' in file …", "Can't parse file …") —
+                         for an .echo output, redundant on a terminal */
 } scad_msg_kind;
 
 /* What the language needs from outside src/scad — files, images, polygon
@@ -31,6 +35,29 @@ typedef enum scad_msg_kind {
  * error at its call ("import() is not available here") and builds nothing.
  * Each returns 0, or -1 with a message in err (errlen bytes); arrays it
  * returns are malloc'ed and freed by the evaluator with free(). */
+/* Closed 2D paths: path i is pts[start[i] .. start[i+1]), start holds
+ * npaths + 1 entries.  Arrays a service returns are malloc'ed (free both). */
+typedef struct scad_paths {
+    double (*pts)[2];
+    int *start;
+    int npaths;
+} scad_paths;
+
+/* How offset() joins edges: round (r), miter (delta), square (chamfer). */
+typedef enum scad_join { SCAD_JOIN_ROUND, SCAD_JOIN_MITER, SCAD_JOIN_SQUARE } scad_join;
+
+/* text()'s arguments, as OpenSCAD 2021.01 takes them (strings borrowed,
+ * never NULL; "" where the user gave none, except the defaults noted). */
+typedef struct scad_text_params {
+    const char *text;
+    double size;      /* default 10 */
+    const char *font; /* "": Liberation Sans */
+    const char *halign, *valign; /* default "left", "baseline" */
+    double spacing;   /* default 1 */
+    const char *direction, *language, *script; /* language default "en" */
+    int segments;     /* points per Bézier curve */
+} scad_text_params;
+
 typedef struct scad_services {
     void *ud;
     /* import(): a triangle mesh file (stl, off, obj, ply) as 3 floats per
@@ -43,6 +70,29 @@ typedef struct scad_services {
     int (*read_image)(void *ud, const char *path, int *width, int *height, int *channels,
                       float **pixels, char *err, size_t errlen);
     /* --- 2D geometry (offset, projection, text, minkowski) goes below --- */
+    /* Polygon sets cross this boundary as scad_paths.  A set the service
+     * returns is non-overlapping, outlines counter-clockwise and holes
+     * clockwise, so even-odd and nonzero filling agree on it. */
+    /* Boolean a op b (Clipper): op is a csg_op (DIFFERENCE: a minus b);
+     * a_evenodd / b_evenodd pick each operand's fill rule (else nonzero).
+     * b may be empty (npaths 0): a union then just normalises a. */
+    int (*paths_clip)(void *ud, int op, const scad_paths *a, int a_evenodd, const scad_paths *b,
+                      int b_evenodd, scad_paths *out, char *err, size_t errlen);
+    /* offset() (ClipperOffset, OpenSCAD's parameters): a (filled nonzero)
+     * grown by delta (negative: shrunk); join is a scad_join; arc_tolerance
+     * is the largest distance of a round join's chords from the arc. */
+    int (*paths_offset)(void *ud, const scad_paths *a, double delta, int join, double miter_limit,
+                        double arc_tolerance, scad_paths *out, char *err, size_t errlen);
+    /* The Minkowski sum of two sets (each filled nonzero), any shapes. */
+    int (*paths_minkowski)(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out,
+                           char *err, size_t errlen);
+    /* A closed triangle mesh of the solid tree root (taken: the service
+     * frees it, whatever happens), sampled at grid spacing h (model units;
+     * <= 0: the service picks one); arrays as read_mesh returns them. */
+    int (*mesh_tree)(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t,
+                     int *nt, char *err, size_t errlen);
+    /* text(): the glyph outlines of p, as OpenSCAD 2021.01 lays them out. */
+    int (*text)(void *ud, const scad_text_params *p, scad_paths *out, char *err, size_t errlen);
 } scad_services;
 
 typedef struct scad_options {
