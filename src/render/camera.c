@@ -66,7 +66,7 @@ static int finite3(const double v[3])
 int render_camera_resolve(const render_view *v, const double lo[3], const double hi[3],
                           int have_bounds, int width, int height, render_camera *out)
 {
-    double trans[3] = {0, 0, 0}, rot[3], dist;
+    double trans[3] = {0, 0, 0}, rot[3], dist, fovy = FOVY_DEG;
     int viewall = v->viewall, autocenter = v->autocenter;
 
     switch (v->kind) {
@@ -101,6 +101,17 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
         rot[2] = wrap(-25.0);
         dist = DEFAULT_DIST;
         viewall = autocenter = 1;
+        if (v->file_vp_set & 1) { /* Camera::setVpr */
+            rot[0] = wrap(90 - v->vpr[0]);
+            rot[1] = wrap(-v->vpr[1]);
+            rot[2] = wrap(-v->vpr[2]);
+        }
+        if (v->file_vp_set & 2)
+            for (int i = 0; i < 3; i++)
+                trans[i] = -v->vpt[i];
+        if (v->file_vp_set & 4) dist = v->vpd;
+        if ((v->file_vp_set & 8) && v->vpf > 0 && v->vpf < 180) fovy = v->vpf;
+        if (v->file_vp_auto_off) viewall = autocenter = 0;
         break;
     }
 
@@ -123,7 +134,7 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
             double off[3] = {c[0] + trans[0], c[1] + trans[1], c[2] + trans[2]};
             double radius =
                 sqrt(off[0] * off[0] + off[1] * off[1] + off[2] * off[2]) + sqrt(diag2) / 2;
-            dist = radius / sin(FOVY_DEG / 2 * PI / 180);
+            dist = radius / sin(fovy / 2 * PI / 180);
         }
     }
     if (!(dist > 0) || !isfinite(dist)) {
@@ -143,8 +154,8 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
         out->up[i] = r[2][i];
         out->eye[i] = -dist * r[1][i] - trans[i];
     }
-    out->fovy_deg = FOVY_DEG;
-    out->ortho_half_height = dist * tan(FOVY_DEG / 2 * PI / 180);
+    out->fovy_deg = fovy;
+    out->ortho_half_height = dist * tan(fovy / 2 * PI / 180);
     out->ortho = v->ortho;
     if (v->ortho) {
         out->clip_near = -100 * dist;

@@ -36,6 +36,12 @@ typedef struct render_view {
     int viewall;    /* --viewall */
     int autocenter; /* --autocenter */
     int ortho;      /* --projection=o */
+    /* With no --camera (kind DEFAULT), the file's own $vpr/$vpt/$vpd/$vpf
+     * as scad_result holds them: file_vp_set says which are usable (bits
+     * 1, 2, 4, 8 in that order), file_vp_auto_off turns viewall and
+     * autocenter off, as OpenSCAD 2021.01's Camera::updateView does. */
+    int file_vp_set, file_vp_auto_off;
+    double vpr[3], vpt[3], vpd, vpf;
 } render_view;
 
 /* Resolve a view for an image of width × height pixels and a model whose

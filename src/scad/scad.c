@@ -122,6 +122,26 @@ static void set_vec3(scad_env *e, const char *name, double x, double y, double z
     scad_env_set(e, name, v);
 }
 
+/* Camera::updateView's reading of one $vp variable: $vpr and $vpt take 2
+ * or 3 numbers (z = 0 when missing), $vpd and $vpf a number. */
+static void take_vp(scad_result *out, char which, scad_value v)
+{
+    if (which == 'd' || which == 'f') {
+        if (v.kind != SV_NUM) return;
+        *(which == 'd' ? &out->vpd : &out->vpf) = v.u.num;
+        out->vp_set |= which == 'd' ? SCAD_VP_D : SCAD_VP_F;
+        return;
+    }
+    if (v.kind != SV_VEC || v.u.vec->n < 2 || v.u.vec->n > 3) return;
+    double xyz[3] = {0, 0, 0};
+    for (int k = 0; k < v.u.vec->n; k++) {
+        if (v.u.vec->v[k].kind != SV_NUM) return;
+        xyz[k] = v.u.vec->v[k].u.num;
+    }
+    memcpy(which == 'r' ? out->vpr : out->vpt, xyz, sizeof xyz);
+    out->vp_set |= which == 'r' ? SCAD_VP_R : SCAD_VP_T;
+}
+
 static void run_job(job *j)
 {
     char base;
@@ -164,9 +184,12 @@ static void run_job(job *j)
         for (int i = 0; i < file->nvars; i++) {
             const char *n = file->vars[i].name;
             if (!strncmp(n, "$vp", 3) && strchr("drtf", n[3]) && !n[4] &&
-                file->vars[i].v.kind != SV_UNDEF)
+                file->vars[i].v.kind != SV_UNDEF) {
                 vp = 1;
+                if (j->out) take_vp(j->out, n[3], file->vars[i].v);
+            }
         }
+        if (j->out) j->out->vp_auto_off = vp;
         if (vp && !ev.aborted)
             scad_diag_line(j->d, SCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");

@@ -126,7 +126,16 @@ typedef struct scad_result {
     csg_node *highlight;  /* subtrees under '#': also part of model */
     csg_node *background; /* subtrees under '%': not part of model */
     int warnings;         /* how many WARNING lines were sent */
+    /* The file's own top-level camera variables, which OpenSCAD 2021.01
+     * uses for a render without --camera (Camera::updateView): vp_set has
+     * bit SCAD_VP_R for $vpr, _T $vpt, _D $vpd, _F $vpf when the file sets
+     * them to a usable value, and vp_auto_off is 1 when it sets any of them
+     * at all (viewall and autocenter are then off). */
+    int vp_set, vp_auto_off;
+    double vpr[3], vpt[3], vpd, vpf;
 } scad_result;
+
+enum { SCAD_VP_R = 1, SCAD_VP_T = 2, SCAD_VP_D = 4, SCAD_VP_F = 8 };
 
 /* Parse and evaluate the file at path.  On success returns 0 and fills *out;
  * the caller owns the trees (csg_node_free, or hand them to csg_scene_new).
