@@ -476,3 +476,29 @@ Test(scad_options, defines_override_top_level)
     scad_result_free(&r);
     lines_free(&m);
 }
+
+Test(scad_result, file_settings_and_camera_variables)
+{
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad",
+                                  "$rs_aperture = 2.5; $rs_shadows = true; $rs_label = \"x\";\n"
+                                  "$vpr = [10, 20]; $vpt = [1, 2, \"z\"]; $vpd = 50;\n"
+                                  "module m() { $rs_focus = 9; cube(1); }\nm();\n",
+                                  &o, &r),
+                 0);
+    /* numbers and booleans at top level only; a string is left out */
+    cr_assert_eq(r.nsettings, 2);
+    cr_expect_str_eq(r.settings[0].name, "$rs_aperture");
+    cr_expect_eq(r.settings[0].value, 2.5);
+    cr_expect_str_eq(r.settings[1].name, "$rs_shadows");
+    cr_expect_eq(r.settings[1].value, 1);
+    /* $vpr with two numbers gets z = 0; a $vpt with a string is unusable but
+     * still turns viewall off, as Camera::updateView */
+    cr_expect_eq(r.vp_set, SCAD_VP_R | SCAD_VP_D);
+    cr_expect_eq(r.vp_auto_off, 1);
+    cr_expect(r.vpr[0] == 10 && r.vpr[1] == 20 && r.vpr[2] == 0);
+    cr_expect_eq(r.vpd, 50);
+    scad_result_free(&r);
+}

@@ -190,6 +190,17 @@ static void run_job(job *j)
             }
         }
         if (j->out) j->out->vp_auto_off = vp;
+        for (int i = 0; j->out && i < file->nvars; i++) {
+            const char *n = file->vars[i].name;
+            scad_value v = file->vars[i].v;
+            scad_result *r = j->out;
+            if (strncmp(n, "$rs_", 4) || strlen(n) >= sizeof r->settings[0].name ||
+                r->nsettings == SCAD_MAX_SETTINGS || (v.kind != SV_NUM && v.kind != SV_BOOL))
+                continue;
+            strcpy(r->settings[r->nsettings].name, n);
+            r->settings[r->nsettings].value = v.kind == SV_BOOL ? v.u.b : v.u.num;
+            r->nsettings++;
+        }
         if (vp && !ev.aborted)
             scad_diag_line(j->d, SCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");

@@ -133,7 +133,18 @@ typedef struct scad_result {
      * at all (viewall and autocenter are then off). */
     int vp_set, vp_auto_off;
     double vpr[3], vpt[3], vpd, vpf;
+    /* The file's top-level $rs_ variables that hold a number or a boolean
+     * (as 0 or 1), in file order: scene settings such as $rs_aperture that
+     * the caller applies where no flag overrides them (OpenSCAD ignores
+     * them).  At most SCAD_MAX_SETTINGS; longer names are left out. */
+    struct scad_setting {
+        char name[32];
+        double value;
+    } settings[16];
+    int nsettings;
 } scad_result;
+
+enum { SCAD_MAX_SETTINGS = 16 };
 
 enum { SCAD_VP_R = 1, SCAD_VP_T = 2, SCAD_VP_D = 4, SCAD_VP_F = 8 };
 
