@@ -57,7 +57,7 @@ CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare conformance asan clean format bench
+.PHONY: all deps demo test unit cli compare conformance meshcheck asan clean format bench
 .DEFAULT_GOAL := all
 
 all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
@@ -114,11 +114,15 @@ compare: all
 conformance: all
 	tests/conformance.sh $(BUILD)
 
+meshcheck: all
+	tests/mesh_compare.sh $(BUILD)
+
 test: deps
 	$(MAKE) all
 	$(MAKE) unit
 	$(MAKE) cli
 	$(MAKE) conformance
+	$(MAKE) meshcheck
 	$(MAKE) compare
 
 asan: deps
@@ -126,6 +130,7 @@ asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" unit
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" cli
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" conformance
+	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" meshcheck
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" compare
 
 # Benchmarks against povray, openscad and manifold-3d (not a test; bench/run.py).

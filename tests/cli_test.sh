@@ -5,6 +5,9 @@
 set -u
 build=${1:-build}
 rayscad=$(realpath "$build/rayscad")
+meshcmp=$(realpath "$build/tools/meshcmp")
+py=/usr/bin/python3
+[ -x "$py" ] || py=python3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
@@ -22,6 +25,8 @@ check() { # name, condition (a command)
         failed=$((failed + 1))
     fi
 }
+
+quiet() { "$@" >/dev/null; }
 
 run() { # run rayscad, keep stderr in err.txt and the exit code in $rc
     "$rayscad" "$@" >out.txt 2>err.txt
@@ -72,6 +77,111 @@ run echo.scad -o e.echo
 check "echo output exits 0" test "$rc" -eq 0
 openscad -o ref.echo echo.scad >/dev/null 2>&1
 check "echo output matches openscad's" cmp -s e.echo ref.echo
+
+# ---- meshes and --measure ----
+printf 'cube([10, 20, 30]);\n' >box.scad
+printf 'sphere(r = 10, $fn = 100);\n' >ball.scad
+printf 'cube([10, 10, 0.2]);\n' >plate.scad
+printf 'cube(1);\ncube(2, center = true);\n' >two.scad
+printf 'echo("nothing");\n' >empty.scad
+
+for ext in stl off obj ply; do
+    run box.scad -o "box.$ext" --mesh-size 0.5
+    check "mesh .$ext exits 0" test "$rc" -eq 0
+done
+check "mesh output gets the umask's permissions" test "$(stat -c %a box.stl)" = 644
+check "binary STL by default" sh -c "! head -c 5 box.stl | grep -q solid"
+# Each format read back through OpenMesh: closed, the same volume and shape.
+for ext in off obj ply; do
+    check "mesh .$ext reads back as the STL" quiet "$meshcmp" "box.$ext" box.stl --h 0.5 --name "$ext" \
+        --vol-tol 1e-6 --hausdorff-cells 1e-4
+done
+run box.scad -o boxa.stl --ascii --mesh-size 0.5
+check "--ascii writes text STL" sh -c "head -c 5 boxa.stl | grep -q solid"
+check "--ascii STL reads back" quiet "$meshcmp" boxa.stl box.stl --h 0.5 --vol-tol 1e-6 --hausdorff-cells 1e-4
+run box.scad -o boxa.ply --ascii --mesh-size 0.5
+check "--ascii writes text PLY" grep -q "format ascii" boxa.ply
+run box.scad -o bin.ply --mesh-size 0.5
+check "PLY is binary by default" grep -aq "format binary" bin.ply
+
+# --measure against closed forms.  The midpoint rule over the rays is exact
+# along each ray and off by up to h/2 at faces parallel to a ray family, so
+# a box with sides off the grid is within 0.5 % (h = 30/128 here); a sphere
+# converges faster (0.1 %, area 0.5 %).
+run box.scad --measure --json
+check "--measure alone exits 0" test "$rc" -eq 0
+check "--json: box volume, area, bounds, centroid" "$py" - out.txt <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+ok = abs(m["volume"] - 6000) <= 0.005 * 6000 and abs(m["area"] - 2200) <= 0.005 * 2200
+ok = ok and all(abs(a - b) <= 1e-6 for a, b in zip(m["bounds"]["min"], [0, 0, 0]))
+ok = ok and all(abs(a - b) <= 1e-6 for a, b in zip(m["bounds"]["max"], [10, 20, 30]))
+ok = ok and all(abs(a - b) <= m["grid_spacing"] / 4 for a, b in zip(m["centroid"], [5, 10, 15]))
+sys.exit(0 if ok and not m["empty"] and "mesh" not in m else 1)
+PY
+run ball.scad --json --mesh-size 0.25
+check "--json: sphere volume and area within 0.1 % / 0.5 %" "$py" - out.txt <<'PY'
+import json, math, sys
+m = json.load(open(sys.argv[1]))
+v, a = 4 / 3 * math.pi * 1000, 4 * math.pi * 100
+ok = abs(m["volume"] - v) <= 1e-3 * v and abs(m["area"] - a) <= 5e-3 * a
+ok = ok and m["grid_spacing"] == 0.25 and all(abs(c) < 1e-6 for c in m["centroid"])
+ok = ok and all(abs(x + 10) < 0.01 for x in m["bounds"]["min"])
+sys.exit(0 if ok else 1)
+PY
+run ball.scad -o ball.stl --measure --json --mesh-size 0.3
+check "--measure with a mesh reports it, close to the measured volume" "$py" - out.txt <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+sys.exit(0 if m["mesh"]["triangles"] > 1000 and abs(m["mesh"]["volume"] / m["volume"] - 1) < 1e-3 else 1)
+PY
+run two.scad --measure
+check "--measure prints text" grep -q "^volume: *8$" out.txt
+check "--measure unions the top-level objects" grep -q "bounding box: *\[-1, -1, -1\] to \[1, 1, 1\]" out.txt
+run box.scad -o m.png --imgsize=32,32 --measure
+check "--measure with an image output" sh -c "test $rc -eq 0 && test -s m.png && grep -q volume out.txt"
+
+run ball.scad -o dec.stl --decimate 0.05 --mesh-size 0.3
+check "--decimate exits 0" test "$rc" -eq 0
+check "--decimate makes a smaller mesh" test "$(stat -c %s dec.stl)" -lt "$(stat -c %s ball.stl)"
+# The quadric decimater trims convex surfaces a little: volume within 1 %.
+check "decimated mesh stays closed, close to the sphere" quiet "$meshcmp" dec.stl ball.stl --h 0.1 \
+    --vol-tol 0.01
+
+for bad in 0 -1 nan inf abc; do
+    run box.scad -o x.stl --mesh-size "$bad"
+    check "--mesh-size $bad is a usage error" test "$rc" -eq 2
+done
+run box.scad -o x.stl --decimate -1
+check "negative --decimate is a usage error" test "$rc" -eq 2
+run box.scad -o x.png --ascii
+check "--ascii with an image is a usage error" test "$rc" -eq 2
+run box.scad -o x.echo --measure
+check "--measure with .echo is a usage error" test "$rc" -eq 2
+run box.scad
+check "neither -o nor --measure is a usage error" test "$rc" -eq 2
+check "no mesh file from usage errors" test ! -e x.stl
+
+# Thin walls are reported, not silently lost.
+run plate.scad -o plate.stl --mesh-size 0.5
+check "a plate thinner than h warns" grep -q "warning: walls thinner than the grid spacing 0.5" err.txt
+check "a plate lost entirely is an error" test "$rc" -eq 1
+check "a lost plate leaves no file" test ! -e plate.stl
+run plate.scad -o plate.stl --mesh-size 0.3
+check "a plate thinner than h warns on any grid" grep -q "walls thinner than the grid spacing 0.3" err.txt
+run plate.scad -o plate.stl
+check "a plate 2.5 cells thick does not warn" sh -c "test $rc -eq 0 && test ! -s err.txt"
+
+# Failed mesh outputs never leave a file behind.
+echo "precious" >keep.stl
+run syntax.scad -o keep.stl
+check "failed mesh keeps the existing file" grep -q precious keep.stl
+run empty.scad -o empty.stl
+check "empty model is an error for a mesh" test "$rc" -eq 1
+check "empty model leaves no file" test ! -e empty.stl
+run box.scad -o no/such/dir/x.stl
+check "unwritable mesh path exits 1" test "$rc" -eq 1
+check "no temporary mesh file left behind" test -z "$(ls -A | grep -e '^\.')"
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

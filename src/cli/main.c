@@ -1,10 +1,12 @@
 /*
  * main.c — the rayscad command: parse the flags, evaluate the .scad file into
- * CSG trees, commit them to a scene, and write what -o asks for.  This is the
- * only place that prints and chooses exit codes: 0 ok, 1 the model or the
- * output failed, 2 usage.
+ * CSG trees, commit them to a scene, and write what -o asks for (the
+ * output's kind comes from its extension; each kind has one branch in
+ * main's dispatch).  Only main and the writers it calls print, and main
+ * chooses the exit codes: 0 ok, 1 the model or the output failed, 2 usage.
  */
 #include "atomic_file.h"
+#include "mesh_output.h"
 #include "options.h"
 #include "progress.h"
 #include "services.h"
@@ -116,6 +118,39 @@ static int write_image(const cli_options *o, csg_scene *scene)
     return 0;
 }
 
+/* What -o writes, by its extension. */
+typedef enum output_kind {
+    OUTPUT_NONE, /* no -o (--measure alone) */
+    OUTPUT_UNKNOWN,
+    OUTPUT_IMAGE,
+    OUTPUT_MESH,
+    OUTPUT_ECHO,
+    OUTPUT_CSG,
+} output_kind;
+
+static output_kind output_kind_of(const char *path)
+{
+    if (!path) return OUTPUT_NONE;
+    if (has_extension(path, ".echo")) return OUTPUT_ECHO;
+    if (has_extension(path, ".csg")) return OUTPUT_CSG;
+    if (cli_mesh_output_is_mesh(path)) return OUTPUT_MESH;
+    if (io_image_format_supported(path)) return OUTPUT_IMAGE;
+    return OUTPUT_UNKNOWN;
+}
+
+/* Flags that only some outputs use: a message when o asks for one that
+ * `kind` would ignore, else NULL. */
+static const char *misplaced_flag(const cli_options *o, output_kind kind)
+{
+    if (kind != OUTPUT_MESH && o->ascii) return "--ascii applies to mesh outputs";
+    if (kind != OUTPUT_MESH && o->decimate >= 0) return "--decimate applies to mesh outputs";
+    if (kind != OUTPUT_MESH && !o->measure && o->mesh_size > 0)
+        return "--mesh-size applies to mesh outputs and --measure";
+    if (o->measure && (kind == OUTPUT_ECHO || kind == OUTPUT_CSG))
+        return "--measure cannot go with .echo or .csg output";
+    return NULL;
+}
+
 int main(int argc, char **argv)
 {
     cli_options o;
@@ -132,14 +167,19 @@ int main(int argc, char **argv)
         printf("rayscad %s\n", RAYSCAD_VERSION);
         return 0;
     }
-    int echo_out = has_extension(o.output, ".echo");
-    int csg_out = has_extension(o.output, ".csg");
-    if (!echo_out && !csg_out && !io_image_format_supported(o.output)) {
+    output_kind kind = output_kind_of(o.output);
+    if (kind == OUTPUT_UNKNOWN) {
         fprintf(stderr, "rayscad: cannot tell the output format from '%s' "
-                        "(use .png .jpg .tif .exr .echo or .csg)\n",
+                        "(use .png .jpg .tif .exr .stl .off .obj .ply .echo or .csg)\n",
                 o.output);
         return EXIT_USAGE;
     }
+    const char *misplaced = misplaced_flag(&o, kind);
+    if (misplaced) {
+        fprintf(stderr, "rayscad: %s\n(rayscad --help lists the options)\n", misplaced);
+        return EXIT_USAGE;
+    }
+    int echo_out = kind == OUTPUT_ECHO, csg_out = kind == OUTPUT_CSG;
 
     messages msgs = {.to_buffer = echo_out};
     scad_options so = {
@@ -186,7 +226,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "rayscad: error: %s\n", err);
         return EXIT_MODEL;
     }
-    int rc = write_image(&o, scene);
+    int rc = 0;
+    switch (kind) {
+    case OUTPUT_IMAGE:
+        rc = write_image(&o, scene);
+        break;
+    case OUTPUT_MESH:
+        rc = cli_mesh_output(&o, scene, 1);
+        break;
+    default:
+        break;
+    }
+    if (rc == 0 && o.measure && kind != OUTPUT_MESH) rc = cli_mesh_output(&o, scene, 0);
     csg_scene_free(scene);
     return rc;
 }

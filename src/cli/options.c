@@ -16,13 +16,15 @@
 
 const char cli_usage[] =
     "usage: rayscad FILE.scad -o OUTPUT [options]\n"
+    "       rayscad FILE.scad --measure [--json] [-o OUTPUT] [options]\n"
     "\n"
     "Renders an OpenSCAD file by ray casting its CSG tree with interval lists.\n"
     "OUTPUT's extension picks the format: .png .jpg .tif .exr (images),\n"
+    ".stl .off .obj .ply (a mesh of the model, top-level objects unioned),\n"
     ".echo (the ECHO and WARNING lines, as openscad -o x.echo writes them),\n"
     ".csg (the evaluated tree, as openscad -o x.csg writes it).\n"
     "\n"
-    "  -o FILE                 output file (required)\n"
+    "  -o FILE                 output file (required unless --measure)\n"
     "  -D name=value           override a top-level variable (repeatable)\n"
     "  --camera=tx,ty,tz,rx,ry,rz,dist   gimbal camera, as OpenSCAD\n"
     "  --camera=ex,ey,ez,cx,cy,cz        eye and centre camera, as OpenSCAD\n"
@@ -50,6 +52,16 @@ const char cli_usage[] =
     "  --absorb[=T]            thickness mode: alpha is the opacity of T mm of\n"
     "                          the solid, Beer-Lambert (default T = 10)\n"
     "  --seed N                jitter seed (default 0)\n"
+    "\n"
+    "Meshes (.stl .off .obj .ply) and measurement:\n"
+    "  --mesh-size H           grid spacing in model units (default: the longest\n"
+    "                          side of the model / 128)\n"
+    "  --ascii                 text STL or PLY (default binary; OFF, OBJ are text)\n"
+    "  --decimate TOL          simplify the mesh within TOL model units (OpenMesh's\n"
+    "                          quadric decimater)\n"
+    "  --measure               print volume, surface area, bounding box and centre\n"
+    "                          of mass, integrated over the ray intervals\n"
+    "  --json                  the same as JSON on stdout (implies --measure)\n"
     "  --help                  this text\n"
     "  --version               the version\n"
     "\n"
@@ -235,10 +247,11 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
     o->samples = 1;
     o->colorscheme = "Cornfield";
     o->view.kind = RENDER_CAMERA_DEFAULT;
+    o->decimate = -1;
 
     static const char *const valued[] = {"-o",         "-D",        "--camera",  "--imgsize",
                                          "--projection", "--colorscheme", "--samples", "--threads",
-                                         "--facets"};
+                                         "--facets", "--mesh-size", "--decimate"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = NULL;
@@ -257,6 +270,15 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         }
         if (strcmp(a, "--autocenter") == 0) {
             o->view.autocenter = 1;
+            continue;
+        }
+        if (strcmp(a, "--ascii") == 0) {
+            o->ascii = 1;
+            continue;
+        }
+        if (strcmp(a, "--measure") == 0 || strcmp(a, "--json") == 0) {
+            o->measure = 1;
+            o->json |= a[2] == 'j';
             continue;
         }
         int optic = parse_optics(argc, argv, &i, &o->optics, err, errlen);
@@ -329,6 +351,16 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 snprintf(err, errlen, "--facets expects auto, smooth or openscad, got '%s'", val);
                 return -1;
             }
+        } else if (strcmp(flag, "--mesh-size") == 0) {
+            if (parse_double(val, &o->mesh_size) != 0 || !(o->mesh_size > 0)) {
+                snprintf(err, errlen, "--mesh-size expects a grid spacing > 0, got '%s'", val);
+                return -1;
+            }
+        } else if (strcmp(flag, "--decimate") == 0) {
+            if (parse_double(val, &o->decimate) != 0 || !(o->decimate >= 0)) {
+                snprintf(err, errlen, "--decimate expects a tolerance >= 0, got '%s'", val);
+                return -1;
+            }
         } else if (strcmp(flag, "--colorscheme") == 0) {
             o->colorscheme = val;
         } else if (strcmp(flag, "--samples") == 0) {
@@ -349,8 +381,8 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         snprintf(err, errlen, "no input file");
         return -1;
     }
-    if (!o->output) {
-        snprintf(err, errlen, "no output file (-o)");
+    if (!o->output && !o->measure) {
+        snprintf(err, errlen, "no output file (-o) and no --measure");
         return -1;
     }
     return 0;

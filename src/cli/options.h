@@ -25,12 +25,19 @@ typedef struct cli_options {
      * --aperture, --focus, --xray, --absorb, --light-samples, --seed): only
      * the fields of render_options below `ud` are set. */
     render_options optics;
+    /* Meshes and measurement (mesh_output.h). */
+    double mesh_size; /* --mesh-size: grid spacing > 0; 0 = derived from the model */
+    double decimate;  /* --decimate TOL >= 0; < 0 when not asked for */
+    int ascii;        /* --ascii: text STL / PLY */
+    int measure;      /* --measure (also set by --json) */
+    int json;         /* --json: the measurement as JSON */
 } cli_options;
 
 /* Copy the light-model fields of o->optics into *ro (leaving the rest). */
 void cli_options_apply_optics(const cli_options *o, render_options *ro);
 
-/* Parse argv into *o.  Returns 0, or -1 with a message in err (a usage
+/* Parse argv into *o.  -o may be left out when --measure is given (then
+ * o->output is NULL).  Returns 0, or -1 with a message in err (a usage
  * error: the caller prints it and exits 2). */
 int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen);
 

@@ -1,0 +1,165 @@
+/*
+ * mesh_output.c — see mesh_output.h.  One tri-dexel sampling serves every
+ * request: the measurement integrates its intervals, the thin-feature scan
+ * reads its chords, and the contour meshes it; the sampling is freed before
+ * the mesh is decimated or written, so peak memory is the larger of the two.
+ *
+ * Thin walls: a contour on a grid of spacing h cannot keep a wall (or a gap)
+ * thinner than h — both faces may fall between two rows of nodes, and the
+ * wall vanishes or gets holes.  The command says so instead of writing such
+ * a mesh silently: mesh_dexels_thin finds, along the rays, parallel
+ * opposite faces closer than h (the chord between them is short across the
+ * faces, and their normals are nearly opposite, which tells a wall from a
+ * ray grazing a curved surface), and the warning names the thinnest and
+ * where it is.  Comparing the mesh's volume with the measured one would not
+ * do: the measurement's midpoint rule is itself off by up to h/2 times the
+ * faces parallel to a ray family (10 % on a plate 2.5 cells thick), so it
+ * cannot tell a lost wall from quadrature error.
+ */
+#include "mesh_output.h"
+
+#include "../io/io.h"
+#include "../mesh/mesh.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+int cli_mesh_output_is_mesh(const char *path)
+{
+    return io_mesh_format_supported(path);
+}
+
+static void print_vec(const char *fmt, const double v[3])
+{
+    printf(fmt, v[0], v[1], v[2]);
+}
+
+static void print_measure(const cli_options *o, const mesh_measure *m, double h, const mesh *msh,
+                          double mesh_volume)
+{
+    int empty = !(m->lo[0] <= m->hi[0]);
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        lo[k] = empty ? 0 : m->lo[k];
+        hi[k] = empty ? 0 : m->hi[k];
+    }
+    if (o->json) {
+        printf("{\n  \"volume\": %.10g,\n  \"area\": %.10g,\n", m->volume, m->area);
+        print_vec("  \"bounds\": {\"min\": [%.10g, %.10g, %.10g], ", lo);
+        print_vec("\"max\": [%.10g, %.10g, %.10g]},\n", hi);
+        print_vec("  \"centroid\": [%.10g, %.10g, %.10g],\n", m->centroid);
+        printf("  \"empty\": %s,\n  \"grid_spacing\": %.10g,\n  \"crossings\": %lld",
+               empty ? "true" : "false", h, m->crossings);
+        if (msh)
+            printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g}",
+                   mesh_vertex_count(msh), mesh_triangle_count(msh), mesh_volume);
+        printf("\n}\n");
+        return;
+    }
+    printf("volume:         %.10g\n", m->volume);
+    printf("surface area:   %.10g\n", m->area);
+    if (empty) {
+        printf("bounding box:   (empty)\n");
+    } else {
+        print_vec("bounding box:   [%.8g, %.8g, %.8g]", lo);
+        print_vec(" to [%.8g, %.8g, %.8g]", hi);
+        printf(" (size %.8g x %.8g x %.8g)\n", hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    }
+    print_vec("centre of mass: [%.10g, %.10g, %.10g]\n", m->centroid);
+    printf("grid spacing:   %.10g\n", h);
+    if (msh)
+        printf("mesh:           %d vertices, %d triangles, volume %.10g\n", mesh_vertex_count(msh),
+               mesh_triangle_count(msh), mesh_volume);
+}
+
+static void warn_thin(const mesh_thin *t, double h)
+{
+    if (t->walls)
+        fprintf(stderr,
+                "rayscad: warning: walls thinner than the grid spacing %g (the thinnest %.3g "
+                "thick, at [%.4g, %.4g, %.4g]; %lld rays): the mesh may lose them or have holes "
+                "through them; a --mesh-size below their thickness resolves them\n",
+                h, t->min_wall, t->wall_at[0], t->wall_at[1], t->wall_at[2], t->walls);
+    if (t->gaps)
+        fprintf(stderr,
+                "rayscad: warning: gaps narrower than the grid spacing %g (the narrowest %.3g "
+                "wide, at [%.4g, %.4g, %.4g]; %lld rays): the mesh may close them; a "
+                "--mesh-size below their width resolves them\n",
+                h, t->min_gap, t->gap_at[0], t->gap_at[1], t->gap_at[2], t->gaps);
+}
+
+/* Decimate (when asked) and write; 0 or 1 (printed). */
+static int write_mesh_file(const cli_options *o, const mesh *msh)
+{
+    char err[512];
+    const float *v = mesh_vertices(msh);
+    const int32_t *t = mesh_triangles(msh);
+    int nv = mesh_vertex_count(msh), nt = mesh_triangle_count(msh);
+    float *dv = NULL;
+    int32_t *dt = NULL;
+    if (o->decimate >= 0) {
+        if (io_mesh_decimate(v, nv, t, nt, o->decimate, &dv, &nv, &dt, &nt, err, sizeof err) != 0) {
+            fprintf(stderr, "rayscad: error: %s\n", err);
+            return 1;
+        }
+        v = dv;
+        t = dt;
+    }
+    int rc = io_mesh_write(o->output, v, nv, t, nt, o->ascii, err, sizeof err);
+    free(dv);
+    free(dt);
+    if (rc != 0) {
+        fprintf(stderr, "rayscad: error: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+int cli_mesh_output(const cli_options *o, const csg_scene *scene, int write_mesh)
+{
+    mesh_options mo;
+    mesh_options_default(&mo);
+    mo.h = o->mesh_size;
+    mo.threads = o->threads;
+    mo.root = 0;
+    char err[512];
+    mesh_dexels *d;
+    if (mesh_dexels_new(scene, &mo, &d, err, sizeof err) != 0) {
+        fprintf(stderr, "rayscad: error: %s\n", err);
+        return 1;
+    }
+    double h, org[3];
+    int n[3];
+    mesh_dexels_grid(d, &h, org, n);
+    mesh_measure m;
+    mesh_dexels_measure(d, &m);
+    mesh *msh = NULL;
+    double mesh_volume = 0;
+    if (write_mesh) {
+        mesh_thin thin;
+        mesh_dexels_thin(d, h, &thin);
+        int rc = mesh_dexels_contour(d, &mo, &msh, err, sizeof err);
+        mesh_dexels_free(d);
+        d = NULL;
+        if (rc != 0) {
+            fprintf(stderr, "rayscad: error: %s\n", err);
+            return 1;
+        }
+        warn_thin(&thin, h);
+        if (mesh_triangle_count(msh) == 0) {
+            fprintf(stderr, "rayscad: error: %s: the model is empty; there is no mesh to write\n",
+                    o->output);
+            mesh_free(msh);
+            return 1;
+        }
+        mesh_volume = mesh_signed_volume(msh);
+        if (write_mesh_file(o, msh) != 0) {
+            mesh_free(msh);
+            return 1;
+        }
+    }
+    mesh_dexels_free(d);
+    if (o->measure) print_measure(o, &m, h, msh, mesh_volume);
+    mesh_free(msh);
+    return 0;
+}

@@ -1,0 +1,26 @@
+/*
+ * mesh_output.h — the command's mesh outputs (.stl .off .obj .ply) and
+ * --measure: root 0 of a scene (the model, its top-level objects unioned)
+ * sampled by the tri-dexel rays of src/mesh, contoured, optionally
+ * decimated, and written through OpenMesh (src/io).
+ */
+#ifndef RAYSCAD_CLI_MESH_OUTPUT_H
+#define RAYSCAD_CLI_MESH_OUTPUT_H
+
+#include "options.h"
+
+#include "../csg/csg.h"
+
+/* 1 when path's extension names a mesh format (.stl .off .obj .ply). */
+int cli_mesh_output_is_mesh(const char *path);
+
+/* Sample root 0 of scene (borrowed) once on the grid o->mesh_size (or the
+ * default), then, as o asks: write the mesh to o->output when `write_mesh`
+ * (with --decimate and --ascii), and print the measurement on stdout when
+ * o->measure (as JSON with o->json).  Warnings (thin walls the grid cannot
+ * resolve) go to stderr.  Returns the exit status: 0, or 1 when the model
+ * cannot be meshed or the file cannot be written (a message on stderr; the
+ * output is then left untouched). */
+int cli_mesh_output(const cli_options *o, const csg_scene *scene, int write_mesh);
+
+#endif
