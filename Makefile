@@ -39,12 +39,15 @@ endif
 
 CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) -MMD -MP
 CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) -MMD -MP \
-	$(shell pkg-config --cflags OpenImageIO 2>/dev/null)
+	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
+	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null)
 LDLIBS   = $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lOpenMeshCore -lOpenMeshTools \
+	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
 	-lpthread -lm
 
 DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenmesh-dev \
-	libcriterion-dev pkg-config g++ make
+	libcriterion-dev pkg-config g++ make \
+	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c)
 IO_SRC   = $(wildcard src/io/*.cpp)

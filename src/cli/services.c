@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "../io/io.h"
+#include "geometry_services.h"
 
 /* The whole file at path, malloc'ed, its length in *n; NULL on failure. */
 static char *slurp(const char *path, size_t *n)
@@ -129,6 +130,11 @@ const scad_services *cli_services(void)
     static const scad_services s = {
         .read_mesh = read_mesh,
         .read_image = read_image,
+        .paths_clip = cli_paths_clip,
+        .paths_offset = cli_paths_offset,
+        .paths_minkowski = cli_paths_minkowski,
+        .mesh_tree = cli_mesh_tree,
+        .text = cli_text,
     };
     return &s;
 }

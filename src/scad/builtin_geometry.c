@@ -1345,20 +1345,6 @@ static scad_geom *m_resize(scad_eval *ev, scad_env *env, const scad_stmt *st, co
 
 /* ---- the table -------------------------------------------------------------------- */
 
-/* OpenSCAD modules rayscad does not build yet.  Their children are still
- * evaluated (their echo() lines are part of the output), and no message is
- * added, so the .echo output stays OpenSCAD's; README lists them.  offset
- * and minkowski show their children unchanged (the nearest shape);
- * projection and text show nothing. */
-static scad_geom *m_unsupported(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                                const scad_argv *a, const scad_state *state)
-{
-    (void)a;
-    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
-    if (!strcmp(st->name, "offset") || !strcmp(st->name, "minkowski")) return kids;
-    return NULL;
-}
-
 static const struct {
     const char *name;
     scad_builtin_mod fn;
@@ -1368,17 +1354,17 @@ static const struct {
     {"hull", m_hull},
     {"import", scad_module_import},
     {"linear_extrude", m_linear_extrude},
-    {"minkowski", m_unsupported},
-    {"offset", m_unsupported},
+    {"minkowski", scad_module_minkowski},
+    {"offset", scad_module_offset},
     {"polygon", m_polygon},
     {"polyhedron", m_polyhedron},
-    {"projection", m_unsupported},
+    {"projection", scad_module_projection},
     {"resize", m_resize},
     {"rotate_extrude", m_rotate_extrude},
     {"sphere", m_sphere},
     {"square", m_square},
     {"surface", scad_module_surface},
-    {"text", m_unsupported},
+    {"text", scad_module_text},
 };
 
 scad_builtin_mod scad_geometry_module(const char *name)

@@ -8,6 +8,7 @@
 #define RAYSCAD_BUILTIN_GEOMETRY_H
 
 #include "eval.h"
+#include "geom2d.h" /* offset, projection, minkowski, text */
 
 /* import() and surface() (builtin_import.c). */
 scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st,

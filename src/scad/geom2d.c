@@ -1,0 +1,235 @@
+/*
+ * geom2d.c — the shared part of the 2D operations (geom2d.h): fragment
+ * counts, flattening a 2D csg subtree into one polygon set, and a polygon
+ * set back into a region leaf.
+ *
+ * A flattened set is always normalised by the paths_clip service (no
+ * overlaps, outlines counter-clockwise, holes clockwise), so the offset and
+ * Minkowski services, which read paths as they wind, see what OpenSCAD's
+ * Clipper sees.  A region leaf takes the set under the even-odd rule, which
+ * agrees with nonzero on a normalised set.  The fragment rule repeats
+ * builtin_geometry.c's (OpenSCAD's get_fragments_from_r).
+ */
+#include "geom2d.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define GRID_FINE 0.00000095367431640625 /* OpenSCAD's smallest radius */
+#define SLAB 0.5     /* half the thickness of a previewed 2D object */
+#define SMOOTH_DISC 256 /* points of a smooth circle made into a polygon */
+
+static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name,
+                      scad_loc loc, double dflt)
+{
+    double x;
+    if (scad_to_num(scad_argv_get(a, name, -1), &x)) return x;
+    int found;
+    if (scad_to_num(scad_env_lookup(ev, env, name, loc, 1, &found), &x)) return x;
+    return dflt;
+}
+
+scad_facet_params scad_facets_lookup(scad_eval *ev, scad_env *env, const scad_argv *a,
+                                     scad_loc loc)
+{
+    scad_facet_params f = {special(ev, env, a, "$fn", loc, 0), special(ev, env, a, "$fa", loc, 12),
+                           special(ev, env, a, "$fs", loc, 2)};
+    return f;
+}
+
+int scad_fragments(double r, scad_facet_params f)
+{
+    if (!(r >= GRID_FINE)) return 3;
+    if (f.fn > 0) return f.fn >= 3 ? (f.fn > 100000 ? 100000 : (int)f.fn) : 3;
+    double fa = f.fa < 0.01 ? 0.01 : f.fa, fs = f.fs < 0.01 ? 0.01 : f.fs;
+    double n = ceil(fmax(fmin(360.0 / fa, r * 2 * PI / fs), 5));
+    return n > 100000 ? 100000 : (int)n;
+}
+
+int scad_facets_shown(const scad_eval *ev, scad_facet_params f)
+{
+    if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
+    if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
+    return f.fn > 0 && f.fn <= 16;
+}
+
+int scad_geom_keep(scad_eval *ev, iv_shape *s)
+{
+    if (ev->nowned == ev->capowned) {
+        int cap = ev->capowned ? 2 * ev->capowned : 16;
+        iv_shape *v = realloc(ev->owned, (size_t)cap * sizeof *v);
+        if (!v) {
+            iv_shape_release(s);
+            return -1;
+        }
+        ev->owned = v;
+        ev->capowned = cap;
+    }
+    ev->owned[ev->nowned++] = *s;
+    return 0;
+}
+
+scad_geom *scad_region_geom(scad_eval *ev, const scad_paths *p, const scad_state *state)
+{
+    if (!p || p->npaths == 0) return NULL;
+    iv_region *g = iv_region_new((const double(*)[2])p->pts, p->start, p->npaths);
+    if (!g) return NULL;
+    iv_shape s;
+    iv_shape_prism(&s, g, -SLAB, SLAB);
+    iv_region_release(g); /* the shape holds it now */
+    if (scad_geom_keep(ev, &s) != 0) return NULL;
+    return scad_geom_leaf(ev, &s, state);
+}
+
+void scad_paths_free(scad_paths *p)
+{
+    if (!p) return;
+    free(p->pts);
+    free(p->start);
+    p->pts = NULL;
+    p->start = NULL;
+    p->npaths = 0;
+}
+
+int scad_geom_dims(const scad_geom *g)
+{
+    if (!g) return 0;
+    if (!g->is_leaf) {
+        int d = 0;
+        for (int i = 0; i < g->n; i++)
+            d |= scad_geom_dims(g->kids[i]);
+        return d;
+    }
+    return g->shape.kind == IV_SHAPE_PRISM ? 1 : 2;
+}
+
+/* ---- flattening ------------------------------------------------------------------ */
+
+typedef struct flat {
+    scad_eval *ev;
+    const double *lfw; /* local_from_world */
+    scad_facet_params f;
+    scad_loc loc;
+    const char *who;
+    int failed;
+} flat;
+
+/* A leaf's polygons in the local frame, raw (even-odd); -1 out of memory. */
+static int leaf_paths(flat *c, const scad_geom *g, scad_paths *out)
+{
+    csg_affine t;
+    csg_affine_mul(c->lfw, g->xf, t);
+    const iv_region *src = g->shape.u.prism.g;
+    int n, np;
+    const double(*P)[2] = NULL;
+    const int *ps = NULL;
+    int circle_start[2];
+    double(*C)[2] = NULL;
+    if (src) {
+        P = iv_region_points(src, &n);
+        ps = iv_region_paths(src, &np);
+    } else {
+        double r = g->shape.u.prism.r;
+        n = scad_facets_shown(c->ev, c->f) ? scad_fragments(r, c->f) : SMOOTH_DISC;
+        C = malloc((size_t)n * sizeof *C);
+        if (!C) return -1;
+        for (int i = 0; i < n; i++) {
+            double a = 360.0 * i / n;
+            C[i][0] = r * scad_cos_degrees(a);
+            C[i][1] = r * scad_sin_degrees(a);
+        }
+        P = (const double(*)[2])C;
+        circle_start[0] = 0;
+        circle_start[1] = n;
+        ps = circle_start;
+        np = 1;
+    }
+    out->pts = malloc((size_t)(n ? n : 1) * sizeof *out->pts);
+    out->start = malloc((size_t)(np + 1) * sizeof *out->start);
+    if (!out->pts || !out->start) {
+        free(C);
+        scad_paths_free(out);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        out->pts[i][0] = t[0] * P[i][0] + t[1] * P[i][1] + t[3];
+        out->pts[i][1] = t[4] * P[i][0] + t[5] * P[i][1] + t[7];
+    }
+    memcpy(out->start, ps, (size_t)(np + 1) * sizeof *ps);
+    out->npaths = np;
+    free(C);
+    return 0;
+}
+
+static void fail(flat *c, const char *msg)
+{
+    if (!c->failed)
+        scad_diag_error(c->ev->d, c->loc, "%s(): %s", c->who, msg);
+    c->failed = 1;
+}
+
+/* Combine *acc (eo: raw even-odd, else normalised) with b by op. */
+static void combine(flat *c, int op, scad_paths *acc, int *acc_eo, scad_paths *b, int b_eo)
+{
+    const scad_services *s = c->ev->services;
+    if (!s->paths_clip) {
+        fail(c, "2D booleans are not available here (no polygon service)");
+        return;
+    }
+    scad_paths r = {NULL, NULL, 0};
+    char err[256];
+    if (s->paths_clip(s->ud, op, acc, *acc_eo, b, b_eo, &r, err, sizeof err) != 0) {
+        fail(c, err);
+        return;
+    }
+    scad_paths_free(acc);
+    *acc = r;
+    *acc_eo = 0;
+}
+
+/* g's polygon set into *out; *eo tells whether it is still raw even-odd. */
+static void flatten(flat *c, const scad_geom *g, scad_paths *out, int *eo)
+{
+    out->pts = NULL;
+    out->start = NULL;
+    out->npaths = 0;
+    *eo = 0;
+    if (!g || c->failed) return;
+    if (g->is_leaf) {
+        if (g->shape.kind != IV_SHAPE_PRISM) return; /* 3D: not part of a 2D set */
+        if (leaf_paths(c, g, out) != 0)
+            fail(c, "out of memory");
+        else
+            *eo = 1;
+        return;
+    }
+    if (g->n == 0) return;
+    flatten(c, g->kids[0], out, eo);
+    for (int i = 1; i < g->n && !c->failed; i++) {
+        if (g->op != CSG_OP_UNION && out->npaths == 0) break; /* empty stays empty */
+        scad_paths k;
+        int keo;
+        flatten(c, g->kids[i], &k, &keo);
+        if (!c->failed) combine(c, g->op, out, eo, &k, keo);
+        scad_paths_free(&k);
+    }
+}
+
+int scad_flatten_2d(scad_eval *ev, const scad_geom *g, const csg_affine local_from_world,
+                    scad_facet_params f, scad_loc loc, const char *who, scad_paths *out)
+{
+    flat c = {ev, local_from_world, f, loc, who, 0};
+    int eo;
+    flatten(&c, g, out, &eo);
+    if (!c.failed && eo) { /* a lone leaf: normalise it */
+        scad_paths none = {NULL, NULL, 0};
+        combine(&c, CSG_OP_UNION, out, &eo, &none, 0);
+    }
+    if (c.failed) {
+        scad_paths_free(out);
+        return -1;
+    }
+    return 0;
+}

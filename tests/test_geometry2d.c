@@ -1,0 +1,414 @@
+/*
+ * test_geometry2d.c — offset(), projection(), minkowski() and text()
+ * against closed forms: polygon areas by the shoelace formula for the
+ * Clipper adapter (io/polygon.h), and for whole .scad sources the area of a
+ * 2D result (the volume of its 1 mm preview slab) or the volume of a 3D one
+ * measured by ray sampling (mesh.h), each within the stated tessellation
+ * or sampling error.  Error messages are checked by their file:line:col.
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../src/io/polygon.h"
+#include "../src/io/text.h"
+#include "../src/mesh/mesh.h"
+#include "../src/scad/scad.h"
+
+#define PI 3.14159265358979323846
+
+/* ---- the services, wired as src/cli/services.c wires them ------------------------ */
+
+static io_paths view(const scad_paths *p)
+{
+    io_paths q = {NULL, NULL, 0};
+    if (p) {
+        q.pts = p->pts;
+        q.start = p->start;
+        q.npaths = p->npaths;
+    }
+    return q;
+}
+
+static void back(io_paths *q, scad_paths *o)
+{
+    o->pts = q->pts;
+    o->start = q->start;
+    o->npaths = q->npaths;
+}
+
+static int s_clip(void *ud, int op, const scad_paths *a, int ae, const scad_paths *b, int be,
+                  scad_paths *out, char *err, size_t n)
+{
+    (void)ud;
+    io_paths x = view(a), y = view(b), r;
+    io_clip_op o = op == CSG_OP_INTERSECTION ? IO_CLIP_INTERSECTION
+                   : op == CSG_OP_DIFFERENCE ? IO_CLIP_DIFFERENCE
+                                             : IO_CLIP_UNION;
+    if (io_polygon_clip(o, &x, ae, &y, be, &r, err, n)) return -1;
+    back(&r, out);
+    return 0;
+}
+
+static int s_offset(void *ud, const scad_paths *a, double d, int join, double ml, double tol,
+                    scad_paths *out, char *err, size_t n)
+{
+    (void)ud;
+    io_paths x = view(a), r;
+    io_join j = join == SCAD_JOIN_MITER ? IO_JOIN_MITER
+                : join == SCAD_JOIN_SQUARE ? IO_JOIN_SQUARE
+                                           : IO_JOIN_ROUND;
+    if (io_polygon_offset(&x, d, j, ml, tol, &r, err, n)) return -1;
+    back(&r, out);
+    return 0;
+}
+
+static int s_mink(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out, char *err,
+                  size_t n)
+{
+    (void)ud;
+    io_paths x = view(a), y = view(b), r;
+    if (io_polygon_minkowski(&x, &y, &r, err, n)) return -1;
+    back(&r, out);
+    return 0;
+}
+
+static int s_mesh(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t, int *nt,
+                  char *err, size_t n)
+{
+    (void)ud;
+    csg_scene *s = csg_scene_new(&root, 1, err, n);
+    if (!s) return -1;
+    mesh_options o;
+    mesh_options_default(&o);
+    o.h = h;
+    o.cells_per_side = 256;
+    mesh *m;
+    int rc = mesh_from_scene(s, &o, &m, NULL, err, n);
+    csg_scene_free(s);
+    if (rc) return -1;
+    *nv = mesh_vertex_count(m);
+    *nt = mesh_triangle_count(m);
+    *v = malloc((size_t)*nv * 3 * sizeof **v + 1);
+    *t = malloc((size_t)*nt * 3 * sizeof **t + 1);
+    memcpy(*v, mesh_vertices(m), (size_t)*nv * 3 * sizeof **v);
+    memcpy(*t, mesh_triangles(m), (size_t)*nt * 3 * sizeof **t);
+    mesh_free(m);
+    return 0;
+}
+
+static int s_text(void *ud, const scad_text_params *p, scad_paths *out, char *err, size_t n)
+{
+    (void)ud;
+    io_text_params q = {p->text,    p->size,      p->font,     p->halign, p->valign,
+                        p->spacing, p->direction, p->language, p->script, p->segments};
+    io_paths r;
+    if (io_text_render(&q, &r, err, n)) return -1;
+    back(&r, out);
+    return 0;
+}
+
+static const scad_services services = {
+    .paths_clip = s_clip,
+    .paths_offset = s_offset,
+    .paths_minkowski = s_mink,
+    .mesh_tree = s_mesh,
+    .text = s_text,
+};
+
+/* ---- helpers ------------------------------------------------------------------------ */
+
+static char msgs[4096];
+
+static void on_msg(void *ud, scad_msg_kind k, const char *line)
+{
+    (void)ud;
+    (void)k;
+    strncat(msgs, line, sizeof msgs - strlen(msgs) - 2);
+    strcat(msgs, "\n");
+}
+
+/* The scene of src (cr_assert on failure). */
+static csg_scene *scene_of(const char *src)
+{
+    msgs[0] = 0;
+    scad_options o = {0};
+    o.services = &services;
+    o.message = on_msg;
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad", src, &o, &r), 0, "%s\n%s", src, msgs);
+    csg_node *roots[1] = {r.model};
+    r.model = NULL;
+    scad_result_free(&r);
+    char err[256];
+    csg_scene *s = csg_scene_new(roots, 1, err, sizeof err);
+    cr_assert(s, "%s", err);
+    return s;
+}
+
+/* Volume of src's model (for a 2D result: its area, the slab being 1 mm
+ * thick), by ray sampling at 1/cells of the longest side. */
+static double volume_of(const char *src, int cells)
+{
+    csg_scene *s = scene_of(src);
+    mesh_options o;
+    mesh_options_default(&o);
+    o.cells_per_side = cells;
+    o.threads = 1;
+    mesh_measure m;
+    char err[256];
+    cr_assert_eq(mesh_measure_scene(s, &o, &m, err, sizeof err), 0, "%s", err);
+    csg_scene_free(s);
+    return m.volume;
+}
+
+static double shoelace(const io_paths *p)
+{
+    double a = 0;
+    for (int i = 0; i < p->npaths; i++)
+        for (int k = p->start[i]; k < p->start[i + 1]; k++) {
+            int nk = k + 1 < p->start[i + 1] ? k + 1 : p->start[i];
+            a += p->pts[k][0] * p->pts[nk][1] - p->pts[nk][0] * p->pts[k][1];
+        }
+    return a / 2;
+}
+
+static io_paths square10(double (*P)[2], int *st)
+{
+    double sq[4][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    memcpy(P, sq, sizeof sq);
+    st[0] = 0;
+    st[1] = 4;
+    io_paths p = {P, st, 1};
+    return p;
+}
+
+/* ---- the Clipper adapter ------------------------------------------------------------ */
+
+Test(io_polygon, offset_delta_of_square_is_the_bigger_square)
+{
+    double P[4][2];
+    int st[2];
+    io_paths a = square10(P, st), r;
+    char err[256];
+    cr_assert_eq(io_polygon_offset(&a, 2, IO_JOIN_MITER, 1e6, 0, &r, err, sizeof err), 0);
+    cr_assert_eq(r.npaths, 1);
+    cr_assert_float_eq(shoelace(&r), 196.0, 1e-6);
+    for (int i = 0; i < r.start[1]; i++) {
+        cr_assert(fabs(r.pts[i][0] + 2) < 1e-9 || fabs(r.pts[i][0] - 12) < 1e-9);
+        cr_assert(fabs(r.pts[i][1] + 2) < 1e-9 || fabs(r.pts[i][1] - 12) < 1e-9);
+    }
+    io_paths_free(&r);
+}
+
+Test(io_polygon, offset_round_of_square_has_the_rounded_area)
+{
+    /* s² + 4 s r + π r²; the round joins are chords within arc_tolerance
+     * of the arc, which loses less than 4·(perimeter of the arcs)·tol */
+    double P[4][2];
+    int st[2];
+    io_paths a = square10(P, st), r;
+    char err[256];
+    double rr = 2, tol = rr * (1 - cos(PI / 64));
+    cr_assert_eq(io_polygon_offset(&a, rr, IO_JOIN_ROUND, 1e6, tol, &r, err, sizeof err), 0);
+    double exact = 100 + 4 * 10 * rr + PI * rr * rr, area = shoelace(&r);
+    cr_assert(area <= exact + 1e-6 && area >= exact - 2 * PI * rr * tol - 1e-3,
+              "area %.6f, exact %.6f", area, exact);
+    io_paths_free(&r);
+}
+
+Test(io_polygon, offset_chamfer_cuts_each_corner)
+{
+    /* a square join cuts each 90° corner at distance delta from the
+     * vertex: a right isosceles triangle of height (√2 − 1)·delta off */
+    double P[4][2];
+    int st[2];
+    io_paths a = square10(P, st), r;
+    char err[256];
+    cr_assert_eq(io_polygon_offset(&a, 2, IO_JOIN_SQUARE, 1e6, 0, &r, err, sizeof err), 0);
+    double h = (sqrt(2) - 1) * 2;
+    cr_assert_float_eq(shoelace(&r), 196 - 4 * h * h, 1e-3);
+    io_paths_free(&r);
+}
+
+Test(io_polygon, minkowski_of_two_squares_adds_sides)
+{
+    double P[4][2], Q[4][2] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}};
+    int st[2], qs[2] = {0, 4};
+    io_paths a = square10(P, st), b = {Q, qs, 1}, r;
+    char err[256];
+    cr_assert_eq(io_polygon_minkowski(&a, &b, &r, err, sizeof err), 0);
+    cr_assert_float_eq(shoelace(&r), 169.0, 1e-6);
+    io_paths_free(&r);
+}
+
+Test(io_polygon, even_odd_keeps_the_hole)
+{
+    double P[8][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {8, 2}, {8, 8}, {2, 8}};
+    int st[3] = {0, 4, 8};
+    io_paths a = {P, st, 2}, none = {NULL, NULL, 0}, r;
+    char err[256];
+    cr_assert_eq(io_polygon_clip(IO_CLIP_UNION, &a, 1, &none, 0, &r, err, sizeof err), 0);
+    cr_assert_eq(r.npaths, 2);
+    cr_assert_float_eq(shoelace(&r), 100.0 - 36.0, 1e-9);
+    io_paths_free(&r);
+}
+
+Test(io_polygon, out_of_range_is_an_error)
+{
+    double P[3][2] = {{0, 0}, {1e300, 0}, {0, 1}};
+    int st[2] = {0, 3};
+    io_paths a = {P, st, 1}, none = {NULL, NULL, 0}, r;
+    char err[256] = "";
+    cr_assert_eq(io_polygon_clip(IO_CLIP_UNION, &a, 0, &none, 0, &r, err, sizeof err), -1);
+    cr_assert(strlen(err) > 0);
+}
+
+/* ---- the modules -------------------------------------------------------------------- */
+
+Test(offset, round_square_area)
+{
+    double a = volume_of("offset(r = 2, $fn = 64) square(10);", 512);
+    double exact = 100 + 80 + PI * 4;
+    cr_assert(fabs(a - exact) < 0.01 * exact, "area %f, exact %f", a, exact);
+}
+
+Test(offset, delta_square_and_negative_delta)
+{
+    double a = volume_of("offset(delta = 2) square(10, center = true);", 512);
+    cr_assert(fabs(a - 196) < 0.01 * 196, "area %f", a);
+    a = volume_of("offset(delta = -2) square(10, center = true);", 512);
+    cr_assert(fabs(a - 36) < 0.01 * 36, "area %f", a);
+}
+
+Test(offset, follows_the_transform_outside_it)
+{
+    /* offset in a scaled frame: the scale applies after the offset */
+    csg_scene *s = scene_of("scale([2, 1]) offset(delta = 1) square(10);");
+    double lo[3], hi[3];
+    cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
+    cr_assert(fabs(lo[0] + 2) < 1e-6 && fabs(hi[0] - 22) < 1e-6, "x %f .. %f", lo[0], hi[0]);
+    cr_assert(fabs(lo[1] + 1) < 1e-6 && fabs(hi[1] - 11) < 1e-6, "y %f .. %f", lo[1], hi[1]);
+    csg_scene_free(s);
+}
+
+Test(offset, of_a_difference_keeps_the_hole)
+{
+    double a = volume_of("offset(delta = 1) difference() { square(20, center = true); "
+                         "square(10, center = true); }",
+                         512);
+    cr_assert(fabs(a - (22 * 22 - 8 * 8)) < 0.01 * 420, "area %f", a);
+}
+
+Test(projection, sphere_shadow_is_a_disc)
+{
+    double a = volume_of("projection() sphere(5);", 512);
+    cr_assert(fabs(a - PI * 25) < 0.015 * PI * 25, "area %f", a);
+}
+
+Test(projection, cut_of_a_sphere_off_centre)
+{
+    /* z = 0 cuts a sphere of radius 5 centred at z = 3 in a disc of
+     * radius 4 */
+    double a = volume_of("projection(cut = true) translate([0, 0, 3]) sphere(5);", 512);
+    cr_assert(fabs(a - PI * 16) < 0.01 * PI * 16, "area %f", a);
+}
+
+Test(projection, cut_misses_is_empty)
+{
+    csg_scene *s = scene_of("projection(cut = true) translate([0, 0, 10]) cube(2);");
+    double lo[3], hi[3];
+    cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), -1);
+    csg_scene_free(s);
+}
+
+Test(minkowski, cube_and_sphere_volume)
+{
+    /* cube s ⊕ ball r: s³ + 6 s² r + 3 π s r² + 4/3 π r³; the ball is
+     * OpenSCAD's 64-gon tessellation, inside the ball by at most
+     * r (1 − cos(π/32))² ≈ 0.5 % of its radius in each direction */
+    double s = 10, r = 2;
+    double exact = s * s * s + 6 * s * s * r + 3 * PI * s * r * r + 4.0 / 3 * PI * r * r * r;
+    double v = volume_of("minkowski() { cube(10); sphere(2, $fn = 64); }", 256);
+    cr_assert(v < exact * 1.003 && v > exact * 0.99, "volume %f, exact %f", v, exact);
+}
+
+Test(minkowski, distributes_over_union)
+{
+    /* two unit-separated cubes ⊕ a cube: two 4-cubes that touch */
+    double v = volume_of("minkowski() { union() { cube(2); translate([4, 0, 0]) cube(2); } "
+                         "cube(2, center = true); }",
+                         256);
+    cr_assert(fabs(v - (8 * 4 * 4)) < 0.01 * 128, "volume %f", v);
+}
+
+Test(minkowski, two_2d_squares)
+{
+    double a = volume_of("minkowski() { square(10); square(3); }", 512);
+    cr_assert(fabs(a - 169) < 0.01 * 169, "area %f", a);
+}
+
+Test(minkowski, of_a_difference_is_an_error)
+{
+    msgs[0] = 0;
+    scad_options o = {0};
+    o.services = &services;
+    o.message = on_msg;
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad",
+                                  "cube(1);\nminkowski() { difference() { cube(4); cube(2); }\n"
+                                  "  sphere(1); }",
+                                  &o, &r),
+                 0);
+    cr_assert(strstr(msgs, "t.scad:2:1: error: minkowski() of a difference is not supported"),
+              "%s", msgs);
+    scad_result_free(&r);
+}
+
+Test(text, capital_height_matches_the_font)
+{
+    /* Liberation Sans: capitals 1409 units of a 2048-unit em (OS/2
+     * sCapHeight); OpenSCAD's em is size · 100 / 72 */
+    csg_scene *s = scene_of("text(\"H\", size = 10);");
+    double lo[3], hi[3];
+    cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
+    double cap = 1409.0 / 2048 * 10 * 100 / 72;
+    cr_assert(fabs(lo[1]) < 0.01 && fabs(hi[1] - cap) < 0.01 * cap, "y %f .. %f, cap %f", lo[1],
+              hi[1], cap);
+    csg_scene_free(s);
+}
+
+Test(text, halign_center_and_valign_center)
+{
+    csg_scene *s = scene_of("text(\"HH\", size = 10, halign = \"center\", valign = \"center\");");
+    double lo[3], hi[3];
+    cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
+    /* H is symmetric in its advance, so the pair centres on x = 0 to
+     * within the 1000-vs-1024 scaling OpenSCAD mixes (2.4 % of the
+     * advance) */
+    cr_assert(fabs(lo[0] + hi[0]) < 0.05 * (hi[0] - lo[0]), "x %f .. %f", lo[0], hi[0]);
+    cr_assert(fabs(lo[1] + hi[1]) < 0.05 * (hi[1] - lo[1]), "y %f .. %f", lo[1], hi[1]);
+    csg_scene_free(s);
+}
+
+Test(text, empty_and_spaces_draw_nothing)
+{
+    csg_scene *s = scene_of("text(\"  \");");
+    double lo[3], hi[3];
+    cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), -1);
+    csg_scene_free(s);
+}
+
+Test(text, without_a_service_is_an_error)
+{
+    msgs[0] = 0;
+    scad_options o = {0};
+    o.message = on_msg;
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad", "text(\"A\");", &o, &r), 0);
+    cr_assert(strstr(msgs, "t.scad:1:1: error: text() is not available here"), "%s", msgs);
+    scad_result_free(&r);
+}
