@@ -616,14 +616,14 @@ Test(import, missing_and_unsupported_files_warn, .init = setup, .fini = teardown
     o.services = cli_services();
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad",
-                                  "import(\"nowhere.stl\");\nimport(\"a.dxf\");\n"
+                                  "import(\"nowhere.stl\");\nimport(\"a.svg\");\n"
                                   "surface(\"nowhere.dat\");\nimport(\"x.abc\");",
                                   &o, &r),
                  0);
     cr_expect_str_eq(m.text,
                      "WARNING: Can't open import file 'nowhere.stl' in file t.scad, line 1\n"
-                     "t.scad:2:1: warning: import() of dxf files is not supported by "
-                     "rayscad: 'a.dxf' shows nothing\n"
+                     "t.scad:2:1: warning: import() of svg files is not supported by "
+                     "rayscad: 'a.svg' shows nothing\n"
                      "WARNING: The file 'nowhere.dat' couldn't be opened. in file t.scad, line 3\n"
                      "WARNING: Unsupported file format while trying to import file "
                      "'\"x.abc\"' in file t.scad, line 4\n");

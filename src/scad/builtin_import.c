@@ -1,6 +1,7 @@
 /*
  * builtin_import.c — import() and surface(): geometry read from files, as
- * closed triangle meshes (iv_shape_mesh).
+ * closed triangle meshes (iv_shape_mesh); a .dxf drawing is a 2D region
+ * (dxf.c reads it, builtin_dxf.c builds the leaf).
  *
  * Files are named relative to the folder of the .scad file that makes the
  * call, as OpenSCAD resolves them.  Reading goes through the injected
@@ -15,6 +16,7 @@
  * bottom at z = min(0, lowest height - 1), the bottom one polygon.
  */
 #include "builtin_geometry.h"
+#include "dxf.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -61,7 +63,6 @@ static int readable(const char *path)
 scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
                               const scad_state *state)
 {
-    (void)env;
     static const char *const known[] = {"file",  "layer",  "convexity", "origin",    "scale",
                                         "width", "height", "filename",  "layername", "center",
                                         "dpi",   "id",     NULL};
@@ -73,7 +74,20 @@ scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st,
     extension(name, ext, sizeof ext);
     int mesh =
         !strcmp(ext, "stl") || !strcmp(ext, "off") || !strcmp(ext, "obj") || !strcmp(ext, "ply");
-    if (!strcmp(ext, "dxf") || !strcmp(ext, "svg") || !strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
+    double origin[2] = {0, 0};
+    scad_dxf_origin(ev, scad_argv_get(a, "origin", 3), st->loc, origin);
+    if (!strcmp(ext, "dxf")) {
+        scad_buf path = {0};
+        resolve(st, name, &path);
+        scad_geom *g = NULL;
+        if (path.oom)
+            scad_eval_error(ev, st->loc, "out of memory");
+        else
+            g = scad_dxf_import(ev, env, st, a, state, scad_buf_str(&path));
+        scad_buf_free(&path);
+        return g;
+    }
+    if (!strcmp(ext, "svg") || !strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
         scad_diag_note(ev->d, st->loc,
                        "import() of %s files is not supported by rayscad: '%s' shows nothing", ext,
                        name);

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "dxf.h"
 #include "eval.h"
 
 #ifndef M_PI
@@ -696,6 +697,8 @@ static const entry table[] = {
     {"concat", f_concat},
     {"cos", f_unary},
     {"cross", f_cross},
+    {"dxf_cross", scad_builtin_dxf_cross},
+    {"dxf_dim", scad_builtin_dxf_dim},
     {"exp", f_unary},
     {"floor", f_unary},
     {"is_bool", f_is},

@@ -479,8 +479,11 @@ static int file_part(scad_eval *ev, const scad_stmt *st, const scad_argv *a, sca
         put_quoted(b, scad_buf_str(&s), strlen(scad_buf_str(&s)));
         scad_buf_free(&s);
     }
-    double o[2] = {0, 0};
-    vecn(arg(a, "origin", originpos), 2, o);
+    double o[2] = {0, 0}, v[2] = {0, 0};
+    scad_value ov = arg(a, "origin", originpos);
+    /* Value::getVec2: two numbers, or neither is taken */
+    if (vecn(ov, 2, v) && ov.u.vec->v[0].kind == SV_NUM && ov.u.vec->v[1].kind == SV_NUM)
+        o[0] = v[0], o[1] = v[1];
     scad_buf_puts(b, ", origin = [");
     put_g(b, o[0]);
     scad_buf_puts(b, ", ");
@@ -580,6 +583,7 @@ static void header(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad
         }
         double scale = 1;
         num(arg(a, "scale", 4), &scale);
+        if (scale <= 0) scale = 1; /* as ImportNode */
         int convexity = as_int(arg(a, "convexity", 2), 1);
         if (convexity <= 0) convexity = 1;
         scad_buf_puts(b, ", scale = ");

@@ -1,0 +1,329 @@
+/*
+ * builtin_dxf.c — what the language does with DXF drawings (read by
+ * dxf.c): import() of a .dxf as a 2D region leaf, and the functions
+ * dxf_dim() and dxf_cross() of OpenSCAD 2021.01, with its arguments,
+ * defaults and warnings.
+ *
+ * Files are named relative to the folder of the calling file.  The reader's
+ * own warnings carry no location, as OpenSCAD's DxfData gives none; those of
+ * the calls read "… in file x.scad, line N".  dxf_dim and dxf_cross read the
+ * file with $fn = 36, as OpenSCAD does (it only changes arcs, which neither
+ * measures).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "builtin_geometry.h"
+#include "dxf.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* The preview slab of a 2D leaf (as builtin_geometry.c's SLAB). */
+#define SLAB 0.5
+
+typedef struct sink {
+    scad_eval *ev;
+    scad_loc loc;
+} sink;
+
+static void on_message(void *ud, scad_msg_kind kind, const char *text)
+{
+    sink *s = ud;
+    if (kind == SCAD_MSG_NOTE) {
+        scad_diag_note(s->ev->d, s->loc, "%s", text);
+    } else {
+        scad_buf b = {0};
+        scad_buf_printf(&b, "WARNING: %s", text);
+        scad_diag_line(s->ev->d, SCAD_MSG_WARNING, scad_buf_str(&b));
+        scad_buf_free(&b);
+    }
+}
+
+/* Value::toString: a string as is, anything else as str() prints it. */
+static void to_string(scad_value v, scad_buf *out)
+{
+    if (v.kind == SV_STR)
+        scad_buf_puts(out, v.u.str->s);
+    else
+        scad_value_format(out, v, 0);
+}
+
+/* The file as OpenSCAD's lookup_file finds it: relative to the folder of
+ * the calling file unless absolute or empty. */
+static void resolve(scad_loc loc, const char *name, scad_buf *out)
+{
+    const char *from = loc.file ? loc.file : "";
+    if (name[0] && name[0] != '/') {
+        const char *slash = strrchr(from, '/');
+        if (slash) scad_buf_put(out, from, (size_t)(slash - from + 1));
+    }
+    scad_buf_puts(out, name);
+}
+
+/* Value::getVec2: a list of two numbers, or nothing assigned. */
+static int vec2(scad_value v, double o[2])
+{
+    if (v.kind != SV_VEC || v.u.vec->n != 2 || v.u.vec->v[0].kind != SV_NUM ||
+        v.u.vec->v[1].kind != SV_NUM)
+        return 0;
+    o[0] = v.u.vec->v[0].u.num;
+    o[1] = v.u.vec->v[1].u.num;
+    return 1;
+}
+
+int scad_dxf_origin(scad_eval *ev, scad_value v, scad_loc loc, double o[2])
+{
+    int ok = vec2(v, o) && isfinite(o[0]) && isfinite(o[1]);
+    if (v.kind != SV_UNDEF && !ok) {
+        scad_buf b = {0};
+        scad_value_format(&b, v, 1);
+        /* sic: 2021.01's import() names linear_extrude here */
+        scad_diag_warning(ev->d, loc, "linear_extrude(..., origin=%s) could not be converted",
+                          scad_buf_str(&b));
+        scad_buf_free(&b);
+    }
+    return ok;
+}
+
+/* ---- dxf_dim and dxf_cross ----------------------------------------------------- */
+
+typedef struct dxf_args {
+    scad_buf raw, file, layer, name;
+    double origin[2], scale;
+} dxf_args;
+
+/* The arguments as OpenSCAD's loop over them reads them (later ones win);
+ * unknown and positional ones warn.  with_name: dxf_dim's "name". */
+static void read_args(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fn,
+                      int with_name, dxf_args *d)
+{
+    memset(d, 0, sizeof *d);
+    d->scale = 1;
+    for (int i = 0; i < a->n; i++) {
+        const char *n = a->names[i] ? a->names[i] : "";
+        scad_value v = a->v[i];
+        scad_buf *into = NULL;
+        if (!strcmp(n, "file")) {
+            into = &d->raw;
+        } else if (!strcmp(n, "layer")) {
+            into = &d->layer;
+        } else if (with_name && !strcmp(n, "name")) {
+            into = &d->name;
+        } else if (!strcmp(n, "origin")) {
+            int ok = vec2(v, d->origin) && isfinite(d->origin[0]) && isfinite(d->origin[1]);
+            if (!ok) {
+                scad_buf b = {0};
+                scad_value_format(&b, v, 1);
+                scad_diag_warning(ev->d, loc, "%s(..., origin=%s) could not be converted", fn,
+                                  scad_buf_str(&b));
+                scad_buf_free(&b);
+            }
+        } else if (!strcmp(n, "scale")) {
+            if (v.kind == SV_NUM) d->scale = v.u.num;
+        } else {
+            scad_diag_warning(ev->d, loc, "%s(..., %s=...) is not supported", fn, n);
+        }
+        if (into) {
+            into->n = 0;
+            to_string(v, into);
+        }
+    }
+    resolve(loc, scad_buf_str(&d->raw), &d->file);
+}
+
+static void free_args(dxf_args *d)
+{
+    scad_buf_free(&d->raw);
+    scad_buf_free(&d->file);
+    scad_buf_free(&d->layer);
+    scad_buf_free(&d->name);
+}
+
+/* Reads the drawing for a function call; 0, or 1 after a warning (no such
+ * file) or an error (out of memory). */
+static int read_for(scad_eval *ev, scad_loc loc, dxf_args *d, scad_dxf *dxf)
+{
+    const char *path = scad_buf_str(&d->file);
+    FILE *fp = path[0] ? fopen(path, "r") : NULL;
+    if (!fp) {
+        scad_diag_warning(ev->d, loc, "Can't open DXF file '%s'!", scad_buf_str(&d->raw));
+        return 1;
+    }
+    fclose(fp);
+    scad_dxf_params p = {scad_buf_str(&d->layer), d->origin[0], d->origin[1], d->scale, 36, 0, 0};
+    sink s = {ev, loc};
+    if (scad_dxf_read(path, &p, on_message, &s, dxf) != 0) {
+        scad_eval_error(ev, loc, "out of memory");
+        return 1;
+    }
+    return 0;
+}
+
+static double atan2_degrees(double y, double x)
+{
+    return atan2(y, x) * 180.0 / M_PI;
+}
+
+scad_value scad_builtin_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
+{
+    (void)fname;
+    dxf_args d;
+    read_args(ev, a, loc, "dxf_dim", 1, &d);
+    scad_dxf dxf;
+    scad_value r = scad_undef();
+    if (read_for(ev, loc, &d, &dxf)) {
+        free_args(&d);
+        return r;
+    }
+    const char *want = scad_buf_str(&d.name);
+    int found = 0;
+    for (int i = 0; i < dxf.ndims && !found; i++) {
+        const scad_dxf_dim *m = &dxf.dims[i];
+        if (want[0] && strcmp(m->name, want)) continue;
+        found = 1;
+        const double(*c)[2] = m->coords;
+        double x = c[4][0] - c[3][0], y = c[4][1] - c[3][1];
+        switch (m->type & 7) {
+        case 0: /* rotated, horizontal or vertical */
+            r = scad_num(fabs(x * scad_cos_degrees(m->angle) + y * scad_sin_degrees(m->angle)));
+            break;
+        case 1: /* aligned */
+            r = scad_num(sqrt(x * x + y * y));
+            break;
+        case 2: { /* angular; OpenSCAD's arguments (dx, dy) kept */
+            double a1 = atan2_degrees(c[0][0] - c[5][0], c[0][1] - c[5][1]);
+            double a2 = atan2_degrees(x, y);
+            r = scad_num(fabs(a1 - a2));
+            break;
+        }
+        case 3: /* diameter */
+        case 4: /* radius */
+            x = c[5][0] - c[0][0];
+            y = c[5][1] - c[0][1];
+            r = scad_num(sqrt(x * x + y * y));
+            break;
+        case 6: /* ordinate */
+            r = scad_num(m->type & 64 ? c[3][0] : c[3][1]);
+            break;
+        default: /* 5: angular 3 point, 7 */
+            scad_diag_warning(ev->d, loc,
+                              "Dimension '%s' in '%s', layer '%s' has unsupported type!", want,
+                              scad_buf_str(&d.raw), scad_buf_str(&d.layer));
+        }
+    }
+    if (!found)
+        scad_diag_warning(ev->d, loc, "Can't find dimension '%s' in '%s', layer '%s'!", want,
+                          scad_buf_str(&d.raw), scad_buf_str(&d.layer));
+    scad_dxf_free(&dxf);
+    free_args(&d);
+    return r;
+}
+
+scad_value scad_builtin_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc,
+                                  const char *fname)
+{
+    (void)fname;
+    dxf_args d;
+    read_args(ev, a, loc, "dxf_cross", 0, &d);
+    scad_dxf dxf;
+    scad_value r = scad_undef();
+    if (read_for(ev, loc, &d, &dxf)) {
+        free_args(&d);
+        return r;
+    }
+    /* the first two single-segment paths, crossed as infinite lines */
+    double c[4][2];
+    int j = 0, found = 0;
+    for (int i = 0; i < dxf.npaths && !found; i++) {
+        int a0 = dxf.path_start[i];
+        if (dxf.path_start[i + 1] - a0 != 2) continue;
+        for (int k = 0; k < 2; k++, j++) {
+            c[j][0] = dxf.pts[dxf.idx[a0 + k]][0];
+            c[j][1] = dxf.pts[dxf.idx[a0 + k]][1];
+        }
+        if (j < 4) continue;
+        double dem =
+            (c[3][1] - c[2][1]) * (c[1][0] - c[0][0]) - (c[3][0] - c[2][0]) * (c[1][1] - c[0][1]);
+        if (dem == 0) break;
+        double ua = ((c[3][0] - c[2][0]) * (c[0][1] - c[2][1]) -
+                     (c[3][1] - c[2][1]) * (c[0][0] - c[2][0])) /
+                    dem;
+        r = scad_vec_new(2);
+        if (r.kind == SV_VEC) {
+            r.u.vec->v[0] = scad_num(c[0][0] + ua * (c[1][0] - c[0][0]));
+            r.u.vec->v[1] = scad_num(c[0][1] + ua * (c[1][1] - c[0][1]));
+        }
+        found = 1;
+    }
+    if (!found)
+        scad_diag_warning(ev->d, loc, "Can't find cross in '%s', layer '%s'!", scad_buf_str(&d.raw),
+                          scad_buf_str(&d.layer));
+    scad_dxf_free(&dxf);
+    free_args(&d);
+    return r;
+}
+
+/* ---- import() ------------------------------------------------------------------ */
+
+static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name,
+                      scad_loc loc, double dflt)
+{
+    scad_value v = scad_argv_get(a, name, -1);
+    if (v.kind == SV_NUM) return v.u.num;
+    int found;
+    v = scad_env_lookup(ev, env, name, loc, 1, &found);
+    return v.kind == SV_NUM ? v.u.num : dflt;
+}
+
+scad_geom *scad_dxf_import(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state, const char *path)
+{
+    scad_value lv = scad_argv_get(a, "layer", 1);
+    if (lv.kind == SV_UNDEF) lv = scad_argv_get(a, "layername", -1);
+    scad_buf layer = {0};
+    if (lv.kind != SV_UNDEF) to_string(lv, &layer);
+    double origin[2] = {0, 0};
+    vec2(scad_argv_get(a, "origin", 3), origin); /* warned by the caller */
+    scad_value sv = scad_argv_get(a, "scale", 4);
+    double scale = sv.kind == SV_NUM ? sv.u.num : 0;
+    if (scale <= 0) scale = 1;
+    scad_dxf_params p = {scad_buf_str(&layer),
+                         origin[0],
+                         origin[1],
+                         scale,
+                         special(ev, env, a, "$fn", st->loc, 0),
+                         special(ev, env, a, "$fa", st->loc, 12),
+                         special(ev, env, a, "$fs", st->loc, 2)};
+    sink s = {ev, st->loc};
+    scad_dxf dxf;
+    int rc = scad_dxf_read(path, &p, on_message, &s, &dxf);
+    scad_buf_free(&layer);
+    if (rc != 0) {
+        scad_eval_error(ev, st->loc, "out of memory");
+        return NULL;
+    }
+    double(*pts)[2];
+    int *start, n;
+    scad_geom *g = NULL;
+    if (scad_dxf_outlines(&dxf, &pts, &start, &n) != 0) {
+        scad_eval_error(ev, st->loc, "out of memory");
+    } else if (n > 0) {
+        iv_region *reg = iv_region_new((const double(*)[2])pts, start, n);
+        if (!reg) {
+            scad_eval_error(ev, st->loc, "out of memory");
+        } else {
+            iv_shape sh;
+            iv_shape_prism(&sh, reg, -SLAB, SLAB);
+            iv_region_release(reg); /* the shape holds it */
+            g = scad_geometry_leaf(ev, &sh, state);
+        }
+    }
+    free(pts);
+    free(start);
+    scad_dxf_free(&dxf);
+    return g;
+}

@@ -1,0 +1,323 @@
+/*
+ * test_dxf.c — the DXF reader (src/scad/dxf.c) and its builtins: areas of
+ * DXF squares and circles against closed forms (from the outlines, and
+ * from rays through the imported region), dxf_dim()/dxf_cross() against the
+ * values openscad 2021.01 echoes for its example009.dxf, OpenSCAD's
+ * warnings word for word, and hostile files that must end.
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../src/intervals/intervals.h"
+#include "../src/scad/dxf.h"
+#include "../src/scad/scad.h"
+
+#define PI 3.14159265358979323846
+
+#define EXAMPLE009 "/usr/share/openscad/examples/Old/example009.dxf"
+
+static iv_arena *arena;
+static char dir[64];
+
+static void setup(void)
+{
+    arena = iv_arena_new(0);
+    snprintf(dir, sizeof dir, "/tmp/rayscad-dxf-XXXXXX");
+    cr_assert(mkdtemp(dir));
+}
+
+static void teardown(void)
+{
+    iv_arena_free(arena);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    cr_assert_eq(system(cmd), 0);
+}
+
+/* Writes text to dir/name; the path into out. */
+static void write_file(const char *name, const char *text, char *out, size_t n)
+{
+    snprintf(out, n, "%s/%s", dir, name);
+    FILE *f = fopen(out, "w");
+    cr_assert(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+typedef struct msgs {
+    char text[8192];
+} msgs;
+
+static void on_msg(void *ud, scad_msg_kind kind, const char *line)
+{
+    (void)kind;
+    msgs *m = ud;
+    size_t n = strlen(m->text);
+    snprintf(m->text + n, sizeof m->text - n, "%s\n", line);
+}
+
+static void on_dxf_msg(void *ud, scad_msg_kind kind, const char *text)
+{
+    on_msg(ud, kind, text);
+}
+
+/* Σ shoelace area of the toPolygon2d outlines (all one way round here). */
+static double outline_area(const scad_dxf *d)
+{
+    double(*p)[2];
+    int *start, n;
+    cr_assert_eq(scad_dxf_outlines(d, &p, &start, &n), 0);
+    double a = 0;
+    for (int i = 0; i < n; i++) {
+        double s = 0;
+        for (int j = start[i]; j < start[i + 1]; j++) {
+            int k = j + 1 < start[i + 1] ? j + 1 : start[i];
+            s += p[j][0] * p[k][1] - p[k][0] * p[j][1];
+        }
+        a += fabs(s) / 2;
+    }
+    free(p);
+    free(start);
+    return a;
+}
+
+static const char square_dxf[] = "0\nSECTION\n2\nENTITIES\n"
+                                 "0\nLWPOLYLINE\n8\nsq\n90\n4\n70\n1\n"
+                                 "10\n0\n20\n0\n10\n10\n20\n0\n10\n10\n20\n10\n10\n0\n20\n10\n"
+                                 "0\nCIRCLE\n8\nround\n10\n3\n20\n4\n40\n5\n"
+                                 "0\nENDSEC\n0\nEOF\n";
+
+Test(dxf_read, square_and_circle_areas, .init = setup, .fini = teardown)
+{
+    char path[256];
+    write_file("a.dxf", square_dxf, path, sizeof path);
+    msgs m = {""};
+    scad_dxf d;
+    scad_dxf_params sq = {"sq", 0, 0, 1, 0, 12, 2};
+    cr_assert_eq(scad_dxf_read(path, &sq, on_dxf_msg, &m, &d), 0);
+    cr_expect_eq(d.npaths, 1);
+    cr_expect(d.closed[0]);
+    cr_expect(fabs(outline_area(&d) - 100) < 1e-12, "%g", outline_area(&d));
+    scad_dxf_free(&d);
+    /* origin moves, scale scales: 2.5² × 100 */
+    scad_dxf_params sq2 = {"sq", 4, -1, 2.5, 0, 12, 2};
+    cr_assert_eq(scad_dxf_read(path, &sq2, on_dxf_msg, &m, &d), 0);
+    cr_expect(fabs(outline_area(&d) - 625) < 1e-9);
+    cr_expect(fabs(d.pts[0][0] + 10) < 1e-12 && fabs(d.pts[0][1] - 2.5) < 1e-12);
+    scad_dxf_free(&d);
+    /* r = 5 at $fa = 12, $fs = 2: 16 fragments; $fn = 36: 36.  The n-gon's
+     * area is n/2 r² sin(2π/n); the points snap to 0.001 */
+    int fn[2] = {0, 36}, want[2] = {16, 36};
+    for (int i = 0; i < 2; i++) {
+        scad_dxf_params c = {"round", 0, 0, 1, fn[i], 12, 2};
+        cr_assert_eq(scad_dxf_read(path, &c, on_dxf_msg, &m, &d), 0);
+        cr_expect_eq(d.npaths, 1);
+        cr_expect_eq(d.path_start[1], want[i] + 1);
+        double exact = want[i] / 2.0 * 25 * sin(2 * PI / want[i]);
+        cr_expect(fabs(outline_area(&d) - exact) < 0.01, "%d: %g vs %g", want[i], outline_area(&d),
+                  exact);
+        scad_dxf_free(&d);
+    }
+    /* all layers: both outlines */
+    scad_dxf_params all = {NULL, 0, 0, 1, 0, 12, 2};
+    cr_assert_eq(scad_dxf_read(path, &all, on_dxf_msg, &m, &d), 0);
+    cr_expect_eq(d.npaths, 2);
+    scad_dxf_free(&d);
+    cr_expect_str_empty(m.text);
+}
+
+/* Volume by vertical rays through an n × n grid over the scene's bounds. */
+static double traced_volume(const csg_scene *s, int n)
+{
+    double lo[3], hi[3];
+    if (csg_scene_bounds(s, 0, lo, hi) != 0) return 0;
+    double dx = (hi[0] - lo[0]) / n, dy = (hi[1] - lo[1]) / n, v = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            iv_arena_reset(arena);
+            double o[3] = {lo[0] + (i + 0.5) * dx, lo[1] + (j + 0.5) * dy, lo[2] - 1};
+            iv_list l;
+            cr_assert_eq(csg_trace(s, 0, o, (double[3]){0, 0, 1}, 0, INFINITY, arena, &l), 0);
+            for (int k = 0; k < l.n; k++)
+                v += (l.v[k].exit.t - l.v[k].enter.t) * dx * dy;
+        }
+    return v;
+}
+
+static csg_scene *scene_of(const char *src, msgs *m)
+{
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.message = on_msg;
+    o.ud = m;
+    scad_result r;
+    char main_file[256];
+    snprintf(main_file, sizeof main_file, "%s/t.scad", dir);
+    cr_assert_eq(scad_eval_string(main_file, src, &o, &r), 0, "%s", m->text);
+    csg_node *root = r.model;
+    r.model = NULL;
+    scad_result_free(&r);
+    char err[256];
+    csg_scene *s = csg_scene_new(&root, 1, err, sizeof err);
+    cr_assert(s, "%s", err);
+    return s;
+}
+
+Test(dxf_import, extruded_square_with_a_round_hole, .init = setup, .fini = teardown)
+{
+    char path[256];
+    write_file("a.dxf", square_dxf, path, sizeof path);
+    msgs m = {""};
+    /* all layers: the 16-gon crosses the square's edges, even-odd keeps
+     * the square minus the overlap plus the 16-gon's part outside it */
+    csg_scene *s = scene_of("linear_extrude(height = 2) import(\"a.dxf\", layer = \"sq\");", &m);
+    double v = traced_volume(s, 300);
+    cr_expect(fabs(v - 200) < 0.01 * 200, "square volume %g", v);
+    csg_scene_free(s);
+    s = scene_of("linear_extrude(height = 1) import(\"a.dxf\", layer = \"round\", $fn = 36);", &m);
+    v = traced_volume(s, 300);
+    double exact = 18 * 25 * sin(2 * PI / 36);
+    cr_expect(fabs(v - exact) < 0.01 * exact, "circle volume %g vs %g", v, exact);
+    csg_scene_free(s);
+    cr_expect_str_empty(m.text);
+}
+
+/* The echo lines of src, evaluated as dir/t.scad. */
+static void echo_of(const char *src, msgs *m)
+{
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.message = on_msg;
+    o.ud = m;
+    scad_result r;
+    char main_file[256];
+    snprintf(main_file, sizeof main_file, "%s/t.scad", dir);
+    cr_assert_eq(scad_eval_string(main_file, src, &o, &r), 0, "%s", m->text);
+    scad_result_free(&r);
+}
+
+Test(dxf_dim, example009_values_as_openscad_echoes_them, .init = setup, .fini = teardown)
+{
+    if (access(EXAMPLE009, R_OK) != 0) cr_skip_test("no %s (openscad not installed)", EXAMPLE009);
+    msgs m = {""};
+    /* openscad 2021.01: 22, 20, 2, 57.5288 + 7.70915e-6 (echo(v - 57.5288)),
+     * [0, -40], [-1.5, -16.5] and 11 */
+    echo_of(
+        "f = \"" EXAMPLE009 "\";\n"
+        "echo(dxf_dim(file = f, name = \"bodywidth\"), dxf_dim(file = f, name = \"fanwidth\"),"
+        " dxf_dim(file = f, name = \"platewidth\"));\n"
+        "echo((dxf_dim(file = f, name = \"fanrot\") - 57.5288) * 1e10);\n"
+        "echo(dxf_cross(file = f, layer = \"fan_side_center\"));\n"
+        "echo(dxf_cross(file = f, layer = \"fan_side_center\", origin = [3, -7], scale = 0.5));\n"
+        "echo(dxf_dim(file = f, name = \"bodywidth\", scale = 0.5, origin = [3, 4]));\n",
+        &m);
+    cr_expect_str_eq(m.text, "ECHO: 22, 20, 2\n"
+                             "ECHO: 77091.5\n"
+                             "ECHO: [0, -40]\n"
+                             "ECHO: [-1.5, -16.5]\n"
+                             "ECHO: 11\n");
+}
+
+Test(dxf_dim, warnings_as_openscad_words_them, .init = setup, .fini = teardown)
+{
+    char path[256];
+    write_file("a.dxf", square_dxf, path, sizeof path);
+    msgs m = {""};
+    echo_of("echo(dxf_dim(file = \"nothere.dxf\", name = \"a\"));\n"
+            "echo(dxf_dim(file = \"a.dxf\", name = \"nope\"));\n"
+            "echo(dxf_dim(\"a.dxf\", foo = 1, origin = \"x\"));\n"
+            "echo(dxf_cross(file = \"a.dxf\", layer = \"sq\"));\n",
+            &m);
+    cr_expect_str_eq(
+        m.text,
+        "WARNING: Can't open DXF file 'nothere.dxf'! in file t.scad, line 1\n"
+        "ECHO: undef\n"
+        "WARNING: Can't find dimension 'nope' in 'a.dxf', layer ''! in file t.scad, line 2\n"
+        "ECHO: undef\n"
+        "WARNING: dxf_dim(..., =...) is not supported in file t.scad, line 3\n"
+        "WARNING: dxf_dim(..., foo=...) is not supported in file t.scad, line 3\n"
+        "WARNING: dxf_dim(..., origin=\"x\") could not be converted in file t.scad, line 3\n"
+        "WARNING: Can't open DXF file ''! in file t.scad, line 3\n"
+        "ECHO: undef\n"
+        "WARNING: Can't find cross in 'a.dxf', layer 'sq'! in file t.scad, line 4\n"
+        "ECHO: undef\n");
+}
+
+Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teardown)
+{
+    /* openscad 2021.01 (stderr of -o x.stl) on this very file */
+    char path[256], want[2048];
+    write_file("bad.dxf",
+               "0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\n0\n0\nSPLINE\n8\n0\n"
+               "0\nLINE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n"
+               "0\nLINE\n8\n0\n10\n10\n20\n0\n11\n0\n21\n10\n"
+               "0\nLINE\n8\n0\n10\nabc\n20\n0\n11\n0\n21\n10\n0\nENDSEC\n0\nEOF\n",
+               path, sizeof path);
+    cr_assert_eq(chdir(dir), 0);
+    msgs m = {""};
+    scad_dxf d;
+    scad_dxf_params p = {"0", 0, 0, 1, 0, 12, 2};
+    cr_assert_eq(scad_dxf_read("bad.dxf", &p, on_dxf_msg, &m, &d), 0);
+    snprintf(want, sizeof want,
+             "Illegal value 'abc'in `%s/bad.dxf'\n"
+             "Not enough input values for ENDSEC. in '%s/bad.dxf'\n"
+             "Not enough input values for EOF. in '%s/bad.dxf'\n"
+             "Unsupported DXF Entity 'SPLINE' (1) in layer '0' of bad.dxf\n"
+             "Unsupported DXF Entity 'POLYLINE' (1) in layer '0' of bad.dxf\n",
+             dir, dir, dir);
+    cr_expect_str_eq(m.text, want);
+    /* the two good lines meet at (10, 0): one open path of 3 points */
+    cr_expect_eq(d.npaths, 1);
+    cr_expect(!d.closed[0]);
+    cr_expect_eq(d.path_start[1], 3);
+    scad_dxf_free(&d);
+    cr_assert_eq(chdir("/"), 0);
+}
+
+Test(dxf_read, hostile_files_end, .init = setup, .fini = teardown)
+{
+    char path[256];
+    /* an arc over 1e300 degrees, non-finite points, an ellipse of NaN
+     * angles, a block inserted into itself, a huge $fn, garbage */
+    write_file("h.dxf",
+               "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nb\n"
+               "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n"
+               "0\nINSERT\n2\nb\n10\n1\n20\n1\n"
+               "0\nINSERT\n2\nb\n10\n2\n20\n2\n"
+               "0\nENDBLK\n0\nENDSEC\n"
+               "0\nSECTION\n2\nENTITIES\n"
+               "0\nARC\n10\n0\n20\n0\n40\n1\n50\n0\n51\n1e300\n"
+               "0\nARC\n10\n0\n20\n0\n40\n1\n50\n1e300\n51\n0\n"
+               "0\nLINE\n10\nnan\n20\n0\n11\ninf\n21\n1e308\n"
+               "0\nELLIPSE\n10\n0\n20\n0\n11\n0\n21\n0\n40\n1\n41\nnan\n42\ninf\n"
+               "0\nCIRCLE\n10\n0\n20\n0\n40\n1e308\n"
+               "0\nLWPOLYLINE\n70\n1\n"
+               "0\nINSERT\n2\nb\n10\n0\n20\n0\n41\n1e308\n42\n-1e308\n"
+               "0\nENDSEC\n0\nEOF\n\x01\xff garbage\n",
+               path, sizeof path);
+    msgs m = {""};
+    scad_dxf d;
+    scad_dxf_params p = {NULL, 0, 0, 1, 1e9, 12, 2};
+    cr_assert_eq(scad_dxf_read(path, &p, on_dxf_msg, &m, &d), 0);
+    cr_expect(d.npts <= 2 * SCAD_DXF_MAX_SEGMENTS);
+    cr_expect(strstr(m.text, "more than 1000000 segments"), "%s", m.text);
+    cr_expect(strstr(m.text, "Not enough input values for INSERT."), "%s", m.text);
+    scad_dxf_free(&d);
+    /* a directory and a missing file: warnings, empty drawings */
+    m.text[0] = 0;
+    cr_assert_eq(scad_dxf_read(dir, &p, on_dxf_msg, &m, &d), 0);
+    cr_expect_eq(d.npaths, 0);
+    scad_dxf_free(&d);
+    write_file("gone.dxf", "", path, sizeof path);
+    remove(path);
+    cr_assert_eq(scad_dxf_read(path, &p, on_dxf_msg, &m, &d), 0);
+    cr_expect_eq(d.npaths, 0);
+    scad_dxf_free(&d);
+    char want[512];
+    snprintf(want, sizeof want, "Illegal ID '' in `%s'\nCan't open DXF file '%s'.\n", dir, path);
+    cr_expect_str_eq(m.text, want);
+}
