@@ -85,7 +85,7 @@ static csg_node *local_tree(const scad_geom *g, const csg_affine lfw, int *oom)
 {
     if (!g || *oom) return NULL;
     if (g->is_leaf) {
-        if (g->shape.kind == IV_SHAPE_PRISM) return NULL;
+        if (scad_geom_is_flat(g)) return NULL;
         csg_affine t;
         csg_affine_mul(lfw, g->xf, t);
         csg_node *n = csg_node_shape(&g->shape, t, &g->mat);

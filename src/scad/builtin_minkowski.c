@@ -9,7 +9,7 @@
  * 3D children: the sum distributes over union, (A ∪ B) ⊕ C = (A ⊕ C) ∪
  * (B ⊕ C), and the sum of two convex sets is the convex hull of the sums of
  * their points.  So each child is read as a union of convex parts — cubes,
- * hull() results and OpenSCAD-faceted spheres and cylinders (polytopes),
+ * hull() results, extrusions of convex polygons and discs, and OpenSCAD-faceted spheres and cylinders (polytopes),
  * smooth spheres and cylinders tessellated OpenSCAD's way with the call's
  * $fn/$fa/$fs but at least SMOOTH_FRAGMENTS around (a smooth leaf no longer
  * knows its own $fn), and closed polyhedra whose every vertex is a vertex of their
@@ -123,6 +123,19 @@ static int mesh_is_convex(const double (*V)[3], int n)
     return m == n;
 }
 
+/* 1 when the closed polygon turns one way only (collinear points allowed). */
+static int convex_polygon(const double (*V)[2], int n)
+{
+    int pos = 0, neg = 0;
+    for (int i = 0; i < n; i++) {
+        const double *a = V[i], *b = V[(i + 1) % n], *d = V[(i + 2) % n];
+        double t = (b[0] - a[0]) * (d[1] - b[1]) - (b[1] - a[1]) * (d[0] - b[0]);
+        pos |= t > 0;
+        neg |= t < 0;
+    }
+    return !(pos && neg);
+}
+
 static void decompose(mctx *c, const scad_geom *g, parts *P)
 {
     if (!g || c->why || c->oom) return;
@@ -185,9 +198,34 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
             put(c, q, g->xf, V[i][0], V[i][1], V[i][2]);
         return;
     }
-    case IV_SHAPE_PRISM:
-        c->why = "a mix of 2D and 3D objects";
+    case IV_SHAPE_PRISM: {
+        if (scad_geom_is_flat(g)) {
+            c->why = "a mix of 2D and 3D objects";
+            return;
+        }
+        /* an extruded convex polygon or disc: its two caps' corners */
+        double z0 = s->u.prism.z0, z1 = s->u.prism.z1;
+        if (!s->u.prism.g) {
+            int n = fragments(c, s->u.prism.r);
+            if (!(q = parts_new(c, P, 2 * n))) return;
+            circle(c, q, g->xf, s->u.prism.r, z0, n);
+            circle(c, q, g->xf, s->u.prism.r, z1, n);
+            return;
+        }
+        int n, np;
+        const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
+        iv_region_paths(s->u.prism.g, &np);
+        if (np != 1 || !convex_polygon(V, n)) {
+            c->why = "an extrusion of a shape that is not convex";
+            return;
+        }
+        if (!(q = parts_new(c, P, 2 * n))) return;
+        for (int i = 0; i < n; i++) {
+            put(c, q, g->xf, V[i][0], V[i][1], z0);
+            put(c, q, g->xf, V[i][0], V[i][1], z1);
+        }
         return;
+    }
     default:
         c->why = "a solid of revolution";
         return;

@@ -102,7 +102,13 @@ int scad_geom_dims(const scad_geom *g)
             d |= scad_geom_dims(g->kids[i]);
         return d;
     }
-    return g->shape.kind == IV_SHAPE_PRISM ? 1 : 2;
+    return scad_geom_is_flat(g) ? 1 : 2;
+}
+
+int scad_geom_is_flat(const scad_geom *g)
+{
+    return g->is_leaf && g->shape.kind == IV_SHAPE_PRISM && g->shape.u.prism.z0 == -SLAB &&
+           g->shape.u.prism.z1 == SLAB;
 }
 
 /* ---- flattening ------------------------------------------------------------------ */
@@ -198,7 +204,7 @@ static void flatten(flat *c, const scad_geom *g, scad_paths *out, int *eo)
     *eo = 0;
     if (!g || c->failed) return;
     if (g->is_leaf) {
-        if (g->shape.kind != IV_SHAPE_PRISM) return; /* 3D: not part of a 2D set */
+        if (!scad_geom_is_flat(g)) return; /* 3D: not part of a 2D set */
         if (leaf_paths(c, g, out) != 0)
             fail(c, "out of memory");
         else
