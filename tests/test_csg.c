@@ -757,6 +757,108 @@ Test(csg_trace, random_trees_match_point_classifier)
     cr_assert(hits > 4000, "only %ld surface hits", hits);
 }
 
+/* A union of 5 … 60 operands — leaves, a third of them exact copies of an
+ * earlier leaf (equal t: the tie rule), and random subtrees — wide enough
+ * that commit builds its bounding hierarchy. */
+static tnode *random_wide_union(void)
+{
+    tnode *u = &pool[npool++];
+    memset(u, 0, sizeof *u);
+    u->op = CSG_OP_UNION;
+    int n = 5 + rng_int(56);
+    tnode *kids[64];
+    int nleaf = 0;
+    tnode *leaves[64];
+    for (int i = 0; i < n; i++) {
+        int r = rng_int(6);
+        if (r < 2 && nleaf > 0) {
+            tnode *c = &pool[npool++];
+            *c = *leaves[rng_int(nleaf)];
+            kids[i] = c;
+        } else if (r < 4) {
+            tnode *c = &pool[npool++];
+            memset(c, 0, sizeof *c);
+            c->leaf = 1;
+            c->shape = random_shape();
+            random_transform(c);
+            kids[i] = leaves[nleaf++] = c;
+        } else {
+            kids[i] = random_tree(2);
+        }
+    }
+    /* Nest the operands MAXK at a time (commit splices nested unions). */
+    tnode *cur = u;
+    for (int i = 0; i < n; i++) {
+        if (cur->nk == MAXK - 1 && i < n - 1) {
+            tnode *v = &pool[npool++];
+            memset(v, 0, sizeof *v);
+            v->op = CSG_OP_UNION;
+            cur->k[cur->nk++] = v;
+            cur = v;
+        }
+        cur->k[cur->nk++] = kids[i];
+    }
+    return u;
+}
+
+Test(csg_trace, first_boundary_matches_full_trace)
+{
+    const uint64_t seed = 0xf1257;
+    rng_seed(seed);
+    long hits = 0;
+    for (int tree = 0; tree < 600; tree++) {
+        npool = 0;
+        tnode *root = tree % 3 == 0 ? random_tree(0) : random_wide_union();
+        if (tree % 3 == 2) { /* a wide union inside a difference or intersection */
+            tnode *x = &pool[npool++];
+            memset(x, 0, sizeof *x);
+            x->op = rng_int(2) ? CSG_OP_DIFFERENCE : CSG_OP_INTERSECTION;
+            x->nk = 2;
+            x->k[rng_int(2)] = root;
+            tnode *o = random_tree(3);
+            x->k[x->k[0] ? 1 : 0] = o;
+            root = x;
+        }
+        int nleaves = 0;
+        csg_node *croot = build(root, &nleaves);
+        char err[128];
+        csg_scene *s = csg_scene_new(&croot, 1, err, sizeof err);
+        cr_assert_not_null(s, "%s", err);
+        for (int ray = 0; ray < 200; ray++) {
+            double o[3], d[3];
+            for (int k = 0; k < 3; k++) {
+                o[k] = rng_uniform(-4, 4);
+                d[k] = rng_uniform(-1, 1);
+            }
+            if (rng_int(5) == 0) d[rng_int(3)] = 0;
+            double tmin = rng_int(3) ? 0 : rng_uniform(-4, 2);
+            double tmax = rng_int(4) ? rng_uniform(1, 8) : INFINITY;
+            if (rng_int(6) == 0) tmin = -INFINITY;
+            for (int cull = 1; cull >= 0; cull--) {
+                csg_scene_set_cull(s, cull);
+                iv_arena_reset(arena);
+                iv_list l;
+                iv_bound b = {-1, -7, 7, 7};
+                cr_assert_eq(csg_trace(s, 0, o, d, tmin, tmax, arena, &l), 0);
+                int rc = csg_trace_first(s, 0, o, d, tmin, tmax, arena, &b);
+                cr_assert_eq(rc, l.n > 0, "seed %#llx tree %d ray %d cull %d: found %d, %d spans",
+                             (unsigned long long)seed, tree, ray, cull, rc, l.n);
+                if (l.n == 0) continue;
+                const iv_bound *w = &l.v[0].enter;
+                cr_assert(same_bound(&b, w),
+                          "seed %#llx tree %d ray %d cull %d: first (%.17g, prim %d, part %d, "
+                          "flip %d), full trace (%.17g, prim %d, part %d, flip %d)",
+                          (unsigned long long)seed, tree, ray, cull, b.t, b.prim, b.part, b.flip,
+                          w->t, w->prim, w->part, w->flip);
+                hits += cull;
+            }
+            csg_scene_set_cull(s, 1);
+        }
+        csg_scene_free(s);
+    }
+    cr_assert(hits > 20000, "only %ld rays hit", hits);
+}
+
 /* ---- deep trees, memory, threads ------------------------------------------ */
 
 /* U_k = union(sphere at x = k, I_k), I_k = intersection(halfspace, U_k+1):

@@ -7,9 +7,9 @@
  *          nothing multiplies matrices per ray.
  * Commit:  csg_scene_new takes the trees, computes bounds, inverse transforms
  *          and normal matrices, flattens them, and frees the nodes.
- * Query:   csg_trace, csg_scene_normal, csg_scene_material — read-only, so
- *          any number of threads may query one scene at once (each with its
- *          own iv_arena).
+ * Query:   csg_trace, csg_trace_first, csg_scene_normal, csg_scene_material
+ *          — read-only, so any number of threads may query one scene at once
+ *          (each with its own iv_arena).
  */
 #ifndef RAYSCAD_CSG_H
 #define RAYSCAD_CSG_H
@@ -23,15 +23,15 @@ typedef enum csg_op {
 } csg_op;
 
 typedef struct csg_material {
-    float rgba[4];  /* sRGB-encoded colour and alpha, each in [0, 1] */
-    int has_color;  /* 0: no color() applied; the renderer uses its scheme */
+    float rgba[4]; /* sRGB-encoded colour and alpha, each in [0, 1] */
+    int has_color; /* 0: no color() applied; the renderer uses its scheme */
     /* Optics for the renderer's opt-in light model (all 0: none, which is
      * OpenSCAD's look).  Set from $rs_ variables (src/scad/material.c). */
-    float reflect; /* mirror reflectivity in [0, 1] */
-    float absorb;  /* Beer–Lambert coefficient per unit length, >= 0; 0: the
-                      colour's alpha applies per surface instead */
-    float ior;     /* index of refraction (> 1 refracts; 0: none) */
-    float emit;    /* > 0: a light of this intensity (see light[]) */
+    float reflect;  /* mirror reflectivity in [0, 1] */
+    float absorb;   /* Beer–Lambert coefficient per unit length, >= 0; 0: the
+                       colour's alpha applies per surface instead */
+    float ior;      /* index of refraction (> 1 refracts; 0: none) */
+    float emit;     /* > 0: a light of this intensity (see light[]) */
     float light[4]; /* emitters: world centre x, y, z and radius */
 } csg_material;
 
@@ -88,14 +88,26 @@ int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
  * ray misses are skipped, and so is every operand after the first of an
  * intersection or difference whose first operand is empty (Roth).
  * Returns 0, or -1 when the arena is out of memory. */
-int csg_trace(const csg_scene *s, int r, const double o[3], const double d[3],
-              double tmin, double tmax, iv_arena *a, iv_list *out);
+int csg_trace(const csg_scene *s, int r, const double o[3], const double d[3], double tmin,
+              double tmax, iv_arena *a, iv_list *out);
+
+/* The first boundary of the list csg_trace returns for the same arguments —
+ * the same t, prim, part and flip, bit for bit — into *hit, found without
+ * the rest of the list: the operands of unions (and the subtrees of their
+ * bounding hierarchy) are visited nearest box first and evaluated only up to
+ * the nearest boundary found so far, so a ray through a wide union costs
+ * about what its first hit costs.  For an opaque first surface, or a shadow
+ * ray that any opaque surface stops, this is all a renderer needs.  Scratch
+ * comes from arena a.  Returns 1 with *hit set, 0 when the list is empty
+ * (*hit untouched), or -1 when the arena is out of memory. */
+int csg_trace_first(const csg_scene *s, int r, const double o[3], const double d[3], double tmin,
+                    double tmax, iv_arena *a, iv_bound *hit);
 
 /* The world-space unit normal at boundary b of a list traced along o + t·d:
  * the primitive's outward normal, negated when b->flip.  A boundary with
  * prim == IV_PRIM_NONE (a clip) gets -d normalised. */
-void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3],
-                      const double d[3], double n[3]);
+void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],
+                      double n[3]);
 
 /* The material of primitive prim (borrowed from the scene). */
 const csg_material *csg_scene_material(const csg_scene *s, int32_t prim);
@@ -109,7 +121,6 @@ void csg_affine_mul(const csg_affine a, const csg_affine b, csg_affine out);
 int csg_affine_invert(const csg_affine m, csg_affine out);
 void csg_affine_point(const csg_affine m, const double p[3], double out[3]);
 void csg_affine_vector(const csg_affine m, const double v[3], double out[3]);
-
 
 /* ---- reading a committed scene (src/csg/inspect.c) -----------------------
  * For exporters: the flattened, simplified tree as the tracer sees it.  Node

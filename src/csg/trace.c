@@ -1,5 +1,6 @@
 /*
- * trace.c — one ray through a committed scene: csg_trace and the normals.
+ * trace.c — one ray through a committed scene: csg_trace, its first boundary
+ * alone (csg_trace_first, below) and the normals.
  *
  * Evaluation is a post-order walk of the flat pre-order node array driven by
  * an explicit stack of frames (one per open operation), so its depth is
@@ -39,6 +40,7 @@ typedef struct ray {
     iv_arena *a;
     iv_span *sp; /* the span stack */
     int cap;
+    frame *fr; /* s->max_depth frames */
 } ray;
 
 /* Make room for `need` spans, keeping the first `live`. */
@@ -56,27 +58,31 @@ static int reserve(ray *r, long need, int live)
     return 0;
 }
 
-/* Whether the segment t in [t0, t1] of the ray meets the node's box.  The
+/* Whether the segment t in [t0, t1] of the ray meets the node's box, and
+ * where it enters it (*te; t0 itself when the scene does not cull).  The
  * slab products may be NaN (a bound plane through o with a subnormal d,
  * giving 0·inf); every comparison with NaN is false, so such a slab narrows
  * nothing and the test errs on the side of "hit". */
-static int hits_box(const ray *r, const csg_fnode *n, double t0, double t1)
+static int box_entry(const ray *r, const csg_fnode *n, double t0, double t1, double *te)
 {
-    for (int k = 0; k < 3; k++) {
-        if (r->d[k] == 0) {
-            if (r->o[k] < n->lo[k] || r->o[k] > n->hi[k]) return 0;
-            continue;
+    if (r->s->cull) {
+        for (int k = 0; k < 3; k++) {
+            if (r->d[k] == 0) {
+                if (r->o[k] < n->lo[k] || r->o[k] > n->hi[k]) return 0;
+                continue;
+            }
+            double ta = (n->lo[k] - r->o[k]) * r->inv[k];
+            double tb = (n->hi[k] - r->o[k]) * r->inv[k];
+            if (r->inv[k] < 0) {
+                double tt = ta;
+                ta = tb;
+                tb = tt;
+            }
+            if (ta > t0) t0 = ta;
+            if (tb < t1) t1 = tb;
         }
-        double ta = (n->lo[k] - r->o[k]) * r->inv[k];
-        double tb = (n->hi[k] - r->o[k]) * r->inv[k];
-        if (r->inv[k] < 0) {
-            double tt = ta;
-            ta = tb;
-            tb = tt;
-        }
-        if (ta > t0) t0 = ta;
-        if (tb < t1) t1 = tb;
     }
+    *te = t0;
     return t0 <= t1;
 }
 
@@ -104,33 +110,41 @@ static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
     }
 }
 
-int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
-              double tmax, iv_arena *a, iv_list *out)
+/* Set up r for one ray: the frame array (one per open operation, at most
+ * the scene's depth) and a first span stack.  Returns 0, or -1 when the
+ * arena is out of memory. */
+static int ray_init(ray *r, const csg_scene *s, const double o[3], const double d[3], iv_arena *a)
 {
-    out->v = NULL;
-    out->n = out->cap = 0;
-    if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
-    ray r = {.s = s, .a = a, .sp = NULL, .cap = 0};
+    *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0};
     for (int k = 0; k < 3; k++) {
-        r.o[k] = o[k];
-        r.d[k] = d[k];
-        r.inv[k] = 1 / d[k]; /* ±inf when d[k] = ±0; hits_box never uses it then */
+        r->o[k] = o[k];
+        r->d[k] = d[k];
+        r->inv[k] = 1 / d[k]; /* ±inf when d[k] = ±0; the box tests never use it then */
     }
-    frame *fr = iv_arena_alloc(a, (size_t)s->max_depth * sizeof *fr);
-    if (!fr || reserve(&r, 16, 0) != 0) return -1;
-    const csg_fnode *nodes = s->nodes;
+    r->fr = iv_arena_alloc(a, (size_t)(s->max_depth > 0 ? s->max_depth : 1) * sizeof *r->fr);
+    if (!r->fr || reserve(r, 16, 0) != 0) return -1;
+    return 0;
+}
+
+/* The list of the subtree at node `node`, clipped to [tmin, tmax], written at
+ * span index `at` (read it from r->sp after the call: the stack may move).
+ * Returns its length, or -1 when the arena is out of memory. */
+static int eval(ray *r, int32_t node, double tmin, double tmax, int at)
+{
+    const csg_fnode *nodes = r->s->nodes;
+    frame *fr = r->fr;
     int depth = 0; /* open frames */
-    int32_t cur = s->roots[root];
+    int32_t cur = node;
     double t0 = tmin, t1 = tmax;
-    int at = 0; /* where cur's list goes */
-    int nres;   /* length of the list just finished, at `at` */
+    int nres; /* length of the list just finished, at `at` */
     for (;;) {
         /* Descend from cur until a list is known. */
         const csg_fnode *n = &nodes[cur];
-        if (s->cull && !hits_box(&r, n, t0, t1)) {
+        double te;
+        if (!box_entry(r, n, t0, t1, &te)) {
             nres = 0;
         } else if (n->op == FNODE_LEAF) {
-            nres = trace_leaf(&r, n->prim, t0, t1, at);
+            nres = trace_leaf(r, n->prim, t0, t1, at);
             if (nres < 0) return -1;
         } else {
             fr[depth++] = (frame){cur, cur + 1, at, -1, t0, t1};
@@ -140,12 +154,7 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
         /* Ascend: hand nres to the open frames until one wants another
          * child. */
         for (;;) {
-            if (depth == 0) {
-                out->v = r.sp;
-                out->n = nres;
-                out->cap = r.cap;
-                return 0;
-            }
+            if (depth == 0) return nres;
             frame *f = &fr[depth - 1];
             const csg_fnode *op = &nodes[f->node];
             if (f->nacc <= 0) {
@@ -156,10 +165,10 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
                 if (op->op == CSG_OP_INTERSECTION) f->nacc = 0;
             } else {
                 const int base = f->base, na = f->nacc;
-                if (reserve(&r, (long)base + 2L * (na + nres), base + na + nres) != 0) return -1;
-                iv_list la = {r.sp + base, na, na};
-                iv_list lb = {r.sp + base + na, nres, nres};
-                iv_list lo = {r.sp + base + na + nres, 0, na + nres};
+                if (reserve(r, (long)base + 2L * (na + nres), base + na + nres) != 0) return -1;
+                iv_list la = {r->sp + base, na, na};
+                iv_list lb = {r->sp + base + na, nres, nres};
+                iv_list lo = {r->sp + base + na + nres, 0, na + nres};
                 switch (op->op) {
                 case CSG_OP_UNION:
                     iv_list_union(&la, &lb, &lo);
@@ -171,7 +180,7 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
                     iv_list_difference(&la, &lb, &lo);
                     break;
                 }
-                memcpy(r.sp + base, lo.v, (size_t)lo.n * sizeof *lo.v);
+                memcpy(r->sp + base, lo.v, (size_t)lo.n * sizeof *lo.v);
                 f->nacc = lo.n;
             }
             int32_t next = nodes[f->cursor].next;
@@ -191,12 +200,136 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
             if (op->op != CSG_OP_UNION) {
                 /* The accumulated list is clipped to [f->t0, f->t1], so its
                  * extent lies inside that range. */
-                t0 = r.sp[f->base].enter.t;
-                t1 = r.sp[f->base + f->nacc - 1].exit.t;
+                t0 = r->sp[f->base].enter.t;
+                t1 = r->sp[f->base + f->nacc - 1].exit.t;
             }
             break;
         }
     }
+}
+
+int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
+              double tmax, iv_arena *a, iv_list *out)
+{
+    out->v = NULL;
+    out->n = out->cap = 0;
+    if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
+    ray r;
+    if (ray_init(&r, s, o, d, a) != 0) return -1;
+    int n = eval(&r, s->roots[root], tmin, tmax, 0);
+    if (n < 0) return -1;
+    out->v = r.sp;
+    out->n = n;
+    out->cap = r.cap;
+    return 0;
+}
+
+/* ---- the first boundary ------------------------------------------------------
+ * The first boundary of a union is the earliest first boundary of its
+ * operands, and at equal t the merge keeps the earlier operand's (list.c
+ * emits a's boundary when both change).  Unions nest, so over the "union
+ * frontier" of the root — the nodes that are not unions, reached from the
+ * root through unions only — the answer is the least (t, node index) of
+ * their first boundaries: pre-order is exactly the merge's precedence.
+ *
+ * So the search walks the unions with a stack, nearest box entry on top, and
+ * evaluates each frontier node (a leaf, an intersection or a difference) in
+ * full but only over [tmin, hi]: with a best (t*, k*) found, a node with
+ * index above k* can only win below t* (hi = t*: the clip drops spans that
+ * enter at t* or later), and one below k* also at t* itself (hi = the next
+ * double above t*, so a span entering at t* survives).  A clip only changes
+ * what lies at or beyond hi, and eval's invariant makes each result the
+ * node's true list clipped, so the first boundary found is exactly the full
+ * trace's.  A node whose box entry lies beyond that window is skipped. */
+
+typedef struct pending {
+    int32_t node;
+    double te; /* where the ray enters the node's box (tmin when not culling) */
+} pending;
+
+/* Children sorted in place with the nearest box entry last (it is popped
+ * first), the lower index last among equal entries.  Insertion sort: a
+ * grouped union has 2 to 4 operands; past 32 (an ungrouped union, only when
+ * grouping ran out of memory) the order is left as pushed, reversed so that
+ * pre-order comes off first — any order is correct, only slower. */
+static void sort_pending(pending *v, int n)
+{
+    if (n > 32) {
+        for (int i = 0, j = n - 1; i < j; i++, j--) {
+            pending t = v[i];
+            v[i] = v[j];
+            v[j] = t;
+        }
+        return;
+    }
+    for (int i = 1; i < n; i++) {
+        pending x = v[i];
+        int j = i;
+        while (j > 0 && (v[j - 1].te < x.te || (v[j - 1].te == x.te && v[j - 1].node < x.node))) {
+            v[j] = v[j - 1];
+            j--;
+        }
+        v[j] = x;
+    }
+}
+
+int csg_trace_first(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
+                    double tmax, iv_arena *a, iv_bound *hit)
+{
+    if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
+    ray r;
+    if (ray_init(&r, s, o, d, a) != 0) return -1;
+    const csg_fnode *nodes = s->nodes;
+    if (nodes[s->roots[root]].op != CSG_OP_UNION) { /* the frontier is the root alone */
+        int m = eval(&r, s->roots[root], tmin, tmax, 0);
+        if (m > 0) *hit = r.sp[0].enter;
+        return m < 0 ? -1 : m > 0;
+    }
+    int cap = 64, sn = 0;
+    pending *st = iv_arena_alloc(a, (size_t)cap * sizeof *st);
+    if (!st) return -1;
+    double te;
+    if (!box_entry(&r, &nodes[s->roots[root]], tmin, tmax, &te)) return 0;
+    st[sn++] = (pending){s->roots[root], te};
+    int found = 0;
+    double bt = 0;  /* the best boundary's t … */
+    int32_t bk = 0; /* … and the frontier node it came from */
+    while (sn > 0) {
+        pending p = st[--sn];
+        double hi = tmax;
+        if (found) {
+            if (p.te > bt || (p.te == bt && p.node > bk)) continue;
+            /* bt < tmax (a clipped list's first entry), so hi <= tmax. */
+            hi = p.node < bk ? nextafter(bt, INFINITY) : bt;
+        }
+        const csg_fnode *n = &nodes[p.node];
+        if (n->op != CSG_OP_UNION) {
+            int m = n->op == FNODE_LEAF ? trace_leaf(&r, n->prim, tmin, hi, 0)
+                                        : eval(&r, p.node, tmin, hi, 0);
+            if (m < 0) return -1;
+            if (m > 0) { /* inside the window, so it beats the best */
+                *hit = r.sp[0].enter;
+                bt = hit->t;
+                bk = p.node;
+                found = 1;
+            }
+            continue;
+        }
+        int from = sn;
+        for (int32_t c = p.node + 1; c < n->next; c = nodes[c].next) {
+            if (!box_entry(&r, &nodes[c], tmin, hi, &te)) continue;
+            if (sn == cap) {
+                pending *v = iv_arena_alloc(a, 2 * (size_t)cap * sizeof *v);
+                if (!v) return -1;
+                memcpy(v, st, (size_t)sn * sizeof *v);
+                st = v;
+                cap *= 2;
+            }
+            st[sn++] = (pending){c, te};
+        }
+        sort_pending(st + from, sn - from);
+    }
+    return found;
 }
 
 void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],

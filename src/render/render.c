@@ -16,6 +16,12 @@
  * exact boundaries, permuting the objects of a file cannot change a pixel
  * (ties between roots go to the one OpenSCAD draws last).
  *
+ * Most rays end at their first surface, opaque, so a ray first asks the
+ * scene for that boundary alone (csg_trace_first, which skips what lies
+ * behind it) and takes the full lists only when the first surface lets light
+ * through; shadow rays likewise stop at an opaque occluder.  Both ways give
+ * the same bytes.
+ *
  * The opt-in light model (render_options below `ud`, $rs_ materials) adds,
  * in the same walk: shadow rays that multiply the transmittances of every
  * surface they cross (Beer–Lambert for absorbing spans); mirror rays and
@@ -63,6 +69,7 @@ typedef struct job {
     int max_depth;     /* secondary rays */
     double eps;        /* offset of secondary ray origins */
     double focus;      /* thin lens */
+    int first_hit;     /* csg_trace_first may stand in for the full lists */
     atomic_int next;   /* next tile to hand out */
     atomic_int done;   /* tiles finished */
     atomic_int failed; /* a worker ran out of memory */
@@ -123,6 +130,17 @@ static void square_to_disc(double u, double v, double *x, double *y)
     *x = r * cos(phi);
     *y = r * sin(phi);
 }
+
+/* What a worker thread carries from ray to ray: its arena, the current
+ * pixel's random stream, and whether the last primary (or shadow) ray's
+ * first surface was one that csg_trace_first alone could have handled.
+ * Both paths give the same bytes (see trace_ray); the flags only guess which
+ * is cheaper, so a transparent region is not traced twice per ray. */
+typedef struct worker_ctx {
+    iv_arena *a;
+    rng g;
+    int first_primary, first_shadow;
+} worker_ctx;
 
 /* ---- small vector helpers --------------------------------------------------- */
 
@@ -206,16 +224,41 @@ static double absorption(const job *J, const csg_material *m, double a)
 
 /* ---- shadows ------------------------------------------------------------------ */
 
+/* Whether transmittance's product is 0 once the first boundary b of a shadow
+ * ray's list is crossed: a surface (not a clip, not an emitter, not an
+ * absorbing volume, which needs its exit) whose factor 1 - alpha is already
+ * below the 1/4096 cut-off.  Alphas lie in [0, 1] (color() rejects negative
+ * ones, surface_color caps at 1), so the later factors are at most 1 and
+ * the product stays below the cut-off, which transmittance returns as 0. */
+static int stops_light(const job *J, const iv_bound *b)
+{
+    if (b->prim == IV_PRIM_NONE) return 0;
+    const csg_material *m = csg_scene_material(J->scene, b->prim);
+    if (m->emit > 0) return 0;
+    float c[4];
+    surface_color(J, RENDER_ROOT_MODEL, b, c);
+    return absorption(J, m, c[3]) == 0 && 1 - c[3] < 1.0 / 4096;
+}
+
 /* The fraction of light that passes along o + t·d, t in (0, tmax), through
  * the model: the product of (1 - alpha) of every surface crossed, and
  * exp(-σ·L) over absorbing spans.  Emitters cast no shadow.  Returns -1
  * when the arena is out of memory. */
-static double transmittance(const job *J, iv_arena *a, const double o[3], const double d[3],
+static double transmittance(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                             double tmax)
 {
+    if (J->first_hit && wk->first_shadow) {
+        iv_bound b;
+        int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
+        if (rc < 0) return -1;
+        if (rc == 0) return 1; /* nothing in the way: the loop below leaves T = 1 */
+        if (stops_light(J, &b)) return 0;
+        wk->first_shadow = 0;
+    }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, a, &l) != 0) return -1;
+    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
+    if (J->first_hit) wk->first_shadow = l.n == 0 || stops_light(J, &l.v[0].enter);
     double T = 1;
     for (int i = 0; i < l.n && T > 1.0 / 4096; i++) {
         const iv_span *sp = &l.v[i];
@@ -252,7 +295,7 @@ static double transmittance(const job *J, iv_arena *a, const double o[3], const 
  * (-1,-1,1)/√3 in the viewer's frame casts shadows, its opposite fill does
  * not, so an unshadowed point gets exactly the preview's factor.  Returns
  * -1 when out of memory. */
-static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3], const double nf[3])
+static double light_factor(const job *J, worker_ctx *wk, const double p[3], const double nf[3])
 {
     const render_camera *c = J->cam;
     double o[3];
@@ -266,7 +309,7 @@ static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3],
             L[i] = k * (-c->right[i] - c->forward[i] + c->up[i]);
         double cs = dot3(nf, L);
         if (cs > 0) {
-            double T = transmittance(J, a, o, L, INFINITY);
+            double T = transmittance(J, wk, o, L, INFINITY);
             if (T < 0) return -1;
             f += cs * T;
         } else {
@@ -292,7 +335,8 @@ static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3],
                 memcpy(q, L->pos, sizeof q);
                 if (ns > 1) {
                     double dx, dy;
-                    square_to_disc((si + rng_next(g)) / ns, (sj + rng_next(g)) / ns, &dx, &dy);
+                    square_to_disc((si + rng_next(&wk->g)) / ns, (sj + rng_next(&wk->g)) / ns, &dx,
+                                   &dy);
                     for (int i = 0; i < 3; i++)
                         q[i] += L->radius * (dx * u[i] + dy * v[i]);
                 }
@@ -305,7 +349,7 @@ static double light_factor(const job *J, iv_arena *a, rng *g, const double p[3],
                     dir[i] /= len;
                 double cs = dot3(nf, dir);
                 if (cs <= 0) continue;
-                double T = transmittance(J, a, o, dir, len);
+                double T = transmittance(J, wk, o, dir, len);
                 if (T < 0) return -1;
                 sum += cs * T;
             }
@@ -330,22 +374,37 @@ static int refract_dir(const double d[3], const double nf[3], double eta, double
     return 1;
 }
 
-static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const double d[3],
+/* Whether trace_ray's walk ends at boundary b of root r when b comes first:
+ * a surface (not a clip, not at an infinite t, which the walk skips) that
+ * composites as a surface (no absorption, which needs the span's exit) with
+ * alpha >= OPAQUE, so the accumulated opacity passes OPAQUE at once — and
+ * then neither later surfaces nor refraction are looked at.  Mirror rays
+ * and shadow rays are traced from b alone, so they do not care. */
+static int ends_walk(const job *J, int r, const iv_bound *b)
+{
+    if (b->prim == IV_PRIM_NONE || !isfinite(b->t)) return 0;
+    float c[4];
+    surface_color(J, r, b, c);
+    double alpha = c[3];
+    return alpha >= OPAQUE && absorption(J, csg_scene_material(J->scene, b->prim), alpha) == 0;
+}
+
+static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                      double tmin, double tmax, int depth, double out[3]);
 
 /* A secondary ray from p (offset along the side dir points to). */
-static int trace_from(const job *J, iv_arena *a, rng *g, const double p[3], const double nf[3],
+static int trace_from(const job *J, worker_ctx *wk, const double p[3], const double nf[3],
                       const double dir[3], int depth, double out[3])
 {
     double o[3], side = dot3(dir, nf) >= 0 ? 1 : -1;
     for (int i = 0; i < 3; i++)
         o[i] = p[i] + side * J->eps * nf[i];
-    return trace_ray(J, a, g, o, dir, 0, INFINITY, depth, out);
+    return trace_ray(J, wk, o, dir, 0, INFINITY, depth, out);
 }
 
 /* One ray: composite every surface of every root front to back over the
  * scheme's background.  Returns 0, or -1 when the arena is out of memory. */
-static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const double d[3],
+static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                      double tmin, double tmax, int depth, double out[3])
 {
     const render_camera *cam = J->cam;
@@ -356,7 +415,45 @@ static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const
         memset(&lists[r], 0, sizeof lists[r]);
         pos[r] = 0;
         volume[r] = 0;
-        if (csg_trace(J->scene, r, o, d, tmin, tmax, a, &lists[r]) != 0) return -1;
+    }
+    int traced = 0;
+    if (J->first_hit && wk->first_primary) {
+        /* The walk below composites the nearest boundary of all roots
+         * first; when that one is opaque it ends there, so its lists might
+         * as well hold that boundary alone. */
+        iv_bound fb[MAX_ROOTS];
+        int best = -1;
+        for (int r = 0; r < J->nroots; r++) {
+            int rc = csg_trace_first(J->scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
+            if (rc < 0) return -1;
+            if (rc && (best < 0 || fb[r].t < fb[best].t ||
+                       (fb[r].t == fb[best].t && root_rank[r] < root_rank[best])))
+                best = r;
+        }
+        if (best < 0 || ends_walk(J, best, &fb[best])) {
+            if (best >= 0) {
+                iv_span *sp = iv_arena_alloc(wk->a, sizeof *sp);
+                if (!sp) return -1;
+                /* The exit is never reached: the walk stops at the entry. */
+                *sp = (iv_span){fb[best], {INFINITY, IV_PRIM_NONE, 0, 0}};
+                lists[best] = (iv_list){sp, 1, 1};
+            }
+            traced = 1;
+        } else {
+            wk->first_primary = 0;
+        }
+    }
+    if (!traced) {
+        int best = -1;
+        for (int r = 0; r < J->nroots; r++) {
+            if (csg_trace(J->scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
+            if (lists[r].n > 0 && (best < 0 || lists[r].v[0].enter.t < lists[best].v[0].enter.t ||
+                                   (lists[r].v[0].enter.t == lists[best].v[0].enter.t &&
+                                    root_rank[r] < root_rank[best])))
+                best = r;
+        }
+        if (J->first_hit)
+            wk->first_primary = best < 0 || ends_walk(J, best, &lists[best].v[0].enter);
     }
 
     double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
@@ -419,7 +516,7 @@ static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const
             for (int i = 0; i < 3; i++)
                 lit[i] = c[i];
         } else if (J->lit) {
-            double f = light_factor(J, a, g, p, nf);
+            double f = light_factor(J, wk, p, nf);
             if (f < 0) return -1;
             render_shade_apply(c, f, lit);
         } else {
@@ -431,7 +528,7 @@ static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const
             double rd[3], rc[3], dn = dot3(d, nf);
             for (int i = 0; i < 3; i++)
                 rd[i] = d[i] - 2 * dn * nf[i];
-            if (trace_from(J, a, g, p, nf, rd, depth + 1, rc) != 0) return -1;
+            if (trace_from(J, wk, p, nf, rd, depth + 1, rc) != 0) return -1;
             for (int i = 0; i < 3; i++)
                 local[i] = (1 - m->reflect) * local[i] + m->reflect * rc[i];
         }
@@ -450,7 +547,7 @@ static int trace_ray(const job *J, iv_arena *a, rng *g, const double o[3], const
             if (!refract_dir(d, nf, is_exit ? ior : 1 / ior, td))
                 for (int i = 0; i < 3; i++)
                     td[i] = d[i] - 2 * dot3(d, nf) * nf[i];
-            if (trace_from(J, a, g, p, nf, td, depth + 1, tc) != 0) return -1;
+            if (trace_from(J, wk, p, nf, td, depth + 1, tc) != 0) return -1;
             for (int i = 0; i < 3; i++)
                 out[i] = acc[i] + (1 - acc_a) * tc[i];
             return 0;
@@ -484,7 +581,7 @@ static void primary_ray(const job *J, rng *g, double px, double py, double o[3],
     normalize3(d);
 }
 
-static int render_tile(const job *J, iv_arena *a, int tile)
+static int render_tile(const job *J, worker_ctx *wk, int tile)
 {
     const render_options *opt = J->opt;
     int x0 = (tile % J->tiles_x) * TILE, y0 = (tile / J->tiles_x) * TILE;
@@ -495,18 +592,19 @@ static int render_tile(const job *J, iv_arena *a, int tile)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double sum[3] = {0, 0, 0};
-            rng g = rng_for_pixel(opt->seed, x, y);
+            wk->g = rng_for_pixel(opt->seed, x, y);
             /* s×s strata.  The preview look samples each at its centre
              * (deterministic, and s = 1 is the pixel centre where GL
              * samples coverage); the light model jitters within them. */
             for (int j = 0; j < s; j++)
                 for (int i = 0; i < s; i++) {
-                    double jx = J->jitter ? rng_next(&g) : 0.5, jy = J->jitter ? rng_next(&g) : 0.5;
+                    double jx = J->jitter ? rng_next(&wk->g) : 0.5;
+                    double jy = J->jitter ? rng_next(&wk->g) : 0.5;
                     double o[3], d[3], tmin, tmax, c[3];
-                    primary_ray(J, &g, x + (i + jx) / s, y + (j + jy) / s, o, d);
+                    primary_ray(J, &wk->g, x + (i + jx) / s, y + (j + jy) / s, o, d);
                     ray_range(J->cam, d, &tmin, &tmax);
-                    int rc = trace_ray(J, a, &g, o, d, tmin, tmax, 0, c);
-                    iv_arena_reset(a);
+                    int rc = trace_ray(J, wk, o, d, tmin, tmax, 0, c);
+                    iv_arena_reset(wk->a);
                     if (rc != 0) return -1;
                     for (int k = 0; k < 3; k++)
                         sum[k] += (float)c[k];
@@ -522,12 +620,13 @@ static int render_tile(const job *J, iv_arena *a, int tile)
 static void *worker(void *arg)
 {
     job *J = arg;
-    iv_arena *a = iv_arena_new(0);
+    worker_ctx w = {.a = iv_arena_new(0), .first_primary = 1, .first_shadow = 1};
+    iv_arena *a = w.a;
     if (!a) atomic_store(&J->failed, 1);
     while (a && !atomic_load(&J->failed)) {
         int t = atomic_fetch_add(&J->next, 1);
         if (t >= J->ntiles) break;
-        if (render_tile(J, a, t) != 0) {
+        if (render_tile(J, &w, t) != 0) {
             atomic_store(&J->failed, 1);
             break;
         }
@@ -581,6 +680,9 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
     J->light_n = opt->light_samples > 0 ? opt->light_samples : 4;
     J->max_depth = opt->bounces > 0 ? opt->bounces : 4;
     J->jitter = J->lit || opt->aperture > 0;
+    /* An x-ray opacity below OPAQUE makes every surface transparent, so the
+     * first boundary never settles a ray. */
+    J->first_hit = !(opt->xray > 0 && opt->xray < OPAQUE);
 
     /* Secondary rays leave a surface this far along its normal: about 1e-9
      * of the model's size, far above the rounding of t (a few ulps of the
