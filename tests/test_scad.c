@@ -502,3 +502,33 @@ Test(scad_result, file_settings_and_camera_variables)
     cr_expect_eq(r.vpd, 50);
     scad_result_free(&r);
 }
+
+Test(scad_limits, list_and_string_sizes)
+{
+    /* doubling 40 times would ask for 2^40 elements or bytes: a named error
+     * long before memory runs out (concat's count once overflowed an int);
+     * small limits keep the test fast, the defaults work the same way */
+    const char *src[] = {
+        "function d(v, n) = n == 0 ? v : d(concat(v, v), n - 1);\necho(len(d([1], 40)));",
+        "function d(s, n) = n == 0 ? s : d(str(s, s), n - 1);\necho(len(d(\"ab\", 40)));",
+        "function d(v, n) = n == 0 ? v : d([each v, each v], n - 1);\necho(len(d([1], 40)));",
+    };
+    const char *want[] = {"list longer than 1000 elements", "string longer than 3000 bytes",
+                          "list longer than 1000 elements"};
+    for (int i = 0; i < 3; i++) {
+        lines got = {0};
+        scad_options o;
+        memset(&o, 0, sizeof o);
+        o.message = collect;
+        o.ud = &got;
+        o.max_list = 1000;
+        o.max_string = 3000;
+        scad_result r;
+        cr_expect_eq(scad_eval_string("t.scad", src[i], &o, &r), -1, "case %d", i);
+        int found = 0;
+        for (int k = 0; k < got.n; k++)
+            if (strstr(got.v[k], want[i]) && strstr(got.v[k], "t.scad:1:")) found = 1;
+        cr_expect(found, "case %d: no '%s' error at t.scad:1", i, want[i]);
+        lines_free(&got);
+    }
+}

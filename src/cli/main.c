@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #define RAYSCAD_VERSION "0.1.0"
 
@@ -33,9 +34,10 @@ typedef struct messages {
 static void on_message(void *ud, scad_msg_kind kind, const char *line)
 {
     messages *m = ud;
-    if (!m->to_buffer || kind == SCAD_MSG_ERROR) {
+    if (kind == SCAD_MSG_TRACE && !m->to_buffer) return; /* the ERROR line said it */
+    if (!m->to_buffer || kind == SCAD_MSG_ERROR || kind == SCAD_MSG_NOTE) {
         fprintf(stderr, "%s\n", line);
-        if (kind == SCAD_MSG_ERROR || !m->to_buffer) return;
+        return;
     }
     size_t n = strlen(line);
     if (m->len + n + 2 > m->cap) {
@@ -95,6 +97,17 @@ static int write_image(const cli_options *o, csg_scene *scene)
         .colors = colors,
     };
     cli_options_apply_optics(o, &ro);
+    if (has_extension(o->output, ".pov")) { /* the same scene and camera for POV-Ray */
+        char *text, err[512];
+        size_t len;
+        int rc = render_pov_export(scene, &cam, &ro, &text, &len, err, sizeof err);
+        if (rc == 0) {
+            rc = atomic_file_write(o->output, text, len, err, sizeof err);
+            free(text);
+        }
+        if (rc != 0) fprintf(stderr, "rayscad: error: %s\n", err);
+        return rc != 0 ? EXIT_MODEL : 0;
+    }
     progress bar;
     progress_start(&bar, "rendering");
     ro.progress = progress_update;
@@ -107,8 +120,17 @@ static int write_image(const cli_options *o, csg_scene *scene)
         return EXIT_MODEL;
     }
     char err[512];
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     int rc = render_image(scene, &cam, &ro, rgba, err, sizeof err);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
     progress_finish(&bar);
+    if (rc == 0 && getenv("RAYSCAD_STATS")) { /* render-only time, for bench/run.py */
+        double sec = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+        double rays = (double)o->width * o->height * o->samples * o->samples;
+        fprintf(stderr, "rayscad: stats: %.0f rays in %.6f s, %.0f rays/s\n", rays, sec,
+                sec > 0 ? rays / sec : 0);
+    }
     if (rc == 0) rc = io_image_write(o->output, o->width, o->height, 4, rgba, err, sizeof err);
     free(rgba);
     if (rc != 0) {
@@ -122,7 +144,7 @@ static int write_image(const cli_options *o, csg_scene *scene)
 typedef enum output_kind {
     OUTPUT_NONE, /* no -o (--measure alone) */
     OUTPUT_UNKNOWN,
-    OUTPUT_IMAGE,
+    OUTPUT_IMAGE, /* also .pov: the scene and camera for POV-Ray */
     OUTPUT_MESH,
     OUTPUT_ECHO,
     OUTPUT_CSG,
@@ -134,7 +156,7 @@ static output_kind output_kind_of(const char *path)
     if (has_extension(path, ".echo")) return OUTPUT_ECHO;
     if (has_extension(path, ".csg")) return OUTPUT_CSG;
     if (cli_mesh_output_is_mesh(path)) return OUTPUT_MESH;
-    if (io_image_format_supported(path)) return OUTPUT_IMAGE;
+    if (has_extension(path, ".pov") || io_image_format_supported(path)) return OUTPUT_IMAGE;
     return OUTPUT_UNKNOWN;
 }
 
@@ -203,21 +225,32 @@ int main(int argc, char **argv)
         return 0;
     }
     scad_result res;
-    if (scad_eval_file(o.input, &so, &res) != 0) {
-        free(msgs.buf);
-        return EXIT_MODEL;
-    }
+    int failed = scad_eval_file(o.input, &so, &res) != 0;
     if (echo_out) {
-        scad_result_free(&res);
+        /* As openscad, the .echo holds what came before an error and the
+         * error itself; the exit status still says the model failed. */
+        if (!failed) scad_result_free(&res);
         int rc = atomic_file_write(o.output, msgs.buf ? msgs.buf : "", msgs.len, err, sizeof err);
         free(msgs.buf);
         if (rc != 0) {
             fprintf(stderr, "rayscad: error: %s\n", err);
             return EXIT_MODEL;
         }
-        return 0;
+        return failed ? EXIT_MODEL : 0;
+    }
+    if (failed) {
+        free(msgs.buf);
+        return EXIT_MODEL;
     }
 
+    if (o.view.kind == RENDER_CAMERA_DEFAULT) { /* the file's $vp* camera */
+        o.view.file_vp_set = res.vp_set;
+        o.view.file_vp_auto_off = res.vp_auto_off;
+        memcpy(o.view.vpr, res.vpr, sizeof o.view.vpr);
+        memcpy(o.view.vpt, res.vpt, sizeof o.view.vpt);
+        o.view.vpd = res.vpd;
+        o.view.vpf = res.vpf;
+    }
     csg_node *roots[3] = {res.model, res.highlight, res.background};
     res.model = res.highlight = res.background = NULL;
     scad_result_free(&res);

@@ -8,6 +8,7 @@
  * of 30 and 45 degrees where OpenSCAD's sin_degrees/cos_degrees are.
  * The name table is sorted, searched by bsearch.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -273,12 +274,20 @@ static scad_value f_len(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
 
 static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    (void)ev, (void)loc, (void)name;
-    int n = 0;
+    (void)name;
+    long long total = 0;
     for (int i = 0; i < a->n; i++)
-        n += a->v[i].kind == SV_VEC ? a->v[i].u.vec->n : 1;
+        total += a->v[i].kind == SV_VEC ? a->v[i].u.vec->n : 1;
+    if (total > ev->max_list) {
+        scad_eval_error(ev, loc, "list longer than %d elements (concat)", ev->max_list);
+        return scad_undef();
+    }
+    int n = (int)total;
     scad_value r = scad_vec_new(n);
-    if (r.kind != SV_VEC) return r;
+    if (r.kind != SV_VEC) {
+        scad_eval_error(ev, loc, "out of memory building a vector");
+        return r;
+    }
     int k = 0;
     for (int i = 0; i < a->n; i++) {
         if (a->v[i].kind == SV_VEC)
@@ -292,11 +301,19 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
 
 static scad_value f_str(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    (void)ev, (void)loc, (void)name;
-    scad_buf b = {0};
-    for (int i = 0; i < a->n; i++)
+    (void)name;
+    scad_buf b = {.limit = (size_t)ev->max_string};
+    for (int i = 0; i < a->n && !b.oom; i++)
         scad_value_format(&b, a->v[i], 0);
-    scad_value r = scad_str_new(b.p ? b.p : "", b.oom ? 0 : b.n);
+    if (b.oom) {
+        if (b.too_long)
+            scad_eval_error(ev, loc, "string longer than %d bytes (str)", ev->max_string);
+        else
+            scad_eval_error(ev, loc, "out of memory building a string");
+        scad_buf_free(&b);
+        return scad_undef();
+    }
+    scad_value r = scad_str_new(b.p ? b.p : "", b.n);
     scad_buf_free(&b);
     return r;
 }
@@ -508,7 +525,7 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
 static int search_eq(scad_value item, scad_value match, int col)
 {
     if (col == 0 && scad_value_equal(item, match)) return 1;
-    return item.kind == SV_VEC && col < item.u.vec->n &&
+    return item.kind == SV_VEC && col >= 0 && col < item.u.vec->n &&
            scad_value_equal(item.u.vec->v[col], match);
 }
 
@@ -542,8 +559,9 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
     if (a->n < 2) return scad_undef();
     scad_value match = a->v[0], in = a->v[1];
     double d;
-    int nret = a->n > 2 && get_num(a->v[2], &d) ? (int)d : 1;
-    int col = a->n > 3 && get_num(a->v[3], &d) ? (int)d : 0;
+    /* NaN and out-of-range counts clamp (a cast would be undefined) */
+    int nret = a->n > 2 && get_num(a->v[2], &d) ? (int)fmax(fmin(d, INT_MAX), INT_MIN + 1.0) : 1;
+    int col = a->n > 3 && get_num(a->v[3], &d) ? (int)fmax(fmin(d, INT_MAX), INT_MIN + 1.0) : 0;
     scad_value hay = scad_value_ref(in);
     if (in.kind == SV_STR) {
         /* characters of the string, as a vector of one-character strings */

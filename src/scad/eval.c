@@ -77,6 +77,17 @@ static void pop_frame(scad_eval *ev, int pushed)
     if (pushed == 0) ev->nframes--;
 }
 
+/* One step of work (a user call, or a value of a loop or list being built):
+ * 0 to go on; past ev->max_steps, an error and -1.  This bounds the time an
+ * evaluation can take (nested loops, exponential recursion). */
+static int count_step(scad_eval *ev, scad_loc loc)
+{
+    if (++ev->steps <= ev->max_steps) return 0;
+    scad_eval_error(ev, loc, "evaluation took more than %ld steps (calls and loop values)",
+                    ev->max_steps);
+    return -1;
+}
+
 /* Called on entry to every user function or module: 0 to go on. */
 static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char *name)
 {
@@ -98,6 +109,7 @@ static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char 
         eval_error_worded(ev, loc, echo_msg, msg);
         return -1;
     }
+    if (count_step(ev, loc)) return -1;
     ev->depth++;
     return 0;
 }
@@ -645,10 +657,19 @@ typedef struct vlist {
 
 static void vlist_push(scad_eval *ev, vlist *l, scad_value v, scad_loc loc)
 {
+    if (count_step(ev, loc)) {
+        scad_value_drop(v);
+        return;
+    }
+    if (l->n >= ev->max_list) {
+        scad_value_drop(v);
+        scad_eval_error(ev, loc, "list longer than %d elements", ev->max_list);
+        return;
+    }
     if (l->n == l->cap) {
         int cap = l->cap ? l->cap * 2 : 8;
         scad_value *nv = realloc(l->v, sizeof *nv * (size_t)cap);
-        if (!nv || cap > 100000000) {
+        if (!nv) {
             scad_value_drop(v);
             scad_eval_error(ev, loc, "out of memory building a vector");
             return;

@@ -66,6 +66,8 @@ typedef struct scad_eval {
     scad_diag *d;
     scad_arena *arena; /* geometry */
     int depth, max_depth;
+    int max_list, max_string; /* value size limits (scad_options) */
+    long steps, max_steps; /* work done and its limit (scad_options.max_steps) */
     int module_depth; /* user modules being instantiated: $parent_modules */
     const char **module_names; /* their names, outermost first (parent_module) */
     int module_names_cap;

@@ -21,6 +21,8 @@
 #include "eval.h"
 
 enum { DEFAULT_MAX_RECURSION = 10000 };
+#define DEFAULT_MAX_STEPS 10000000L
+#define MAX_SOURCE_BYTES ((size_t)1 << 28)
 #define EVAL_STACK ((size_t)1 << 30)
 #define STACK_MARGIN ((size_t)64 << 20)
 
@@ -35,6 +37,12 @@ char *scad_read_file(scad_arena *a, const char *path)
         n += got;
         if (got == 0) break;
         if (n + 1 == cap) {
+            if (cap >= MAX_SOURCE_BYTES) { /* a source this long is not a model */
+                free(buf);
+                fclose(f);
+                errno = EFBIG;
+                return NULL;
+            }
             char *nb = realloc(buf, cap * 2);
             if (!nb) {
                 free(buf);
@@ -151,6 +159,11 @@ static void run_job(job *j)
     ev.arena = scad_arena_new();
     ev.max_depth =
         j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion : DEFAULT_MAX_RECURSION;
+    ev.max_steps = j->opt && j->opt->max_steps > 0 ? j->opt->max_steps : DEFAULT_MAX_STEPS;
+    ev.max_list = j->opt && j->opt->max_list > 0 && j->opt->max_list < SCAD_MAX_LIST
+                      ? j->opt->max_list
+                      : SCAD_MAX_LIST;
+    ev.max_string = j->opt && j->opt->max_string > 0 ? j->opt->max_string : SCAD_MAX_STRING;
     ev.stack_base = &base;
     ev.stack_budget =
         j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;

@@ -41,6 +41,7 @@ scad_value scad_str_new(const char *s, size_t len)
 
 scad_value scad_vec_new(int n)
 {
+    if (n > SCAD_MAX_LIST) return scad_undef();
     scad_vec *p = malloc(sizeof *p + sizeof(scad_value) * (size_t)(n > 0 ? n : 0));
     if (!p) return scad_undef();
     p->refs = 1;
@@ -231,6 +232,11 @@ double scad_range_count(const scad_range *r)
 void scad_buf_put(scad_buf *b, const char *s, size_t n)
 {
     if (b->oom) return;
+    size_t limit = b->limit ? b->limit : SCAD_MAX_STRING;
+    if (n > limit || b->n + n > limit) {
+        b->oom = b->too_long = 1;
+        return;
+    }
     if (b->n + n + 1 > b->cap) {
         size_t cap = b->cap ? b->cap : 64;
         while (cap < b->n + n + 1)

@@ -106,10 +106,20 @@ double scad_range_count(const scad_range *r);
 
 /* ---- text --------------------------------------------------------------- */
 
+/* Default size limits of values (scad_options.max_list, max_string): a
+ * list of more elements, or a string of more bytes, is refused with a named
+ * error ("list longer than … elements") — about 1 GB each, far beyond any
+ * real model, well before the machine's memory runs out.  SCAD_MAX_LIST
+ * also bounds every list, whatever the option says. */
+enum { SCAD_MAX_LIST = 1 << 26, SCAD_MAX_STRING = 1 << 28 };
+
+/* A growing text.  oom: an allocation failed or the text would pass limit
+ * bytes (0: SCAD_MAX_STRING) — too_long says which; it then stops growing. */
 typedef struct scad_buf {
     char *p;
     size_t n, cap;
-    int oom;
+    int oom, too_long;
+    size_t limit;
 } scad_buf;
 
 void scad_buf_put(scad_buf *b, const char *s, size_t n);
