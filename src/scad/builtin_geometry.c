@@ -121,11 +121,17 @@ static int fragments(double r, facets f)
     return n > 100000 ? 100000 : (int)n;
 }
 
-static int faceted(const scad_eval *ev, facets f)
+/* AUTO draws OpenSCAD's facets where the user asked for coarse ones: the
+ * fragment count for radius r is at most 16 and comes from settings the
+ * user changed ($fn set, or $fa/$fs off their defaults 12 and 2) — a
+ * cylinder($fn = 6) nut, a sphere under $fa = 30.  OpenSCAD's defaults
+ * alone stay smooth, even for a small sphere they would cut into 10. */
+static int faceted(const scad_eval *ev, facets f, double r)
 {
     if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
     if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
-    return f.fn > 0 && f.fn <= 16;
+    int chosen = f.fn > 0 || f.fa != 12 || f.fs != 2;
+    return chosen && fragments(r, f) <= 16;
 }
 
 /* Circle point i of n at radius r, OpenSCAD's generate_circle. */
@@ -179,7 +185,7 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     facets f = facets_of(ev, env, a, st->loc);
     iv_shape sh;
     memset(&sh, 0, sizeof sh);
-    if (!faceted(ev, f)) {
+    if (!faceted(ev, f, r)) {
         sh.kind = IV_SHAPE_SPHERE;
         sh.u.sphere.r = r;
         return leaf_at(ev, &sh, state, NULL);
@@ -226,7 +232,7 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, 
     facets f = facets_of(ev, env, a, st->loc);
     iv_shape sh;
     memset(&sh, 0, sizeof sh);
-    if (!faceted(ev, f)) {
+    if (!faceted(ev, f, r1 > r2 ? r1 : r2)) {
         sh.kind = IV_SHAPE_CONE;
         sh.u.cone.r1 = r1;
         sh.u.cone.r2 = r2;
@@ -315,7 +321,7 @@ static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     radius(ev, a, st->loc, "d", "r", 0, &r);
     if (!(r > 0) || !isfinite(r)) return NULL;
     facets f = facets_of(ev, env, a, st->loc);
-    if (faceted(ev, f)) return region_leaf(ev, circle_region(r, fragments(r, f)), state);
+    if (faceted(ev, f, r)) return region_leaf(ev, circle_region(r, fragments(r, f)), state);
     iv_shape s;
     memset(&s, 0, sizeof s);
     s.kind = IV_SHAPE_PRISM;
@@ -949,7 +955,8 @@ typedef struct revolve_ctx {
  * x multiplied by sign; NULL when out of memory. */
 static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
 {
-    int n = faceted(c->ev, c->f) ? fragments(g->shape.u.prism.r, c->f) : c->disc_fragments_smooth;
+    int n = faceted(c->ev, c->f, g->shape.u.prism.r) ? fragments(g->shape.u.prism.r, c->f)
+                                                      : c->disc_fragments_smooth;
     return shadow_region(c->local_from_world, g, n, sign);
 }
 
