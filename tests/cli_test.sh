@@ -183,5 +183,21 @@ run box.scad -o no/such/dir/x.stl
 check "unwritable mesh path exits 1" test "$rc" -eq 1
 check "no temporary mesh file left behind" test -z "$(ls -A | grep -e '^\.')"
 
+# A file's top-level $rs_ settings are the flags' equivalents (and flags win).
+printf 'color("teal") sphere(8);\ntranslate([14, 0, 0]) cube(6, center = true);\n' >plain.scad
+printf '$rs_shadows = true;\n$rs_aperture = 3;\n$rs_focus = 60;\n$rs_samples = 2;\n' >set.scad
+cat plain.scad >>set.scad
+run plain.scad -o flags.png --imgsize=96,72 --shadows --aperture 3 --focus 60 --samples 2
+run set.scad -o file.png --imgsize=96,72
+check "\$rs_ settings render as their flags" cmp -s flags.png file.png
+run plain.scad -o none.png --imgsize=96,72
+check "\$rs_ settings change the image" sh -c "! cmp -s none.png file.png"
+run set.scad -o flag_wins.png --imgsize=96,72 --aperture 0.5
+run plain.scad -o flag_only.png --imgsize=96,72 --shadows --aperture 0.5 --focus 60 --samples 2
+check "a flag wins over the file's setting" cmp -s flag_wins.png flag_only.png
+printf '$rs_bounces = 1000;\ncube(1);\n' >bad_setting.scad
+run bad_setting.scad -o bad_setting.png --imgsize=32,32
+check "an out-of-range setting warns and is ignored" sh -c "test $rc -eq 0 && grep -q 'rs_bounces = 1000 is outside 1..64' err.txt"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -10,6 +10,7 @@
 #include "options.h"
 #include "progress.h"
 #include "services.h"
+#include "settings.h"
 
 #include "../io/io.h"
 #include "../render/render.h"
@@ -243,6 +244,7 @@ int main(int argc, char **argv)
         return EXIT_MODEL;
     }
 
+    cli_settings_apply(&o, &res, stderr); /* the file's $rs_ scene settings */
     if (o.view.kind == RENDER_CAMERA_DEFAULT) { /* the file's $vp* camera */
         o.view.file_vp_set = res.vp_set;
         o.view.file_vp_auto_off = res.vp_auto_off;
