@@ -11,6 +11,9 @@
  * that OIIO picks the same format, and is renamed over the target only when
  * complete: a failure leaves nothing behind and the old file untouched.
  * Every exception stops at the extern "C" functions; nothing here prints.
+ * This file is built as a shared object of its own, which image_loader.c
+ * embeds and loads on first use, so that only runs that read or write an
+ * image pay for loading OpenImageIO.
  */
 #include "io.h"
 #include "temp_file.h"

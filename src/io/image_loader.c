@@ -1,0 +1,212 @@
+/*
+ * image_loader.c — io.h's image functions, loading the OpenImageIO adapter
+ * (image.cpp) only when an image is read or written, and in the background.
+ *
+ * OpenImageIO 2.4 as Debian builds it needs about 260 shared libraries
+ * (OpenCV, FFmpeg, DCMTK, OpenVDB, …), and relocating them costs the dynamic
+ * loader about 0.3 s of CPU — more than most renders take.  So rayscad does
+ * not link it: the adapter is a shared object of its own, embedded in the
+ * binary at build time (the .incbin below, RAYSCAD_IMAGE_SO naming the file),
+ * copied into a memfd and dlopened from there, so the binary stays one
+ * self-contained file.  Meshes, --measure, .echo, .csg and .pov never load
+ * it.  An image output announces itself early, through
+ * io_image_format_supported, which starts the load on a thread of its own so
+ * that it runs while the model is evaluated and rendered; io_image_write then
+ * waits for it.
+ *
+ * Invariant: `state` only grows (IDLE → LOADING → DONE) under `mu`; once
+ * DONE, `fn` and `load_err` never change again, so they are read without
+ * the lock.  The loading thread is joined before exit (an atexit handler),
+ * so the process never tears down libraries under a dlopen in progress.
+ */
+#define _GNU_SOURCE /* memfd_create */
+#include "io.h"
+
+#include <dlfcn.h>
+#include <errno.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#ifdef RAYSCAD_IMAGE_SO
+__asm__(".section .rodata\n"
+        ".balign 64\n"
+        "rayscad_image_so:\n"
+        ".incbin \"" RAYSCAD_IMAGE_SO "\"\n"
+        "rayscad_image_so_end:\n"
+        ".previous\n");
+extern const unsigned char rayscad_image_so[], rayscad_image_so_end[];
+#endif
+
+typedef int (*write_fn)(const char *, int, int, int, const float *, char *, size_t);
+typedef int (*read_fn)(const char *, int *, int *, int *, float **, char *, size_t);
+typedef int (*supported_fn)(const char *);
+
+enum { IDLE, LOADING, DONE };
+
+static pthread_mutex_t mu = PTHREAD_MUTEX_INITIALIZER;
+static pthread_cond_t cv = PTHREAD_COND_INITIALIZER;
+static int state = IDLE;
+static int threaded; /* a loading thread was started (and is joined at exit) */
+static pthread_t loader;
+static struct {
+    write_fn write;
+    read_fn read;
+    supported_fn supported;
+} fn;
+static char load_err[256]; /* empty when the adapter loaded */
+
+/* dlopen the embedded adapter; fills fn or load_err.  Runs once. */
+static void load(void)
+{
+#ifdef RAYSCAD_IMAGE_SO
+    const unsigned char *p = rayscad_image_so;
+    size_t left = (size_t)(rayscad_image_so_end - rayscad_image_so);
+    int fd = memfd_create("rayscad-image.so", MFD_CLOEXEC);
+    if (fd < 0) {
+        snprintf(load_err, sizeof load_err, "cannot load the image adapter: memfd_create: %s",
+                 strerror(errno));
+        return;
+    }
+    while (left > 0) {
+        ssize_t w = write(fd, p, left);
+        if (w < 0 && errno == EINTR) continue;
+        if (w <= 0) {
+            snprintf(load_err, sizeof load_err, "cannot load the image adapter: write: %s",
+                     strerror(errno));
+            close(fd);
+            return;
+        }
+        p += w;
+        left -= (size_t)w;
+    }
+    char path[64];
+    snprintf(path, sizeof path, "/proc/self/fd/%d", fd);
+    void *h = dlopen(path, RTLD_LAZY | RTLD_LOCAL);
+    close(fd); /* the mapping keeps what dlopen needs */
+    if (!h) {
+        const char *e = dlerror();
+        snprintf(load_err, sizeof load_err, "cannot load the image adapter: %s",
+                 e ? e : "dlopen failed");
+        return;
+    }
+    /* POSIX allows converting dlsym's object pointer to a function pointer;
+     * the memcpy keeps ISO C's -Wpedantic quiet about it. */
+    void *w = dlsym(h, "io_image_write"), *r = dlsym(h, "io_image_read"),
+         *s = dlsym(h, "io_image_format_supported");
+    if (!w || !r || !s) {
+        snprintf(load_err, sizeof load_err, "cannot load the image adapter: a symbol is missing");
+        return;
+    }
+    memcpy(&fn.write, &w, sizeof w);
+    memcpy(&fn.read, &r, sizeof r);
+    memcpy(&fn.supported, &s, sizeof s);
+#else
+    snprintf(load_err, sizeof load_err, "this build has no image adapter (OpenImageIO)");
+#endif
+}
+
+static void finish(void)
+{
+    pthread_mutex_lock(&mu);
+    state = DONE;
+    pthread_cond_broadcast(&cv);
+    pthread_mutex_unlock(&mu);
+}
+
+static void *load_thread(void *arg)
+{
+    (void)arg;
+    load();
+    finish();
+    return NULL;
+}
+
+/* At exit: let a load in progress finish before libraries are torn down. */
+static void join_loader(void)
+{
+    pthread_mutex_lock(&mu);
+    int t = threaded;
+    threaded = 0;
+    pthread_mutex_unlock(&mu);
+    if (t) pthread_join(loader, NULL);
+}
+
+/* Start loading on a thread of its own, unless it has started already.  The
+ * exit handler goes first, so no thread runs without one; a failed atexit
+ * or thread leaves state IDLE, and the first use loads instead. */
+static void start(void)
+{
+    static int registered;
+    pthread_mutex_lock(&mu);
+    if (state == IDLE && (registered || atexit(join_loader) == 0)) {
+        registered = 1;
+        if (pthread_create(&loader, NULL, load_thread, NULL) == 0) {
+            state = LOADING;
+            threaded = 1;
+        }
+    }
+    pthread_mutex_unlock(&mu);
+}
+
+/* Wait until the adapter is loaded (loading it here when nobody started
+ * to).  Returns 0, or -1 with the reason in err. */
+static int ready(char *err, size_t errlen)
+{
+    pthread_mutex_lock(&mu);
+    if (state == IDLE) {
+        state = LOADING;
+        pthread_mutex_unlock(&mu);
+        load();
+        finish();
+        pthread_mutex_lock(&mu);
+    }
+    while (state != DONE)
+        pthread_cond_wait(&cv, &mu);
+    pthread_mutex_unlock(&mu);
+    if (load_err[0]) {
+        if (err && errlen) snprintf(err, errlen, "%s", load_err);
+        return -1;
+    }
+    return 0;
+}
+
+int io_image_write(const char *path, int width, int height, int channels, const float *pixels,
+                   char *err, size_t errlen)
+{
+    if (ready(err, errlen) != 0) return -1;
+    return fn.write(path, width, height, channels, pixels, err, errlen);
+}
+
+int io_image_read(const char *path, int *width, int *height, int *channels, float **pixels,
+                  char *err, size_t errlen)
+{
+    if (ready(err, errlen) != 0) {
+        *pixels = NULL;
+        return -1;
+    }
+    return fn.read(path, width, height, channels, pixels, err, errlen);
+}
+
+int io_image_format_supported(const char *path)
+{
+    /* The formats every OpenImageIO build writes (tests/test_io.c writes
+     * each): answered at once, so that the load overlaps the render.  Any
+     * other extension asks OpenImageIO itself. */
+    static const char *const common[] = {"png", "jpg", "jpeg", "tif", "tiff", "exr"};
+    const char *slash = path ? strrchr(path, '/') : NULL;
+    const char *dot = path ? strrchr(path, '.') : NULL;
+    if (!dot || (slash && dot < slash) || !dot[1]) return 0;
+    for (size_t i = 0; i < sizeof common / sizeof *common; i++) {
+        if (strcasecmp(dot + 1, common[i]) == 0) {
+            start();
+            return 1;
+        }
+    }
+    if (ready(NULL, 0) != 0) return 0;
+    return fn.supported(path);
+}
