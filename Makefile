@@ -41,9 +41,7 @@ CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) -MMD -M
 CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) -MMD -MP \
 	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
 	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null)
-# OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
-OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
-LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
+LDLIBS   = $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lOpenMeshCore -lOpenMeshTools \
 	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
 	-lpthread -lm
 
@@ -51,15 +49,16 @@ DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenme
 	libcriterion-dev pkg-config g++ make \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation
 
-LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c \
-	src/io/*.c)
-IO_SRC   = $(filter-out src/io/image.cpp,$(wildcard src/io/*.cpp))
+LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c)
+IO_SRC   = $(wildcard src/io/*.cpp)
 CLI_SRC  = $(wildcard src/cli/*.c)
 TEST_SRC = $(wildcard tests/test_*.c)
 TOOL_SRC = $(wildcard tests/tools/*.c)
 
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(IO_SRC:%.cpp=$(BUILD)/obj/%.o)
 CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
+# the command's parts that tests and tools use too (its services, writers)
+CLI_LIB_OBJ = $(filter-out $(BUILD)/obj/src/cli/main.o,$(CLI_OBJ))
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
@@ -76,22 +75,6 @@ $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
-# The OpenImageIO adapter: image.cpp and the temp-file helpers as a shared
-# object, embedded in the binary and dlopened in the background only when an
-# image is read or written (src/io/image_loader.c says why).
-IMAGE_SO = $(BUILD)/rayscad-image.so
-
-$(BUILD)/pic/%.o: %.cpp
-	@mkdir -p $(dir $@)
-	$(CXX) $(CXXFLAGS) -fPIC -c $< -o $@
-
-$(IMAGE_SO): $(BUILD)/pic/src/io/image.o $(BUILD)/pic/src/io/temp_file.o
-	$(CXX) $(SANFLAGS) -shared -Wl,--as-needed -o $@ $^ $(OIIO_LIBS)
-
-$(BUILD)/obj/src/io/image_loader.o: src/io/image_loader.c $(IMAGE_SO)
-	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -DRAYSCAD_IMAGE_SO='"$(abspath $(IMAGE_SO))"' -c $< -o $@
-
 $(BUILD)/librayscad.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	rm -f $@
@@ -100,11 +83,11 @@ $(BUILD)/librayscad.a: $(LIB_OBJ)
 $(BUILD)/rayscad: $(CLI_OBJ) $(BUILD)/librayscad.a
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(BUILD)/librayscad.a
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(CLI_LIB_OBJ) $(BUILD)/librayscad.a
 	@mkdir -p $(dir $@)
 	$(CXX) $(SANFLAGS) -o $@ $^ -lcriterion $(LDLIBS)
 
-$(BUILD)/tools/%: $(BUILD)/obj/tests/tools/%.o $(BUILD)/librayscad.a
+$(BUILD)/tools/%: $(BUILD)/obj/tests/tools/%.o $(CLI_LIB_OBJ) $(BUILD)/librayscad.a
 	@mkdir -p $(dir $@)
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
 
@@ -163,7 +146,7 @@ bench: deps
 	python3 bench/run.py $(BUILD)
 
 format:
-	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(wildcard src/io/*.cpp) src/*/*.h
+	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(IO_SRC) src/*/*.h
 
 clean:
 	rm -rf build build-asan out

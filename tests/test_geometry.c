@@ -8,7 +8,9 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../src/intervals/intervals.h"
 #include "../src/io/io.h"
@@ -385,9 +387,9 @@ Test(revolve, triangle_profile_full_and_partial, .init = setup, .fini = teardown
 /* ---- geometry built by the language: twisted extrusion, surface, import,
  * resize — through scad_eval_string and a committed scene ---------------------- */
 
-/* The real services of the command (the OFF header rewrite included); its
- * file is compiled into this test, as src/cli is not in the library. */
-#include "../src/cli/services.c"
+/* The real services of the command (the OFF header rewrite included):
+ * tests link the command's parts other than main. */
+#include "../src/cli/services.h"
 
 typedef struct msgs {
     char text[4096];

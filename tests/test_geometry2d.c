@@ -16,108 +16,10 @@
 #include "../src/io/polygon.h"
 #include "../src/io/text.h"
 #include "../src/mesh/mesh.h"
+#include "../src/cli/services.h"
 #include "../src/scad/scad.h"
 
 #define PI 3.14159265358979323846
-
-/* ---- the services, wired as src/cli/services.c wires them ------------------------ */
-
-static io_paths view(const scad_paths *p)
-{
-    io_paths q = {NULL, NULL, 0};
-    if (p) {
-        q.pts = p->pts;
-        q.start = p->start;
-        q.npaths = p->npaths;
-    }
-    return q;
-}
-
-static void back(io_paths *q, scad_paths *o)
-{
-    o->pts = q->pts;
-    o->start = q->start;
-    o->npaths = q->npaths;
-}
-
-static int s_clip(void *ud, int op, const scad_paths *a, int ae, const scad_paths *b, int be,
-                  scad_paths *out, char *err, size_t n)
-{
-    (void)ud;
-    io_paths x = view(a), y = view(b), r;
-    io_clip_op o = op == CSG_OP_INTERSECTION ? IO_CLIP_INTERSECTION
-                   : op == CSG_OP_DIFFERENCE ? IO_CLIP_DIFFERENCE
-                                             : IO_CLIP_UNION;
-    if (io_polygon_clip(o, &x, ae, &y, be, &r, err, n)) return -1;
-    back(&r, out);
-    return 0;
-}
-
-static int s_offset(void *ud, const scad_paths *a, double d, int join, double ml, double tol,
-                    scad_paths *out, char *err, size_t n)
-{
-    (void)ud;
-    io_paths x = view(a), r;
-    io_join j = join == SCAD_JOIN_MITER ? IO_JOIN_MITER
-                : join == SCAD_JOIN_SQUARE ? IO_JOIN_SQUARE
-                                           : IO_JOIN_ROUND;
-    if (io_polygon_offset(&x, d, j, ml, tol, &r, err, n)) return -1;
-    back(&r, out);
-    return 0;
-}
-
-static int s_mink(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out, char *err,
-                  size_t n)
-{
-    (void)ud;
-    io_paths x = view(a), y = view(b), r;
-    if (io_polygon_minkowski(&x, &y, &r, err, n)) return -1;
-    back(&r, out);
-    return 0;
-}
-
-static int s_mesh(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t, int *nt,
-                  char *err, size_t n)
-{
-    (void)ud;
-    csg_scene *s = csg_scene_new(&root, 1, err, n);
-    if (!s) return -1;
-    mesh_options o;
-    mesh_options_default(&o);
-    o.h = h;
-    o.cells_per_side = 256;
-    mesh *m;
-    int rc = mesh_from_scene(s, &o, &m, NULL, err, n);
-    csg_scene_free(s);
-    if (rc) return -1;
-    *nv = mesh_vertex_count(m);
-    *nt = mesh_triangle_count(m);
-    *v = malloc((size_t)*nv * 3 * sizeof **v + 1);
-    *t = malloc((size_t)*nt * 3 * sizeof **t + 1);
-    memcpy(*v, mesh_vertices(m), (size_t)*nv * 3 * sizeof **v);
-    memcpy(*t, mesh_triangles(m), (size_t)*nt * 3 * sizeof **t);
-    mesh_free(m);
-    return 0;
-}
-
-static int s_text(void *ud, const scad_text_params *p, scad_paths *out, char *err, size_t n)
-{
-    (void)ud;
-    io_text_params q = {p->text,    p->size,      p->font,     p->halign, p->valign,
-                        p->spacing, p->direction, p->language, p->script, p->segments};
-    io_paths r;
-    if (io_text_render(&q, &r, err, n)) return -1;
-    back(&r, out);
-    return 0;
-}
-
-static const scad_services services = {
-    .paths_clip = s_clip,
-    .paths_offset = s_offset,
-    .paths_minkowski = s_mink,
-    .mesh_tree = s_mesh,
-    .text = s_text,
-};
 
 /* ---- helpers ------------------------------------------------------------------------ */
 
@@ -136,7 +38,7 @@ static csg_scene *scene_of(const char *src)
 {
     msgs[0] = 0;
     scad_options o = {0};
-    o.services = &services;
+    o.services = cli_services();
     o.message = on_msg;
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad", src, &o, &r), 0, "%s\n%s", src, msgs);
@@ -355,7 +257,7 @@ Test(minkowski, of_a_difference_is_an_error)
 {
     msgs[0] = 0;
     scad_options o = {0};
-    o.services = &services;
+    o.services = cli_services();
     o.message = on_msg;
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad",
