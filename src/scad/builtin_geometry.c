@@ -45,24 +45,6 @@ static int num_of(scad_value v, double *x)
     return 1;
 }
 
-/* Keep a reference to s's data until the end of the evaluation.  Returns 0,
- * or -1 when out of memory (then s's data is already released). */
-static int own(scad_eval *ev, iv_shape *s)
-{
-    if (ev->nowned == ev->capowned) {
-        int cap = ev->capowned ? 2 * ev->capowned : 16;
-        iv_shape *v = realloc(ev->owned, (size_t)cap * sizeof *v);
-        if (!v) {
-            iv_shape_release(s);
-            return -1;
-        }
-        ev->owned = v;
-        ev->capowned = cap;
-    }
-    ev->owned[ev->nowned++] = *s;
-    return 0;
-}
-
 void scad_geometry_release(scad_eval *ev)
 {
     for (int i = 0; i < ev->nowned; i++)
@@ -74,7 +56,7 @@ void scad_geometry_release(scad_eval *ev)
 
 scad_geom *scad_geometry_leaf(scad_eval *ev, iv_shape *s, const scad_state *state)
 {
-    if (own(ev, s) != 0) return NULL;
+    if (scad_geom_keep(ev, s) != 0) return NULL;
     return scad_geom_leaf(ev, s, state);
 }
 
@@ -87,52 +69,6 @@ static scad_geom *leaf_at(scad_eval *ev, const iv_shape *s, const scad_state *st
 }
 
 /* ---- facets ------------------------------------------------------------------ */
-
-typedef struct facets {
-    double fn, fa, fs;
-} facets;
-
-static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name,
-                      scad_loc loc, double dflt)
-{
-    double x;
-    if (num_of(scad_argv_get(a, name, -1), &x)) return x;
-    int found;
-    if (num_of(scad_env_lookup(ev, env, name, loc, 1, &found), &x)) return x;
-    return dflt;
-}
-
-static facets facets_of(scad_eval *ev, scad_env *env, const scad_argv *a, scad_loc loc)
-{
-    facets f = {special(ev, env, a, "$fn", loc, 0), special(ev, env, a, "$fa", loc, 12),
-                special(ev, env, a, "$fs", loc, 2)};
-    return f;
-}
-
-/* OpenSCAD 2021.01 Calc::get_fragments_from_r, with its guards: $fa and
- * $fs below 0.01 are raised to it there, which only matters for nonsense
- * input; a count is capped so that one primitive stays a few MB. */
-static int fragments(double r, facets f)
-{
-    if (r < GRID_FINE) return 3;
-    if (f.fn > 0) return f.fn >= 3 ? (f.fn > 100000 ? 100000 : (int)f.fn) : 3;
-    double fa = f.fa < 0.01 ? 0.01 : f.fa, fs = f.fs < 0.01 ? 0.01 : f.fs;
-    double n = ceil(fmax(fmin(360.0 / fa, r * 2 * PI / fs), 5));
-    return n > 100000 ? 100000 : (int)n;
-}
-
-/* AUTO draws OpenSCAD's facets where the user asked for coarse ones: the
- * fragment count for radius r is at most 16 and comes from settings the
- * user changed ($fn set, or $fa/$fs off their defaults 12 and 2) — a
- * cylinder($fn = 6) nut, a sphere under $fa = 30.  OpenSCAD's defaults
- * alone stay smooth, even for a small sphere they would cut into 10. */
-static int faceted(const scad_eval *ev, facets f, double r)
-{
-    if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
-    if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
-    int chosen = f.fn > 0 || f.fa != 12 || f.fs != 2;
-    return chosen && fragments(r, f) <= 16;
-}
 
 /* Circle point i of n at radius r, OpenSCAD's generate_circle. */
 static void circle_pt(double r, int i, int n, double out[2])
@@ -170,7 +106,7 @@ static scad_geom *hull_leaf(scad_eval *ev, const double (*P)[3], int n, const sc
                             const csg_affine local)
 {
     iv_shape s;
-    if (iv_shape_hull(&s, P, n) != 0 || own(ev, &s) != 0) return NULL;
+    if (iv_shape_hull(&s, P, n) != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
     return leaf_at(ev, &s, state, local);
 }
 
@@ -182,15 +118,15 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     double r = 1;
     radius(ev, a, st->loc, "d", "r", 0, &r);
     if (!(r > 0) || !isfinite(r)) return NULL;
-    facets f = facets_of(ev, env, a, st->loc);
+    scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
     iv_shape sh;
     memset(&sh, 0, sizeof sh);
-    if (!faceted(ev, f, r)) {
+    if (!scad_facets_shown(ev, f, r)) {
         sh.kind = IV_SHAPE_SPHERE;
         sh.u.sphere.r = r;
         return leaf_at(ev, &sh, state, NULL);
     }
-    int n = fragments(r, f), rings = (n + 1) / 2;
+    int n = scad_fragments(r, f), rings = (n + 1) / 2;
     double(*P)[3] = malloc((size_t)n * (size_t)rings * sizeof *P);
     if (!P) return NULL;
     for (int i = 0; i < rings; i++) {
@@ -229,17 +165,17 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, 
         (r1 == 0 && r2 == 0))
         return NULL;
     csg_affine t = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, center ? -h / 2 : 0};
-    facets f = facets_of(ev, env, a, st->loc);
+    scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
     iv_shape sh;
     memset(&sh, 0, sizeof sh);
-    if (!faceted(ev, f, r1 > r2 ? r1 : r2)) {
+    if (!scad_facets_shown(ev, f, r1 > r2 ? r1 : r2)) {
         sh.kind = IV_SHAPE_CONE;
         sh.u.cone.r1 = r1;
         sh.u.cone.r2 = r2;
         sh.u.cone.h = h;
         return leaf_at(ev, &sh, state, t);
     }
-    int n = fragments(fmax(r1, r2), f), np = 0;
+    int n = scad_fragments(fmax(r1, r2), f), np = 0;
     double(*P)[3] = malloc((size_t)(2 * n) * sizeof *P);
     if (!P) return NULL;
     for (int k = 0; k < 2; k++) {
@@ -272,7 +208,7 @@ static scad_geom *region_leaf(scad_eval *ev, iv_region *g, const scad_state *sta
     iv_shape s;
     iv_shape_prism(&s, g, -SLAB, SLAB);
     iv_region_release(g); /* the shape holds it now */
-    if (own(ev, &s) != 0) return NULL;
+    if (scad_geom_keep(ev, &s) != 0) return NULL;
     return leaf_at(ev, &s, state, NULL);
 }
 
@@ -320,8 +256,8 @@ static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     double r = 1;
     radius(ev, a, st->loc, "d", "r", 0, &r);
     if (!(r > 0) || !isfinite(r)) return NULL;
-    facets f = facets_of(ev, env, a, st->loc);
-    if (faceted(ev, f, r)) return region_leaf(ev, circle_region(r, fragments(r, f)), state);
+    scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
+    if (scad_facets_shown(ev, f, r)) return region_leaf(ev, circle_region(r, scad_fragments(r, f)), state);
     iv_shape s;
     memset(&s, 0, sizeof s);
     s.kind = IV_SHAPE_PRISM;
@@ -332,7 +268,7 @@ static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     /* A leaf has no children, so its cap is free: a smooth disc keeps
      * OpenSCAD's fragment count there for a twisted or scaled extrusion,
      * which must build OpenSCAD's polygon (disc_fragments). */
-    if (g) g->cap = fragments(r, f);
+    if (g) g->cap = scad_fragments(r, f);
     return g;
 }
 
@@ -452,7 +388,7 @@ static scad_geom *m_polyhedron(scad_eval *ev, scad_env *env, const scad_stmt *st
             scad_diag_warning(ev->d, st->loc,
                               "polyhedron() is not closed (an edge is not shared by exactly "
                               "two faces); it is rendered best effort");
-        if (rc >= 0 && own(ev, &s) == 0) g = leaf_at(ev, &s, state, NULL);
+        if (rc >= 0 && scad_geom_keep(ev, &s) == 0) g = leaf_at(ev, &s, state, NULL);
     }
     free(idx);
     free(start);
@@ -537,9 +473,9 @@ static iv_region *shadow_region(const double *local_from_world, const scad_geom 
 
 /* OpenSCAD's fragment count for a disc leaf: the one m_circle recorded, or
  * (a disc made elsewhere) the count the enclosing module's facets give. */
-static int disc_fragments(const scad_geom *g, facets f)
+static int disc_fragments(const scad_geom *g, scad_facet_params f)
 {
-    return g->cap >= 3 ? g->cap : fragments(g->shape.u.prism.r, f);
+    return g->cap >= 3 ? g->cap : scad_fragments(g->shape.u.prism.r, f);
 }
 
 typedef struct twist_ctx {
@@ -548,7 +484,7 @@ typedef struct twist_ctx {
     const double *world_from_local;
     double h1, h2, twist, scale[2];
     int slices;
-    facets f;
+    scad_facet_params f;
     double max_r2, max_d2; /* the scan's results */
 } twist_ctx;
 
@@ -590,7 +526,7 @@ static double archimedes_length(double a, double theta)
 static int default_slices(const twist_ctx *c, double h)
 {
     double sx = c->scale[0], sy = c->scale[1];
-    facets f = c->f;
+    scad_facet_params f = c->f;
     if (c->twist != 0) {
         double tw = fabs(c->twist), r = sqrt(c->max_r2);
         int min_slices = (int)fmax(ceil(tw / 120.0), 1);
@@ -886,7 +822,7 @@ static void twist_tree(twist_ctx *c, scad_geom *g)
     iv_shape s;
     int rc = r ? twisted_mesh(c, r, &s) : -1;
     if (r) iv_region_release(r);
-    if (rc != 0 || own(c->ev, &s) != 0) {
+    if (rc != 0 || scad_geom_keep(c->ev, &s) != 0) {
         make_empty(g);
         return;
     }
@@ -911,7 +847,7 @@ static scad_geom *m_linear_extrude(scad_eval *ev, scad_env *env, const scad_stmt
                    .h1 = center ? -h / 2 : 0,
                    .h2 = center ? h / 2 : h,
                    .scale = {1, 1},
-                   .f = facets_of(ev, env, a, st->loc)};
+                   .f = scad_facets_lookup(ev, env, a, st->loc)};
     if (num_of(scad_argv_get(a, "twist", 6), &x) && isfinite(x)) t.twist = x;
     scad_value sv = scad_argv_get(a, "scale", 4);
     if (num_of(sv, &x)) {
@@ -948,14 +884,14 @@ typedef struct revolve_ctx {
     double angle;
     double sign; /* -1: the profile is on the negative side, mirrored */
     int disc_fragments_smooth;
-    facets f;
+    scad_facet_params f;
 } revolve_ctx;
 
 /* The region of a 2D leaf in the extrusion's frame (a new reference), with
  * x multiplied by sign; NULL when out of memory. */
 static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
 {
-    int n = faceted(c->ev, c->f, g->shape.u.prism.r) ? fragments(g->shape.u.prism.r, c->f)
+    int n = scad_facets_shown(c->ev, c->f, g->shape.u.prism.r) ? scad_fragments(g->shape.u.prism.r, c->f)
                                                       : c->disc_fragments_smooth;
     return shadow_region(c->local_from_world, g, n, sign);
 }
@@ -1021,7 +957,7 @@ static void revolve_tree(revolve_ctx *c, scad_geom *g)
     iv_shape s;
     iv_shape_revolve(&s, r, c->angle);
     iv_region_release(r);
-    if (own(c->ev, &s) != 0) {
+    if (scad_geom_keep(c->ev, &s) != 0) {
         make_empty(g);
         return;
     }
@@ -1044,7 +980,7 @@ static scad_geom *m_rotate_extrude(scad_eval *ev, scad_env *env, const scad_stmt
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
     revolve_ctx c = {
-        ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, facets_of(ev, env, a, st->loc)};
+        ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, scad_facets_lookup(ev, env, a, st->loc)};
     revolve_scan(&c, kids, &c.xmin, &c.xmax);
     if (!(c.xmin <= c.xmax)) return NULL;
     if (c.xmin < 0 && c.xmax > 0) {
@@ -1096,7 +1032,7 @@ static void pts_add(pts *P, const double local_from_world[12], const double xf[1
 }
 
 /* The points whose hull is the leaf's solid as OpenSCAD tessellates it. */
-static void hull_points(pts *P, const scad_geom *g, const double lfw[12], facets f)
+static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_facet_params f)
 {
     if (!g) return;
     if (!g->is_leaf) {
@@ -1119,7 +1055,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], facets
     case IV_SHAPE_SPHERE: {
         P->any3d = 1;
         double r = s->u.sphere.r;
-        int n = fragments(r, f), rings = (n + 1) / 2;
+        int n = scad_fragments(r, f), rings = (n + 1) / 2;
         for (int i = 0; i < rings; i++) {
             double phi = 180.0 * (i + 0.5) / rings;
             for (int j = 0; j < n; j++) {
@@ -1132,7 +1068,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], facets
     }
     case IV_SHAPE_CONE: {
         P->any3d = 1;
-        int n = fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
+        int n = scad_fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
         for (int k = 0; k < 2; k++)
             for (int j = 0; j < n; j++) {
                 double c[2];
@@ -1154,7 +1090,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], facets
     case IV_SHAPE_PRISM: {
         P->any2d = 1;
         if (!s->u.prism.g) {
-            int n = fragments(s->u.prism.r, f);
+            int n = scad_fragments(s->u.prism.r, f);
             for (int j = 0; j < n; j++) {
                 double c[2];
                 circle_pt(s->u.prism.r, j, n, c);
@@ -1222,11 +1158,11 @@ static scad_geom *m_hull(scad_eval *ev, scad_env *env, const scad_stmt *st, cons
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
     pts P = {NULL, 0, 0, 0, 0};
-    hull_points(&P, kids, inv, facets_of(ev, env, a, st->loc));
+    hull_points(&P, kids, inv, scad_facets_lookup(ev, env, a, st->loc));
     scad_geom *g = NULL;
     if (P.any3d && P.n >= 4) {
         iv_shape s;
-        if (iv_shape_hull(&s, (const double(*)[3])P.p, P.n) == 0 && own(ev, &s) == 0)
+        if (iv_shape_hull(&s, (const double(*)[3])P.p, P.n) == 0 && scad_geom_keep(ev, &s) == 0)
             g = leaf_at(ev, &s, state, NULL);
     } else if (!P.any3d && P.n >= 3) {
         double(*H)[2] = malloc((size_t)(P.n + 1) * sizeof *H);
@@ -1248,7 +1184,7 @@ static scad_geom *m_hull(scad_eval *ev, scad_env *env, const scad_stmt *st, cons
  * its first operand, an intersection by the overlap of its operands' boxes
  * (exact for the usual cases; an upper bound where a solid trims another).
  * Returns 0, or -1 when empty. */
-static int tree_box(const scad_geom *g, facets f, double lo[3], double hi[3], int *any3d)
+static int tree_box(const scad_geom *g, scad_facet_params f, double lo[3], double hi[3], int *any3d)
 {
     if (!g) return -1;
     if (!g->is_leaf) {
@@ -1326,7 +1262,7 @@ static scad_geom *m_resize(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     double lo[3], hi[3];
     int any3d = 0;
     double scale[3] = {1, 1, 1};
-    if (tree_box(kids, facets_of(ev, env, a, st->loc), lo, hi, &any3d) == 0) {
+    if (tree_box(kids, scad_facets_lookup(ev, env, a, st->loc), lo, hi, &any3d) == 0) {
         int dim = any3d ? 3 : 2, imax = 0;
         for (int i = 0; i < dim; i++) {
             if (ns[i] == 0) continue;

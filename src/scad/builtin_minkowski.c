@@ -109,7 +109,7 @@ static void circle(const mctx *c, part *q, const double xf[12], double r, double
 static int fragments(const mctx *c, double r)
 {
     int n = scad_fragments(r, c->f);
-    return scad_facets_shown(c->ev, c->f) || n >= SMOOTH_FRAGMENTS ? n : SMOOTH_FRAGMENTS;
+    return scad_facets_shown(c->ev, c->f, r) || n >= SMOOTH_FRAGMENTS ? n : SMOOTH_FRAGMENTS;
 }
 
 /* 1 when every vertex of the mesh is a vertex of its hull. */

@@ -48,11 +48,17 @@ int scad_fragments(double r, scad_facet_params f)
     return n > 100000 ? 100000 : (int)n;
 }
 
-int scad_facets_shown(const scad_eval *ev, scad_facet_params f)
+/* AUTO draws OpenSCAD's facets where the user asked for coarse ones: the
+ * fragment count for radius r is at most 16 and comes from settings the
+ * user changed ($fn set, or $fa/$fs off their defaults 12 and 2) — a
+ * cylinder($fn = 6) nut, a sphere under $fa = 30.  OpenSCAD's defaults
+ * alone stay smooth, even for a small sphere they would cut into 10. */
+int scad_facets_shown(const scad_eval *ev, scad_facet_params f, double r)
 {
     if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
     if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
-    return f.fn > 0 && f.fn <= 16;
+    int chosen = f.fn > 0 || f.fa != 12 || f.fs != 2;
+    return chosen && scad_fragments(r, f) <= 16;
 }
 
 int scad_geom_keep(scad_eval *ev, iv_shape *s)
@@ -138,7 +144,7 @@ static int leaf_paths(flat *c, const scad_geom *g, scad_paths *out)
         ps = iv_region_paths(src, &np);
     } else {
         double r = g->shape.u.prism.r;
-        n = scad_facets_shown(c->ev, c->f) ? scad_fragments(r, c->f) : SMOOTH_DISC;
+        n = scad_facets_shown(c->ev, c->f, r) ? scad_fragments(r, c->f) : SMOOTH_DISC;
         C = malloc((size_t)n * sizeof *C);
         if (!C) return -1;
         for (int i = 0; i < n; i++) {

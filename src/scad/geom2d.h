@@ -18,9 +18,9 @@ scad_facet_params scad_facets_lookup(scad_eval *ev, scad_env *env, const scad_ar
                                      scad_loc loc);
 /* OpenSCAD 2021.01's get_fragments_from_r (capped at 100000). */
 int scad_fragments(double r, scad_facet_params f);
-/* 1 when round shapes at these settings are built with OpenSCAD's facets
- * (the --facets rule of builtin_geometry.c). */
-int scad_facets_shown(const scad_eval *ev, scad_facet_params f);
+/* 1 when a round shape of radius r at these settings is built with
+ * OpenSCAD's facets (the --facets rule). */
+int scad_facets_shown(const scad_eval *ev, scad_facet_params f, double r);
 
 /* Keep one reference to s's data until the end of the evaluation (in
  * ev->owned, released by scad_geometry_release).  Returns 0, or -1 when out
