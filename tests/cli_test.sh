@@ -8,6 +8,7 @@ rayscad=$(realpath "$build/rayscad")
 meshcmp=$(realpath "$build/tools/meshcmp")
 py=/usr/bin/python3
 [ -x "$py" ] || py=python3
+root=$PWD
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
@@ -198,6 +199,16 @@ check "a flag wins over the file's setting" cmp -s flag_wins.png flag_only.png
 printf '$rs_bounces = 1000;\ncube(1);\n' >bad_setting.scad
 run bad_setting.scad -o bad_setting.png --imgsize=32,32
 check "an out-of-range setting warns and is ignored" sh -c "test $rc -eq 0 && grep -q 'rs_bounces = 1000 is outside 1..64' err.txt"
+
+# OpenSCAD reads our .csg back: what it writes from it is what it writes
+# from the .scad itself, byte for byte.
+for m in nested_booleans colors_modifiers geo_linear_extrude geo_polyhedron; do
+    src=$root/tests/models/$m.scad
+    run "$src" -o "ours_$m.csg"
+    openscad -o "again_$m.csg" "ours_$m.csg" >/dev/null 2>&1
+    (cd "$(dirname "$src")" && openscad -o "$tmp/ref_$m.csg" "$m.scad" >/dev/null 2>&1)
+    check "openscad reads our $m.csg back unchanged" cmp -s "again_$m.csg" "ref_$m.csg"
+done
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
