@@ -25,6 +25,7 @@
  * once the csg nodes (which retain their own) exist.
  */
 #include "builtin_geometry.h"
+#include "material.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -102,12 +103,23 @@ static int radius(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *d
     return 0;
 }
 
-static scad_geom *hull_leaf(scad_eval *ev, const double (*P)[3], int n, const scad_state *state,
-                            const csg_affine local)
+/* A sphere's or cylinder's leaf: leaf_at plus the $rs_ optics its call and
+ * scope set (material.c), as builtin_modules.c's leaf() gives a cube. */
+static scad_geom *optics_leaf(scad_eval *ev, scad_env *env, const scad_argv *a, const iv_shape *s,
+                              const scad_state *state, const csg_affine local)
+{
+    scad_state st = *state;
+    if (local) csg_affine_mul(state->xf, local, st.xf);
+    scad_material_apply(ev, env, a, s, st.xf, &st.mat);
+    return scad_geom_leaf(ev, s, &st);
+}
+
+static scad_geom *hull_leaf(scad_eval *ev, scad_env *env, const scad_argv *a, const double (*P)[3],
+                            int n, const scad_state *state, const csg_affine local)
 {
     iv_shape s;
     if (iv_shape_hull(&s, P, n) != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
-    return leaf_at(ev, &s, state, local);
+    return optics_leaf(ev, env, a, &s, state, local);
 }
 
 static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
@@ -124,7 +136,7 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     if (!scad_facets_shown(ev, f, r)) {
         sh.kind = IV_SHAPE_SPHERE;
         sh.u.sphere.r = r;
-        return leaf_at(ev, &sh, state, NULL);
+        return optics_leaf(ev, env, a, &sh, state, NULL);
     }
     int n = scad_fragments(r, f), rings = (n + 1) / 2;
     double(*P)[3] = malloc((size_t)n * (size_t)rings * sizeof *P);
@@ -140,7 +152,7 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
             P[i * n + j][2] = z;
         }
     }
-    scad_geom *g = hull_leaf(ev, (const double(*)[3])P, n * rings, state, NULL);
+    scad_geom *g = hull_leaf(ev, env, a, (const double(*)[3])P, n * rings, state, NULL);
     free(P);
     return g;
 }
@@ -173,7 +185,7 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, 
         sh.u.cone.r1 = r1;
         sh.u.cone.r2 = r2;
         sh.u.cone.h = h;
-        return leaf_at(ev, &sh, state, t);
+        return optics_leaf(ev, env, a, &sh, state, t);
     }
     int n = scad_fragments(fmax(r1, r2), f), np = 0;
     double(*P)[3] = malloc((size_t)(2 * n) * sizeof *P);
@@ -193,7 +205,7 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, 
             P[np++][2] = k ? h : 0;
         }
     }
-    scad_geom *g = hull_leaf(ev, (const double(*)[3])P, np, state, t);
+    scad_geom *g = hull_leaf(ev, env, a, (const double(*)[3])P, np, state, t);
     free(P);
     return g;
 }
