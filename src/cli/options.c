@@ -52,6 +52,8 @@ const char cli_usage[] =
     "  --absorb[=T]            thickness mode: alpha is the opacity of T mm of\n"
     "                          the solid, Beer-Lambert (default T = 10)\n"
     "  --seed N                jitter seed (default 0)\n"
+    "  --path-trace[=N]        path-traced quality mode: interreflection, N\n"
+    "                          samples per pixel (default 64)\n"
     "\n"
     "Meshes (.stl .off .obj .ply) and measurement:\n"
     "  --mesh-size H           grid spacing in model units (default: the longest\n"
@@ -156,6 +158,15 @@ static int parse_optics(int argc, char **argv, int *i, render_options *p, char *
         }
         return 1;
     }
+    if (optional_value(a, "--path-trace", &val)) {
+        p->path_trace = 64;
+        if (val && parse_int(val, 1, 1000000, &p->path_trace) != 0) {
+            snprintf(err, errlen, "--path-trace expects samples per pixel in 1..1000000, got '%s'",
+                     val);
+            return -1;
+        }
+        return 1;
+    }
     if (optional_value(a, "--refract", &val)) {
         p->ior = 1.5;
         if (val && (parse_double(val, &p->ior) != 0 || !(p->ior >= 1) || p->ior > 10)) {
@@ -237,6 +248,7 @@ void cli_options_apply_optics(const cli_options *o, render_options *ro)
     ro->xray = p->xray;
     ro->absorb = p->absorb;
     ro->seed = p->seed;
+    ro->path_trace = p->path_trace;
 }
 
 int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen)

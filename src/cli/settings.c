@@ -20,6 +20,7 @@ static const setting known[] = {
     {"$rs_shadows", 0, 1, 1},      {"$rs_light_samples", 1, 16, 1}, {"$rs_bounces", 1, 64, 1},
     {"$rs_refract", 1, 10, 0},     {"$rs_aperture", 0, 1e9, 0},     {"$rs_focus", 0, 1e9, 0},
     {"$rs_xray", 1e-9, 1, 0},      {"$rs_thickness", 1e-9, 1e9, 0}, {"$rs_samples", 1, 16, 1},
+    {"$rs_path_trace", 1, 1000000, 1},
 };
 
 /* The option a setting fills, and whether the command line left it unset. */
@@ -35,6 +36,7 @@ static double *slot(cli_options *o, const char *name, double *tmp, int *unset)
     if (!strcmp(name, "$rs_light_samples")) *unset = p->light_samples == 0;
     if (!strcmp(name, "$rs_bounces")) *unset = p->bounces == 0;
     if (!strcmp(name, "$rs_samples")) *unset = o->samples == 1;
+    if (!strcmp(name, "$rs_path_trace")) *unset = p->path_trace == 0;
     return tmp; /* an int option: copied back by the caller */
 }
 
@@ -63,5 +65,6 @@ void cli_settings_apply(cli_options *o, const scad_result *r, FILE *warn)
         if (!strcmp(k->name, "$rs_light_samples")) o->optics.light_samples = (int)v;
         if (!strcmp(k->name, "$rs_bounces")) o->optics.bounces = (int)v;
         if (!strcmp(k->name, "$rs_samples")) o->samples = (int)v;
+        if (!strcmp(k->name, "$rs_path_trace")) o->optics.path_trace = (int)v;
     }
 }

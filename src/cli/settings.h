@@ -23,7 +23,8 @@
  *   $rs_focus (>= 0)         --focus
  *   $rs_xray ((0,1])         --xray
  *   $rs_thickness (> 0 mm)   --absorb
- *   $rs_samples (1-16)       --samples */
+ *   $rs_samples (1-16)       --samples
+ *   $rs_path_trace (1-1e6)   --path-trace=N */
 void cli_settings_apply(cli_options *o, const scad_result *r, FILE *warn);
 
 #endif

@@ -35,6 +35,7 @@
  * gives the same bytes.
  */
 #include "render.h"
+#include "path_trace.h"
 #include "shade.h"
 
 #include <math.h>
@@ -720,6 +721,8 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
                 "least 1x1 pixels and 1 to 64 samples)");
         return -1;
     }
+    /* ---- the path-traced quality mode: a separate integrator -------------- */
+    if (opt->path_trace > 0) return render_path_trace(s, cam, opt, rgba, err, errlen);
     job J;
     memset(&J, 0, sizeof J);
     J.scene = s;

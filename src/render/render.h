@@ -109,6 +109,10 @@ typedef struct render_options {
                           is the opacity of this thickness (world units),
                           Beer–Lambert over the length of its spans */
     unsigned seed;     /* the jitter's seed; pixels derive their own */
+    int path_trace;    /* > 0: path-trace the model root with this many
+                          samples per pixel (src/render/path_trace.c:
+                          diffuse interreflection, next-event estimation,
+                          Fresnel glass); `samples` is then unused */
 } render_options;
 
 /* Scene roots by role: root 0 is the model; root 1, when present, the '#'

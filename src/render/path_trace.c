@@ -1,0 +1,879 @@
+/*
+ * path_trace.c — the path-traced quality mode: a unidirectional path tracer
+ * with next-event estimation over the model root, in linear radiance.
+ *
+ * A path starts at the camera (thin lens as render.c's), finds its nearest
+ * surface with csg_trace_first (the full interval list only where a ray
+ * starts inside a solid or must cross a volume), and at each surface picks
+ * one event by the material, stochastically so that the expectation is what
+ * render.c composites: a colour of alpha a is a surface with probability a
+ * and lets the ray through straight otherwise; $rs_reflect = r is a mirror
+ * with probability r, Lambertian with its colour otherwise; a refracting
+ * solid ($rs_ior, --refract) is a smooth dielectric (Fresnel by Schlick,
+ * total internal reflection) where its alpha does not make it a surface;
+ * an absorbing solid ($rs_absorb, --absorb) attenuates by Beer–Lambert over
+ * the length a path runs inside it.  At each Lambertian vertex, every light
+ * is sampled once (next-event estimation) and the path goes on along a
+ * cosine-distributed direction; Russian roulette ends paths after three
+ * bounces, --bounces limits them (default 8; 1 is direct light only).
+ *
+ * Light, in one unit: a light of intensity i gives a white Lambertian face
+ * squarely toward it, at the centre of the model's bounds, the brightness i
+ * — as the light model's direct term does — and falls off as 1/d²:
+ *   - --light x,y,z,r,i: a point (r = 0) or a sphere of radius r sampled
+ *     over the disc it shows, radiant intensity I = π·i·d_c², d_c its
+ *     distance to the centre; it is not seen by camera or bounce rays;
+ *   - a $rs_light = i solid emits radiance Le = i·(d_c/R)²·colour from its
+ *     surface (R its enclosing radius, d_c at least R), which for a sphere
+ *     is exactly the light above; it also reflects, Lambertian.  Spheres
+ *     and boxes are sampled over their surface (uniform in object space,
+ *     the pdf carried into world space through the transform's Jacobian);
+ *     other emitting shapes are found by the bounce rays alone;
+ *   - with neither, the preview's key light (from the viewer's upper left,
+ *     at infinity) with irradiance π, so a white face toward it reads 1.
+ * A path that leaves the scene sees the scheme's background colour when
+ * only mirrors, glass and pass-throughs lie between it and the camera (the
+ * backdrop), and a sky of 0.2 × that colour after a diffuse bounce — the
+ * preview's ambient 0.2 as light from every direction.  Emission reached by
+ * a bounce ray is counted only where next-event estimation cannot have
+ * counted it (after the camera or a specular event, or for a shape that is
+ * not sampled), so no light is counted twice; shadow rays treat refracting
+ * solids as opaque and light through them arrives as caustics, whose
+ * samples are capped at display white (CAUSTIC_MAX) — the one bias, and
+ * one that scenes without mirrors or glass never meet.  Colours
+ * are sRGB-encoded in materials and output: decoded to linear for albedo
+ * and emission, and the mean radiance of a pixel clamped to [0, 1] and
+ * encoded.
+ *
+ * Invariant: each pixel draws from its own random stream, seeded by
+ * (seed, x, y), and tiles are handed out as in render.c, so the image is
+ * the same bytes for any thread count.
+ */
+#include "path_trace.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+enum { TILE = 32, MAX_THREADS = 256, DEFAULT_DEPTH = 8, RR_AFTER = 3, MAX_PASS = 64 };
+
+#define PI 3.14159265358979323846
+/* Opacity past which a surface stops shadow rays and camera rays (render.c). */
+#define OPAQUE (1.0 - 1.0 / 4096)
+/* The most radiance one sample of a caustic path may carry: display white.
+ * A pixel of N samples is off by at most what its clipped samples lost. */
+#define CAUSTIC_MAX 1.0
+/* The sky after a diffuse bounce, as a fraction of the background colour:
+ * the preview's ambient term. */
+#define SKY 0.2
+
+typedef enum pt_light_kind { PT_KEY, PT_POINT, PT_SPHERE, PT_BOX } pt_light_kind;
+
+/* A light next-event estimation samples.  Emitters (PT_SPHERE, PT_BOX) are
+ * primitives: sampled in object space, mapped by world_from_object. */
+typedef struct pt_light {
+    pt_light_kind kind;
+    double pos[3];       /* PT_POINT: position; PT_KEY: unit direction to it */
+    double radius;       /* PT_POINT: sphere radius sampled as a disc */
+    double intensity;    /* PT_POINT: radiant intensity I */
+    int32_t prim;        /* emitters */
+    double lin[9];       /* emitters: linear part of world_from_object */
+    double off[3];       /* its translation */
+    double inv[9];       /* the inverse of lin (normals: inv^T n) */
+    double det;          /* |det lin| */
+    double r;            /* PT_SPHERE: object radius */
+    double lo[3], hi[3]; /* PT_BOX: object box */
+    double area;         /* object-space surface area */
+} pt_light;
+
+typedef struct pt_job {
+    const csg_scene *scene;
+    const render_camera *cam;
+    const render_options *opt;
+    float *rgba;
+    int tiles_x, ntiles;
+    pt_light *lights;
+    int nlights;
+    double *le;    /* per primitive: emitted radiance per unit linear colour */
+    char *sampled; /* per primitive: an emitter next-event estimation samples */
+    double bg[3];  /* background, linear */
+    int max_depth;
+    double eps; /* offset of secondary ray origins */
+    double focus;
+    atomic_int next, done, failed;
+    pthread_mutex_t mu;
+    pthread_cond_t cv;
+    int exited;
+} pt_job;
+
+/* ---- random numbers: splitmix64 over a counter, per pixel --------------- */
+
+typedef struct rng {
+    uint64_t s;
+} rng;
+
+static uint64_t mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/* Uniform in [0, 1): the top 53 bits. */
+static double rnd(rng *g)
+{
+    g->s += 0x9e3779b97f4a7c15ULL;
+    return (double)(mix64(g->s) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+typedef struct pt_worker {
+    iv_arena *a;
+    rng g;
+} pt_worker;
+
+/* ---- small helpers ------------------------------------------------------- */
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void normalize3(double v[3])
+{
+    double l = sqrt(dot3(v, v));
+    if (l > 0)
+        for (int i = 0; i < 3; i++)
+            v[i] /= l;
+}
+
+/* Two unit vectors orthogonal to unit w and to each other. */
+static void basis_of(const double w[3], double u[3], double v[3])
+{
+    double a[3] = {0, 0, 0};
+    a[fabs(w[0]) < 0.6 ? 0 : fabs(w[1]) < 0.6 ? 1 : 2] = 1;
+    u[0] = a[1] * w[2] - a[2] * w[1];
+    u[1] = a[2] * w[0] - a[0] * w[2];
+    u[2] = a[0] * w[1] - a[1] * w[0];
+    normalize3(u);
+    v[0] = w[1] * u[2] - w[2] * u[1];
+    v[1] = w[2] * u[0] - w[0] * u[2];
+    v[2] = w[0] * u[1] - w[1] * u[0];
+}
+
+/* Shirley–Chiu concentric map of the unit square onto the unit disc. */
+static void square_to_disc(double u, double v, double *x, double *y)
+{
+    double a = 2 * u - 1, b = 2 * v - 1, r, phi;
+    if (a == 0 && b == 0) {
+        *x = *y = 0;
+        return;
+    }
+    if (fabs(a) > fabs(b)) {
+        r = a;
+        phi = PI / 4 * (b / a);
+    } else {
+        r = b;
+        phi = PI / 2 - PI / 4 * (a / b);
+    }
+    *x = r * cos(phi);
+    *y = r * sin(phi);
+}
+
+static double srgb_to_linear(double c)
+{
+    return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+static double linear_to_srgb(double c)
+{
+    c = c < 0 ? 0 : c > 1 ? 1 : c;
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1 / 2.4) - 0.055;
+}
+
+/* ---- materials ------------------------------------------------------------- */
+
+/* What a boundary of the model is made of, resolved for the path tracer. */
+typedef struct pt_surface {
+    const csg_material *m;
+    double rgb[3]; /* linear albedo (and emission colour) */
+    double alpha;
+    double sigma; /* Beer–Lambert coefficient per unit length, or 0 */
+    double ior;   /* > 1: a dielectric, else 0 */
+} pt_surface;
+
+/* The colour render.c gives boundary b of the model root (its material, or
+ * the scheme's face / back colour), then the optics that go with it. */
+static void surface_of(const pt_job *J, const iv_bound *b, pt_surface *s)
+{
+    const render_options *opt = J->opt;
+    const csg_material *m = csg_scene_material(J->scene, b->prim);
+    float c[4];
+    if (m->has_color) {
+        memcpy(c, m->rgba, sizeof c);
+    } else {
+        memcpy(c, b->flip ? opt->colors.back : opt->colors.face, 3 * sizeof(float));
+        c[3] = 1;
+    }
+    s->m = m;
+    for (int i = 0; i < 3; i++)
+        s->rgb[i] = srgb_to_linear(c[i]);
+    s->alpha = c[3] > 1 ? 1 : c[3];
+    if (opt->xray > 0 && s->alpha > opt->xray) s->alpha = opt->xray;
+    /* As render.c's absorption(): $rs_absorb wins; in absorption mode a
+     * transparent colour's alpha is the opacity of opt->absorb units. */
+    s->sigma = m->absorb > 0                                     ? m->absorb
+               : opt->absorb > 0 && s->alpha > 0 && s->alpha < 1 ? -log1p(-s->alpha) / opt->absorb
+                                                                 : 0;
+    s->ior = m->ior > 1 ? m->ior : opt->ior > 1 && s->alpha < 1 ? opt->ior : 0;
+}
+
+/* ---- tracing ------------------------------------------------------------------ */
+
+/* The nearest surface of the model along o + t·d, t in [tmin, tmax], into
+ * *hit.  Clip boundaries (a ray that starts inside a solid) and boundaries
+ * at infinite t are not surfaces; then the full list is walked for the
+ * first that is.  Returns 1, 0 for none, -1 out of memory. */
+static int nearest(const pt_job *J, pt_worker *w, const double o[3], const double d[3], double tmin,
+                   double tmax, iv_bound *hit)
+{
+    int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
+    if (rc <= 0) return rc;
+    if (hit->prim != IV_PRIM_NONE && isfinite(hit->t)) return 1;
+    iv_list l;
+    memset(&l, 0, sizeof l);
+    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0) return -1;
+    for (int i = 0; i < 2 * l.n; i++) {
+        const iv_bound *b = (i & 1) ? &l.v[i / 2].exit : &l.v[i / 2].enter;
+        if (b->prim != IV_PRIM_NONE && isfinite(b->t)) {
+            *hit = *b;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Whether boundary b is the point a shadow ray toward an emitter sample
+ * aims at: primitive `target`, at the sample's distance.  The sample lies
+ * on the primitive's exact surface, so the traced t agrees to rounding;
+ * 1e-6 relative plus a few offsets also keeps the near and far side of a
+ * sphere apart except at grazing angles, where the geometry term is ~0. */
+static int is_target(const pt_job *J, const iv_bound *b, int32_t target, double dist)
+{
+    return target >= 0 && b->prim == target && fabs(b->t - dist) <= 1e-6 * dist + 4 * J->eps;
+}
+
+/* The fraction of light that travels along o + t·d from t = dist back to
+ * o: the product of (1 - alpha) over the surfaces crossed and Beer–Lambert
+ * over absorbing spans; refracting solids and opaque surfaces stop it.
+ * With target >= 0 the ray must end on that primitive's surface at t ≈ dist
+ * (else 0), and nt gets the surface's normal there.  Returns -1 when out of
+ * memory. */
+static double shadow(const pt_job *J, pt_worker *w, const double o[3], const double d[3],
+                     double dist, int32_t target, double nt[3])
+{
+    double tlim = target >= 0 ? dist * (1 + 2e-6) + 8 * J->eps : dist;
+    iv_bound b;
+    int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
+    if (rc < 0) return -1;
+    if (rc == 0) return target >= 0 ? 0 : 1;
+    pt_surface s;
+    if (b.prim != IV_PRIM_NONE) {
+        if (is_target(J, &b, target, dist)) {
+            csg_scene_normal(J->scene, &b, o, d, nt);
+            return 1;
+        }
+        surface_of(J, &b, &s);
+        if (s.ior > 1 || (s.sigma == 0 && s.alpha >= OPAQUE)) return 0;
+    }
+    iv_list l;
+    memset(&l, 0, sizeof l);
+    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
+    double T = 1;
+    for (int i = 0; i < l.n && T > 0; i++) {
+        const iv_span *sp = &l.v[i];
+        /* a span's material: of its entry, or of its exit when clipped */
+        const iv_bound *mb = sp->enter.prim != IV_PRIM_NONE ? &sp->enter : &sp->exit;
+        if (mb->prim == IV_PRIM_NONE) continue;
+        surface_of(J, mb, &s);
+        if (s.sigma > 0 && s.ior <= 1) {
+            double t0 = sp->enter.t > 0 ? sp->enter.t : 0,
+                   t1 = sp->exit.t < tlim ? sp->exit.t : tlim;
+            if (t1 > t0) T *= exp(-s.sigma * (t1 - t0));
+        }
+        for (int e = 0; e < 2; e++) {
+            const iv_bound *bb = e ? &sp->exit : &sp->enter;
+            if (bb->prim == IV_PRIM_NONE) continue;
+            if (is_target(J, bb, target, dist)) {
+                csg_scene_normal(J->scene, bb, o, d, nt);
+                return T;
+            }
+            surface_of(J, bb, &s);
+            if (s.ior > 1) return 0;
+            if (s.sigma == 0) T *= 1 - s.alpha;
+        }
+    }
+    if (target >= 0) return 0;
+    return T < 1.0 / 4096 ? 0 : T;
+}
+
+/* ---- lights -------------------------------------------------------------------- */
+
+/* A point on emitter L, uniform over its object-space surface: world point
+ * y, and the area pdf there in world space, 1 / (object area × Jacobian),
+ * the Jacobian of an affine map on a surface element with object normal n
+ * being |det| · |inv^T n|. */
+static void sample_emitter(const pt_light *L, rng *g, double y[3], double *pdf)
+{
+    double p[3], n[3] = {0, 0, 0};
+    double u = rnd(g), v = rnd(g);
+    if (L->kind == PT_SPHERE) {
+        double z = 1 - 2 * u, s = sqrt(fmax(0, 1 - z * z)), phi = 2 * PI * v;
+        n[0] = s * cos(phi);
+        n[1] = s * sin(phi);
+        n[2] = z;
+        for (int i = 0; i < 3; i++)
+            p[i] = L->r * n[i];
+    } else {
+        double e[3], fa[3];
+        for (int i = 0; i < 3; i++)
+            e[i] = L->hi[i] - L->lo[i];
+        fa[0] = e[1] * e[2];
+        fa[1] = e[0] * e[2];
+        fa[2] = e[0] * e[1];
+        /* a face by its share of the area (each axis's pair: 2·fa), then a
+         * point on it from the reused remainder of u */
+        double x = u * (fa[0] + fa[1] + fa[2]);
+        int ax = x < fa[0] ? 0 : x < fa[0] + fa[1] ? 1 : 2;
+        x -= ax == 0 ? 0 : ax == 1 ? fa[0] : fa[0] + fa[1];
+        double side = rnd(g) < 0.5 ? 0 : 1;
+        int a1 = (ax + 1) % 3, a2 = (ax + 2) % 3;
+        p[ax] = side ? L->hi[ax] : L->lo[ax];
+        p[a1] = L->lo[a1] + e[a1] * (fa[ax] > 0 ? x / fa[ax] : 0.5);
+        p[a2] = L->lo[a2] + e[a2] * v;
+        n[ax] = side ? 1 : -1;
+    }
+    double nw[3];
+    for (int i = 0; i < 3; i++) {
+        y[i] =
+            L->off[i] + L->lin[3 * i] * p[0] + L->lin[3 * i + 1] * p[1] + L->lin[3 * i + 2] * p[2];
+        nw[i] = L->inv[i] * n[0] + L->inv[3 + i] * n[1] + L->inv[6 + i] * n[2];
+    }
+    *pdf = 1 / (L->area * L->det * sqrt(dot3(nw, nw)));
+}
+
+/* Irradiance / π at p (normal nf, toward the side the light must be on)
+ * from one sample of every light, per channel: a Lambertian surface of
+ * linear albedo ρ there sends ρ × this.  Returns -1 when out of memory. */
+static int direct(const pt_job *J, pt_worker *w, const double p[3], const double nf[3], double E[3])
+{
+    double o[3];
+    for (int i = 0; i < 3; i++) {
+        o[i] = p[i] + J->eps * nf[i];
+        E[i] = 0;
+    }
+    for (int li = 0; li < J->nlights; li++) {
+        const pt_light *L = &J->lights[li];
+        double q[3], dir[3], pdf = 1, nt[3];
+        if (L->kind == PT_KEY) {
+            double cs = dot3(nf, L->pos);
+            if (cs <= 0) continue;
+            double T = shadow(J, w, o, L->pos, INFINITY, -1, nt);
+            if (T < 0) return -1;
+            for (int i = 0; i < 3; i++)
+                E[i] += cs * T; /* irradiance π·cos θ, over π */
+            continue;
+        }
+        if (L->kind == PT_POINT) {
+            memcpy(q, L->pos, sizeof q);
+            if (L->radius > 0) {
+                double wv[3], u[3], v[3], dx, dy;
+                for (int i = 0; i < 3; i++)
+                    wv[i] = L->pos[i] - p[i];
+                normalize3(wv);
+                basis_of(wv, u, v);
+                square_to_disc(rnd(&w->g), rnd(&w->g), &dx, &dy);
+                for (int i = 0; i < 3; i++)
+                    q[i] += L->radius * (dx * u[i] + dy * v[i]);
+            }
+        } else {
+            sample_emitter(L, &w->g, q, &pdf);
+        }
+        for (int i = 0; i < 3; i++)
+            dir[i] = q[i] - o[i];
+        double dist = sqrt(dot3(dir, dir));
+        if (!(dist > 0)) continue;
+        for (int i = 0; i < 3; i++)
+            dir[i] /= dist;
+        double cs = dot3(nf, dir);
+        if (cs <= 0) continue;
+        int32_t target = L->kind == PT_POINT ? -1 : L->prim;
+        double T = shadow(J, w, o, dir, dist, target, nt);
+        if (T < 0) return -1;
+        if (T == 0) continue;
+        if (L->kind == PT_POINT) {
+            for (int i = 0; i < 3; i++)
+                E[i] += L->intensity * cs / (dist * dist) * T / PI;
+            continue;
+        }
+        /* the emitter's surface must face the point: the ray meets its front */
+        double cy = -dot3(nt, dir);
+        if (cy <= 0) continue;
+        iv_bound b = {0, L->prim, 0, 0};
+        pt_surface s;
+        surface_of(J, &b, &s);
+        double g = J->le[L->prim] * cs * cy / (dist * dist * pdf) * T / PI;
+        for (int i = 0; i < 3; i++)
+            E[i] += g * s.rgb[i];
+    }
+    return 0;
+}
+
+/* ---- paths ------------------------------------------------------------------------ */
+
+/* A direction about unit n with density cos θ / π (Malley: a uniform disc
+ * lifted onto the hemisphere). */
+static void cosine_dir(rng *g, const double n[3], double out[3])
+{
+    double u[3], v[3], x, y;
+    basis_of(n, u, v);
+    square_to_disc(rnd(g), rnd(g), &x, &y);
+    double z = sqrt(fmax(0, 1 - x * x - y * y));
+    for (int i = 0; i < 3; i++)
+        out[i] = x * u[i] + y * v[i] + z * n[i];
+    normalize3(out);
+}
+
+/* The radiance arriving at the camera along o + t·d, t in [tmin, tmax],
+ * from one random path, linear, into out.  Returns -1 when out of memory. */
+static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double tmin, double tmax,
+                double out[3])
+{
+    double beta[3] = {1, 1, 1};
+    int bounces = 0, specular = 1, passes = 0, caustic = 0;
+    for (int i = 0; i < 3; i++)
+        out[i] = 0;
+    for (;;) {
+        iv_bound b;
+        int rc = nearest(J, w, o, d, tmin, tmax, &b);
+        if (rc < 0) return -1;
+        if (rc == 0) {
+            for (int i = 0; i < 3; i++)
+                out[i] += beta[i] * J->bg[i] * (specular ? 1 : SKY);
+            return 0;
+        }
+        double n[3], p[3], nf[3];
+        csg_scene_normal(J->scene, &b, o, d, n);
+        for (int i = 0; i < 3; i++)
+            p[i] = o[i] + b.t * d[i];
+        int entering = dot3(n, d) < 0;
+        for (int i = 0; i < 3; i++)
+            nf[i] = entering ? n[i] : -n[i];
+        pt_surface s;
+        surface_of(J, &b, &s);
+
+        /* A ray that leaves an absorbing solid ran inside it from its origin. */
+        if (!entering && s.sigma > 0)
+            for (int i = 0; i < 3; i++)
+                beta[i] *= exp(-s.sigma * (b.t - tmin));
+        if (s.m->emit > 0 && entering && (specular || !J->sampled[b.prim])) {
+            double c[3], m = 0;
+            for (int i = 0; i < 3; i++) {
+                c[i] = beta[i] * J->le[b.prim] * s.rgb[i];
+                m = fmax(m, c[i]);
+            }
+            /* A caustic (a light seen by a diffuse vertex through mirrors or
+             * glass) is found by bounce rays alone, rarely and brightly; its
+             * samples are capped at CAUSTIC_MAX, biased but without the
+             * fireflies. */
+            double k = caustic && m > CAUSTIC_MAX ? CAUSTIC_MAX / m : 1;
+            for (int i = 0; i < 3; i++)
+                out[i] += k * c[i];
+        }
+
+        double u = rnd(&w->g), surface = s.alpha;
+        int pass = 0;
+        if (s.ior <= 1 && s.sigma > 0) {
+            /* A volume seen from outside shows with the opacity of the span
+             * it spans, as render.c composites it; otherwise the ray goes on
+             * from the span's exit. */
+            surface = 0;
+            if (entering) {
+                iv_list l;
+                memset(&l, 0, sizeof l);
+                if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
+                    return -1;
+                double len = INFINITY;
+                for (int i = 0; i < l.n; i++)
+                    if (l.v[i].enter.t == b.t) len = l.v[i].exit.t - b.t;
+                surface = isfinite(len) ? -expm1(-s.sigma * len) : 1;
+                if (u >= surface && isfinite(len)) {
+                    for (int i = 0; i < 3; i++)
+                        p[i] += len * d[i];
+                    entering = 0; /* leave from the exit, beyond it */
+                }
+            }
+        }
+        if (u >= surface) pass = 1;
+
+        if (pass && s.ior > 1) {
+            /* a smooth dielectric: reflect with Schlick's Fresnel, refract
+             * otherwise; total internal reflection always reflects */
+            if (++bounces >= J->max_depth) return 0;
+            double eta = entering ? 1 / s.ior : s.ior, ci = -dot3(nf, d);
+            double k = 1 - eta * eta * (1 - ci * ci), r0 = (1 - s.ior) / (1 + s.ior);
+            r0 *= r0;
+            double cosv = entering ? ci : sqrt(fmax(k, 0)); /* the cosine in the thinner medium */
+            double F = k < 0 ? 1 : r0 + (1 - r0) * pow(1 - cosv, 5);
+            double nd[3];
+            if (rnd(&w->g) < F) {
+                for (int i = 0; i < 3; i++)
+                    nd[i] = d[i] + 2 * ci * nf[i];
+            } else {
+                for (int i = 0; i < 3; i++)
+                    nd[i] = eta * d[i] + (eta * ci - sqrt(k)) * nf[i];
+            }
+            normalize3(nd);
+            double side = dot3(nd, nf) >= 0 ? 1 : -1;
+            for (int i = 0; i < 3; i++) {
+                o[i] = p[i] + side * J->eps * nf[i];
+                d[i] = nd[i];
+            }
+            caustic |= !specular;
+            specular = 1;
+            tmin = 0;
+            tmax = INFINITY;
+            continue;
+        }
+        if (pass) {
+            /* straight through, not a bounce */
+            if (++passes > MAX_PASS) return 0;
+            for (int i = 0; i < 3; i++)
+                o[i] = p[i] + J->eps * d[i];
+            tmin = 0;
+            tmax = INFINITY;
+            continue;
+        }
+
+        if (rnd(&w->g) < s.m->reflect) {
+            if (++bounces >= J->max_depth) return 0;
+            double dn = dot3(d, nf);
+            for (int i = 0; i < 3; i++) {
+                d[i] -= 2 * dn * nf[i];
+                o[i] = p[i] + J->eps * nf[i];
+            }
+            normalize3(d);
+            caustic |= !specular;
+            specular = 1;
+        } else {
+            double E[3];
+            if (direct(J, w, p, nf, E) != 0) return -1;
+            for (int i = 0; i < 3; i++)
+                out[i] += beta[i] * s.rgb[i] * E[i];
+            if (++bounces >= J->max_depth) return 0;
+            cosine_dir(&w->g, nf, d);
+            for (int i = 0; i < 3; i++) {
+                o[i] = p[i] + J->eps * nf[i];
+                beta[i] *= s.rgb[i]; /* f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) */
+            }
+            specular = 0;
+        }
+        tmin = 0;
+        tmax = INFINITY;
+        if (bounces >= RR_AFTER) {
+            /* Russian roulette: go on with the probability of the largest
+             * throughput (at most 0.95, so no path lives forever), and
+             * divide by it, which keeps the estimate unbiased. */
+            double q = fmax(beta[0], fmax(beta[1], beta[2]));
+            q = q > 0.95 ? 0.95 : q;
+            if (!(rnd(&w->g) < q)) return 0;
+            for (int i = 0; i < 3; i++)
+                beta[i] /= q;
+        }
+    }
+}
+
+/* ---- the image --------------------------------------------------------------------- */
+
+/* The camera's clip planes as a t range along d (render.c's ray_range). */
+static void ray_range(const render_camera *c, const double d[3], double *tmin, double *tmax)
+{
+    double df = dot3(d, c->forward);
+    if (c->clip_far > c->clip_near && df > 0) {
+        *tmin = c->clip_near / df;
+        *tmax = c->clip_far / df;
+    } else {
+        *tmin = c->ortho ? -INFINITY : 0;
+        *tmax = INFINITY;
+    }
+}
+
+static int render_tile(const pt_job *J, pt_worker *w, int tile)
+{
+    const render_options *opt = J->opt;
+    const render_camera *c = J->cam;
+    int x0 = (tile % J->tiles_x) * TILE, y0 = (tile / J->tiles_x) * TILE;
+    int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
+    int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
+    int ns = opt->path_trace;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            /* a distinct constant keeps these streams apart from render.c's */
+            w->g.s = mix64(((uint64_t)opt->seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^
+                           (uint32_t)x ^ 0x5054000000000000ULL);
+            double sum[3] = {0, 0, 0}, ox = rnd(&w->g), oy = rnd(&w->g);
+            for (int k = 0; k < ns; k++) {
+                /* pixel positions from the R2 sequence (Roberts), shifted per
+                 * pixel: well spread for any sample count */
+                double jx = fmod(ox + k * 0.75487766624669276, 1.0);
+                double jy = fmod(oy + k * 0.56984029099805327, 1.0);
+                double o[3], d[3], tmin, tmax, L[3];
+                render_camera_ray(c, opt->width, opt->height, x + jx, y + jy, o, d);
+                double df = dot3(d, c->forward);
+                if (opt->aperture > 0 && df > 0) {
+                    double f[3], lx, ly;
+                    for (int i = 0; i < 3; i++)
+                        f[i] = o[i] + d[i] * (J->focus / df);
+                    square_to_disc(rnd(&w->g), rnd(&w->g), &lx, &ly);
+                    for (int i = 0; i < 3; i++) {
+                        o[i] += opt->aperture / 2 * (lx * c->right[i] + ly * c->up[i]);
+                        d[i] = f[i] - o[i];
+                    }
+                    normalize3(d);
+                }
+                ray_range(c, d, &tmin, &tmax);
+                int rc = path(J, w, o, d, tmin, tmax, L);
+                iv_arena_reset(w->a);
+                if (rc != 0) return -1;
+                if (isfinite(L[0]) && isfinite(L[1]) && isfinite(L[2]))
+                    for (int i = 0; i < 3; i++)
+                        sum[i] += L[i];
+            }
+            float *px = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
+            for (int i = 0; i < 3; i++)
+                px[i] = (float)linear_to_srgb(sum[i] / ns);
+            px[3] = 1;
+        }
+    return 0;
+}
+
+static void *worker(void *arg)
+{
+    pt_job *J = arg;
+    pt_worker w = {.a = iv_arena_new(0)};
+    if (!w.a) atomic_store(&J->failed, 1);
+    while (w.a && !atomic_load(&J->failed)) {
+        int t = atomic_fetch_add(&J->next, 1);
+        if (t >= J->ntiles) break;
+        if (render_tile(J, &w, t) != 0) {
+            atomic_store(&J->failed, 1);
+            break;
+        }
+        atomic_fetch_add(&J->done, 1);
+        pthread_mutex_lock(&J->mu);
+        pthread_cond_signal(&J->cv);
+        pthread_mutex_unlock(&J->mu);
+    }
+    iv_arena_free(w.a);
+    pthread_mutex_lock(&J->mu);
+    J->exited++;
+    pthread_cond_signal(&J->cv);
+    pthread_mutex_unlock(&J->mu);
+    return NULL;
+}
+
+/* The lights, per-primitive emission and the scale of the scene, once. */
+static int setup(pt_job *J)
+{
+    const csg_scene *S = J->scene;
+    const render_options *opt = J->opt;
+    int np = csg_scene_prim_count(S);
+    J->le = calloc((size_t)np + 1, sizeof *J->le);
+    J->sampled = calloc((size_t)np + 1, 1);
+    J->lights = calloc((size_t)np + RENDER_MAX_LIGHTS + 1, sizeof *J->lights);
+    if (!J->le || !J->sampled || !J->lights) return -1;
+
+    /* Secondary rays leave a surface 1e-7 of the model's size along its
+     * normal, as render.c's do: far above the rounding of t, far below any
+     * feature. */
+    double lo[3], hi[3], size = 1, centre[3] = {0, 0, 0};
+    if (csg_scene_bounds(S, RENDER_ROOT_MODEL, lo, hi) == 0) {
+        double s2 = 0;
+        for (int i = 0; i < 3; i++) {
+            double e = isfinite(hi[i] - lo[i]) ? hi[i] - lo[i] : 0;
+            s2 += e * e;
+            centre[i] = isfinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0;
+        }
+        if (s2 > 0) size = sqrt(s2);
+        for (int i = 0; i < 3; i++)
+            size = fmax(size, fabs(centre[i]));
+    }
+    J->eps = 1e-7 * size;
+    const render_camera *c = J->cam;
+    if (opt->focus > 0) {
+        J->focus = opt->focus;
+    } else {
+        double v[3] = {centre[0] - c->eye[0], centre[1] - c->eye[1], centre[2] - c->eye[2]};
+        J->focus = fmax(dot3(v, c->forward), 1e-6 * size);
+    }
+
+    for (int li = 0; li < opt->nlights && li < RENDER_MAX_LIGHTS; li++) {
+        const render_light *R = &opt->lights[li];
+        pt_light *L = &J->lights[J->nlights++];
+        L->kind = PT_POINT;
+        memcpy(L->pos, R->pos, sizeof L->pos);
+        L->radius = R->radius > 0 ? R->radius : 0;
+        double v[3] = {R->pos[0] - centre[0], R->pos[1] - centre[1], R->pos[2] - centre[2]};
+        /* a light at the centre itself is taken at 1e-3 of the model's size */
+        double dc = fmax(sqrt(dot3(v, v)), 1e-3 * size);
+        L->intensity = PI * (R->intensity > 0 ? R->intensity : 1) * dc * dc;
+    }
+    int emitters = 0;
+    for (int p = 0; p < np; p++) {
+        const csg_material *m = csg_scene_material(S, p);
+        if (!(m->emit > 0)) continue;
+        emitters++;
+        double v[3] = {m->light[0] - centre[0], m->light[1] - centre[1], m->light[2] - centre[2]};
+        double R = m->light[3], dc = sqrt(dot3(v, v));
+        J->le[p] = R > 0 ? m->emit * fmax(dc, R) * fmax(dc, R) / (R * R) : m->emit;
+        const iv_shape *sh = csg_scene_prim_shape(S, p);
+        if (sh->kind != IV_SHAPE_SPHERE && sh->kind != IV_SHAPE_BOX) continue;
+        csg_affine xf, inv;
+        csg_scene_prim_transform(S, p, xf);
+        if (csg_affine_invert(xf, inv) != 0) continue;
+        pt_light *L = &J->lights[J->nlights];
+        L->kind = sh->kind == IV_SHAPE_SPHERE ? PT_SPHERE : PT_BOX;
+        L->prim = p;
+        for (int i = 0; i < 3; i++) {
+            L->off[i] = xf[4 * i + 3];
+            for (int j = 0; j < 3; j++) {
+                L->lin[3 * i + j] = xf[4 * i + j];
+                L->inv[3 * i + j] = inv[4 * i + j];
+            }
+        }
+        const double *a = L->lin;
+        L->det = fabs(a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                      a[2] * (a[3] * a[7] - a[4] * a[6]));
+        if (L->kind == PT_SPHERE) {
+            L->r = sh->u.sphere.r;
+            L->area = 4 * PI * L->r * L->r;
+        } else {
+            double e[3];
+            for (int i = 0; i < 3; i++) {
+                L->lo[i] = sh->u.box.lo[i];
+                L->hi[i] = sh->u.box.hi[i];
+                e[i] = L->hi[i] - L->lo[i];
+            }
+            L->area = 2 * (e[0] * e[1] + e[1] * e[2] + e[0] * e[2]);
+        }
+        if (!(L->area > 0) || !(L->det > 0) || !isfinite(L->area * L->det)) continue;
+        J->sampled[p] = 1;
+        J->nlights++;
+    }
+    if (opt->nlights == 0 && emitters == 0) {
+        /* the preview's key light, (-1,-1,1)/√3 in (right, forward, up) */
+        pt_light *L = &J->lights[J->nlights++];
+        L->kind = PT_KEY;
+        for (int i = 0; i < 3; i++)
+            L->pos[i] = (-c->right[i] - c->forward[i] + c->up[i]) / sqrt(3.0);
+    }
+    for (int i = 0; i < 3; i++)
+        J->bg[i] = srgb_to_linear(opt->colors.background[i]);
+    J->max_depth = opt->bounces > 0 ? opt->bounces : DEFAULT_DEPTH;
+    return 0;
+}
+
+int render_path_trace(const csg_scene *s, const render_camera *cam, const render_options *opt,
+                      float *rgba, char *err, size_t errlen)
+{
+    if (opt->path_trace < 1 || opt->nlights < 0 || opt->nlights > RENDER_MAX_LIGHTS ||
+        opt->bounces < 0 || !(opt->aperture >= 0) || !(opt->focus >= 0) || !(opt->absorb >= 0) ||
+        !(opt->xray >= 0) || opt->xray > 1) {
+        if (err && errlen)
+            snprintf(err, errlen,
+                     "render: bad path-tracing options (samples >= 1, at most 16 "
+                     "lights, no negative bounces, aperture, focus or absorption)");
+        return -1;
+    }
+    pt_job J;
+    memset(&J, 0, sizeof J);
+    J.scene = s;
+    J.cam = cam;
+    J.opt = opt;
+    J.rgba = rgba;
+    J.tiles_x = (opt->width + TILE - 1) / TILE;
+    J.ntiles = J.tiles_x * ((opt->height + TILE - 1) / TILE);
+    int rc = -1;
+    const char *msg = "render: out of memory while path tracing";
+    if (setup(&J) != 0) goto done;
+    atomic_init(&J.next, 0);
+    atomic_init(&J.done, 0);
+    atomic_init(&J.failed, 0);
+    if (pthread_mutex_init(&J.mu, NULL) != 0) {
+        msg = "render: cannot create a mutex";
+        goto done;
+    }
+    if (pthread_cond_init(&J.cv, NULL) != 0) {
+        pthread_mutex_destroy(&J.mu);
+        msg = "render: cannot create a condition variable";
+        goto done;
+    }
+    int nthreads = opt->threads;
+    if (nthreads <= 0) {
+        long n = sysconf(_SC_NPROCESSORS_ONLN);
+        nthreads = n > 0 ? (int)n : 1;
+    }
+    if (nthreads > MAX_THREADS) nthreads = MAX_THREADS;
+    if (nthreads > J.ntiles) nthreads = J.ntiles;
+    pthread_t tids[MAX_THREADS];
+    int started = 0;
+    for (int i = 0; i < nthreads; i++) {
+        if (pthread_create(&tids[started], NULL, worker, &J) != 0) break;
+        started++;
+    }
+    if (started == 0) {
+        worker(&J);
+    } else {
+        /* the calling thread reports progress while the workers draw */
+        int reported = -1;
+        pthread_mutex_lock(&J.mu);
+        while (J.exited < started) {
+            int d = atomic_load(&J.done);
+            if (d != reported && opt->progress) {
+                reported = d;
+                pthread_mutex_unlock(&J.mu);
+                opt->progress(opt->ud, (double)d / J.ntiles);
+                pthread_mutex_lock(&J.mu);
+                continue;
+            }
+            struct timespec ts;
+            clock_gettime(CLOCK_REALTIME, &ts);
+            ts.tv_nsec += 100 * 1000 * 1000;
+            if (ts.tv_nsec >= 1000000000L) {
+                ts.tv_sec++;
+                ts.tv_nsec -= 1000000000L;
+            }
+            pthread_cond_timedwait(&J.cv, &J.mu, &ts);
+        }
+        pthread_mutex_unlock(&J.mu);
+        for (int i = 0; i < started; i++)
+            pthread_join(tids[i], NULL);
+    }
+    pthread_cond_destroy(&J.cv);
+    pthread_mutex_destroy(&J.mu);
+    if (!atomic_load(&J.failed)) {
+        rc = 0;
+        if (opt->progress) opt->progress(opt->ud, 1.0);
+    }
+done:
+    free(J.le);
+    free(J.sampled);
+    free(J.lights);
+    if (rc != 0 && err && errlen) snprintf(err, errlen, "%s", msg);
+    return rc;
+}
