@@ -427,6 +427,32 @@ Test(light_mirror, rs_reflect_through_the_language)
     csg_scene_free(s);
 }
 
+/* Every kind of solid takes the optical $-variables: spheres, cylinders,
+ * 2D shapes under an extrusion (set on the extrusion call, inherited by the
+ * 2D children), polyhedra and hulls — each leaf's material says so. */
+Test(light_materials, every_primitive_takes_rs_variables)
+{
+    const char *src[] = {
+        "sphere(3, $rs_reflect = 0.5);",
+        "cylinder(h = 2, r = 1, $rs_reflect = 0.5);",
+        "cylinder(h = 2, r = 1, $fn = 6, $rs_reflect = 0.5);",
+        "linear_extrude(2, $rs_reflect = 0.5) square(3);",
+        "linear_extrude(2, $rs_reflect = 0.5) circle(3);",
+        "rotate_extrude($rs_reflect = 0.5) translate([4, 0]) circle(1);",
+        "polyhedron([[0,0,0],[1,0,0],[0,1,0],[0,0,1]], [[0,1,2],[0,3,1],[0,2,3],[1,3,2]], "
+        "$rs_reflect = 0.5);",
+        "hull($rs_reflect = 0.5) { cube(1); translate([3, 0, 0]) cube(1); }",
+        "square(2, $rs_reflect = 0.5);",
+    };
+    for (size_t i = 0; i < sizeof src / sizeof src[0]; i++) {
+        csg_scene *s = scene_of_source(src[i]);
+        cr_assert_gt(csg_scene_prim_count(s), 0, "%s", src[i]);
+        for (int p = 0; p < csg_scene_prim_count(s); p++)
+            cr_expect_float_eq(csg_scene_material(s, p)->reflect, 0.5f, 1e-6, "%s", src[i]);
+        csg_scene_free(s);
+    }
+}
+
 /* ---- absorption ---------------------------------------------------------------------- */
 
 /* A slab of thickness L seen from above: Beer–Lambert gives transmittance

@@ -236,8 +236,8 @@ static iv_region *circle_region(double r, int n)
     return g;
 }
 
-static scad_geom *m_square(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state)
+static scad_geom *square_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_argv *a, const scad_state *state)
 {
     (void)env;
     static const char *const known[] = {"size", "center", NULL};
@@ -260,8 +260,8 @@ static scad_geom *m_square(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     return region_leaf(ev, iv_region_new((const double(*)[2])P, ps, 1), state);
 }
 
-static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state)
+static scad_geom *circle_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_argv *a, const scad_state *state)
 {
     static const char *const known[] = {"r", "d", NULL};
     scad_check_arg_names(ev, a, st->loc, known);
@@ -269,7 +269,8 @@ static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     radius(ev, a, st->loc, "d", "r", 0, &r);
     if (!(r > 0) || !isfinite(r)) return NULL;
     scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
-    if (scad_facets_shown(ev, f, r)) return region_leaf(ev, circle_region(r, scad_fragments(r, f)), state);
+    if (scad_facets_shown(ev, f, r))
+        return region_leaf(ev, circle_region(r, scad_fragments(r, f)), state);
     iv_shape s;
     memset(&s, 0, sizeof s);
     s.kind = IV_SHAPE_PRISM;
@@ -334,8 +335,8 @@ static int index_lists(scad_value v, int npts, int **idx, int **start, int *coun
     return 0;
 }
 
-static scad_geom *m_polygon(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                            const scad_state *state)
+static scad_geom *polygon_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                const scad_argv *a, const scad_state *state)
 {
     (void)env;
     static const char *const known[] = {"points", "paths", "convexity", NULL};
@@ -372,8 +373,8 @@ static scad_geom *m_polygon(scad_eval *ev, scad_env *env, const scad_stmt *st, c
 
 /* ---- polyhedron ----------------------------------------------------------------- */
 
-static scad_geom *m_polyhedron(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                               const scad_argv *a, const scad_state *state)
+static scad_geom *polyhedron_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                   const scad_argv *a, const scad_state *state)
 {
     (void)env;
     static const char *const known[] = {"points", "faces", "triangles", "convexity", NULL};
@@ -903,8 +904,9 @@ typedef struct revolve_ctx {
  * x multiplied by sign; NULL when out of memory. */
 static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
 {
-    int n = scad_facets_shown(c->ev, c->f, g->shape.u.prism.r) ? scad_fragments(g->shape.u.prism.r, c->f)
-                                                      : c->disc_fragments_smooth;
+    int n = scad_facets_shown(c->ev, c->f, g->shape.u.prism.r)
+                ? scad_fragments(g->shape.u.prism.r, c->f)
+                : c->disc_fragments_smooth;
     return shadow_region(c->local_from_world, g, n, sign);
 }
 
@@ -991,8 +993,9 @@ static scad_geom *m_rotate_extrude(scad_eval *ev, scad_env *env, const scad_stmt
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
-    revolve_ctx c = {
-        ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, scad_facets_lookup(ev, env, a, st->loc)};
+    revolve_ctx c = {ev,       inv,       NULL,
+                     INFINITY, -INFINITY, fabs(angle),
+                     1,        256,       scad_facets_lookup(ev, env, a, st->loc)};
     revolve_scan(&c, kids, &c.xmin, &c.xmax);
     if (!(c.xmin <= c.xmax)) return NULL;
     if (c.xmin < 0 && c.xmax > 0) {
@@ -1160,8 +1163,8 @@ static int hull2d(double (*P)[3], int n, double (*H)[2])
     return k > 1 ? k - 1 : k;
 }
 
-static scad_geom *m_hull(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                         const scad_state *state)
+static scad_geom *hull_plain(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                             const scad_state *state)
 {
     static const char *const none[] = {NULL};
     scad_check_arg_names(ev, a, st->loc, none);
@@ -1296,6 +1299,47 @@ static scad_geom *m_resize(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     csg_affine_mul(state->xf, s, m);
     place_tree(kids, m);
     return kids;
+}
+
+/* ---- $rs_ materials ----------------------------------------------------------- */
+
+/* The optical $-variables (material.c) on the leaf a primitive module made;
+ * sphere and cylinder apply theirs as they build (optics_leaf), extrusions
+ * keep their children's. */
+static scad_geom *with_optics(scad_eval *ev, scad_env *env, const scad_argv *a, scad_geom *g)
+{
+    if (g && g->is_leaf) scad_material_apply(ev, env, a, &g->shape, g->xf, &g->mat);
+    return g;
+}
+
+static scad_geom *m_square(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
+{
+    return with_optics(ev, env, a, square_plain(ev, env, st, a, state));
+}
+
+static scad_geom *m_circle(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                           const scad_state *state)
+{
+    return with_optics(ev, env, a, circle_plain(ev, env, st, a, state));
+}
+
+static scad_geom *m_polygon(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                            const scad_state *state)
+{
+    return with_optics(ev, env, a, polygon_plain(ev, env, st, a, state));
+}
+
+static scad_geom *m_polyhedron(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_argv *a, const scad_state *state)
+{
+    return with_optics(ev, env, a, polyhedron_plain(ev, env, st, a, state));
+}
+
+static scad_geom *m_hull(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                         const scad_state *state)
+{
+    return with_optics(ev, env, a, hull_plain(ev, env, st, a, state));
 }
 
 /* ---- the table -------------------------------------------------------------------- */
