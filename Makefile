@@ -47,7 +47,8 @@ LDLIBS   = $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lOpenMeshCore -lO
 
 DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenmesh-dev \
 	libcriterion-dev pkg-config g++ make \
-	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation
+	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
+	clang libclang-rt-dev
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c)
 IO_SRC   = $(wildcard src/io/*.cpp)
@@ -116,6 +117,11 @@ cli: all
 compare: all
 	tests/compare_openscad.sh $(BUILD)
 
+# Hostile inputs and OpenSCAD's examples: no signal, no hang, no sanitizer report,
+# no output left behind by a failure (tests/hostile.sh).
+hostile: all
+	tests/hostile.sh $(BUILD)
+
 conformance: all
 	tests/conformance.sh $(BUILD)
 
@@ -129,6 +135,7 @@ test: deps
 	$(MAKE) conformance
 	$(MAKE) meshcheck
 	$(MAKE) compare
+	$(MAKE) hostile
 
 asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" all
@@ -137,6 +144,7 @@ asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" conformance
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" meshcheck
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" compare
+	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" hostile
 
 # Benchmarks against povray, openscad and manifold-3d (not a test; bench/run.py).
 bench: deps
@@ -145,10 +153,50 @@ bench: deps
 		echo "bench: npm install failed; meshing runs without manifold-3d"
 	python3 bench/run.py $(BUILD)
 
+# libFuzzer harnesses (tests/fuzz/): the library built with clang, ASan, UBSan
+# and fuzzer coverage into build-fuzz/ (no image I/O: the harnesses write no
+# files); `make fuzz SECONDS=N` runs each harness
+# for N seconds (default 60), one after the other, seeded from tests/ and
+# models/, and writes what it finds to build-fuzz/findings/.
+SECONDS ?= 60
+FUZZ      = build-fuzz
+FUZZ_SAN  = -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_NAMES = parse eval pipeline
+FUZZ_BINS = $(FUZZ_NAMES:%=$(FUZZ)/fuzz_%)
+FUZZ_C    = $(filter-out src/io/%,$(LIB_SRC))
+FUZZ_OBJ  = $(FUZZ_C:%.c=$(FUZZ)/obj/%.o) $(IO_SRC:%.cpp=$(FUZZ)/obj/%.o)
+.PRECIOUS: $(FUZZ)/obj/%.o
+
+$(FUZZ)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	clang -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
+
+$(FUZZ)/obj/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	clang++ -std=c++17 -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link -MMD -MP \
+		$(shell pkg-config --cflags OpenImageIO polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) -c $< -o $@
+
+$(FUZZ)/fuzz_%: $(FUZZ)/obj/tests/fuzz/fuzz_%.o $(FUZZ_OBJ)
+	clang++ $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
+
+fuzz: $(FUZZ_BINS)
+	@mkdir -p $(FUZZ)/findings
+	@for f in $(FUZZ_NAMES); do \
+		mkdir -p $(FUZZ)/corpus/$$f; \
+		echo "fuzz_$$f: $(SECONDS) s"; \
+		$(FUZZ)/fuzz_$$f -max_total_time=$(SECONDS) -timeout=20 -rss_limit_mb=2560 -max_len=4096 \
+			-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+			-dict=tests/fuzz/scad.dict -artifact_prefix=$(FUZZ)/findings/$$f- \
+			$(FUZZ)/corpus/$$f tests/fuzz/corpus tests/hostile tests/lang tests/models models \
+			> $(FUZZ)/fuzz_$$f.log 2>&1; \
+		tail -n 2 $(FUZZ)/fuzz_$$f.log; \
+	done
+	@if ls $(FUZZ)/findings | grep -q .; then echo "findings:"; ls $(FUZZ)/findings; exit 1; fi
+
 format:
 	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(IO_SRC) src/*/*.h
 
 clean:
-	rm -rf build build-asan out
+	rm -rf build build-asan build-fuzz out
 
--include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+-include $(shell find $(BUILD) $(if $(filter fuzz,$(MAKECMDGOALS)),$(FUZZ)) -name '*.d' 2>/dev/null)

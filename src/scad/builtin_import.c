@@ -24,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* The file name as OpenSCAD resolves it: relative to the folder of the
  * calling file unless absolute.  Into out (freed by the caller). */
@@ -49,9 +50,12 @@ static void extension(const char *path, char *ext, size_t n)
     ext[i] = 0;
 }
 
-/* 1 when path can be opened for reading. */
+/* 1 when path is a regular file that can be opened for reading (a device
+ * such as /dev/zero would never end). */
 static int readable(const char *path)
 {
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
     FILE *fp = fopen(path, "rb");
     if (!fp) return 0;
     fclose(fp);
@@ -424,7 +428,7 @@ scad_geom *scad_module_surface(scad_eval *ev, scad_env *env, const scad_stmt *st
     /* PNG by its signature, as OpenSCAD tells them apart; else text */
     static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     unsigned char head[8] = {0};
-    FILE *fp = fopen(p, "rb");
+    FILE *fp = readable(p) ? fopen(p, "rb") : NULL;
     if (!fp) {
         scad_diag_warning(ev->d, st->loc, "The file '%s' couldn't be opened.", p);
         scad_buf_free(&path);

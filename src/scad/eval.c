@@ -77,9 +77,10 @@ static void pop_frame(scad_eval *ev, int pushed)
     if (pushed == 0) ev->nframes--;
 }
 
-/* One step of work (a user call, or a value of a loop or list being built):
- * 0 to go on; past ev->max_steps, an error and -1.  This bounds the time an
- * evaluation can take (nested loops, exponential recursion). */
+/* One step of work (a call, a module instantiation, or a value of a loop or
+ * list being built): 0 to go on; past ev->max_steps, an error and -1.  This
+ * bounds the time an evaluation can take (nested loops, exponential
+ * recursion). */
 static int count_step(scad_eval *ev, scad_loc loc)
 {
     if (++ev->steps <= ev->max_steps) return 0;
@@ -789,13 +790,17 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
                                      const scad_funcdef *def)
 {
     scad_argv argv;
+    /* the defaults and arguments count as one level deeper too: a default
+     * that calls the function (f(x = f())) never reaches its body */
+    if (enter_call(ev, call->loc, "function", name)) return scad_undef();
     scad_env *fe = env_new(ev, def_env, env, NULL);
-    if (!fe) return scad_undef();
-    scad_bind_defaults(ev, fe, def_env, params);
-    if (eval_args_ordered(ev, env, &call->args, &argv, 1, params, call->loc)) {
+    if (fe) scad_bind_defaults(ev, fe, def_env, params);
+    if (!fe || eval_args_ordered(ev, env, &call->args, &argv, 1, params, call->loc)) {
         env_free(fe);
+        leave_call(ev);
         return scad_undef();
     }
+    leave_call(ev);
     if (enter_call(ev, call->loc, "function", name)) {
         argv_free(&argv);
         env_free(fe);
@@ -1724,7 +1729,7 @@ static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_st
 static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state)
 {
-    if (st->disable || ev->aborted) return NULL;
+    if (st->disable || ev->aborted || count_step(ev, st->loc)) return NULL;
     int pushed = push_frame(ev, st->name, st->loc);
     scad_geom *g = instantiate_framed(ev, env, st, state);
     pop_frame(ev, pushed);

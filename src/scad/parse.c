@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "ast.h"
 
@@ -808,11 +809,14 @@ static char *join_path(scad_arena *a, const char *dir, size_t dl, const char *na
     return p;
 }
 
+/* 1 when path is a regular file that reads: a folder opens on Linux but does
+ * not read, and a device (/dev/zero, /dev/stdin) may never end. */
 static int readable(const char *path)
 {
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
     FILE *f = fopen(path, "rb");
     if (!f) return 0;
-    /* a folder opens on Linux but does not read */
     char c;
     size_t got = fread(&c, 1, 1, f);
     int ok = !ferror(f);

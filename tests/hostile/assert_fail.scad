@@ -1,0 +1,2 @@
+cube();
+assert(false, "this model asserts");

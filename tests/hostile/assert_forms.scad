@@ -1,0 +1,3 @@
+assert();
+assert(1 / 0);
+assert(0 / 0, [1, 2]);

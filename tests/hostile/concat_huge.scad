@@ -1,0 +1,2 @@
+x = [for (i = [0:999999]) i];
+echo(len(concat(x, x, x, x, x, x, x, x)));

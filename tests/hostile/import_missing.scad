@@ -1,0 +1,7 @@
+import("nope.stl");
+import("nope.off");
+import("");
+import();
+surface("nope.dat");
+surface("nope.png");
+surface();

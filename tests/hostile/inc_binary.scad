@@ -1,0 +1,2 @@
+include <gen_garbage_1.scad>
+cube();

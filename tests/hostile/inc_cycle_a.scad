@@ -1,0 +1,2 @@
+include <inc_cycle_b.scad>
+cube();

@@ -1,0 +1,2 @@
+include <inc_cycle_a.scad>
+sphere();

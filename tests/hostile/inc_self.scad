@@ -1,0 +1,2 @@
+include <inc_self.scad>
+cube();

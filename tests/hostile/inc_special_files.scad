@@ -1,0 +1,6 @@
+include <.>
+include </>
+include </dev/null>
+use </dev/null>
+use <.>
+cube();

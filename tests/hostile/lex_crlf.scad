@@ -1,0 +1,2 @@
+cube();
+sphere(2);echo("ab");

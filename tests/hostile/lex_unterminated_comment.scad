@@ -1,0 +1,3 @@
+cube();
+/* this comment never ends
+sphere();

@@ -1,0 +1,2 @@
+cube();
+echo("abc

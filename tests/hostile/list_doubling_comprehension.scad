@@ -1,0 +1,2 @@
+function d(l, n) = n == 0 ? l : d([each l, each l], n - 1);
+echo(len(d([1], 40)));

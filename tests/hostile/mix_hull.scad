@@ -1,0 +1,1 @@
+hull() { cube(); translate([3, 0, 0]) circle(); }

@@ -1,0 +1,1 @@
+intersection() { circle(3); sphere(2); }

@@ -1,0 +1,2 @@
+minkowski() { cube(); circle(); }
+minkowski() { square(); sphere(); }

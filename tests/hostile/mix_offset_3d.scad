@@ -1,0 +1,2 @@
+offset(1) cube();
+offset(delta = 1) sphere();

@@ -1,0 +1,3 @@
+projection() square();
+projection(cut = true) circle();
+projection() projection() cube();

@@ -1,0 +1,1 @@
+union() { cube(); square(); }

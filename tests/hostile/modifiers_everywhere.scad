@@ -1,0 +1,3 @@
+#difference() { #cube(); %sphere(); !cylinder(); }
+%#%#%#sphere();
+!!difference() { cube(); }

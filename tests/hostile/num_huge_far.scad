@@ -1,0 +1,2 @@
+translate([1e20, 0, 0]) cube();
+cube();

@@ -1,0 +1,2 @@
+translate([0 / 0, 0, 0]) cube();
+cube(2);

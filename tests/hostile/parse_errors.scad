@@ -1,0 +1,11 @@
+cube(;
+sphere(1;
+module;
+function f(;
+a = ;
+if
+for () ;
+let () ;
+}}}}
+]]]]
+))))

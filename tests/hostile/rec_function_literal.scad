@@ -1,0 +1,2 @@
+f = function(g) g(g);
+echo(f(f));

@@ -1,0 +1,2 @@
+function f(x) = let(y = f(x)) y;
+echo(f(1));

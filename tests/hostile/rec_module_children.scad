@@ -1,0 +1,2 @@
+module m() { m() children(); }
+m() cube();

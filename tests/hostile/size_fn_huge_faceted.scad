@@ -1,0 +1,1 @@
+hull() sphere(1, $fn = 1e9);

@@ -1,0 +1,10 @@
+cube([1]);
+cube([1, 2]);
+cube("abc");
+cube([[1]]);
+cube(undef);
+cube(true);
+sphere([1, 2]);
+cylinder(h = "x", r = [1]);
+square([1, 2, 3]);
+circle("r");

@@ -1,0 +1,3 @@
+use <use_cycle_b.scad>
+module a() b();
+a();

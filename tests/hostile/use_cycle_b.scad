@@ -1,0 +1,3 @@
+use <use_cycle_a.scad>
+module b() a();
+b();

@@ -1,0 +1,2 @@
+use </dev/zero>
+cube();

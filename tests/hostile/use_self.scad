@@ -1,0 +1,3 @@
+use <use_self.scad>
+function f() = f();
+echo(f());
