@@ -1,23 +1,23 @@
 /*
  * image_loader.c — io.h's image functions, loading the OpenImageIO adapter
- * (image.cpp) only when an image is read or written, and in the background.
+ * (image.cpp) only when an image is read or written.
  *
  * OpenImageIO 2.4 as Debian builds it needs about 260 shared libraries
  * (OpenCV, FFmpeg, DCMTK, OpenVDB, …), and relocating them costs the dynamic
  * loader about 0.3 s of CPU — more than most renders take.  So rayscad does
  * not link it: the adapter is a shared object of its own, embedded in the
  * binary at build time (the .incbin below, RAYSCAD_IMAGE_SO naming the file),
- * copied into a memfd and dlopened from there, so the binary stays one
- * self-contained file.  Meshes, --measure, .echo, .csg and .pov never load
- * it.  An image output announces itself early, through
- * io_image_format_supported, which starts the load on a thread of its own so
- * that it runs while the model is evaluated and rendered; io_image_write then
- * waits for it.
+ * copied into a memfd and dlopened from there on first use, so the binary
+ * stays one self-contained file.  Meshes, --measure, .echo, .csg and .pov
+ * never load it.
  *
- * Invariant: `state` only grows (IDLE → LOADING → DONE) under `mu`; once
- * DONE, `fn` and `load_err` never change again, so they are read without
- * the lock.  The loading thread is joined before exit (an atexit handler),
- * so the process never tears down libraries under a dlopen in progress.
+ * Loading in the background while the model renders was measured and does
+ * not pay: the render threads then run 5–8× slower (the loader's hundreds of
+ * mmap and mprotect calls stall their page faults), and the whole process
+ * takes as long as loading at the end.
+ *
+ * Invariant: the load runs once (pthread_once); afterwards `fn` and
+ * `load_err` never change, so every thread reads them freely.
  */
 #define _GNU_SOURCE /* memfd_create */
 #include "io.h"
@@ -46,13 +46,7 @@ typedef int (*write_fn)(const char *, int, int, int, const float *, char *, size
 typedef int (*read_fn)(const char *, int *, int *, int *, float **, char *, size_t);
 typedef int (*supported_fn)(const char *);
 
-enum { IDLE, LOADING, DONE };
-
-static pthread_mutex_t mu = PTHREAD_MUTEX_INITIALIZER;
-static pthread_cond_t cv = PTHREAD_COND_INITIALIZER;
-static int state = IDLE;
-static int threaded; /* a loading thread was started (and is joined at exit) */
-static pthread_t loader;
+static pthread_once_t once = PTHREAD_ONCE_INIT;
 static struct {
     write_fn write;
     read_fn read;
@@ -110,64 +104,11 @@ static void load(void)
 #endif
 }
 
-static void finish(void)
-{
-    pthread_mutex_lock(&mu);
-    state = DONE;
-    pthread_cond_broadcast(&cv);
-    pthread_mutex_unlock(&mu);
-}
-
-static void *load_thread(void *arg)
-{
-    (void)arg;
-    load();
-    finish();
-    return NULL;
-}
-
-/* At exit: let a load in progress finish before libraries are torn down. */
-static void join_loader(void)
-{
-    pthread_mutex_lock(&mu);
-    int t = threaded;
-    threaded = 0;
-    pthread_mutex_unlock(&mu);
-    if (t) pthread_join(loader, NULL);
-}
-
-/* Start loading on a thread of its own, unless it has started already.  The
- * exit handler goes first, so no thread runs without one; a failed atexit
- * or thread leaves state IDLE, and the first use loads instead. */
-static void start(void)
-{
-    static int registered;
-    pthread_mutex_lock(&mu);
-    if (state == IDLE && (registered || atexit(join_loader) == 0)) {
-        registered = 1;
-        if (pthread_create(&loader, NULL, load_thread, NULL) == 0) {
-            state = LOADING;
-            threaded = 1;
-        }
-    }
-    pthread_mutex_unlock(&mu);
-}
-
-/* Wait until the adapter is loaded (loading it here when nobody started
- * to).  Returns 0, or -1 with the reason in err. */
+/* Load the adapter unless done already.  Returns 0, or -1 with the reason
+ * in err. */
 static int ready(char *err, size_t errlen)
 {
-    pthread_mutex_lock(&mu);
-    if (state == IDLE) {
-        state = LOADING;
-        pthread_mutex_unlock(&mu);
-        load();
-        finish();
-        pthread_mutex_lock(&mu);
-    }
-    while (state != DONE)
-        pthread_cond_wait(&cv, &mu);
-    pthread_mutex_unlock(&mu);
+    pthread_once(&once, load);
     if (load_err[0]) {
         if (err && errlen) snprintf(err, errlen, "%s", load_err);
         return -1;
@@ -194,18 +135,16 @@ int io_image_read(const char *path, int *width, int *height, int *channels, floa
 
 int io_image_format_supported(const char *path)
 {
-    /* The formats every OpenImageIO build writes (tests/test_io.c writes
-     * each): answered at once, so that the load overlaps the render.  Any
+    /* OpenImageIO 2.x cannot be built without PNG, JPEG, TIFF and OpenEXR
+     * (tests/test_io.c writes each), so these are answered without loading
+     * it: a model that fails to evaluate then exits without the load.  Any
      * other extension asks OpenImageIO itself. */
     static const char *const common[] = {"png", "jpg", "jpeg", "tif", "tiff", "exr"};
     const char *slash = path ? strrchr(path, '/') : NULL;
     const char *dot = path ? strrchr(path, '.') : NULL;
     if (!dot || (slash && dot < slash) || !dot[1]) return 0;
     for (size_t i = 0; i < sizeof common / sizeof *common; i++) {
-        if (strcasecmp(dot + 1, common[i]) == 0) {
-            start();
-            return 1;
-        }
+        if (strcasecmp(dot + 1, common[i]) == 0) return 1;
     }
     if (ready(NULL, 0) != 0) return 0;
     return fn.supported(path);

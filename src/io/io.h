@@ -30,9 +30,9 @@ int io_image_read(const char *path, int *width, int *height, int *channels, floa
                   char *err, size_t errlen);
 
 /* 1 when the extension of path names an image format OpenImageIO can
- * write, else 0.  OpenImageIO is loaded on first use (image_loader.c): for
- * png, jpg, jpeg, tif, tiff and exr this answers at once and starts loading
- * it in the background, so that a later io_image_write finds it ready. */
+ * write, else 0.  OpenImageIO is loaded on the first image read or write
+ * (image_loader.c); png, jpg, jpeg, tif, tiff and exr are answered without
+ * loading it. */
 int io_image_format_supported(const char *path);
 
 /* ---- meshes (OpenMesh; src/io/mesh.cpp) --------------------------------- */
