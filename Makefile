@@ -41,7 +41,9 @@ CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) -MMD -M
 CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) -MMD -MP \
 	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
 	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null)
-LDLIBS   = $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lOpenMeshCore -lOpenMeshTools \
+# OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
+OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
+LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
 	-lpthread -lm
 
@@ -50,8 +52,9 @@ DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenme
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
 	clang libclang-rt-dev
 
-LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c)
-IO_SRC   = $(wildcard src/io/*.cpp)
+LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c \
+	src/io/*.c)
+IO_SRC   = $(filter-out src/io/image.cpp,$(wildcard src/io/*.cpp))
 CLI_SRC  = $(wildcard src/cli/*.c)
 TEST_SRC = $(wildcard tests/test_*.c)
 TOOL_SRC = $(wildcard tests/tools/*.c)
@@ -75,6 +78,22 @@ $(BUILD)/obj/%.o: %.c
 $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) -c $< -o $@
+
+# The OpenImageIO adapter: image.cpp and the temp-file helpers as a shared
+# object, embedded in the binary and dlopened only when an image is read or
+# written (src/io/image_loader.c says why).
+IMAGE_SO = $(BUILD)/rayscad-image.so
+
+$(BUILD)/pic/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -fPIC -c $< -o $@
+
+$(IMAGE_SO): $(BUILD)/pic/src/io/image.o $(BUILD)/pic/src/io/temp_file.o
+	$(CXX) $(SANFLAGS) -shared -Wl,--as-needed -o $@ $^ $(OIIO_LIBS)
+
+$(BUILD)/obj/src/io/image_loader.o: src/io/image_loader.c $(IMAGE_SO)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -DRAYSCAD_IMAGE_SO='"$(abspath $(IMAGE_SO))"' -c $< -o $@
 
 $(BUILD)/librayscad.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -194,7 +213,7 @@ fuzz: $(FUZZ_BINS)
 	@if ls $(FUZZ)/findings | grep -q .; then echo "findings:"; ls $(FUZZ)/findings; exit 1; fi
 
 format:
-	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(IO_SRC) src/*/*.h
+	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(wildcard src/io/*.cpp) src/*/*.h
 
 clean:
 	rm -rf build build-asan build-fuzz out
