@@ -210,5 +210,22 @@ for m in nested_booleans colors_modifiers geo_linear_extrude geo_polyhedron; do
     check "openscad reads our $m.csg back unchanged" cmp -s "again_$m.csg" "ref_$m.csg"
 done
 
+# Evaluation limits from the command line: each a named error at file:line:col.
+printf 'function f(n) = n == 0 ? 0 : 1 + f(n - 1);\necho(f(50));\n' >deep.scad
+run deep.scad -o deep.echo --max-recursion 20
+check "--max-recursion is a named error" sh -c "test $rc -eq 1 && grep -q 'deep.scad:1:.*recursion deeper than 20 calls' err.txt"
+run deep.scad -o deep.echo
+check "within the default recursion limit" test "$rc" -eq 0
+printf 'x = [for (i = [0:999]) for (j = [0:999]) i + j];\necho(len(x));\n' >steps.scad
+run steps.scad -o steps.echo --max-steps 5000
+check "--max-steps is a named error" sh -c "test $rc -eq 1 && grep -q 'steps.scad:1:.*more than 5000 steps' err.txt"
+run steps.scad -o steps.echo --max-list 100
+check "--max-list is a named error" sh -c "test $rc -eq 1 && grep -q 'list longer than 100 elements' err.txt"
+printf 'echo(len(str("abc", "defgh")));\n' >str.scad
+run str.scad -o str.echo --max-string 4
+check "--max-string is a named error" sh -c "test $rc -eq 1 && grep -q 'string longer than 4 bytes' err.txt"
+run str.scad -o str.echo --max-steps 0
+check "a limit of 0 is a usage error" test "$rc" -eq 2
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

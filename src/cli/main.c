@@ -87,6 +87,11 @@ static int write_image(const cli_options *o, csg_scene *scene)
     }
     render_camera cam;
     if (render_camera_resolve(&o->view, lo, hi, have_bounds, o->width, o->height, &cam) != 0) {
+        if (o->view.kind == RENDER_CAMERA_DEFAULT) { /* the file's $vp* made it */
+            fprintf(stderr, "rayscad: error: the file's $vpr/$vpt/$vpd/$vpf give no usable "
+                            "camera (a distance that is zero, negative or not finite)\n");
+            return EXIT_MODEL;
+        }
         fprintf(stderr, "rayscad: error: the camera's eye and centre coincide\n");
         return EXIT_USAGE;
     }
@@ -209,6 +214,10 @@ int main(int argc, char **argv)
         .defines = o.defines,
         .define_count = o.define_count,
         .facets = o.facets,
+        .max_recursion = o.max_recursion,
+        .max_steps = o.max_steps,
+        .max_list = o.max_list,
+        .max_string = o.max_string,
         .services = cli_services(),
         .message = on_message,
         .ud = &msgs,

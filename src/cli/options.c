@@ -37,6 +37,10 @@ const char cli_usage[] =
     "  --threads N             worker threads (default: all cores)\n"
     "  --facets=MODE           round primitives: auto (default; smooth unless\n"
     "                          $fn <= 16), smooth (exact), openscad (its facets)\n"
+    "  --max-recursion N       nested calls before an error (default 10000)\n"
+    "  --max-steps N           calls and loop values before an error (default 1e7)\n"
+    "  --max-list N            elements of one list (default 2^26)\n"
+    "  --max-string N          bytes of one string (default 2^28)\n"
     "\n"
     "Light model (opt-in; without these and $rs_ variables the image looks like\n"
     "OpenSCAD's preview):\n"
@@ -263,7 +267,9 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
 
     static const char *const valued[] = {"-o",         "-D",        "--camera",  "--imgsize",
                                          "--projection", "--colorscheme", "--samples", "--threads",
-                                         "--facets", "--mesh-size", "--decimate"};
+                                         "--facets", "--mesh-size", "--decimate",
+                                         "--max-recursion", "--max-steps", "--max-list",
+                                         "--max-string"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = NULL;
@@ -380,6 +386,19 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 snprintf(err, errlen, "--samples expects a whole number in 1..64, got '%s'", val);
                 return -1;
             }
+        } else if (!strncmp(flag, "--max-", 6)) {
+            /* evaluation limits: whole numbers from 1 up to what the field holds */
+            int steps = !strcmp(flag, "--max-steps");
+            double x;
+            if (parse_double(val, &x) != 0 || !(x >= 1) || x != floor(x) ||
+                x > (steps ? 1e15 : 2147483647.0)) {
+                snprintf(err, errlen, "%s expects a whole number >= 1, got '%s'", flag, val);
+                return -1;
+            }
+            if (steps) o->max_steps = (long)x;
+            else if (!strcmp(flag, "--max-recursion")) o->max_recursion = (int)x;
+            else if (!strcmp(flag, "--max-list")) o->max_list = (int)x;
+            else o->max_string = (int)x;
         } else if (strcmp(flag, "--threads") == 0) {
             if (parse_int(val, 0, 1024, &o->threads) != 0) {
                 snprintf(err, errlen, "--threads expects a whole number in 0..1024, got '%s'",

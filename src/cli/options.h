@@ -21,6 +21,10 @@ typedef struct cli_options {
     int threads;
     int help, version;
     int facets; /* a scad_facets: --facets=auto|smooth|openscad */
+    /* Evaluation limits (0: the library's default): --max-recursion,
+     * --max-steps, --max-list, --max-string. */
+    int max_recursion, max_list, max_string;
+    long max_steps;
     /* The opt-in light model (--shadows, --light, --bounces, --refract,
      * --aperture, --focus, --xray, --absorb, --light-samples, --seed): only
      * the fields of render_options below `ud` are set. */

@@ -10,6 +10,7 @@
  * with a named error well before that stack is used up.
  */
 #include <errno.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -131,11 +132,12 @@ static void set_vec3(scad_env *e, const char *name, double x, double y, double z
 }
 
 /* Camera::updateView's reading of one $vp variable: $vpr and $vpt take 2
- * or 3 numbers (z = 0 when missing), $vpd and $vpf a number. */
+ * or 3 numbers (z = 0 when missing), $vpd and $vpf a number; NaN and
+ * infinities make it unusable (it still turns viewall off). */
 static void take_vp(scad_result *out, char which, scad_value v)
 {
     if (which == 'd' || which == 'f') {
-        if (v.kind != SV_NUM) return;
+        if (v.kind != SV_NUM || !isfinite(v.u.num)) return;
         *(which == 'd' ? &out->vpd : &out->vpf) = v.u.num;
         out->vp_set |= which == 'd' ? SCAD_VP_D : SCAD_VP_F;
         return;
@@ -143,7 +145,7 @@ static void take_vp(scad_result *out, char which, scad_value v)
     if (v.kind != SV_VEC || v.u.vec->n < 2 || v.u.vec->n > 3) return;
     double xyz[3] = {0, 0, 0};
     for (int k = 0; k < v.u.vec->n; k++) {
-        if (v.u.vec->v[k].kind != SV_NUM) return;
+        if (v.u.vec->v[k].kind != SV_NUM || !isfinite(v.u.vec->v[k].u.num)) return;
         xyz[k] = v.u.vec->v[k].u.num;
     }
     memcpy(which == 'r' ? out->vpr : out->vpt, xyz, sizeof xyz);
