@@ -66,7 +66,8 @@ CLI_LIB_OBJ = $(filter-out $(BUILD)/obj/src/cli/main.o,$(CLI_OBJ))
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare conformance meshcheck asan clean format bench
+.PHONY: all deps demo test unit cli compare conformance meshcheck asan clean format bench fuzz hostile \
+	valgrind
 .DEFAULT_GOAL := all
 
 all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
@@ -140,6 +141,10 @@ compare: all
 # no output left behind by a failure (tests/hostile.sh).
 hostile: all
 	tests/hostile.sh $(BUILD)
+
+# The demos under valgrind memcheck (minutes; not part of make test).
+valgrind: all
+	tests/valgrind.sh $(BUILD)
 
 conformance: all
 	tests/conformance.sh $(BUILD)

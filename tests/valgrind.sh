@@ -26,7 +26,8 @@ for f in "${files[@]}"; do
     args=$(sed -n 's|^// args: *||p' "$f" | head -n 1)
     log="$work/$name.log"
     # shellcheck disable=SC2086
-    valgrind --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect \
+    valgrind --error-exitcode=99 --suppressions="$root/tests/valgrind.supp" --leak-check=full \
+        --errors-for-leak-kinds=definite,indirect \
         --show-leak-kinds=definite,indirect --log-file="$log" \
         "$bin" "$f" -o "$work/$name.png" $args --imgsize=32,24 --threads=2 >/dev/null 2>"$work/$name.err"
     rc=$?
