@@ -50,6 +50,7 @@
  * the same bytes for any thread count.
  */
 #include "path_trace.h"
+#include "sampling.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -114,76 +115,10 @@ typedef struct pt_job {
 
 /* ---- random numbers: splitmix64 over a counter, per pixel --------------- */
 
-typedef struct rng {
-    uint64_t s;
-} rng;
-
-static uint64_t mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-/* Uniform in [0, 1): the top 53 bits. */
-static double rnd(rng *g)
-{
-    g->s += 0x9e3779b97f4a7c15ULL;
-    return (double)(mix64(g->s) >> 11) * (1.0 / 9007199254740992.0);
-}
-
 typedef struct pt_worker {
     iv_arena *a;
     rng g;
 } pt_worker;
-
-/* ---- small helpers ------------------------------------------------------- */
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void normalize3(double v[3])
-{
-    double l = sqrt(dot3(v, v));
-    if (l > 0)
-        for (int i = 0; i < 3; i++)
-            v[i] /= l;
-}
-
-/* Two unit vectors orthogonal to unit w and to each other. */
-static void basis_of(const double w[3], double u[3], double v[3])
-{
-    double a[3] = {0, 0, 0};
-    a[fabs(w[0]) < 0.6 ? 0 : fabs(w[1]) < 0.6 ? 1 : 2] = 1;
-    u[0] = a[1] * w[2] - a[2] * w[1];
-    u[1] = a[2] * w[0] - a[0] * w[2];
-    u[2] = a[0] * w[1] - a[1] * w[0];
-    normalize3(u);
-    v[0] = w[1] * u[2] - w[2] * u[1];
-    v[1] = w[2] * u[0] - w[0] * u[2];
-    v[2] = w[0] * u[1] - w[1] * u[0];
-}
-
-/* Shirley–Chiu concentric map of the unit square onto the unit disc. */
-static void square_to_disc(double u, double v, double *x, double *y)
-{
-    double a = 2 * u - 1, b = 2 * v - 1, r, phi;
-    if (a == 0 && b == 0) {
-        *x = *y = 0;
-        return;
-    }
-    if (fabs(a) > fabs(b)) {
-        r = a;
-        phi = PI / 4 * (b / a);
-    } else {
-        r = b;
-        phi = PI / 2 - PI / 4 * (a / b);
-    }
-    *x = r * cos(phi);
-    *y = r * sin(phi);
-}
 
 static double srgb_to_linear(double c)
 {
@@ -331,7 +266,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
 static void sample_emitter(const pt_light *L, rng *g, double y[3], double *pdf)
 {
     double p[3], n[3] = {0, 0, 0};
-    double u = rnd(g), v = rnd(g);
+    double u = rng_next(g), v = rng_next(g);
     if (L->kind == PT_SPHERE) {
         double z = 1 - 2 * u, s = sqrt(fmax(0, 1 - z * z)), phi = 2 * PI * v;
         n[0] = s * cos(phi);
@@ -351,7 +286,7 @@ static void sample_emitter(const pt_light *L, rng *g, double y[3], double *pdf)
         double x = u * (fa[0] + fa[1] + fa[2]);
         int ax = x < fa[0] ? 0 : x < fa[0] + fa[1] ? 1 : 2;
         x -= ax == 0 ? 0 : ax == 1 ? fa[0] : fa[0] + fa[1];
-        double side = rnd(g) < 0.5 ? 0 : 1;
+        double side = rng_next(g) < 0.5 ? 0 : 1;
         int a1 = (ax + 1) % 3, a2 = (ax + 2) % 3;
         p[ax] = side ? L->hi[ax] : L->lo[ax];
         p[a1] = L->lo[a1] + e[a1] * (fa[ax] > 0 ? x / fa[ax] : 0.5);
@@ -397,7 +332,7 @@ static int direct(const pt_job *J, pt_worker *w, const double p[3], const double
                     wv[i] = L->pos[i] - p[i];
                 normalize3(wv);
                 basis_of(wv, u, v);
-                square_to_disc(rnd(&w->g), rnd(&w->g), &dx, &dy);
+                square_to_disc(rng_next(&w->g), rng_next(&w->g), &dx, &dy);
                 for (int i = 0; i < 3; i++)
                     q[i] += L->radius * (dx * u[i] + dy * v[i]);
             }
@@ -442,7 +377,7 @@ static void cosine_dir(rng *g, const double n[3], double out[3])
 {
     double u[3], v[3], x, y;
     basis_of(n, u, v);
-    square_to_disc(rnd(g), rnd(g), &x, &y);
+    square_to_disc(rng_next(g), rng_next(g), &x, &y);
     double z = sqrt(fmax(0, 1 - x * x - y * y));
     for (int i = 0; i < 3; i++)
         out[i] = x * u[i] + y * v[i] + z * n[i];
@@ -496,7 +431,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
                 out[i] += k * c[i];
         }
 
-        double u = rnd(&w->g), surface = s.alpha;
+        double u = rng_next(&w->g), surface = s.alpha;
         int pass = 0;
         if (s.ior <= 1 && s.sigma > 0) {
             /* A volume seen from outside shows with the opacity of the span
@@ -531,7 +466,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             double cosv = entering ? ci : sqrt(fmax(k, 0)); /* the cosine in the thinner medium */
             double F = k < 0 ? 1 : r0 + (1 - r0) * pow(1 - cosv, 5);
             double nd[3];
-            if (rnd(&w->g) < F) {
+            if (rng_next(&w->g) < F) {
                 for (int i = 0; i < 3; i++)
                     nd[i] = d[i] + 2 * ci * nf[i];
             } else {
@@ -560,7 +495,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             continue;
         }
 
-        if (rnd(&w->g) < s.m->reflect) {
+        if (rng_next(&w->g) < s.m->reflect) {
             if (++bounces >= J->max_depth) return 0;
             double dn = dot3(d, nf);
             for (int i = 0; i < 3; i++) {
@@ -591,7 +526,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
              * divide by it, which keeps the estimate unbiased. */
             double q = fmax(beta[0], fmax(beta[1], beta[2]));
             q = q > 0.95 ? 0.95 : q;
-            if (!(rnd(&w->g) < q)) return 0;
+            if (!(rng_next(&w->g) < q)) return 0;
             for (int i = 0; i < 3; i++)
                 beta[i] /= q;
         }
@@ -599,19 +534,6 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
 }
 
 /* ---- the image --------------------------------------------------------------------- */
-
-/* The camera's clip planes as a t range along d (render.c's ray_range). */
-static void ray_range(const render_camera *c, const double d[3], double *tmin, double *tmax)
-{
-    double df = dot3(d, c->forward);
-    if (c->clip_far > c->clip_near && df > 0) {
-        *tmin = c->clip_near / df;
-        *tmax = c->clip_far / df;
-    } else {
-        *tmin = c->ortho ? -INFINITY : 0;
-        *tmax = INFINITY;
-    }
-}
 
 static int render_tile(const pt_job *J, pt_worker *w, int tile)
 {
@@ -626,7 +548,7 @@ static int render_tile(const pt_job *J, pt_worker *w, int tile)
             /* a distinct constant keeps these streams apart from render.c's */
             w->g.s = mix64(((uint64_t)opt->seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^
                            (uint32_t)x ^ 0x5054000000000000ULL);
-            double sum[3] = {0, 0, 0}, ox = rnd(&w->g), oy = rnd(&w->g);
+            double sum[3] = {0, 0, 0}, ox = rng_next(&w->g), oy = rng_next(&w->g);
             for (int k = 0; k < ns; k++) {
                 /* pixel positions from the R2 sequence (Roberts), shifted per
                  * pixel: well spread for any sample count */
@@ -639,7 +561,7 @@ static int render_tile(const pt_job *J, pt_worker *w, int tile)
                     double f[3], lx, ly;
                     for (int i = 0; i < 3; i++)
                         f[i] = o[i] + d[i] * (J->focus / df);
-                    square_to_disc(rnd(&w->g), rnd(&w->g), &lx, &ly);
+                    square_to_disc(rng_next(&w->g), rng_next(&w->g), &lx, &ly);
                     for (int i = 0; i < 3; i++) {
                         o[i] += opt->aperture / 2 * (lx * c->right[i] + ly * c->up[i]);
                         d[i] = f[i] - o[i];

@@ -36,6 +36,7 @@
  */
 #include "render.h"
 #include "path_trace.h"
+#include "sampling.h"
 #include "shade.h"
 
 #include <math.h>
@@ -84,52 +85,12 @@ static void set_err(char *err, size_t errlen, const char *msg)
     if (err && errlen) snprintf(err, errlen, "%s", msg);
 }
 
-/* ---- random numbers --------------------------------------------------------
- * splitmix64 over a counter: the stream of a pixel is fixed by (seed, x, y),
- * whatever thread draws it. */
-typedef struct rng {
-    uint64_t s;
-} rng;
-
-static uint64_t mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
+/* ---- random numbers (sampling.h) ------------------------------------------ */
 
 static rng rng_for_pixel(unsigned seed, int x, int y)
 {
     rng g = {mix64(((uint64_t)seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^ (uint32_t)x)};
     return g;
-}
-
-/* Uniform in [0, 1): the top 53 bits. */
-static double rng_next(rng *g)
-{
-    g->s += 0x9e3779b97f4a7c15ULL;
-    return (double)(mix64(g->s) >> 11) * (1.0 / 9007199254740992.0);
-}
-
-/* Shirley–Chiu concentric map of the unit square onto the unit disc: keeps
- * strata compact, so stratified squares give stratified discs. */
-static void square_to_disc(double u, double v, double *x, double *y)
-{
-    double a = 2 * u - 1, b = 2 * v - 1, r, phi;
-    if (a == 0 && b == 0) {
-        *x = *y = 0;
-        return;
-    }
-    const double quarter = 0.78539816339744831; /* π/4 */
-    if (fabs(a) > fabs(b)) {
-        r = a;
-        phi = quarter * (b / a);
-    } else {
-        r = b;
-        phi = 2 * quarter - quarter * (a / b);
-    }
-    *x = r * cos(phi);
-    *y = r * sin(phi);
 }
 
 /* What a worker thread carries from ray to ray: its arena, the current
@@ -142,49 +103,6 @@ typedef struct worker_ctx {
     rng g;
     int first_primary, first_shadow;
 } worker_ctx;
-
-/* ---- small vector helpers --------------------------------------------------- */
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void normalize3(double v[3])
-{
-    double l = sqrt(dot3(v, v));
-    if (l > 0)
-        for (int i = 0; i < 3; i++)
-            v[i] /= l;
-}
-
-/* Two unit vectors orthogonal to unit w and to each other. */
-static void basis_of(const double w[3], double u[3], double v[3])
-{
-    double a[3] = {0, 0, 0};
-    a[fabs(w[0]) < 0.6 ? 0 : fabs(w[1]) < 0.6 ? 1 : 2] = 1;
-    u[0] = a[1] * w[2] - a[2] * w[1];
-    u[1] = a[2] * w[0] - a[0] * w[2];
-    u[2] = a[0] * w[1] - a[1] * w[0];
-    normalize3(u);
-    v[0] = w[1] * u[2] - w[2] * u[1];
-    v[1] = w[2] * u[0] - w[0] * u[2];
-    v[2] = w[0] * u[1] - w[1] * u[0];
-}
-
-/* The parameter range [tmin, tmax] along o + t·d that the camera keeps: its
- * clip planes are depths along forward, and depth = t·(d·forward). */
-static void ray_range(const render_camera *c, const double d[3], double *tmin, double *tmax)
-{
-    double df = d[0] * c->forward[0] + d[1] * c->forward[1] + d[2] * c->forward[2];
-    if (c->clip_far > c->clip_near && df > 0) {
-        *tmin = c->clip_near / df;
-        *tmax = c->clip_far / df;
-    } else {
-        *tmin = c->ortho ? -INFINITY : 0;
-        *tmax = INFINITY;
-    }
-}
 
 /* Where two boundaries share a depth, the one drawn later by OpenSCAD wins
  * the depth test (GL_LEQUAL for modifiers): highlight over background over

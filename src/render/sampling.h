@@ -1,0 +1,100 @@
+/*
+ * sampling.h — private to src/render: what the preview renderer (render.c)
+ * and the path tracer (path_trace.c) both draw on: per-pixel random streams,
+ * the concentric disc map, small vector helpers and the camera's t range.
+ * All static inline, so each file keeps its own copy of the code it uses.
+ */
+#ifndef RAYSCAD_RENDER_SAMPLING_H
+#define RAYSCAD_RENDER_SAMPLING_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "render.h"
+
+/* ---- random numbers --------------------------------------------------------
+ * splitmix64 over a counter: the stream of a pixel is fixed by (seed, x, y),
+ * whatever thread draws it. */
+typedef struct rng {
+    uint64_t s;
+} rng;
+
+static inline uint64_t mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/* Uniform in [0, 1): the top 53 bits. */
+static inline double rng_next(rng *g)
+{
+    g->s += 0x9e3779b97f4a7c15ULL;
+    return (double)(mix64(g->s) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Shirley–Chiu concentric map of the unit square onto the unit disc: keeps
+ * strata compact, so stratified squares give stratified discs. */
+static inline void square_to_disc(double u, double v, double *x, double *y)
+{
+    double a = 2 * u - 1, b = 2 * v - 1, r, phi;
+    if (a == 0 && b == 0) {
+        *x = *y = 0;
+        return;
+    }
+    const double quarter = 0.78539816339744831; /* π/4 */
+    if (fabs(a) > fabs(b)) {
+        r = a;
+        phi = quarter * (b / a);
+    } else {
+        r = b;
+        phi = 2 * quarter - quarter * (a / b);
+    }
+    *x = r * cos(phi);
+    *y = r * sin(phi);
+}
+
+/* ---- small vector helpers --------------------------------------------------- */
+
+static inline double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void normalize3(double v[3])
+{
+    double l = sqrt(dot3(v, v));
+    if (l > 0)
+        for (int i = 0; i < 3; i++)
+            v[i] /= l;
+}
+
+/* Two unit vectors orthogonal to unit w and to each other. */
+static inline void basis_of(const double w[3], double u[3], double v[3])
+{
+    double a[3] = {0, 0, 0};
+    a[fabs(w[0]) < 0.6 ? 0 : fabs(w[1]) < 0.6 ? 1 : 2] = 1;
+    u[0] = a[1] * w[2] - a[2] * w[1];
+    u[1] = a[2] * w[0] - a[0] * w[2];
+    u[2] = a[0] * w[1] - a[1] * w[0];
+    normalize3(u);
+    v[0] = w[1] * u[2] - w[2] * u[1];
+    v[1] = w[2] * u[0] - w[0] * u[2];
+    v[2] = w[0] * u[1] - w[1] * u[0];
+}
+
+/* The parameter range [tmin, tmax] along o + t·d that the camera keeps: its
+ * clip planes are depths along forward, and depth = t·(d·forward). */
+static inline void ray_range(const render_camera *c, const double d[3], double *tmin, double *tmax)
+{
+    double df = d[0] * c->forward[0] + d[1] * c->forward[1] + d[2] * c->forward[2];
+    if (c->clip_far > c->clip_near && df > 0) {
+        *tmin = c->clip_near / df;
+        *tmax = c->clip_far / df;
+    } else {
+        *tmin = c->ortho ? -INFINITY : 0;
+        *tmax = INFINITY;
+    }
+}
+
+#endif
