@@ -22,28 +22,31 @@ void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
     if (d->opt && d->opt->message) d->opt->message(d->opt->ud, kind, line);
 }
 
-void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
+/* "file:line:col: <label>: <message>" as one line of the given kind. */
+static void compiler_style(scad_diag *d, scad_msg_kind kind, const char *label, scad_loc loc,
+                           const char *fmt, va_list ap)
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    snprintf(line, sizeof line, "%s:%d:%d: %s: %s", loc.file ? loc.file : "?", loc.line, loc.col,
+             label, msg);
+    scad_diag_line(d, kind, line);
+}
+
+void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    compiler_style(d, SCAD_MSG_ERROR, "error", loc, fmt, ap);
     va_end(ap);
-    snprintf(line, sizeof line, "%s:%d:%d: error: %s", loc.file ? loc.file : "?", loc.line, loc.col,
-             msg);
-    scad_diag_line(d, SCAD_MSG_ERROR, line);
 }
 
 void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
-    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    compiler_style(d, SCAD_MSG_NOTE, "warning", loc, fmt, ap);
     va_end(ap);
-    snprintf(line, sizeof line, "%s:%d:%d: warning: %s", loc.file ? loc.file : "?", loc.line,
-             loc.col, msg);
-    scad_diag_line(d, SCAD_MSG_NOTE, line);
 }
 
 /* A file name as OpenSCAD prints it: relative to the main file's folder. */
