@@ -261,3 +261,44 @@ Test(io_image, format_supported)
     cr_expect_eq(io_image_format_supported("a.echo"), 0);
     cr_expect_eq(io_image_format_supported(NULL), 0);
 }
+
+/* A header that claims more elements than the file could hold is refused
+ * before OpenMesh reserves memory for them (2e9 vertices would be ~50 GB);
+ * a real file of the same form still reads. */
+Test(io_mesh, implausible_header_counts_are_refused)
+{
+    char tmpdir[] = "/tmp/rayscad_io_XXXXXX";
+    cr_assert_not_null(mkdtemp(tmpdir));
+    char off[256], ply[256], ok[256];
+    snprintf(off, sizeof off, "%s/huge.off", tmpdir);
+    snprintf(ply, sizeof ply, "%s/huge.ply", tmpdir);
+    snprintf(ok, sizeof ok, "%s/tet.off", tmpdir);
+    FILE *f = fopen(off, "w");
+    fputs("OFF\n2000000000 2000000000 0\n0 0 0\n", f);
+    fclose(f);
+    f = fopen(ply, "w");
+    fputs("ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n",
+          f);
+    fclose(f);
+    f = fopen(ok, "w");
+    fputs("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n", f);
+    fclose(f);
+    float *v;
+    int32_t *t;
+    int nv, nt;
+    char err[256];
+    cr_expect_eq(io_mesh_read(off, &v, &nv, &t, &nt, err, sizeof err), -1);
+    cr_expect(strstr(err, "element counts") != NULL, "%s", err);
+    cr_expect_eq(io_mesh_read(ply, &v, &nv, &t, &nt, err, sizeof err), -1);
+    cr_expect(strstr(err, "element counts") != NULL, "%s", err);
+    cr_assert_eq(io_mesh_read(ok, &v, &nv, &t, &nt, err, sizeof err), 0, "%s", err);
+    cr_expect_eq(nv, 4);
+    cr_expect_eq(nt, 4);
+    free(v);
+    free(t);
+    remove(off);
+    remove(ply);
+    remove(ok);
+    rmdir(tmpdir);
+}

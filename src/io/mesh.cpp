@@ -365,6 +365,53 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
     }
 }
 
+/* OFF and PLY headers state element counts, and OpenMesh reserves memory
+ * for them before reading a single element: a hostile header asking for
+ * 2e9 vertices would take tens of GB.  Every element needs a few bytes of
+ * the file (a text vertex "0 0 0\n" six, a binary one twelve), so counts
+ * that the file's size cannot hold are refused up front.  True when the
+ * header is plausible (or there is none to check). */
+static bool plausible_counts(const char *path, const std::string &ext, std::string &msg)
+{
+    if (ext != "off" && ext != "ply") return true;
+    std::FILE *f = std::fopen(path, "rb");
+    if (!f) return true; /* the reader reports it */
+    std::fseek(f, 0, SEEK_END);
+    long size = std::ftell(f);
+    std::fseek(f, 0, SEEK_SET);
+    double need = 0;
+    char line[512];
+    if (ext == "off") {
+        /* "OFF" (any prefix letters), comments, then "nv nf ne" */
+        std::string words;
+        while (std::fgets(line, sizeof line, f) && words.size() < 4096) {
+            if (line[0] == '#') continue;
+            words += line;
+            words += ' ';
+            double a, b;
+            const char *p = words.c_str();
+            while (*p && !std::isdigit((unsigned char)*p) && *p != '-') p++;
+            if (std::sscanf(p, "%lf %lf", &a, &b) == 2) {
+                need = 6 * a + 8 * b;
+                break;
+            }
+        }
+    } else {
+        while (std::fgets(line, sizeof line, f) && std::strncmp(line, "end_header", 10) != 0) {
+            char kind[64];
+            double n;
+            if (std::sscanf(line, "element %63s %lf", kind, &n) == 2) need += 3 * n;
+        }
+    }
+    std::fclose(f);
+    if (!(need <= (double)size)) {
+        msg = "the header's element counts need more than the file's " + std::to_string(size) +
+              " bytes";
+        return false;
+    }
+    return true;
+}
+
 int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char *err,
                  size_t errlen)
 {
@@ -380,6 +427,11 @@ int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, cha
         }
         if (access(path, R_OK) != 0) {
             set_err(err, errlen, std::string(path) + ": " + std::strerror(errno));
+            return -1;
+        }
+        std::string why;
+        if (!plausible_counts(path, ext, why)) {
+            set_err(err, errlen, std::string(path) + ": " + why);
             return -1;
         }
         TriMesh m;

@@ -108,6 +108,8 @@ static csg_node *list_to_csg(scad_geom **v, int n, int *oom)
 typedef struct job {
     const scad_options *opt;
     scad_diag *d;
+    const char *name, *src; /* parsed by the job itself (parse_job) */
+    scad_arena *a;
     scad_scope *top;
     scad_result *out;
     size_t stack_size;
@@ -250,12 +252,6 @@ static void run_job(job *j)
     scad_arena_free(ev.arena);
 }
 
-static void *job_thread(void *p)
-{
-    run_job(p);
-    return NULL;
-}
-
 /* ---- -D overrides ------------------------------------------------------------------ */
 
 static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const scad_options *opt)
@@ -293,6 +289,32 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const sca
     return 0;
 }
 
+/* Parse the job's source and apply the -D overrides, on the job's own
+ * stack: a file nested MAX_DEPTH levels deep recurses that far in the
+ * parser, which a sanitizer build's larger frames do not fit in 8 MB.
+ * Returns 0, or -1 after reporting the error. */
+static int parse_job(job *j)
+{
+    j->top = scad_parse(j->a, j->d, j->name, j->src);
+    if (!j->top) {
+        if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
+        scad_diag_parse_failed(j->d, j->name);
+        return -1;
+    }
+    if (apply_defines(j->a, j->d, j->top, j->opt)) {
+        if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
+        return -1;
+    }
+    return 0;
+}
+
+static void *job_thread(void *p)
+{
+    job *j = p;
+    if (parse_job(j) == 0) run_job(j);
+    return NULL;
+}
+
 /* ---- public ----------------------------------------------------------------------- */
 
 static int eval_source(const char *name, const char *src, scad_arena *a, const scad_options *opt,
@@ -303,17 +325,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
     d.opt = opt;
     const char *slash = strrchr(name, '/');
     d.base_dir = slash ? scad_arena_strndup(a, name, (size_t)(slash - name + 1)) : "";
-    scad_scope *top = scad_parse(a, &d, name, src);
-    if (!top) {
-        if (d.errors == 0) scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
-        scad_diag_parse_failed(&d, name);
-        return -1;
-    }
-    if (apply_defines(a, &d, top, opt)) {
-        if (d.errors == 0) scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
-        return -1;
-    }
-    job j = {opt, &d, top, out, EVAL_STACK, -1, dump};
+    job j = {opt, &d, name, src, a, NULL, out, EVAL_STACK, -1, dump};
     pthread_attr_t attr;
     pthread_t th;
     int started = 0;
@@ -332,7 +344,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
         if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur < lim)
             lim = (size_t)rl.rlim_cur;
         j.stack_size = lim / 2;
-        run_job(&j);
+        if (parse_job(&j) == 0) run_job(&j);
     }
     out->warnings = d.warnings;
     if (j.status != 0) scad_result_free(out);
