@@ -501,7 +501,10 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     if (!m) return scad_undef();
     double seed;
     if (a->n == 4 && get_num(a->v[3], &seed)) {
-        mt_seed(m, (uint32_t)(int64_t)seed); /* OpenSCAD: seed((unsigned)seed) */
+        /* OpenSCAD: seed((unsigned)seed); NaN and values past int64 become
+         * INT64_MIN as on x86-64, without the undefined conversion */
+        int64_t s64 = isnan(seed) || seed >= 9.2e18 || seed <= -9.2e18 ? INT64_MIN : (int64_t)seed;
+        mt_seed(m, (uint32_t)s64);
     } else {
         ev->rand_state = ev->rand_state * 6364136223846793005ul + 1442695040888963407ul;
         mt_seed(m, (uint32_t)(ev->rand_state >> 32));

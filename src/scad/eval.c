@@ -13,6 +13,7 @@
  * against ev->max_depth and the C stack budget, and an error sets
  * ev->aborted, after which everything returns undef / no geometry at once.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
@@ -1532,6 +1533,29 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return r;
 }
 
+/* A number as C's (int) conversion gives it on x86-64, where OpenSCAD
+ * 2021.01 was built: NaN and out-of-range values become INT_MIN (here
+ * without the undefined behaviour of converting them). */
+static int x86_int(double k)
+{
+    return isnan(k) || k >= 2147483648.0 || k < -2147483648.0 ? INT_MIN : (int)k;
+}
+
+/* children(k)'s index check, with OpenSCAD's two warnings (no location). */
+static int children_index_bad(scad_eval *ev, int k, int n)
+{
+    char line[128];
+    if (k < 0)
+        snprintf(line, sizeof line, "WARNING: Negative children index (%d) not allowed", k);
+    else if (k >= n)
+        snprintf(line, sizeof line, "WARNING: Children index (%d) out of bounds (%d children)", k,
+                 n);
+    else
+        return 0;
+    scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
+    return 1;
+}
+
 static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
                               const scad_state *state)
 {
@@ -1567,15 +1591,8 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
         gather g = {0};
         for (int i = 0; i < idx.n && !ev->aborted; i++) {
             if (idx.v[i].kind != SV_NUM) continue;
-            double k = idx.v[i].u.num;
-            if (k < 0 || k >= n || isnan(k)) {
-                char line[128];
-                snprintf(line, sizeof line,
-                         "WARNING: Children index (%d) out of bounds (%d children)", (int)k, n);
-                scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
-                continue;
-            }
-            int one = (int)k;
+            int one = x86_int(idx.v[i].u.num);
+            if (children_index_bad(ev, one, n)) continue;
             gather_add(ev, &g,
                        child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION,
                                    &one, 1));
@@ -1587,18 +1604,9 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
     int np = 0;
     for (int i = 0; pick && i < idx.n; i++) {
         if (idx.v[i].kind != SV_NUM) continue;
-        double k = idx.v[i].u.num;
-        if (k < 0 || k >= n || isnan(k)) {
-            {
-                /* OpenSCAD words this one without a location */
-                char line[128];
-                snprintf(line, sizeof line,
-                         "WARNING: Children index (%d) out of bounds (%d children)", (int)k, n);
-                scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
-            }
-            continue;
-        }
-        pick[np++] = (int)k;
+        int k = x86_int(idx.v[i].u.num);
+        if (children_index_bad(ev, k, n)) continue;
+        pick[np++] = k;
     }
     scad_geom *r =
         np ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, pick, np)
