@@ -1,14 +1,14 @@
 /*
- * builtin_modules.c — the geometry modules: cube, sphere, cylinder, the
- * transforms (translate, rotate, scale, mirror, multmatrix), color, and the
+ * builtin_modules.c — cube (sphere and cylinder are builtin_geometry.c's,
+ * with OpenSCAD's facets), the transforms (translate, rotate, scale, mirror, multmatrix), color, and the
  * CSG operations (union, group, render, difference, intersection).
  *
  * A transform composes its matrix onto the inherited world_from_object
  * (state.xf ∘ M, so M applies first) and evaluates its children with it;
  * leaves copy the full transform, so nothing is multiplied per ray.
  * Arguments follow OpenSCAD 2021.01: positional order, defaults, the
- * diameter-over-radius rule and its warning; degenerate sizes (r <= 0,
- * h <= 0, a zero cube edge, NaN) produce nothing, silently, as OpenSCAD.
+ * degenerate sizes (a zero cube edge, NaN) produce nothing, silently, as
+ * OpenSCAD.
  */
 #include <math.h>
 #include <string.h>
@@ -89,75 +89,6 @@ static scad_geom *m_cube(scad_eval *ev, scad_env *env, const scad_stmt *st, cons
         sh.u.box.hi[i] = center ? s[i] / 2 : s[i];
     }
     return leaf(ev, env, a, &sh, state, NULL);
-}
-
-/* OpenSCAD's lookup_radius: d/2 wins over r, with a warning when both. */
-static int radius(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *dname,
-                  const char *rname, int rpos, double *out)
-{
-    scad_value d = scad_argv_get(a, dname, -1);
-    scad_value r = scad_argv_get(a, rname, rpos);
-    double x;
-    if (num_of(d, &x)) {
-        if (r.kind == SV_NUM)
-            scad_diag_warning(ev->d, loc,
-                              "Ignoring radius variable '%s' as diameter '%s' is defined too.",
-                              rname, dname);
-        *out = x / 2;
-        return 1;
-    }
-    if (num_of(r, &x)) {
-        *out = x;
-        return 1;
-    }
-    return 0;
-}
-
-static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state)
-{
-    (void)env;
-    static const char *const known[] = {"r", "d", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    double r = 1;
-    radius(ev, a, st->loc, "d", "r", 0, &r);
-    if (!(r > 0) || !isfinite(r)) return NULL;
-    iv_shape sh;
-    memset(&sh, 0, sizeof sh);
-    sh.kind = IV_SHAPE_SPHERE;
-    sh.u.sphere.r = r;
-    return leaf(ev, env, a, &sh, state, NULL);
-}
-
-static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                             const scad_state *state)
-{
-    (void)env;
-    static const char *const known[] = {"h", "r1", "r2", "center", "r", "d", "d1", "d2", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    double h = 1, r1 = 1, r2 = 1, r;
-    num_of(scad_argv_get(a, "h", 0), &h);
-    int has_r = radius(ev, a, st->loc, "d", "r", -1, &r);
-    double x1, x2;
-    int has_r1 = radius(ev, a, st->loc, "d1", "r1", 1, &x1);
-    int has_r2 = radius(ev, a, st->loc, "d2", "r2", 2, &x2);
-    if (has_r) r1 = r2 = r;
-    if (has_r1) r1 = x1;
-    if (has_r2) r2 = x2;
-    scad_value c = scad_argv_get(a, "center", 3);
-    int center = c.kind == SV_BOOL && c.u.b;
-    if (!(h > 0) || !isfinite(h) || !(r1 >= 0) || !(r2 >= 0) || !isfinite(r1) || !isfinite(r2) ||
-        (r1 == 0 && r2 == 0))
-        return NULL;
-    iv_shape sh;
-    memset(&sh, 0, sizeof sh);
-    sh.kind = IV_SHAPE_CONE;
-    sh.u.cone.r1 = r1;
-    sh.u.cone.r2 = r2;
-    sh.u.cone.h = h;
-    if (!center) return leaf(ev, env, a, &sh, state, NULL);
-    csg_affine t = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -h / 2};
-    return leaf(ev, env, a, &sh, state, t);
 }
 
 static scad_geom *with_matrix(scad_eval *ev, scad_env *env, const scad_stmt *st,
@@ -311,8 +242,8 @@ int scad_transform_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a
     return 0;
 }
 
-static scad_geom *m_transform(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                              const scad_argv *a, const scad_state *state)
+static scad_geom *m_transform(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                              const scad_state *state)
 {
     csg_affine m;
     identity(m);
@@ -410,13 +341,10 @@ static const struct {
     const char *name;
     scad_builtin_mod fn;
 } table[] = {
-    {"color", m_color},         {"cube", m_cube},
-    {"cylinder", m_cylinder},   {"difference", m_group},
-    {"group", m_group},         {"intersection", m_group},
-    {"mirror", m_transform},       {"multmatrix", m_transform},
-    {"render", m_group},        {"rotate", m_transform},
-    {"scale", m_transform},         {"sphere", m_sphere},
-    {"translate", m_transform}, {"union", m_group},
+    {"color", m_color},          {"cube", m_cube},           {"difference", m_group},
+    {"group", m_group},          {"intersection", m_group},  {"mirror", m_transform},
+    {"multmatrix", m_transform}, {"render", m_group},        {"rotate", m_transform},
+    {"scale", m_transform},      {"translate", m_transform}, {"union", m_group},
 };
 
 scad_builtin_mod scad_builtin_module(const char *name)
