@@ -242,11 +242,22 @@ static csg_node *simplify(csg_node *root)
 /* Most operands per group.  A group costs one box test per ray; 4 keeps the
  * hierarchy shallow while letting most rays reject a group of 4 at once. */
 #define GROUP_MAX 4
+/* Surface-area-heuristic bins per axis, and the depth past which splits
+ * fall back to the median (always halving, so the build's recursion stays
+ * logarithmic whatever the layout). */
+enum { SAH_BINS = 16, SAH_MAX_DEPTH = 40 };
 
 typedef struct item {
     double c[3]; /* centre of the bounds */
     csg_node *n;
 } item;
+
+/* The group nodes made so far (at most 2m - 1 for m items), so that a
+ * failed build can free them. */
+typedef struct builder {
+    csg_node **made;
+    int nmade;
+} builder;
 
 static int cmp_axis(const item *a, const item *b, int k)
 {
@@ -265,11 +276,6 @@ static int cmp_z(const void *a, const void *b)
     return cmp_axis(a, b, 2);
 }
 
-static int group_count(int m)
-{
-    return m <= GROUP_MAX ? 1 : 1 + group_count(m / 2) + group_count(m - m / 2);
-}
-
 static void op_totals(csg_node *x)
 {
     x->size = 1;
@@ -283,39 +289,141 @@ static void op_totals(csg_node *x)
     x->depth += 1;
 }
 
-/* A union over items[0..m) from preallocated nodes: median split on the
- * axis along which the centres spread most.  Recursion depth is log2(m). */
-static csg_node *group_build(item *items, int m, csg_node **pool, int *used)
+static double half_area(const double lo[3], const double hi[3])
 {
-    csg_node *g = pool[(*used)++];
+    double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+    return x * y + y * z + z * x;
+}
+
+static void grow(double lo[3], double hi[3], const double blo[3], const double bhi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = fmin(lo[k], blo[k]);
+        hi[k] = fmax(hi[k], bhi[k]);
+    }
+}
+
+static int bin_of(double c, double lo, double ext)
+{
+    int b = (int)((c - lo) / ext * SAH_BINS);
+    return b < 0 ? 0 : b >= SAH_BINS ? SAH_BINS - 1 : b;
+}
+
+/* Median split on the axis along which the centres spread most: sorts
+ * items[0..m) and returns m/2. */
+static int median_split(item *items, int m, const double clo[3], const double chi[3])
+{
+    int axis = 0;
+    for (int k = 1; k < 3; k++)
+        if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
+    qsort(items, (size_t)m, sizeof *items, axis == 0 ? cmp_x : axis == 1 ? cmp_y : cmp_z);
+    return m / 2;
+}
+
+/* Split items[0..m) (m > GROUP_MAX) in two, in place; returns the count on
+ * the left, 0 < l < m.  Binned SAH: of the planes between SAH_BINS bins of
+ * the centres on each axis, the one least in area(L)·|L| + area(R)·|R| —
+ * the expected box tests of a ray that meets the parent's box. */
+static int sah_split(item *items, int m, int depth)
+{
+    double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < m; i++)
+        grow(clo, chi, items[i].c, items[i].c);
+    if (depth >= SAH_MAX_DEPTH) return median_split(items, m, clo, chi);
+    double best = INFINITY;
+    int best_axis = -1, best_plane = 0;
+    for (int k = 0; k < 3; k++) {
+        double ext = chi[k] - clo[k];
+        if (!(ext > 0)) continue;
+        int cnt[SAH_BINS] = {0};
+        double blo[SAH_BINS][3], bhi[SAH_BINS][3];
+        for (int b = 0; b < SAH_BINS; b++)
+            for (int a = 0; a < 3; a++) {
+                blo[b][a] = INFINITY;
+                bhi[b][a] = -INFINITY;
+            }
+        for (int i = 0; i < m; i++) {
+            int b = bin_of(items[i].c[k], clo[k], ext);
+            cnt[b]++;
+            grow(blo[b], bhi[b], items[i].n->lo, items[i].n->hi);
+        }
+        /* left[p]: bins 0..p, the plane after bin p. */
+        double left_cost[SAH_BINS], lo[3] = {INFINITY, INFINITY, INFINITY},
+                                    hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        int nl = 0;
+        for (int p = 0; p < SAH_BINS - 1; p++) {
+            nl += cnt[p];
+            if (cnt[p]) grow(lo, hi, blo[p], bhi[p]);
+            left_cost[p] = nl ? half_area(lo, hi) * nl : INFINITY;
+        }
+        int nr = 0;
+        for (int a = 0; a < 3; a++) {
+            lo[a] = INFINITY;
+            hi[a] = -INFINITY;
+        }
+        for (int p = SAH_BINS - 2; p >= 0; p--) {
+            nr += cnt[p + 1];
+            if (cnt[p + 1]) grow(lo, hi, blo[p + 1], bhi[p + 1]);
+            double cost = nr ? left_cost[p] + half_area(lo, hi) * nr : INFINITY;
+            if (cost < best) {
+                best = cost;
+                best_axis = k;
+                best_plane = p;
+            }
+        }
+    }
+    if (best_axis < 0) return median_split(items, m, clo, chi); /* centres all equal */
+    double ext = chi[best_axis] - clo[best_axis];
+    int i = 0, j = m - 1;
+    for (;;) {
+        while (i <= j && bin_of(items[i].c[best_axis], clo[best_axis], ext) <= best_plane)
+            i++;
+        while (i <= j && bin_of(items[j].c[best_axis], clo[best_axis], ext) > best_plane)
+            j--;
+        if (i >= j) break;
+        item t = items[i];
+        items[i] = items[j];
+        items[j] = t;
+    }
+    return i; /* both sides nonempty: the plane's cost was finite */
+}
+
+static csg_node *group_node(builder *b)
+{
+    csg_node *g = calloc(1, sizeof *g);
+    if (!g) return NULL;
+    g->kids = malloc(GROUP_MAX * sizeof *g->kids);
+    if (!g->kids) {
+        free(g);
+        return NULL;
+    }
+    g->op = CSG_OP_UNION;
+    g->cap = GROUP_MAX;
+    b->made[b->nmade++] = g;
+    return g;
+}
+
+/* A union hierarchy over items[0..m); NULL when out of memory (the nodes
+ * made are in b->made). */
+static csg_node *group_build(builder *b, item *items, int m, int depth)
+{
+    csg_node *g = group_node(b);
+    if (!g) return NULL;
     if (m <= GROUP_MAX) {
         for (int i = 0; i < m; i++)
             g->kids[i] = items[i].n;
         g->nkids = m;
     } else {
-        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (int i = 0; i < m; i++) {
-            for (int k = 0; k < 3; k++) {
-                lo[k] = fmin(lo[k], items[i].c[k]);
-                hi[k] = fmax(hi[k], items[i].c[k]);
-            }
-        }
-        int axis = 0;
-        for (int k = 1; k < 3; k++)
-            if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-        qsort(items, (size_t)m, sizeof *items, axis == 0 ? cmp_x : axis == 1 ? cmp_y : cmp_z);
-        g->kids[0] = group_build(items, m / 2, pool, used);
-        g->kids[1] = group_build(items + m / 2, m - m / 2, pool, used);
+        int l = sah_split(items, m, depth);
+        g->kids[0] = group_build(b, items, l, depth + 1);
+        g->kids[1] = g->kids[0] ? group_build(b, items + l, m - l, depth + 1) : NULL;
+        if (!g->kids[1]) return NULL;
         g->nkids = 2;
     }
     memcpy(g->lo, g->kids[0]->lo, sizeof g->lo);
     memcpy(g->hi, g->kids[0]->hi, sizeof g->hi);
-    for (int i = 1; i < g->nkids; i++) {
-        for (int k = 0; k < 3; k++) {
-            g->lo[k] = fmin(g->lo[k], g->kids[i]->lo[k]);
-            g->hi[k] = fmax(g->hi[k], g->kids[i]->hi[k]);
-        }
-    }
+    for (int i = 1; i < g->nkids; i++)
+        grow(g->lo, g->hi, g->kids[i]->lo, g->kids[i]->hi);
     op_totals(g);
     return g;
 }
@@ -339,25 +447,20 @@ static void group_op(csg_node *x, int from)
             items[nf].c[a] = 0.5 * (k->lo[a] + k->hi[a]);
         items[nf++].n = k;
     }
-    int need = nf > GROUP_MAX ? group_count(nf) : 0;
-    csg_node **pool = need ? calloc((size_t)need, sizeof *pool) : NULL;
-    int ok = pool != NULL;
-    for (int i = 0; ok && i < need; i++) {
-        pool[i] = calloc(1, sizeof **pool);
-        if (pool[i]) pool[i]->kids = malloc(GROUP_MAX * sizeof(csg_node *));
-        if (!pool[i] || !pool[i]->kids) ok = 0;
-        if (pool[i]) {
-            pool[i]->op = CSG_OP_UNION;
-            pool[i]->cap = GROUP_MAX;
-        }
-    }
-    if (!ok) {
-        for (int i = 0; pool && i < need; i++)
-            if (pool[i]) free_shell(pool[i]);
-        free(pool);
+    if (nf <= GROUP_MAX) {
         free(items);
         return;
     }
+    builder b = {malloc(2 * (size_t)nf * sizeof *b.made), 0};
+    csg_node *h = b.made ? group_build(&b, items, nf, 0) : NULL;
+    free(items);
+    if (!h) {
+        for (int i = 0; i < b.nmade; i++)
+            free_shell(b.made[i]);
+        free(b.made);
+        return;
+    }
+    free(b.made);
     /* Unbounded operands first, in their order, then the hierarchy. */
     int n = from;
     for (int i = from; i < x->nkids; i++) {
@@ -367,8 +470,6 @@ static void group_op(csg_node *x, int from)
             finite &= isfinite(k->lo[a]) && isfinite(k->hi[a]);
         if (!finite) x->kids[n++] = k;
     }
-    int used = 0;
-    csg_node *h = group_build(items, nf, pool, &used);
     if (x->op == CSG_OP_UNION && n == 0) {
         /* x itself becomes the root of the hierarchy. */
         memcpy(x->kids, h->kids, (size_t)h->nkids * sizeof *h->kids);
@@ -378,8 +479,6 @@ static void group_op(csg_node *x, int from)
         x->kids[n++] = h;
     }
     x->nkids = n;
-    free(pool);
-    free(items);
 }
 
 /* Post-order pass over a simplified tree: group wide unions and
