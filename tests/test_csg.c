@@ -4,7 +4,7 @@
  * classifier that evaluates the CSG expression directly, with transforms the
  * test builds and inverts itself.
  */
-#include <criterion/criterion.h>
+#include "support.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -16,71 +16,6 @@
 
 /* ---- helpers ------------------------------------------------------------ */
 
-static uint64_t rng_state;
-static void rng_seed(uint64_t s)
-{
-    rng_state = s;
-}
-static uint64_t rng_next(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-static double rng_uniform(double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(rng_next() >> 11) / 9007199254740992.0);
-}
-static int rng_int(int n)
-{
-    return (int)(rng_next() % (uint64_t)n);
-}
-
-static iv_arena *arena;
-static void setup(void)
-{
-    arena = iv_arena_new(0);
-}
-static void teardown(void)
-{
-    iv_arena_free(arena);
-}
-
-#define near(x, y, eps)                                                                            \
-    cr_assert(fabs((x) - (y)) <= (eps), "%s = %.17g, want %.17g", #x, (double)(x), (double)(y))
-
-static iv_shape sphere(double r)
-{
-    iv_shape s = {.kind = IV_SHAPE_SPHERE};
-    s.u.sphere.r = r;
-    return s;
-}
-static iv_shape box(double x0, double y0, double z0, double x1, double y1, double z1)
-{
-    iv_shape s = {.kind = IV_SHAPE_BOX};
-    double lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
-    memcpy(s.u.box.lo, lo, sizeof lo);
-    memcpy(s.u.box.hi, hi, sizeof hi);
-    return s;
-}
-static iv_shape cone(double r1, double r2, double h)
-{
-    iv_shape s = {.kind = IV_SHAPE_CONE};
-    s.u.cone.r1 = r1;
-    s.u.cone.r2 = r2;
-    s.u.cone.h = h;
-    return s;
-}
-static iv_shape halfspace(double nx, double ny, double nz, double d)
-{
-    iv_shape s = {.kind = IV_SHAPE_HALFSPACE};
-    s.u.halfspace.n[0] = nx;
-    s.u.halfspace.n[1] = ny;
-    s.u.halfspace.n[2] = nz;
-    s.u.halfspace.d = d;
-    return s;
-}
 
 static csg_material mat(float id)
 {
@@ -186,7 +121,7 @@ Test(csg_affine, invert_rejects_singular)
 
 /* ---- builder and commit --------------------------------------------------- */
 
-TestSuite(csg_scene, .init = setup, .fini = teardown);
+TestSuite(csg_scene, .init = arena_setup, .fini = arena_teardown);
 
 Test(csg_scene, builder_counts_and_frees)
 {
@@ -309,7 +244,7 @@ Test(csg_scene, rotated_bounds_hold_the_corners)
 
 /* ---- tracing by hand ------------------------------------------------------ */
 
-TestSuite(csg_trace, .init = setup, .fini = teardown);
+TestSuite(csg_trace, .init = arena_setup, .fini = arena_teardown);
 
 Test(csg_trace, ellipsoid_hits_and_normal)
 {
@@ -454,38 +389,6 @@ typedef struct tnode {
 static tnode pool[4096];
 static int npool;
 static tnode *leaves_by_id[4096];
-
-/* < 0 inside, > 0 outside, roughly a distance near the surface. */
-static double shape_sdf(const iv_shape *s, const double p[3])
-{
-    switch (s->kind) {
-    case IV_SHAPE_HALFSPACE: {
-        const double *n = s->u.halfspace.n;
-        return (n[0] * p[0] + n[1] * p[1] + n[2] * p[2] - s->u.halfspace.d) /
-               sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    }
-    case IV_SHAPE_SPHERE:
-        return sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - s->u.sphere.r;
-    case IV_SHAPE_BOX: {
-        double m = -INFINITY;
-        for (int k = 0; k < 3; k++) {
-            m = fmax(m, s->u.box.lo[k] - p[k]);
-            m = fmax(m, p[k] - s->u.box.hi[k]);
-        }
-        return m;
-    }
-    case IV_SHAPE_CONE: {
-        double r1 = s->u.cone.r1, r2 = s->u.cone.r2, h = s->u.cone.h;
-        double rz = r1 + (r2 - r1) * p[2] / h;
-        double side =
-            (sqrt(p[0] * p[0] + p[1] * p[1]) - rz) / sqrt(1 + (r2 - r1) * (r2 - r1) / (h * h));
-        return fmax(fmax(-p[2], p[2] - h), side);
-    }
-    default: /* kinds these tests do not generate */
-        break;
-    }
-    return 1;
-}
 
 static void apply(const double m[12], const double p[3], double q[3])
 {
