@@ -20,6 +20,7 @@
  * would hit.
  */
 #include "csg_internal.h"
+#include "../intervals/bvh_split.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -242,39 +243,15 @@ static csg_node *simplify(csg_node *root)
 /* Most operands per group.  A group costs one box test per ray; 4 keeps the
  * hierarchy shallow while letting most rays reject a group of 4 at once. */
 #define GROUP_MAX 4
-/* Surface-area-heuristic bins per axis, and the depth past which splits
- * fall back to the median (always halving, so the build's recursion stays
- * logarithmic whatever the layout). */
-enum { SAH_BINS = 16, SAH_MAX_DEPTH = 40 };
 
-typedef struct item {
-    double c[3]; /* centre of the bounds */
-    csg_node *n;
-} item;
-
-/* The group nodes made so far (at most 2m - 1 for m items), so that a
- * failed build can free them. */
+/* A build: the operands (items' ids index `ops`) and the group nodes made
+ * so far (at most 2m - 1 for m operands), so that a failed build can free
+ * them. */
 typedef struct builder {
+    csg_node **ops;
     csg_node **made;
     int nmade;
 } builder;
-
-static int cmp_axis(const item *a, const item *b, int k)
-{
-    return a->c[k] < b->c[k] ? -1 : a->c[k] > b->c[k];
-}
-static int cmp_x(const void *a, const void *b)
-{
-    return cmp_axis(a, b, 0);
-}
-static int cmp_y(const void *a, const void *b)
-{
-    return cmp_axis(a, b, 1);
-}
-static int cmp_z(const void *a, const void *b)
-{
-    return cmp_axis(a, b, 2);
-}
 
 static void op_totals(csg_node *x)
 {
@@ -287,105 +264,6 @@ static void op_totals(csg_node *x)
         if (x->kids[i]->depth > x->depth) x->depth = x->kids[i]->depth;
     }
     x->depth += 1;
-}
-
-static double half_area(const double lo[3], const double hi[3])
-{
-    double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
-    return x * y + y * z + z * x;
-}
-
-static void grow(double lo[3], double hi[3], const double blo[3], const double bhi[3])
-{
-    for (int k = 0; k < 3; k++) {
-        lo[k] = fmin(lo[k], blo[k]);
-        hi[k] = fmax(hi[k], bhi[k]);
-    }
-}
-
-static int bin_of(double c, double lo, double ext)
-{
-    int b = (int)((c - lo) / ext * SAH_BINS);
-    return b < 0 ? 0 : b >= SAH_BINS ? SAH_BINS - 1 : b;
-}
-
-/* Median split on the axis along which the centres spread most: sorts
- * items[0..m) and returns m/2. */
-static int median_split(item *items, int m, const double clo[3], const double chi[3])
-{
-    int axis = 0;
-    for (int k = 1; k < 3; k++)
-        if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
-    qsort(items, (size_t)m, sizeof *items, axis == 0 ? cmp_x : axis == 1 ? cmp_y : cmp_z);
-    return m / 2;
-}
-
-/* Split items[0..m) (m > GROUP_MAX) in two, in place; returns the count on
- * the left, 0 < l < m.  Binned SAH: of the planes between SAH_BINS bins of
- * the centres on each axis, the one least in area(L)·|L| + area(R)·|R| —
- * the expected box tests of a ray that meets the parent's box. */
-static int sah_split(item *items, int m, int depth)
-{
-    double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < m; i++)
-        grow(clo, chi, items[i].c, items[i].c);
-    if (depth >= SAH_MAX_DEPTH) return median_split(items, m, clo, chi);
-    double best = INFINITY;
-    int best_axis = -1, best_plane = 0;
-    for (int k = 0; k < 3; k++) {
-        double ext = chi[k] - clo[k];
-        if (!(ext > 0)) continue;
-        int cnt[SAH_BINS] = {0};
-        double blo[SAH_BINS][3], bhi[SAH_BINS][3];
-        for (int b = 0; b < SAH_BINS; b++)
-            for (int a = 0; a < 3; a++) {
-                blo[b][a] = INFINITY;
-                bhi[b][a] = -INFINITY;
-            }
-        for (int i = 0; i < m; i++) {
-            int b = bin_of(items[i].c[k], clo[k], ext);
-            cnt[b]++;
-            grow(blo[b], bhi[b], items[i].n->lo, items[i].n->hi);
-        }
-        /* left[p]: bins 0..p, the plane after bin p. */
-        double left_cost[SAH_BINS], lo[3] = {INFINITY, INFINITY, INFINITY},
-                                    hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        int nl = 0;
-        for (int p = 0; p < SAH_BINS - 1; p++) {
-            nl += cnt[p];
-            if (cnt[p]) grow(lo, hi, blo[p], bhi[p]);
-            left_cost[p] = nl ? half_area(lo, hi) * nl : INFINITY;
-        }
-        int nr = 0;
-        for (int a = 0; a < 3; a++) {
-            lo[a] = INFINITY;
-            hi[a] = -INFINITY;
-        }
-        for (int p = SAH_BINS - 2; p >= 0; p--) {
-            nr += cnt[p + 1];
-            if (cnt[p + 1]) grow(lo, hi, blo[p + 1], bhi[p + 1]);
-            double cost = nr ? left_cost[p] + half_area(lo, hi) * nr : INFINITY;
-            if (cost < best) {
-                best = cost;
-                best_axis = k;
-                best_plane = p;
-            }
-        }
-    }
-    if (best_axis < 0) return median_split(items, m, clo, chi); /* centres all equal */
-    double ext = chi[best_axis] - clo[best_axis];
-    int i = 0, j = m - 1;
-    for (;;) {
-        while (i <= j && bin_of(items[i].c[best_axis], clo[best_axis], ext) <= best_plane)
-            i++;
-        while (i <= j && bin_of(items[j].c[best_axis], clo[best_axis], ext) > best_plane)
-            j--;
-        if (i >= j) break;
-        item t = items[i];
-        items[i] = items[j];
-        items[j] = t;
-    }
-    return i; /* both sides nonempty: the plane's cost was finite */
 }
 
 static csg_node *group_node(builder *b)
@@ -405,16 +283,16 @@ static csg_node *group_node(builder *b)
 
 /* A union hierarchy over items[0..m); NULL when out of memory (the nodes
  * made are in b->made). */
-static csg_node *group_build(builder *b, item *items, int m, int depth)
+static csg_node *group_build(builder *b, iv_bvh_item *items, int m, int depth)
 {
     csg_node *g = group_node(b);
     if (!g) return NULL;
     if (m <= GROUP_MAX) {
         for (int i = 0; i < m; i++)
-            g->kids[i] = items[i].n;
+            g->kids[i] = b->ops[items[i].id];
         g->nkids = m;
     } else {
-        int l = sah_split(items, m, depth);
+        int l = iv_bvh_split(items, m, depth);
         g->kids[0] = group_build(b, items, l, depth + 1);
         g->kids[1] = g->kids[0] ? group_build(b, items + l, m - l, depth + 1) : NULL;
         if (!g->kids[1]) return NULL;
@@ -423,7 +301,10 @@ static csg_node *group_build(builder *b, item *items, int m, int depth)
     memcpy(g->lo, g->kids[0]->lo, sizeof g->lo);
     memcpy(g->hi, g->kids[0]->hi, sizeof g->hi);
     for (int i = 1; i < g->nkids; i++)
-        grow(g->lo, g->hi, g->kids[i]->lo, g->kids[i]->hi);
+        for (int k = 0; k < 3; k++) {
+            g->lo[k] = fmin(g->lo[k], g->kids[i]->lo[k]);
+            g->hi[k] = fmax(g->hi[k], g->kids[i]->hi[k]);
+        }
     op_totals(g);
     return g;
 }
@@ -435,7 +316,7 @@ static csg_node *group_build(builder *b, item *items, int m, int depth)
 static void group_op(csg_node *x, int from)
 {
     int m = x->nkids - from, nf = 0;
-    item *items = malloc((size_t)m * sizeof *items);
+    iv_bvh_item *items = malloc((size_t)m * sizeof *items);
     if (!items) return;
     for (int i = 0; i < m; i++) {
         csg_node *k = x->kids[from + i];
@@ -443,15 +324,19 @@ static void group_op(csg_node *x, int from)
         for (int a = 0; a < 3; a++)
             finite &= isfinite(k->lo[a]) && isfinite(k->hi[a]);
         if (!finite) continue;
-        for (int a = 0; a < 3; a++)
+        for (int a = 0; a < 3; a++) {
+            items[nf].lo[a] = k->lo[a];
+            items[nf].hi[a] = k->hi[a];
             items[nf].c[a] = 0.5 * (k->lo[a] + k->hi[a]);
-        items[nf++].n = k;
+        }
+        items[nf].id = from + i;
+        nf++;
     }
     if (nf <= GROUP_MAX) {
         free(items);
         return;
     }
-    builder b = {malloc(2 * (size_t)nf * sizeof *b.made), 0};
+    builder b = {x->kids, malloc(2 * (size_t)nf * sizeof *b.made), 0};
     csg_node *h = b.made ? group_build(&b, items, nf, 0) : NULL;
     free(items);
     if (!h) {

@@ -27,6 +27,7 @@
  * among the few candidates the one whose plane passes nearest the point.
  */
 #include "shape_kinds.h"
+#include "bvh_split.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -69,67 +70,29 @@ void mesh_release(iv_mesh *m)
 
 /* ---- building ------------------------------------------------------------------ */
 
-typedef struct build {
-    iv_mesh *m;
-    double (*cen)[3];
-    int *idx;
-} build;
-
-typedef struct keyed {
-    double key;
-    int idx;
-} keyed;
-
-static int cmp_keyed(const void *a, const void *b)
+/* Node over items[start, start+count) (an item's id is its triangle);
+ * returns its index.  Leaves of at most 4 triangles. */
+static int build_node(iv_mesh *m, iv_bvh_item *items, int start, int count, int depth)
 {
-    double x = ((const keyed *)a)->key, y = ((const keyed *)b)->key;
-    return (x > y) - (x < y);
-}
-
-/* Node over idx[start, start+count); returns its index.  Median split on the
- * longest axis of the centroids' box, leaves of at most 4 triangles. */
-static int build_node(build *b, int start, int count)
-{
-    iv_mesh *m = b->m;
     int ni = m->nn++;
     bnode *nd = &m->node[ni];
     for (int k = 0; k < 3; k++) {
         nd->lo[k] = INFINITY;
         nd->hi[k] = -INFINITY;
     }
-    double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = start; i < start + count; i++) {
-        const int *t = m->tri[b->idx[i]];
-        for (int j = 0; j < 3; j++)
-            for (int k = 0; k < 3; k++) {
-                nd->lo[k] = fmin(nd->lo[k], m->v[t[j]][k]);
-                nd->hi[k] = fmax(nd->hi[k], m->v[t[j]][k]);
-            }
+    for (int i = start; i < start + count; i++)
         for (int k = 0; k < 3; k++) {
-            clo[k] = fmin(clo[k], b->cen[b->idx[i]][k]);
-            chi[k] = fmax(chi[k], b->cen[b->idx[i]][k]);
+            nd->lo[k] = fmin(nd->lo[k], items[i].lo[k]);
+            nd->hi[k] = fmax(nd->hi[k], items[i].hi[k]);
         }
-    }
     nd->start = start;
     nd->count = count;
     nd->right = -1;
     if (count <= 4) return ni;
-    int axis = 0;
-    for (int k = 1; k < 3; k++)
-        if (chi[k] - clo[k] > chi[axis] - clo[axis]) axis = k;
-    keyed *ks = malloc((size_t)count * sizeof *ks);
-    if (ks) {
-        for (int i = 0; i < count; i++)
-            ks[i] = (keyed){b->cen[b->idx[start + i]][axis], b->idx[start + i]};
-        qsort(ks, (size_t)count, sizeof *ks, cmp_keyed);
-        for (int i = 0; i < count; i++)
-            b->idx[start + i] = ks[i].idx;
-        free(ks);
-    } /* out of memory: an unsorted split is slower, still correct */
-    int half = count / 2;
+    int l = iv_bvh_split(items + start, count, depth);
     m->node[ni].count = 0;
-    build_node(b, start, half);
-    int r = build_node(b, start + half, count - half);
+    build_node(m, items, start, l, depth + 1);
+    int r = build_node(m, items, start + l, count - l, depth + 1);
     m->node[ni].right = r;
     return ni;
 }
@@ -194,7 +157,7 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
     iv_mesh *m = calloc(1, sizeof *m);
     if (!m) return -1;
     int rc = -1;
-    build b = {m, NULL, NULL};
+    iv_bvh_item *items = malloc((size_t)nt * sizeof *items);
     int(*tri)[3] = malloc((size_t)nt * sizeof *tri);
     int *face = malloc((size_t)nt * sizeof *face);
     m->v = malloc((size_t)nverts * sizeof *m->v);
@@ -204,10 +167,7 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
     m->tri = malloc((size_t)nt * sizeof *m->tri);
     m->face = malloc((size_t)nt * sizeof *m->face);
     m->node = malloc((size_t)(2 * nt) * sizeof *m->node);
-    b.cen = malloc((size_t)nt * sizeof *b.cen);
-    b.idx = malloc((size_t)nt * sizeof *b.idx);
-    if (!tri || !face || !m->v || !m->pl || !m->tri || !m->face || !m->node || !b.cen || !b.idx)
-        goto done;
+    if (!tri || !face || !m->v || !m->pl || !m->tri || !m->face || !m->node || !items) goto done;
     memcpy(m->v, verts, (size_t)nverts * sizeof *m->v);
     m->nv = nverts;
     for (int k = 0; k < 3; k++) {
@@ -305,15 +265,19 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
     }
     m->volume = vol;
     for (int i = 0; i < t; i++) {
-        b.idx[i] = i;
-        for (int k = 0; k < 3; k++)
-            b.cen[i][k] = (verts[tri[i][0]][k] + verts[tri[i][1]][k] + verts[tri[i][2]][k]) / 3;
+        iv_bvh_item *it = &items[i];
+        for (int k = 0; k < 3; k++) {
+            const double a = verts[tri[i][0]][k], b = verts[tri[i][1]][k], c = verts[tri[i][2]][k];
+            it->lo[k] = fmin(a, fmin(b, c));
+            it->hi[k] = fmax(a, fmax(b, c));
+            it->c[k] = (a + b + c) / 3;
+        }
+        it->id = i;
     }
-    memcpy(m->tri, tri, (size_t)t * sizeof *tri); /* build_node reads m->tri */
-    build_node(&b, 0, t);
+    build_node(m, items, 0, t, 0);
     for (int i = 0; i < t; i++) {
-        memcpy(m->tri[i], tri[b.idx[i]], sizeof *tri);
-        m->face[i] = face[b.idx[i]];
+        memcpy(m->tri[i], tri[items[i].id], sizeof *tri);
+        m->face[i] = face[items[i].id];
     }
     atomic_init(&m->refs, 1);
     memset(s, 0, sizeof *s);
@@ -323,8 +287,7 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
 done:
     free(tri);
     free(face);
-    free(b.cen);
-    free(b.idx);
+    free(items);
     if (rc < 0) {
         m->refs = 1;
         mesh_release(m);
