@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "../src/intervals/bvh_split.h"
 #include "../src/intervals/intervals.h"
 
 /* ---- helpers ------------------------------------------------------------ */
@@ -352,7 +353,6 @@ Test(iv_list, merges_match_pointwise_truth)
 /* ---- shapes by hand -------------------------------------------------------- */
 
 TestSuite(iv_shape, .init = arena_setup, .fini = arena_teardown);
-
 
 /* Intersect and return the span count; the span goes to *sp. */
 static int hit(iv_shape s, double ox, double oy, double oz, double dx, double dy, double dz,
@@ -754,4 +754,59 @@ Test(iv_shape, intersect_matches_point_classifier)
         }
     }
     cr_assert(spans > 10000, "too few hits (%d) to mean anything", spans);
+}
+
+/* ---- the hierarchy split ------------------------------------------------- */
+
+static void cube_item(iv_bvh_item *it, double x, double y, double z, double h, int id)
+{
+    const double c[3] = {x, y, z};
+    for (int k = 0; k < 3; k++) {
+        it->lo[k] = c[k] - h;
+        it->hi[k] = c[k] + h;
+        it->c[k] = c[k];
+    }
+    it->id = id;
+}
+
+/* Every split keeps the items (a permutation) and leaves both sides
+ * nonempty, whatever the layout: random, all centres equal, two items, and
+ * past the SAH depth. */
+Test(iv_bvh, split_is_a_proper_partition)
+{
+    enum { N = 300 };
+    iv_bvh_item it[N];
+    rng_seed(11);
+    for (int round = 0; round < 40; round++) {
+        int m = 2 + rng_int(N - 1), same = round % 4 == 0;
+        for (int i = 0; i < m; i++)
+            cube_item(&it[i], same ? 1 : rng_uniform(-50, 50), same ? 2 : rng_uniform(-5, 5),
+                      same ? 3 : rng_uniform(0, 500), rng_uniform(0.1, 4), i);
+        int l = iv_bvh_split(it, m, round % 3 == 0 ? IV_BVH_SAH_DEPTH : 0);
+        cr_assert(l > 0 && l < m, "m %d l %d", m, l);
+        int seen[N] = {0};
+        for (int i = 0; i < m; i++)
+            seen[it[i].id]++;
+        for (int i = 0; i < m; i++)
+            cr_assert_eq(seen[i], 1, "item %d appears %d times", i, seen[i]);
+    }
+}
+
+/* Two tight clusters far apart along y: any sensible split separates them,
+ * and the area heuristic does — its cost is far below any mixed split's. */
+Test(iv_bvh, split_separates_clusters)
+{
+    enum { N = 64 };
+    iv_bvh_item it[N];
+    rng_seed(5);
+    for (int i = 0; i < N; i++) {
+        double y = i % 3 == 0 ? 1000 : 0; /* a third up there, unequal sizes */
+        cube_item(&it[i], rng_uniform(0, 1), y + rng_uniform(0, 1), rng_uniform(0, 1), 0.2, i);
+    }
+    int l = iv_bvh_split(it, N, 0);
+    for (int i = 0; i < N; i++) {
+        int far = it[i].id % 3 == 0;
+        cr_assert_eq(far, it[0].id % 3 == 0 ? i < l : i >= l, "item %d on the wrong side",
+                     it[i].id);
+    }
 }
