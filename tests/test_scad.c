@@ -532,3 +532,72 @@ Test(scad_limits, list_and_string_sizes)
         lines_free(&got);
     }
 }
+
+/* Evaluates src with a step limit (0: the default); the messages into m. */
+static int eval_steps(const char *src, lines *m, long max_steps)
+{
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.message = collect;
+    o.ud = m;
+    o.max_steps = max_steps;
+    scad_result r;
+    int rc = scad_eval_string("t.scad", src, &o, &r);
+    if (rc == 0) scad_result_free(&r);
+    return rc;
+}
+
+Test(scad_env, special_variables_are_dynamically_scoped)
+{
+    /* each well-known $-variable is found without walking the caller chain
+     * (eval.c: scad_env.special); what OpenSCAD 2021.01 echoes */
+    lines m = {0};
+    cr_assert_eq(eval_steps("$fa = 6;\n"
+                            "module m() { echo($fn, $fa, $t, $preview); n(); }\n"
+                            "module n() { echo(inner = $fn); }\n"
+                            "m($fn = 5);\n"
+                            "f = function() $fn;\n"
+                            "echo(let($fn = 7) f());\n"
+                            "echo($fs);\n"
+                            "for ($fn = [1, 2]) echo(loop = $fn);\n"
+                            "module k() { $fs = 0.5; children(); }\n"
+                            "k() echo(child = $fs);\n",
+                            &m, 0),
+                 0);
+    const char *want[] = {"ECHO: 5, 6, 0, true", "ECHO: inner = 5", "ECHO: 7",          "ECHO: 2",
+                          "ECHO: loop = 1",      "ECHO: loop = 2",  "ECHO: child = 0.5"};
+    filter(&m);
+    cr_assert_eq(m.n, 7);
+    for (int i = 0; i < 7; i++)
+        cr_expect_str_eq(m.v[i], want[i]);
+    lines_free(&m);
+}
+
+Test(scad_limits, deep_recursion_with_a_primitive_per_level, .timeout = 10)
+{
+    /* each cube() reads $fn, $fa, $fs and the $rs_ variables: once a walk
+     * up all 10000 callers each (seconds), now O(1) */
+    lines m = {0};
+    cr_assert_eq(eval_steps("module tree(n) { cube(1); translate([0, 0, 1]) tree(n + 1); }\n"
+                            "tree(0);",
+                            &m, 0),
+                 -1);
+    cr_expect(has_line(
+        &m, "t.scad:1:48: error: recursion deeper than 10000 calls (calling module 'tree')"));
+    lines_free(&m);
+}
+
+Test(scad_limits, exponential_children_stop_at_the_step_limit, .timeout = 10)
+{
+    /* 2^30 children() instantiations: each counts as a call */
+    lines m = {0};
+    cr_assert_eq(
+        eval_steps(
+            "module m(n) { if (n > 0) m(n - 1) { children(); children(); } else children(); }\n"
+            "m(30) cube();",
+            &m, 100000),
+        -1);
+    cr_expect(has_line(
+        &m, "t.scad:1:49: error: evaluation took more than 100000 steps (calls and loop values)"));
+    lines_free(&m);
+}

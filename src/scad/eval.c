@@ -135,6 +135,7 @@ static scad_env *env_new(scad_eval *ev, scad_env *parent, scad_env *dyn, const s
     e->defs = defs;
     e->vars = e->inline_vars;
     e->cap = 4;
+    if (dyn) memcpy(e->special, dyn->special, sizeof e->special);
     return e;
 }
 
@@ -173,6 +174,32 @@ void scad_eval_free_captured(scad_eval *ev)
     ev->captured = NULL;
 }
 
+/* The well-known special variables of scad_env.special, by index. */
+static const char *const special_names[SCAD_ENV_NSPECIAL] = {
+    "$fn", "$fa", "$fs", "$t", "$preview", "$rs_reflect", "$rs_absorb", "$rs_ior", "$rs_light"};
+
+/* The index of name (which starts with '$') in special_names, or -1. */
+static int special_index(const char *name)
+{
+    switch (name[1]) {
+    case 'f':
+        if (name[2] && !name[3])
+            return name[2] == 'n' ? 0 : name[2] == 'a' ? 1 : name[2] == 's' ? 2 : -1;
+        return -1;
+    case 't':
+        return name[2] ? -1 : 3;
+    case 'p':
+        return strcmp(name, "$preview") ? -1 : 4;
+    case 'r': {
+        if (name[2] != 's' || name[3] != '_') return -1;
+        int k = name[4] == 'r' ? 5 : name[4] == 'a' ? 6 : name[4] == 'i' ? 7 : 8;
+        return strcmp(name, special_names[k]) ? -1 : k;
+    }
+    default:
+        return -1;
+    }
+}
+
 void scad_env_set(scad_env *env, const char *name, scad_value v)
 {
     for (int i = 0; i < env->nvars; i++) {
@@ -197,6 +224,10 @@ void scad_env_set(scad_env *env, const char *name, scad_value v)
     env->vars[env->nvars].name = name;
     env->vars[env->nvars].v = v;
     env->nvars++;
+    if (name[0] == '$') {
+        int k = special_index(name);
+        if (k >= 0) env->special[k] = env;
+    }
 }
 
 static scad_var *env_find(scad_env *env, const char *name)
@@ -210,6 +241,15 @@ scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_
                            int *found)
 {
     int special = name[0] == '$';
+    int k = special ? special_index(name) : -1;
+    if (k >= 0) { /* a well-known one: where it is, at once */
+        scad_var *v = env->special[k] ? env_find(env->special[k], name) : NULL;
+        if (v) {
+            if (found) *found = 1;
+            return v->v;
+        }
+        env = NULL;
+    }
     for (scad_env *e = env; e; e = special ? e->dyn : e->parent) {
         scad_var *v = env_find(e, name);
         if (v) {
@@ -1564,6 +1604,9 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
         m = m->parent;
     if (!m) return NULL;
     int n = m->children ? m->children->nstmts : 0;
+    /* instantiating the caller's children is a call of their scope, and
+     * counts as one more step, as a user module's body does */
+    if (count_step(ev, st->loc)) return NULL;
     if (a->n == 0) {
         scad_geom *r =
             n ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, NULL, 0)
@@ -1688,10 +1731,11 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_geom *r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
         return ev->dump && r ? scad_dump_node(ev, "group()", r) : r;
     }
-    scad_builtin_mod bm = scad_builtin_module(name);
-    if (!bm && scad_dump_is_builtin(name)) bm = m_dump_only;
     int control = !strcmp(name, "for") || !strcmp(name, "intersection_for") ||
                   !strcmp(name, "echo") || !strcmp(name, "children");
+    /* the control modules need no table search (children() runs often) */
+    scad_builtin_mod bm = control ? NULL : scad_builtin_module(name);
+    if (!bm && !control && scad_dump_is_builtin(name)) bm = m_dump_only;
     if (!bm && !control) {
         scad_diag_warning(ev->d, st->loc, "Ignoring unknown module '%s'", name);
         return NULL;

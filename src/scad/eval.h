@@ -46,15 +46,29 @@ typedef struct scad_var {
     scad_value v;
 } scad_var;
 
+/* The special variables that every primitive reads (facets, animation,
+ * rayscad's materials), which each environment finds in O(1): see
+ * scad_env.special. */
+enum { SCAD_ENV_NSPECIAL = 9 };
+
 /* A context: variables, the definitions of a scope, lexical parent (for
  * plain names, functions and modules) and dynamic parent (the caller, for
- * $-variables).  A module call's context also knows its children. */
+ * $-variables).  A module call's context also knows its children.
+ *
+ * special[k] is the nearest environment on the dynamic chain, this one
+ * included, that defines the k-th well-known special variable (eval.c:
+ * special_names), or NULL: inherited from dyn when the environment is
+ * made, and pointed at itself when the name is first set here.  It stays
+ * exact because an environment's variables are only set while no
+ * environment below it on the dynamic chain is alive, except for those a
+ * closure captured, which never start a $-lookup again. */
 struct scad_env {
     scad_env *parent, *dyn;
     const scad_scope *defs;
     scad_var *vars;
     int nvars, cap;
     scad_var inline_vars[4];
+    scad_env *special[SCAD_ENV_NSPECIAL];
     int is_module;
     const scad_scope *children;
     scad_env *children_env;

@@ -179,12 +179,7 @@ static void run_job(job *j)
         return;
     }
     scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
-    scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
-    ev.builtins = builtins;
-    ev.facets = j->opt ? j->opt->facets : SCAD_FACETS_AUTO;
-    static const scad_services no_services;
-    ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
-    if (file) {
+    if (builtins) { /* set before any environment below it is made (eval.h) */
         set_num(builtins, "PI", 3.14159265358979323846);
         set_num(builtins, "$fn", 0);
         set_num(builtins, "$fa", 12);
@@ -194,6 +189,13 @@ static void run_job(job *j)
         set_num(builtins, "$vpd", 500);
         set_vec3(builtins, "$vpr", 0, 0, 0);
         set_vec3(builtins, "$vpt", 0, 0, 0);
+    }
+    scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
+    ev.builtins = builtins;
+    ev.facets = j->opt ? j->opt->facets : SCAD_FACETS_AUTO;
+    static const scad_services no_services;
+    ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
+    if (file) {
         scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
         /* openscad's camera takes the file's own $vp* values over its
          * --viewall/--autocenter defaults, and says so */
