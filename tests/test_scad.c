@@ -601,3 +601,21 @@ Test(scad_limits, exponential_children_stop_at_the_step_limit, .timeout = 10)
         &m, "t.scad:1:49: error: evaluation took more than 100000 steps (calls and loop values)"));
     lines_free(&m);
 }
+
+Test(scad_limits, concat_counts_the_elements_it_copies)
+{
+    /* doubling by concat: each copied element is a step, as [each a, each
+     * b] counts them, so the step limit stops it long before the list limit
+     * (2^26 elements, a GB) */
+    lines m = {0};
+    cr_assert_eq(eval_steps("function d(l, n) = n == 0 ? l : d(concat(l, l), n - 1);\n"
+                            "echo(len(d([1], 40)));",
+                            &m, 100000),
+                 -1);
+    cr_expect(has_line(&m, "t.scad:1:35: error: evaluation took more than 100000 steps (concat)"));
+    lines_free(&m);
+    /* under the limit, the same list as before */
+    cr_assert_eq(eval_steps("echo(concat([1, [2]], 3, [], [[4]], \"ab\"));", &m, 100), 0);
+    cr_expect(has_line(&m, "ECHO: [1, [2], 3, [4], \"ab\"]"));
+    lines_free(&m);
+}

@@ -282,6 +282,8 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
         scad_eval_error(ev, loc, "list longer than %d elements (concat)", ev->max_list);
         return scad_undef();
     }
+    /* each element copied is a step, as [each a, each b] counts them */
+    if (scad_eval_steps(ev, (long)total, loc, "concat")) return scad_undef();
     int n = (int)total;
     scad_value r = scad_vec_new(n);
     if (r.kind != SV_VEC) {

@@ -90,6 +90,18 @@ static int count_step(scad_eval *ev, scad_loc loc)
     return -1;
 }
 
+int scad_eval_steps(scad_eval *ev, long n, scad_loc loc, const char *what)
+{
+    if (ev->aborted) return -1;
+    if (n <= ev->max_steps - ev->steps) {
+        ev->steps += n;
+        return 0;
+    }
+    ev->steps = ev->max_steps;
+    scad_eval_error(ev, loc, "evaluation took more than %ld steps (%s)", ev->max_steps, what);
+    return -1;
+}
+
 /* Called on entry to every user function or module: 0 to go on. */
 static int enter_call(scad_eval *ev, scad_loc loc, const char *what, const char *name)
 {

@@ -138,6 +138,12 @@ void scad_bind_defaults(scad_eval *ev, scad_env *target, scad_env *def_env,
                         const scad_args *params);
 void scad_bind_given(scad_env *target, const scad_argv *argv);
 
+/* n steps of work done at once by a builtin (the elements concat copies,
+ * the points minkowski sums …), counted against the step limit as the
+ * evaluator counts calls and loop values: 0 to go on; past the limit, the
+ * error "evaluation took more than N steps (what)" at loc and -1. */
+int scad_eval_steps(scad_eval *ev, long n, scad_loc loc, const char *what);
+
 /* Error: reports "file:line:col: error: …" and stops the evaluation. */
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));

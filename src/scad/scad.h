@@ -110,9 +110,9 @@ typedef struct scad_options {
     int max_string;    /* bytes of one string, default 2^28 */
     /* Steps of work: function calls, module instantiations (builtin ones
      * and children() included) and every value a loop iterates over or a
-     * list is built from; default 10^7 (seconds of work), so that nested
-     * loops and exponential recursion end with "evaluation took more than N
-     * steps". */
+     * list is built from (concat's copies included); default 10^7 (seconds
+     * of work), so that nested loops and exponential recursion end with
+     * "evaluation took more than N steps". */
     long max_steps;
     /* How round primitives are built (a scad_facets; 0 is AUTO). */
     int facets;
