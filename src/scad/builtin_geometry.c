@@ -25,6 +25,7 @@
  * once the csg nodes (which retain their own) exist.
  */
 #include "builtin_geometry.h"
+#include "hull3d.h"
 #include "material.h"
 
 #include <math.h>
@@ -118,7 +119,7 @@ static scad_geom *hull_leaf(scad_eval *ev, scad_env *env, const scad_argv *a, co
                             int n, const scad_state *state, const csg_affine local)
 {
     iv_shape s;
-    if (iv_shape_hull(&s, P, n) != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
+    if (scad_hull3d(&s, P, n) != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
     return optics_leaf(ev, env, a, &s, state, local);
 }
 
@@ -1177,8 +1178,13 @@ static scad_geom *hull_plain(scad_eval *ev, scad_env *env, const scad_stmt *st, 
     scad_geom *g = NULL;
     if (P.any3d && P.n >= 4) {
         iv_shape s;
-        if (iv_shape_hull(&s, (const double(*)[3])P.p, P.n) == 0 && scad_geom_keep(ev, &s) == 0)
-            g = leaf_at(ev, &s, state, NULL);
+        int rc = scad_hull3d(&s, (const double(*)[3])P.p, P.n);
+        if (rc == 0 && scad_geom_keep(ev, &s) == 0) g = leaf_at(ev, &s, state, NULL);
+        if (rc == SCAD_HULL_TOO_MANY)
+            scad_diag_error(ev->d, st->loc,
+                            "hull() of %d points has more than 65536 faces, more than a "
+                            "polytope holds; nothing is drawn",
+                            P.n);
     } else if (!P.any3d && P.n >= 3) {
         double(*H)[2] = malloc((size_t)(P.n + 1) * sizeof *H);
         if (H) {

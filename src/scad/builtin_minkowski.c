@@ -21,6 +21,7 @@
  * The number of part combinations is capped (MAX_PARTS).
  */
 #include "geom2d.h"
+#include "hull3d.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -116,7 +117,7 @@ static int fragments(const mctx *c, double r)
 static int mesh_is_convex(const double (*V)[3], int n)
 {
     iv_shape h;
-    if (iv_shape_hull(&h, V, n) != 0) return 0;
+    if (scad_hull3d(&h, V, n) != 0) return 0;
     int m;
     iv_polytope_vertices(&h, &m);
     iv_shape_release(&h);
@@ -243,7 +244,7 @@ static int hull_of_sums(const part *a, const part *b, iv_shape *out)
         for (int j = 0; j < b->n; j++, k++)
             for (int d = 0; d < 3; d++)
                 S[k][d] = a->p[i][d] + b->p[j][d];
-    int rc = iv_shape_hull(out, (const double(*)[3])S, (int)n);
+    int rc = scad_hull3d(out, (const double(*)[3])S, (int)n);
     free(S);
     return rc;
 }
@@ -287,7 +288,7 @@ static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
         scad_geom *one = NULL;
         for (int i = 0; i < acc.n; i++) {
             iv_shape h;
-            if (iv_shape_hull(&h, (const double(*)[3])acc.v[i].p, acc.v[i].n) != 0) continue;
+            if (scad_hull3d(&h, (const double(*)[3])acc.v[i].p, acc.v[i].n) != 0) continue;
             if (scad_geom_keep(ev, &h) != 0) continue;
             one = scad_geom_leaf(ev, &h, state);
             if (u) scad_geom_add(ev, u, one);

@@ -1,0 +1,25 @@
+/*
+ * hull3d.h — private to src/scad: the 3D convex hull that hull(),
+ * minkowski() and OpenSCAD-faceted spheres and cylinders build their
+ * polytopes with.
+ */
+#ifndef RAYSCAD_SCAD_HULL3D_H
+#define RAYSCAD_SCAD_HULL3D_H
+
+#include "../intervals/intervals.h"
+
+enum {
+    SCAD_HULL_FLAT = -1,      /* no volume (fewer than 4 points off one plane) */
+    SCAD_HULL_BAD_INPUT = -2, /* a coordinate is not finite */
+    SCAD_HULL_NO_MEMORY = -3,
+    SCAD_HULL_TOO_MANY = -4 /* more faces than a polytope holds (65536) */
+};
+
+/* The convex hull of the n points P (borrowed) as a polytope in *s, which
+ * then holds the only reference: the same solid iv_shape_hull makes — the
+ * same tolerance, points within it of a face count as inside — in
+ * O(n log n) expected time instead of O(n · faces).  Returns 0, or one of
+ * the SCAD_HULL_ codes (nothing made). */
+int scad_hull3d(iv_shape *s, const double (*P)[3], int n);
+
+#endif
