@@ -86,8 +86,11 @@ int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
  * [tmin, tmax].  Scratch and the result's storage come from arena a (the
  * result stays valid until the arena is reset).  Subtrees whose bounds the
  * ray misses are skipped, and so is every operand after the first of an
- * intersection or difference whose first operand is empty (Roth).
- * Returns 0, or -1 when the arena is out of memory. */
+ * intersection or difference whose first operand is empty (Roth).  No list
+ * made along the way (a leaf's, a merge's, the result) may hold more spans
+ * than the arena's list limit, iv_arena_list_limit.
+ * Returns 0, or -1 when the arena is out of memory or a list would pass
+ * that limit; iv_arena_failure(a) then says which. */
 int csg_trace(const csg_scene *s, int r, const double o[3], const double d[3], double tmin,
               double tmax, iv_arena *a, iv_list *out);
 
@@ -98,8 +101,9 @@ int csg_trace(const csg_scene *s, int r, const double o[3], const double d[3], d
  * the nearest boundary found so far, so a ray through a wide union costs
  * about what its first hit costs.  For an opaque first surface, or a shadow
  * ray that any opaque surface stops, this is all a renderer needs.  Scratch
- * comes from arena a.  Returns 1 with *hit set, 0 when the list is empty
- * (*hit untouched), or -1 when the arena is out of memory. */
+ * comes from arena a, and its lists obey the arena's list limit as
+ * csg_trace's do.  Returns 1 with *hit set, 0 when the list is empty
+ * (*hit untouched), or -1 as csg_trace fails (iv_arena_failure says why). */
 int csg_trace_first(const csg_scene *s, int r, const double o[3], const double d[3], double tmin,
                     double tmax, iv_arena *a, iv_bound *hit);
 

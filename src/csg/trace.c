@@ -12,6 +12,14 @@
  * holds at most twice the spans the leaves along the ray produce (one per
  * convex primitive); it grows by doubling, so the waste stays bounded too.
  *
+ * The arena's list limit (iv_arena_list_limit, M) caps every list made
+ * along the way: a leaf's (whose scratch may take up to M spans' room) and
+ * each merge's.  The inputs of a merge are then at most M each, so one ray
+ * holds at most M spans per open frame plus 4M for the merge at hand,
+ * whatever the model; a list that would pass M ends the trace with
+ * IV_ARENA_LIST_TOO_LONG recorded in the arena.  The test is one compare
+ * per leaf and per merge.
+ *
  * Invariant: a subtree evaluated for the range [t0, t1] yields exactly its
  * true interval list clipped to [t0, t1].  That is what lets a node whose
  * bounds the segment misses return the empty list, and lets the operands of
@@ -40,8 +48,16 @@ typedef struct ray {
     iv_arena *a;
     iv_span *sp; /* the span stack */
     int cap;
+    int max;   /* spans one list may hold: the arena's list limit */
     frame *fr; /* s->max_depth frames */
 } ray;
+
+/* A list would hold more than r->max spans: record why, and fail. */
+static int too_long(ray *r)
+{
+    iv_arena_record_failure(r->a, IV_ARENA_LIST_TOO_LONG);
+    return -1;
+}
 
 /* Make room for `need` spans, keeping the first `live`. */
 static int reserve(ray *r, long need, int live)
@@ -87,10 +103,13 @@ static int box_entry(const ray *r, const csg_fnode *n, double t0, double t1, dou
 }
 
 /* A leaf's list, clipped to [t0, t1], written at span index `at`; its
- * length, or -1 when the arena is out of memory.  Convex shapes append one
- * span, but the shape gets all the room left on the span stack (at least 16)
- * and, should it report that is not enough, twice as much again, so shapes
- * with more spans need no size query here. */
+ * length, or -1 when the arena is out of memory or the list is too long.
+ * Convex shapes append one span, but the shape gets all the room left on
+ * the span stack (at least 16) and, should it report that is not enough,
+ * twice as much again, so shapes with more spans need no size query here.
+ * The room stops growing past r->max spans: a mesh keeps its crossings
+ * there, two to a span, before pairing them, so a shape that cannot make do
+ * with that crosses the ray more than 2·max times. */
 static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
 {
     const csg_prim *p = &r->s->prims[prim];
@@ -104,8 +123,9 @@ static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
         iv_list l = {r->sp + at, 0, r->cap - at};
         if (iv_shape_intersect(&p->shape, o, d, prim, &l) >= 0) {
             iv_list_clip(&l, t0, t1);
-            return l.n;
+            return l.n <= r->max ? l.n : too_long(r);
         }
+        if (r->cap - at > r->max) return too_long(r);
         if (reserve(r, at + 2L * (r->cap - at), at) != 0) return -1;
     }
 }
@@ -115,7 +135,7 @@ static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
  * arena is out of memory. */
 static int ray_init(ray *r, const csg_scene *s, const double o[3], const double d[3], iv_arena *a)
 {
-    *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0};
+    *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0, .max = iv_arena_list_limit(a)};
     for (int k = 0; k < 3; k++) {
         r->o[k] = o[k];
         r->d[k] = d[k];
@@ -128,7 +148,8 @@ static int ray_init(ray *r, const csg_scene *s, const double o[3], const double 
 
 /* The list of the subtree at node `node`, clipped to [tmin, tmax], written at
  * span index `at` (read it from r->sp after the call: the stack may move).
- * Returns its length, or -1 when the arena is out of memory. */
+ * Returns its length, or -1 when the arena is out of memory or a list would
+ * pass r->max (the arena records which). */
 static int eval(ray *r, int32_t node, double tmin, double tmax, int at)
 {
     const csg_fnode *nodes = r->s->nodes;
@@ -180,6 +201,7 @@ static int eval(ray *r, int32_t node, double tmin, double tmax, int at)
                     iv_list_difference(&la, &lb, &lo);
                     break;
                 }
+                if (lo.n > r->max) return too_long(r);
                 memcpy(r->sp + base, lo.v, (size_t)lo.n * sizeof *lo.v);
                 f->nacc = lo.n;
             }

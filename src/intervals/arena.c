@@ -11,6 +11,11 @@
  * repeats the same pattern of requests after a reset (one ray after another)
  * touches malloc only while warming up.  `held` is the sum of all chunk
  * capacities, which is what the optional limit caps.
+ *
+ * The arena also carries two fields for the per-ray work that draws on it
+ * (intervals.h says why): the list limit csg_trace enforces, and the first
+ * failure recorded, which a reset keeps so that a worker can still ask for
+ * the reason after it has rewound its scratch.
  */
 #include "intervals.h"
 
@@ -32,6 +37,10 @@ struct iv_arena {
     size_t first; /* size of the first chunk, and the floor for later ones */
     size_t held;  /* sum of cap over all chunks */
     size_t limit; /* 0: none */
+
+    /* for the per-ray work that draws on the arena */
+    int list_limit;                /* >= 1: spans one list may hold */
+    iv_arena_failure_kind failure; /* the first recorded, or IV_ARENA_OK */
 };
 
 /* Round up to a multiple of ALIGN; returns 0 on overflow. */
@@ -66,6 +75,8 @@ iv_arena *iv_arena_new(size_t first_chunk)
     a->head = a->cur = NULL;
     a->held = 0;
     a->limit = 0;
+    a->list_limit = IV_LIST_LIMIT_DEFAULT;
+    a->failure = IV_ARENA_OK;
     return a;
 }
 
@@ -93,11 +104,43 @@ void iv_arena_set_limit(iv_arena *a, size_t bytes)
     a->limit = bytes;
 }
 
+void iv_arena_set_list_limit(iv_arena *a, int n)
+{
+    a->list_limit = n > 0 ? n : IV_LIST_LIMIT_DEFAULT;
+}
+
+int iv_arena_list_limit(const iv_arena *a)
+{
+    return a->list_limit;
+}
+
+iv_arena_failure_kind iv_arena_failure(const iv_arena *a)
+{
+    return a->failure;
+}
+
+void iv_arena_record_failure(iv_arena *a, iv_arena_failure_kind why)
+{
+    if (a->failure == IV_ARENA_OK) a->failure = why;
+}
+
+void iv_arena_clear_failure(iv_arena *a)
+{
+    a->failure = IV_ARENA_OK;
+}
+
+/* Every NULL iv_arena_alloc returns goes through here. */
+static void *refuse(iv_arena *a)
+{
+    iv_arena_record_failure(a, IV_ARENA_OUT_OF_MEMORY);
+    return NULL;
+}
+
 void *iv_arena_alloc(iv_arena *a, size_t bytes)
 {
     /* Zero-byte requests still get a distinct, aligned pointer. */
     size_t need = round_up(bytes ? bytes : 1);
-    if (need == 0) return NULL;
+    if (need == 0) return refuse(a);
     if (a->cur && a->cur->cap - a->cur->used >= need) {
         void *p = a->cur->base + a->cur->used;
         a->cur->used += need;
@@ -119,11 +162,12 @@ void *iv_arena_alloc(iv_arena *a, size_t bytes)
     if (a->cur && cap <= SIZE_MAX / 2) cap *= 2;
     if (cap < need) cap = need;
     if (a->limit && (a->held > a->limit || cap > a->limit - a->held)) {
-        if (need > a->limit || a->held > a->limit - need) return NULL;
+        if (need > a->limit || a->held > a->limit - need) return refuse(a);
         cap = need; /* what still fits under the cap */
     }
     chunk *c = chunk_new(cap);
-    if (!c) return NULL;
+    if (!c && cap > need) c = chunk_new(cap = need); /* near a memory limit */
+    if (!c) return refuse(a);
     a->held += cap;
     if (!a->cur) {
         /* Empty arena, or every chunk is skipped: link at the tail. */

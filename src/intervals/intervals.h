@@ -29,12 +29,46 @@ typedef struct iv_arena iv_arena;
 iv_arena *iv_arena_new(size_t first_chunk);
 void iv_arena_free(iv_arena *a);
 /* Returns 16-byte aligned memory for `bytes`, or NULL when out of memory or
- * when the arena's limit (iv_arena_set_limit) would be passed. */
+ * when the arena's limit (iv_arena_set_limit) would be passed (recorded as
+ * IV_ARENA_OUT_OF_MEMORY, see iv_arena_failure). */
 void *iv_arena_alloc(iv_arena *a, size_t bytes);
-/* Forget every allocation; keeps the chunks for reuse. */
+/* Forget every allocation; keeps the chunks for reuse.  The recorded
+ * failure (iv_arena_failure) stays. */
 void iv_arena_reset(iv_arena *a);
 /* Cap on the total bytes the arena may hold (0 = no cap). */
 void iv_arena_set_limit(iv_arena *a, size_t bytes);
+
+/* The arena is also where a thread's per-ray work keeps its limit and its
+ * first failure, since every query of that work takes the arena: a worker
+ * that sees a query fail asks the arena why, after the fact, without every
+ * caller in between passing a reason along.
+ *
+ * IV_LIST_LIMIT_DEFAULT: the spans one interval list may hold while a ray
+ * is evaluated (csg_trace).  2^20 spans are 32 MiB; a ray would have to
+ * cross a million separate pieces of solid to need them, so a list that
+ * long comes from a runaway model (a loop unioning thin slabs along one
+ * line), and the limit stops it before the per-thread scratch grows by
+ * gigabytes. */
+enum { IV_LIST_LIMIT_DEFAULT = 1 << 20 };
+
+/* Set the spans one list may hold (n >= 1; n <= 0 restores the default);
+ * iv_arena_list_limit reads it back. */
+void iv_arena_set_list_limit(iv_arena *a, int n);
+int iv_arena_list_limit(const iv_arena *a);
+
+typedef enum iv_arena_failure_kind {
+    IV_ARENA_OK = 0,
+    IV_ARENA_OUT_OF_MEMORY, /* malloc refused, or the byte cap was reached */
+    IV_ARENA_LIST_TOO_LONG  /* a list would pass iv_arena_list_limit */
+} iv_arena_failure_kind;
+
+/* The first failure since the arena was made: iv_arena_alloc records
+ * OUT_OF_MEMORY when it returns NULL, and users of the arena record what
+ * they detect (csg_trace: LIST_TOO_LONG).  Later failures do not overwrite
+ * the first one; iv_arena_clear_failure forgets it. */
+iv_arena_failure_kind iv_arena_failure(const iv_arena *a);
+void iv_arena_record_failure(iv_arena *a, iv_arena_failure_kind why);
+void iv_arena_clear_failure(iv_arena *a);
 
 /* ---- interval lists ----------------------------------------------------- */
 
