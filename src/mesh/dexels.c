@@ -52,6 +52,8 @@ void mesh_options_default(mesh_options *o)
     o->threads = 0;
     o->root = 0;
     o->feature_angle_deg = 30;
+    o->max_cells = 0;
+    o->max_intervals = 0;
 }
 
 void mesh_dexels_free(mesh_dexels *d)
@@ -87,7 +89,7 @@ typedef struct worker {
     iv_arena *arena;
     mesh_hit *buf;
     size_t n, cap;
-    int failed; /* 1: out of memory */
+    int failed; /* an iv_arena_failure_kind (OUT_OF_MEMORY also for buf); 0: none */
 } worker;
 
 typedef struct job {
@@ -172,7 +174,9 @@ static void *work(void *arg)
         j->rows[r].worker = w->id;
         j->rows[r].start = w->n;
         if (cast_row(w, r) != 0) {
-            w->failed = 1;
+            w->failed = iv_arena_failure(w->arena) == IV_ARENA_LIST_TOO_LONG
+                            ? IV_ARENA_LIST_TOO_LONG
+                            : IV_ARENA_OUT_OF_MEMORY;
             pthread_mutex_lock(&j->lock);
             j->stop = 1;
             pthread_mutex_unlock(&j->lock);
@@ -183,7 +187,7 @@ static void *work(void *arg)
 }
 
 static int cast_family(const csg_scene *s, int root, mesh_dexels *d, int a, int nthreads,
-                       char *err, size_t errlen)
+                       int max_intervals, char *err, size_t errlen)
 {
     job j;
     memset(&j, 0, sizeof j);
@@ -212,8 +216,10 @@ static int cast_family(const csg_scene *s, int root, mesh_dexels *d, int a, int 
         ws[t].job = &j;
         ws[t].id = t;
         ws[t].arena = iv_arena_new(0);
-        if (!ws[t].arena)
-            ws[t].failed = 1;
+        if (ws[t].arena)
+            iv_arena_set_list_limit(ws[t].arena, max_intervals);
+        else
+            ws[t].failed = IV_ARENA_OUT_OF_MEMORY;
     }
     for (int t = 0; t < nthreads; t++)
         if (ws[t].failed)
@@ -230,9 +236,17 @@ static int cast_family(const csg_scene *s, int root, mesh_dexels *d, int a, int 
         pthread_join(th[t], NULL);
     pthread_mutex_destroy(&j.lock);
 
-    int failed = j.stop;
-    for (int t = 0; t < nthreads; t++)
-        failed |= ws[t].failed;
+    int failed = j.stop, too_long = 0;
+    for (int t = 0; t < nthreads; t++) {
+        failed |= ws[t].failed != 0;
+        too_long |= ws[t].failed == IV_ARENA_LIST_TOO_LONG;
+    }
+    if (too_long) {
+        snprintf(err, errlen, "a ray's interval list holds more than %d intervals",
+                 max_intervals > 0 ? max_intervals : IV_LIST_LIMIT_DEFAULT);
+        rc = MESH_ERR_INTERVALS;
+        goto done;
+    }
     if (failed) {
         snprintf(err, errlen, "out of memory casting rays");
         goto done;
@@ -327,16 +341,30 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
     }
     d->h = h;
     size_t rays = 1;
+    double cells[3], total = 1;
     for (int a = 0; a < 3; a++) {
         d->org[a] = lo[a] - (1 + PAD_FRAC) * h;
-        double cells = ceil((hi[a] - d->org[a]) / h) + 1;
-        if (!(cells <= MAX_CELLS)) {
+        cells[a] = ceil((hi[a] - d->org[a]) / h) + 1;
+        total *= cells[a];
+    }
+    /* The limit the caller chose comes first, so that it is the one named
+     * for a grid that breaks both. */
+    long long max_cells = o->max_cells > 0 ? o->max_cells : MESH_MAX_CELLS_DEFAULT;
+    if (!(total <= (double)max_cells)) {
+        snprintf(err, errlen,
+                 "a grid of %.0f x %.0f x %.0f cells (spacing %g) is %.0f cells, more than %lld",
+                 cells[0], cells[1], cells[2], h, total, max_cells);
+        free(d);
+        return MESH_ERR_CELLS;
+    }
+    for (int a = 0; a < 3; a++) {
+        if (!(cells[a] <= MAX_CELLS)) {
             snprintf(err, errlen, "grid of %.0f cells along %c is more than %d cells per side",
-                     cells, "xyz"[a], MAX_CELLS);
+                     cells[a], "xyz"[a], MAX_CELLS);
             free(d);
             return -1;
         }
-        d->n[a] = (int)cells;
+        d->n[a] = (int)cells[a];
     }
     for (int a = 0; a < 3; a++) {
         int u, v;
@@ -350,9 +378,10 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
     }
     int nt = thread_count(o);
     for (int a = 0; a < 3; a++) {
-        if (cast_family(s, o->root, d, a, nt, err, errlen) != 0) {
+        int rc = cast_family(s, o->root, d, a, nt, o->max_intervals, err, errlen);
+        if (rc != 0) {
             mesh_dexels_free(d);
-            return -1;
+            return rc;
         }
     }
     *out = d;

@@ -137,11 +137,12 @@ int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_
 {
     mesh_dexels *d;
     *out = NULL;
-    if (mesh_dexels_new(s, o, &d, err, errlen) != 0)
-        return -1;
+    int rc = mesh_dexels_new(s, o, &d, err, errlen);
+    if (rc != 0)
+        return rc;
     if (m)
         mesh_dexels_measure(d, m);
-    int rc = mesh_dexels_contour(d, o, out, err, errlen);
+    rc = mesh_dexels_contour(d, o, out, err, errlen);
     mesh_dexels_free(d);
     return rc;
 }
@@ -150,8 +151,9 @@ int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *
                        size_t errlen)
 {
     mesh_dexels *d;
-    if (mesh_dexels_new(s, o, &d, err, errlen) != 0)
-        return -1;
+    int rc = mesh_dexels_new(s, o, &d, err, errlen);
+    if (rc != 0)
+        return rc;
     mesh_dexels_measure(d, out);
     mesh_dexels_free(d);
     return 0;

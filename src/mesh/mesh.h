@@ -37,10 +37,29 @@ typedef struct mesh_options {
      * a cell face count as a sharp feature (a QEF vertex is placed on it).
      * <= 0 means 30. */
     double feature_angle_deg;
+    /* The most cells the grid may have, nx·ny·nz; <= 0 means
+     * MESH_MAX_CELLS_DEFAULT. */
+    long long max_cells;
+    /* Spans one interval list may hold along a ray (the workers'
+     * iv_arena_set_list_limit); <= 0 means IV_LIST_LIMIT_DEFAULT. */
+    int max_intervals;
 } mesh_options;
+
+/* 2^32 cells: a cube of about 1625 cells a side, 12.7 times finer than the
+ * default 128 — minutes of contouring and a mesh of gigabytes, so a grid
+ * past it is taken for a mistake (a --mesh-size in the wrong unit) and
+ * refused before anything is allocated for it. */
+#define MESH_MAX_CELLS_DEFAULT (1LL << 32)
 
 /* Fill o with the defaults (h derived from the model, all CPUs, root 0). */
 void mesh_options_default(mesh_options *o);
+
+/* What the fallible calls below return besides 0 and -1, so that a caller
+ * can name the limit that was hit (the message says it in words). */
+enum {
+    MESH_ERR_INTERVALS = -2, /* a ray's interval list passed o->max_intervals */
+    MESH_ERR_CELLS = -3      /* the grid has more than o->max_cells cells */
+};
 
 /* ---- sampling ----------------------------------------------------------- */
 
@@ -52,10 +71,11 @@ typedef struct mesh_dexels mesh_dexels;
  * scene is borrowed for the duration of the call only.  An empty root, or a
  * root index out of range, gives an empty sampling (volume 0, empty mesh).
  * The result does not depend on the number of threads.  Returns 0 and the sampling in
- * *out (owned by the caller, free with mesh_dexels_free), or -1 with a
- * message in err (errlen bytes): unbounded root (a halfspace left
- * unintersected), a grid larger than 65536 cells per side or 2^31 rays per
- * family, out of memory. */
+ * *out (owned by the caller, free with mesh_dexels_free), or with a message
+ * in err (errlen bytes) MESH_ERR_CELLS (checked before anything is cast or
+ * allocated for the grid), MESH_ERR_INTERVALS, or -1: unbounded root (a
+ * halfspace left unintersected), a grid larger than 65536 cells per side or
+ * 2^31 rays per family, out of memory. */
 int mesh_dexels_new(const csg_scene *s, const mesh_options *o, mesh_dexels **out, char *err,
                     size_t errlen);
 void mesh_dexels_free(mesh_dexels *d);
@@ -137,10 +157,11 @@ typedef struct mesh mesh;
 int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
                         size_t errlen);
 
-/* mesh_dexels_new + mesh_dexels_contour (+ measure when m is not NULL). */
+/* mesh_dexels_new + mesh_dexels_contour (+ measure when m is not NULL);
+ * either's failure code. */
 int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_measure *m,
                     char *err, size_t errlen);
-/* mesh_dexels_new + mesh_dexels_measure. */
+/* mesh_dexels_new + mesh_dexels_measure; mesh_dexels_new's failure code. */
 int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *out, char *err,
                        size_t errlen);
 

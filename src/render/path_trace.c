@@ -107,7 +107,8 @@ typedef struct pt_job {
     int max_depth;
     double eps; /* offset of secondary ray origins */
     double focus;
-    atomic_int next, done, failed;
+    atomic_int next, done;
+    atomic_int failed; /* the first worker's iv_arena_failure_kind; 0: none */
     pthread_mutex_t mu;
     pthread_cond_t cv;
     int exited;
@@ -584,16 +585,27 @@ static int render_tile(const pt_job *J, pt_worker *w, int tile)
     return 0;
 }
 
+/* A worker stops: keep the first reason, as render.c's workers do. */
+static void fail(pt_job *J, const iv_arena *a)
+{
+    int none = 0;
+    int why = a ? (int)iv_arena_failure(a) : IV_ARENA_OUT_OF_MEMORY;
+    atomic_compare_exchange_strong(&J->failed, &none, why ? why : IV_ARENA_OUT_OF_MEMORY);
+}
+
 static void *worker(void *arg)
 {
     pt_job *J = arg;
     pt_worker w = {.a = iv_arena_new(0)};
-    if (!w.a) atomic_store(&J->failed, 1);
+    if (w.a)
+        iv_arena_set_list_limit(w.a, J->opt->max_intervals);
+    else
+        fail(J, NULL);
     while (w.a && !atomic_load(&J->failed)) {
         int t = atomic_fetch_add(&J->next, 1);
         if (t >= J->ntiles) break;
         if (render_tile(J, &w, t) != 0) {
-            atomic_store(&J->failed, 1);
+            fail(J, w.a);
             break;
         }
         atomic_fetch_add(&J->done, 1);
@@ -732,6 +744,7 @@ int render_path_trace(const csg_scene *s, const render_camera *cam, const render
     J.ntiles = J.tiles_x * ((opt->height + TILE - 1) / TILE);
     int rc = -1;
     const char *msg = "render: out of memory while path tracing";
+    char too_long[96];
     if (setup(&J) != 0) goto done;
     atomic_init(&J.next, 0);
     atomic_init(&J.done, 0);
@@ -791,6 +804,12 @@ int render_path_trace(const csg_scene *s, const render_camera *cam, const render
     if (!atomic_load(&J.failed)) {
         rc = 0;
         if (opt->progress) opt->progress(opt->ud, 1.0);
+    } else if (atomic_load(&J.failed) == IV_ARENA_LIST_TOO_LONG) {
+        snprintf(too_long, sizeof too_long,
+                 "render: a ray's interval list holds more than %d intervals",
+                 opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
+        msg = too_long;
+        rc = RENDER_ERR_INTERVALS;
     }
 done:
     free(J.le);

@@ -74,7 +74,7 @@ typedef struct job {
     int first_hit;     /* csg_trace_first may stand in for the full lists */
     atomic_int next;   /* next tile to hand out */
     atomic_int done;   /* tiles finished */
-    atomic_int failed; /* a worker ran out of memory */
+    atomic_int failed; /* the first worker's iv_arena_failure_kind; 0: none */
     pthread_mutex_t mu;
     pthread_cond_t cv;
     int exited; /* workers that returned; guarded by mu */
@@ -536,17 +536,29 @@ static int render_tile(const job *J, worker_ctx *wk, int tile)
     return 0;
 }
 
+/* A worker stops: keep the first reason (why its arena failed; a worker
+ * without an arena ran out of memory) for render_image to report. */
+static void fail(job *J, const iv_arena *a)
+{
+    int none = 0;
+    int why = a ? (int)iv_arena_failure(a) : IV_ARENA_OUT_OF_MEMORY;
+    atomic_compare_exchange_strong(&J->failed, &none, why ? why : IV_ARENA_OUT_OF_MEMORY);
+}
+
 static void *worker(void *arg)
 {
     job *J = arg;
     worker_ctx w = {.a = iv_arena_new(0), .first_primary = 1, .first_shadow = 1};
     iv_arena *a = w.a;
-    if (!a) atomic_store(&J->failed, 1);
+    if (a)
+        iv_arena_set_list_limit(a, J->opt->max_intervals);
+    else
+        fail(J, NULL);
     while (a && !atomic_load(&J->failed)) {
         int t = atomic_fetch_add(&J->next, 1);
         if (t >= J->ntiles) break;
         if (render_tile(J, &w, t) != 0) {
-            atomic_store(&J->failed, 1);
+            fail(J, a);
             break;
         }
         atomic_fetch_add(&J->done, 1);
@@ -715,6 +727,12 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     }
     pthread_cond_destroy(&J.cv);
     pthread_mutex_destroy(&J.mu);
+    if (atomic_load(&J.failed) == IV_ARENA_LIST_TOO_LONG) {
+        if (err && errlen)
+            snprintf(err, errlen, "render: a ray's interval list holds more than %d intervals",
+                     opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
+        return RENDER_ERR_INTERVALS;
+    }
     if (atomic_load(&J.failed)) {
         set_err(err, errlen, "render: out of memory while tracing rays");
         return -1;

@@ -84,6 +84,9 @@ typedef struct render_options {
     int width, height;
     int samples; /* samples per pixel is samples², stratified; >= 1 */
     int threads; /* worker threads; <= 0: all cores */
+    /* Spans one interval list may hold while a ray is traced (the workers'
+     * iv_arena_set_list_limit); <= 0: IV_LIST_LIMIT_DEFAULT. */
+    int max_intervals;
     render_colors colors;
     /* Called from the calling thread with the fraction done; may be NULL. */
     void (*progress)(void *ud, double done);
@@ -127,8 +130,12 @@ enum { RENDER_ROOT_MODEL = 0, RENDER_ROOT_HIGHLIGHT = 1, RENDER_ROOT_BACKGROUND 
  * thread count (random numbers, when the light model draws any, come from
  * per-pixel streams).  The light model is on when opt asks for shadows,
  * lights or a lens, or when the scene has emitters ($rs_light); materials
- * with reflect, absorb or ior take effect in either look.  Returns 0, or -1 with a message in err (out of memory,
- * bad options). */
+ * with reflect, absorb or ior take effect in either look.  Returns 0, or
+ * with a message in err: -1 (out of memory, bad options) or
+ * RENDER_ERR_INTERVALS.  Nothing is promised about rgba after a failure. */
+enum {
+    RENDER_ERR_INTERVALS = -2 /* a ray's interval list passed opt->max_intervals */
+};
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
                  float *rgba, char *err, size_t errlen);
 
