@@ -246,6 +246,9 @@ extern "C" int io_image_write(const char *path, int width, int height, int chann
 {
     try {
         return write_image(path, width, height, channels, pixels, err, errlen);
+    } catch (const std::bad_alloc &) {
+        /* No std::string here: an allocation could throw again. */
+        if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "image");
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string("image write: ") + e.what());
     } catch (...) {
@@ -259,6 +262,8 @@ extern "C" int io_image_read(const char *path, int *width, int *height, int *cha
 {
     try {
         return read_image(path, width, height, channels, pixels, err, errlen);
+    } catch (const std::bad_alloc &) {
+        if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "image");
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string("image read: ") + e.what());
     } catch (...) {

@@ -350,7 +350,8 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
     } catch (const std::bad_alloc &) {
         if (!tmp.empty())
             unlink(tmp.c_str());
-        set_err(err, errlen, std::string(path ? path : "") + ": out of memory");
+        /* No std::string here: an allocation could throw again. */
+        if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "mesh");
         return -1;
     } catch (const std::exception &e) {
         if (!tmp.empty())
@@ -447,7 +448,8 @@ int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, cha
         }
         return 0;
     } catch (const std::bad_alloc &) {
-        set_err(err, errlen, std::string(path ? path : "") + ": out of memory");
+        /* No std::string here: an allocation could throw again. */
+        if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "mesh");
         return -1;
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string(path ? path : "") + ": " + e.what());
@@ -510,7 +512,7 @@ int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double to
         }
         return 0;
     } catch (const std::bad_alloc &) {
-        set_err(err, errlen, "decimate: out of memory");
+        if (err && errlen) std::snprintf(err, errlen, "decimate: out of memory");
         return -1;
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string("decimate: ") + e.what());
