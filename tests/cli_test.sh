@@ -227,5 +227,79 @@ check "--max-string is a named error" sh -c "test $rc -eq 1 && grep -q 'string l
 run str.scad -o str.echo --max-steps 0
 check "a limit of 0 is a usage error" test "$rc" -eq 2
 
+# Output and memory limits: each a named error that names its flag, exit 1,
+# nothing written and an existing output left as it was.
+absent_or_kept() { # file: absent, or still holding "precious"
+    test ! -e "$1" || grep -qx precious "$1"
+}
+echo "precious" >kept.png
+run ok.scad -o huge.png --imgsize=100000,100000
+check "--max-pixels: a huge image is refused by name" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: image 100000x100000 is 10000000000 pixels, more than --max-pixels 268435456' err.txt"
+check "--max-pixels: nothing written" test ! -e huge.png
+run ok.scad -o kept.png --imgsize=64,48 --max-pixels 3071
+check "--max-pixels N is a named error" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: image 64x48 is 3072 pixels, more than --max-pixels 3071' err.txt"
+check "--max-pixels: the existing file is kept" absent_or_kept kept.png
+run ok.scad -o px.png --imgsize=64,48 --max-pixels 3072
+check "--max-pixels: an image of exactly N pixels renders" sh -c "test $rc -eq 0 && test -s px.png"
+run ok.scad -o wide.png --imgsize=70000,1
+check "a side above 65536 pixels is refused" sh -c "test $rc -eq 1 && grep -q 'a side may have at most 65536 pixels' err.txt && test ! -e wide.png"
+run ok.scad -o x.png --max-pixels 0
+check "--max-pixels 0 is a usage error" test "$rc" -eq 2
+
+# A bar cut by 1500 slots: a ray along it crosses 1500 intervals.
+printf 'difference() {\n  cube([15, 4, 4]);\n  for (i = [0:1499]) translate([i * 0.01, -1, -1]) cube([0.005, 6, 6]);\n}\n' >slots.scad
+along_x=(--camera=-10,2,2,40,2,2 --imgsize=48,48)
+echo "precious" >kept.png
+run slots.scad -o kept.png "${along_x[@]}" --max-intervals 1000
+check "--max-intervals: a render past it is a named error" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: render: a ray.s interval list holds more than 1000 intervals (--max-intervals)' err.txt"
+check "--max-intervals: the existing image is kept" absent_or_kept kept.png
+run slots.scad -o slots.png "${along_x[@]}" --max-intervals 1000 --path-trace=1
+check "--max-intervals: so is a path-traced one" sh -c "test $rc -eq 1 && grep -q 'more than 1000 intervals (--max-intervals)' err.txt && test ! -e slots.png"
+run slots.scad -o slots.png "${along_x[@]}" --max-intervals 2000
+check "--max-intervals: within it the render succeeds" sh -c "test $rc -eq 0 && test -s slots.png"
+run slots.scad -o slots.stl --max-intervals 1000
+check "--max-intervals: a mesh past it is a named error" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: a ray.s interval list holds more than 1000 intervals (--max-intervals)' err.txt && test ! -e slots.stl"
+run slots.scad --measure --max-intervals 1000
+check "--max-intervals: so is --measure" sh -c "test $rc -eq 1 && grep -q '(--max-intervals)' err.txt && test ! -s out.txt"
+run slots.scad -o x.png --max-intervals 1.5
+check "--max-intervals 1.5 is a usage error" test "$rc" -eq 2
+
+echo "precious" >kept.stl
+run box.scad -o kept.stl --mesh-size 0.001
+check "--max-mesh-cells: a tiny --mesh-size is a named error" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: a grid of 10003 x 20003 x 30003 cells (spacing 0.001) is 6003300540027 cells, more than 4294967296 (--max-mesh-cells; a larger --mesh-size needs fewer)' err.txt"
+check "--max-mesh-cells: the existing mesh is kept" absent_or_kept kept.stl
+run box.scad -o cells.stl --mesh-size 0.5 --max-mesh-cells 62306
+check "--max-mesh-cells N is a named error" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: a grid of 23 x 43 x 63 cells (spacing 0.5) is 62307 cells, more than 62306 (--max-mesh-cells; a larger --mesh-size needs fewer)' err.txt && test ! -e cells.stl"
+run box.scad --measure --mesh-size 0.5 --max-mesh-cells 62306
+check "--max-mesh-cells: so is --measure" sh -c "test $rc -eq 1 && grep -q '(--max-mesh-cells' err.txt"
+run box.scad -o cells.stl --mesh-size 0.5 --max-mesh-cells 62307
+check "--max-mesh-cells: a grid of exactly N cells meshes" sh -c "test $rc -eq 0 && test -s cells.stl"
+
+# --max-memory caps the process's data (not enforced under AddressSanitizer,
+# which says so).  A list that doubles 24 times (16 M numbers) is within
+# --max-list but not within 300M; a 8000x8000 image's buffer alone is 1 GB.
+for bad in 0 100K 1X 2G2 -1G nan; do
+    run ok.scad -o x.png --max-memory "$bad"
+    check "--max-memory $bad is a usage error" test "$rc" -eq 2
+done
+run ok.scad -o mem_probe.echo --max-memory 1.5G
+if grep -q "not enforced" err.txt; then
+    echo "skip --max-memory checks: $(head -n 1 err.txt)"
+else
+    check "--max-memory 1.5G is accepted" sh -c "test $rc -eq 0 && test ! -s err.txt"
+    printf 'function d(l, n) = n == 0 ? l : d(concat(l, l), n - 1);\necho(len(d([1], 24)));\n' >biglist.scad
+    echo "precious" >kept.png
+    run biglist.scad -o kept.png --max-memory 300M --max-steps 1000000000
+    check "--max-memory: the evaluator's failure names the node and the limit" sh -c "test $rc -eq 1 && grep -qx 'biglist.scad:1:35: error: out of memory building a vector (more than --max-memory 300M)' err.txt"
+    check "--max-memory: the existing file is kept after an evaluation" absent_or_kept kept.png
+    run ok.scad -o kept.png --imgsize=8000,8000 --max-memory 300M
+    check "--max-memory: an image buffer past it is a named error" sh -c "test $rc -eq 1 && grep -qx 'rayscad: error: out of memory for a 8000x8000 image (more than --max-memory 300M)' err.txt"
+    check "--max-memory: the existing file is kept after a render" absent_or_kept kept.png
+    run ok.scad -o small.png --imgsize=64,64 --max-memory 300M
+    check "--max-memory: a small render fits in 300M" sh -c "test $rc -eq 0 && test -s small.png"
+    run ball.scad -o fine.stl --mesh-size 0.05 --max-memory 100M
+    check "--max-memory: a mesh past it is a named error" sh -c "test $rc -eq 1 && grep -q '^rayscad: error: .*out of memory.* (more than --max-memory 100M)$' err.txt && test ! -e fine.stl"
+fi
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

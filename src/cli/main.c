@@ -3,7 +3,25 @@
  * CSG trees, commit them to a scene, and write what -o asks for (the
  * output's kind comes from its extension; each kind has one branch in
  * main's dispatch).  Only main and the writers it calls print, and main
- * chooses the exit codes: 0 ok, 1 the model or the output failed, 2 usage.
+ * chooses the exit codes: 0 ok, 1 the model or the output failed (a limit
+ * hit included), 2 usage.
+ *
+ * Memory: main caps the process's data (RLIMIT_DATA) at --max-memory before
+ * anything is evaluated, so a model that asks for too much sees its
+ * allocations fail — each library then stops with an "out of memory" error,
+ * which the command prints with the limit named — instead of the machine
+ * swapping or the kernel killing it.  The data limit rather than the
+ * address-space one (RLIMIT_AS): Linux's data count (VmData) is the heap,
+ * the thread stacks and the libraries' writable data — memory that can be
+ * written to — while the address space also holds the code of every
+ * library (the image adapter maps about 370 MB of them) and glibc's 64 MiB
+ * reservations per thread arena, none of it the model's doing, which would
+ * leave a small limit unable to write a PNG.  Thread stacks do count: the
+ * evaluator's thread reserves 1 GiB (scad.c); under a smaller limit it
+ * cannot be made, and the evaluator runs on the main thread's stack, where
+ * deep recursion stops sooner with its named error.  AddressSanitizer
+ * reserves terabytes of shadow memory, so a sanitizer build leaves the
+ * limit off.
  */
 #include "atomic_file.h"
 #include "mesh_output.h"
@@ -19,7 +37,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define UNDER_ASAN 1
+#endif
+#endif
 
 #define RAYSCAD_VERSION "0.1.0"
 
@@ -30,6 +57,7 @@ typedef struct messages {
     int to_buffer;
     char *buf;
     size_t len, cap;
+    const cli_options *o;
 } messages;
 
 static void on_message(void *ud, scad_msg_kind kind, const char *line)
@@ -37,7 +65,12 @@ static void on_message(void *ud, scad_msg_kind kind, const char *line)
     messages *m = ud;
     if (kind == SCAD_MSG_TRACE && !m->to_buffer) return; /* the ERROR line said it */
     if (!m->to_buffer || kind == SCAD_MSG_ERROR || kind == SCAD_MSG_NOTE) {
-        fprintf(stderr, "%s\n", line);
+        /* An error (file:line:col: error: …) that was an allocation
+         * failing gets the memory limit's note here; the .echo keeps
+         * OpenSCAD's wording. */
+        char note[96];
+        fprintf(stderr, "%s%s\n", line,
+                kind == SCAD_MSG_ERROR ? cli_memory_note(m->o, line, note, sizeof note) : "");
         return;
     }
     size_t n = strlen(line);
@@ -100,6 +133,7 @@ static int write_image(const cli_options *o, csg_scene *scene)
         .height = o->height,
         .samples = o->samples,
         .threads = o->threads,
+        .max_intervals = o->max_intervals,
         .colors = colors,
     };
     cli_options_apply_optics(o, &ro);
@@ -111,21 +145,24 @@ static int write_image(const cli_options *o, csg_scene *scene)
             rc = atomic_file_write(o->output, text, len, err, sizeof err);
             free(text);
         }
-        if (rc != 0) fprintf(stderr, "rayscad: error: %s\n", err);
+        if (rc != 0) cli_print_error(o, err);
         return rc != 0 ? EXIT_MODEL : 0;
     }
+    /* Before anything large is allocated, and only once the model has
+     * evaluated (a failing one exits without the load). */
+    cli_load_image_adapter();
     progress bar;
     progress_start(&bar, "rendering");
     ro.progress = progress_update;
     ro.ud = &bar;
 
     float *rgba = malloc((size_t)o->width * (size_t)o->height * 4 * sizeof *rgba);
+    char err[512];
     if (!rgba) {
-        fprintf(stderr, "rayscad: error: out of memory for a %dx%d image\n", o->width,
-                o->height);
+        snprintf(err, sizeof err, "out of memory for a %dx%d image", o->width, o->height);
+        cli_print_error(o, err);
         return EXIT_MODEL;
     }
-    char err[512];
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     int rc = render_image(scene, &cam, &ro, rgba, err, sizeof err);
@@ -137,13 +174,70 @@ static int write_image(const cli_options *o, csg_scene *scene)
         fprintf(stderr, "rayscad: stats: %.0f rays in %.6f s, %.0f rays/s\n", rays, sec,
                 sec > 0 ? rays / sec : 0);
     }
+    if (rc == RENDER_ERR_INTERVALS) {
+        fprintf(stderr, "rayscad: error: %s (--max-intervals)\n", err);
+        free(rgba);
+        return EXIT_MODEL;
+    }
     if (rc == 0) rc = io_image_write(o->output, o->width, o->height, 4, rgba, err, sizeof err);
     free(rgba);
     if (rc != 0) {
-        fprintf(stderr, "rayscad: error: %s\n", err);
+        cli_print_error(o, err);
         return EXIT_MODEL;
     }
     return 0;
+}
+
+/* Refuse an image the limits do not allow, before the model is evaluated:
+ * its buffer (16 bytes a pixel) and the writer's copy grow with the pixels,
+ * and nothing in the renderer grows with the samples per pixel.  Returns 0,
+ * or EXIT_MODEL after the message. */
+static int check_image_size(const cli_options *o)
+{
+    long long pixels = (long long)o->width * o->height;
+    long long max = o->max_pixels > 0 ? o->max_pixels : CLI_MAX_PIXELS_DEFAULT;
+    if (pixels > max) {
+        fprintf(stderr, "rayscad: error: image %dx%d is %lld pixels, more than --max-pixels %lld\n",
+                o->width, o->height, pixels, max);
+        return EXIT_MODEL;
+    }
+    if (o->width > CLI_MAX_IMAGE_SIDE || o->height > CLI_MAX_IMAGE_SIDE) {
+        fprintf(stderr,
+                "rayscad: error: image %dx%d: a side may have at most %d pixels, whatever "
+                "--max-pixels allows\n",
+                o->width, o->height, CLI_MAX_IMAGE_SIDE);
+        return EXIT_MODEL;
+    }
+    return 0;
+}
+
+/* Cap the process's data memory at o->max_memory (its default when the
+ * flag was not given), or keep a lower limit the caller already set;
+ * records which in o->max_memory_enforced.  The top of this file says why
+ * RLIMIT_DATA. */
+static void apply_memory_limit(cli_options *o)
+{
+    if (!o->max_memory_given) o->max_memory = cli_default_max_memory(o);
+#ifdef UNDER_ASAN
+    if (o->max_memory_given)
+        fprintf(stderr, "rayscad: warning: --max-memory is not enforced in an AddressSanitizer "
+                        "build (its shadow memory would count)\n");
+    return;
+#else
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_DATA, &rl) != 0) return;
+    if (rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur < o->max_memory) {
+        o->max_memory = rl.rlim_cur;
+        o->max_memory_enforced = 2;
+        return;
+    }
+    rlim_t want = (rlim_t)o->max_memory;
+    if (rl.rlim_max != RLIM_INFINITY && want > rl.rlim_max) want = rl.rlim_max;
+    rl.rlim_cur = want;
+    if (setrlimit(RLIMIT_DATA, &rl) != 0) return;
+    o->max_memory = want;
+    o->max_memory_enforced = 1;
+#endif
 }
 
 /* What -o writes, by its extension. */
@@ -207,9 +301,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "rayscad: %s\n(rayscad --help lists the options)\n", misplaced);
         return EXIT_USAGE;
     }
+    if (kind == OUTPUT_IMAGE && !has_extension(o.output, ".pov") && check_image_size(&o) != 0)
+        return EXIT_MODEL;
+    apply_memory_limit(&o);
     int echo_out = kind == OUTPUT_ECHO, csg_out = kind == OUTPUT_CSG;
 
-    messages msgs = {.to_buffer = echo_out};
+    messages msgs = {.to_buffer = echo_out, .o = &o};
     scad_options so = {
         .defines = o.defines,
         .define_count = o.define_count,
@@ -229,7 +326,7 @@ int main(int argc, char **argv)
         int rc = atomic_file_write(o.output, text, len, err, sizeof err);
         free(text);
         if (rc != 0) {
-            fprintf(stderr, "rayscad: error: %s\n", err);
+            cli_print_error(&o, err);
             return EXIT_MODEL;
         }
         return 0;
@@ -243,7 +340,7 @@ int main(int argc, char **argv)
         int rc = atomic_file_write(o.output, msgs.buf ? msgs.buf : "", msgs.len, err, sizeof err);
         free(msgs.buf);
         if (rc != 0) {
-            fprintf(stderr, "rayscad: error: %s\n", err);
+            cli_print_error(&o, err);
             return EXIT_MODEL;
         }
         return failed ? EXIT_MODEL : 0;
@@ -267,7 +364,7 @@ int main(int argc, char **argv)
     scad_result_free(&res);
     csg_scene *scene = csg_scene_new(roots, 3, err, sizeof err);
     if (!scene) {
-        fprintf(stderr, "rayscad: error: %s\n", err);
+        cli_print_error(&o, err);
         return EXIT_MODEL;
     }
     int rc = 0;

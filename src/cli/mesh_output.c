@@ -99,7 +99,7 @@ static int write_mesh_file(const cli_options *o, const mesh *msh)
     int32_t *dt = NULL;
     if (o->decimate >= 0) {
         if (io_mesh_decimate(v, nv, t, nt, o->decimate, &dv, &nv, &dt, &nt, err, sizeof err) != 0) {
-            fprintf(stderr, "rayscad: error: %s\n", err);
+            cli_print_error(o, err);
             return 1;
         }
         v = dv;
@@ -109,7 +109,7 @@ static int write_mesh_file(const cli_options *o, const mesh *msh)
     free(dv);
     free(dt);
     if (rc != 0) {
-        fprintf(stderr, "rayscad: error: %s\n", err);
+        cli_print_error(o, err);
         return 1;
     }
     return 0;
@@ -122,10 +122,22 @@ int cli_mesh_output(const cli_options *o, const csg_scene *scene, int write_mesh
     mo.h = o->mesh_size;
     mo.threads = o->threads;
     mo.root = 0;
+    mo.max_cells = o->max_mesh_cells;
+    mo.max_intervals = o->max_intervals;
     char err[512];
     mesh_dexels *d;
-    if (mesh_dexels_new(scene, &mo, &d, err, sizeof err) != 0) {
-        fprintf(stderr, "rayscad: error: %s\n", err);
+    int rc = mesh_dexels_new(scene, &mo, &d, err, sizeof err);
+    if (rc == MESH_ERR_CELLS) {
+        fprintf(stderr, "rayscad: error: %s (--max-mesh-cells; a larger --mesh-size needs fewer)\n",
+                err);
+        return 1;
+    }
+    if (rc == MESH_ERR_INTERVALS) {
+        fprintf(stderr, "rayscad: error: %s (--max-intervals)\n", err);
+        return 1;
+    }
+    if (rc != 0) {
+        cli_print_error(o, err);
         return 1;
     }
     double h, org[3];
@@ -138,11 +150,11 @@ int cli_mesh_output(const cli_options *o, const csg_scene *scene, int write_mesh
     if (write_mesh) {
         mesh_thin thin;
         mesh_dexels_thin(d, h, &thin);
-        int rc = mesh_dexels_contour(d, &mo, &msh, err, sizeof err);
+        rc = mesh_dexels_contour(d, &mo, &msh, err, sizeof err);
         mesh_dexels_free(d);
         d = NULL;
         if (rc != 0) {
-            fprintf(stderr, "rayscad: error: %s\n", err);
+            cli_print_error(o, err);
             return 1;
         }
         warn_thin(&thin, h);

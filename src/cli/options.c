@@ -2,17 +2,22 @@
  * options.c — parse the command line.  Every flag takes its value either as
  * --flag=value or as the next argument; -o and -D also as -oFILE / -Dname=v.
  * Numbers are parsed strictly: trailing junk, NaN and infinities are usage
- * errors, never silently zero.
+ * errors, never silently zero.  Also here: the defaults of the limits that
+ * depend on the machine, and the error line that names the memory limit.
  */
 #include "options.h"
 
+#include "../io/io.h"
 #include "../scad/scad.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 const char cli_usage[] =
     "usage: rayscad FILE.scad -o OUTPUT [options]\n"
@@ -41,6 +46,14 @@ const char cli_usage[] =
     "  --max-steps N           calls and loop values before an error (default 1e7)\n"
     "  --max-list N            elements of one list (default 2^26)\n"
     "  --max-string N          bytes of one string (default 2^28)\n"
+    "  --max-pixels N          pixels of a rendered image (default 2^28; a side\n"
+    "                          has at most 65536 whatever N is)\n"
+    "  --max-intervals N       intervals one list may hold while a ray is traced\n"
+    "                          (default 2^20)\n"
+    "  --max-mesh-cells N      cells of the mesh and --measure grid (default 2^32)\n"
+    "  --max-memory SIZE       data memory (heap and thread stacks), bytes or with\n"
+    "                          K, M, G, T (default: 3/4 of RAM, plus 1G for the\n"
+    "                          evaluator's stack and the workers' stacks)\n"
     "\n"
     "Light model (opt-in; without these and $rs_ variables the image looks like\n"
     "OpenSCAD's preview):\n"
@@ -71,7 +84,8 @@ const char cli_usage[] =
     "  --help                  this text\n"
     "  --version               the version\n"
     "\n"
-    "Exit status: 0 ok, 1 the model or the output failed, 2 usage error.\n";
+    "Exit status: 0 ok, 1 the model or the output failed (a --max-* limit\n"
+    "included), 2 usage error.\n";
 
 static int parse_double(const char *s, double *out)
 {
@@ -90,6 +104,26 @@ static int parse_int(const char *s, long lo, long hi, int *out)
     long v = strtol(s, &end, 10);
     if (end == s || *end != '\0' || errno == ERANGE || v < lo || v > hi) return -1;
     *out = (int)v;
+    return 0;
+}
+
+/* A size in bytes: a number (fractions allowed) and an optional K, M, G or
+ * T (powers of 1024, either case).  At least 1 MiB: the program's own data
+ * is about 0.7 MiB before it reads a file, so less is surely a slip. */
+static int parse_size(const char *s, unsigned long long *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || errno == ERANGE || !isfinite(v)) return -1;
+    if (*end) { /* not NUL, so strchr cannot match the string's end */
+        static const char units[] = "KMGT";
+        const char *u = strchr(units, toupper((unsigned char)*end));
+        if (!u || end[1] != '\0') return -1;
+        v = ldexp(v, 10 * (int)(u - units + 1));
+    }
+    if (!(v >= 1 << 20) || v >= 0x1p63) return -1;
+    *out = (unsigned long long)v;
     return 0;
 }
 
@@ -269,7 +303,8 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                                          "--projection", "--colorscheme", "--samples", "--threads",
                                          "--facets", "--mesh-size", "--decimate",
                                          "--max-recursion", "--max-steps", "--max-list",
-                                         "--max-string"};
+                                         "--max-string", "--max-pixels", "--max-intervals",
+                                         "--max-mesh-cells", "--max-memory"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = NULL;
@@ -346,10 +381,12 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             }
             o->view.kind = n == 7 ? RENDER_CAMERA_GIMBAL : RENDER_CAMERA_EYE;
         } else if (strcmp(flag, "--imgsize") == 0) {
+            /* Any size an int holds; main refuses what --max-pixels does not
+             * allow, as a limit rather than as a usage error. */
             double wh[2];
-            if (parse_numbers(val, wh, 2) != 2 || wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 ||
-                wh[1] > 16384 || wh[0] != floor(wh[0]) || wh[1] != floor(wh[1])) {
-                snprintf(err, errlen, "--imgsize expects W,H in 1..16384, got '%s'", val);
+            if (parse_numbers(val, wh, 2) != 2 || wh[0] < 1 || wh[1] < 1 || wh[0] > 2147483647 ||
+                wh[1] > 2147483647 || wh[0] != floor(wh[0]) || wh[1] != floor(wh[1])) {
+                snprintf(err, errlen, "--imgsize expects W,H, whole numbers >= 1, got '%s'", val);
                 return -1;
             }
             o->width = (int)wh[0];
@@ -386,19 +423,58 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 snprintf(err, errlen, "--samples expects a whole number in 1..64, got '%s'", val);
                 return -1;
             }
-        } else if (!strncmp(flag, "--max-", 6)) {
-            /* evaluation limits: whole numbers from 1 up to what the field holds */
-            int steps = !strcmp(flag, "--max-steps");
-            double x;
-            if (parse_double(val, &x) != 0 || !(x >= 1) || x != floor(x) ||
-                x > (steps ? 1e15 : 2147483647.0)) {
-                snprintf(err, errlen, "%s expects a whole number >= 1, got '%s'", flag, val);
+        } else if (!strcmp(flag, "--max-memory")) {
+            if (parse_size(val, &o->max_memory) != 0) {
+                snprintf(err, errlen,
+                         "--max-memory expects a size of at least 1M, in bytes or with a K, M, "
+                         "G or T suffix, got '%s'",
+                         val);
                 return -1;
             }
-            if (steps) o->max_steps = (long)x;
-            else if (!strcmp(flag, "--max-recursion")) o->max_recursion = (int)x;
-            else if (!strcmp(flag, "--max-list")) o->max_list = (int)x;
-            else o->max_string = (int)x;
+            o->max_memory_given = 1;
+        } else if (!strncmp(flag, "--max-", 6)) {
+            /* counted limits: whole numbers from 1 up to what the field
+             * holds (--max-intervals: a span stack of 4N spans still counts
+             * in an int32) */
+            static const struct {
+                const char *name;
+                double hi;
+            } limits[] = {{"--max-recursion", 2147483647.0}, {"--max-steps", 1e15},
+                          {"--max-list", 2147483647.0},      {"--max-string", 2147483647.0},
+                          {"--max-pixels", 1e15},            {"--max-intervals", 1 << 28},
+                          {"--max-mesh-cells", 1e15}};
+            size_t k = 0;
+            while (strcmp(limits[k].name, flag) != 0)
+                k++;
+            double x;
+            if (parse_double(val, &x) != 0 || !(x >= 1) || x != floor(x) || x > limits[k].hi) {
+                snprintf(err, errlen, "%s expects a whole number in 1..%.0f, got '%s'", flag,
+                         limits[k].hi, val);
+                return -1;
+            }
+            switch (k) {
+            case 0:
+                o->max_recursion = (int)x;
+                break;
+            case 1:
+                o->max_steps = (long)x;
+                break;
+            case 2:
+                o->max_list = (int)x;
+                break;
+            case 3:
+                o->max_string = (int)x;
+                break;
+            case 4:
+                o->max_pixels = (long long)x;
+                break;
+            case 5:
+                o->max_intervals = (int)x;
+                break;
+            default:
+                o->max_mesh_cells = (long long)x;
+                break;
+            }
         } else if (strcmp(flag, "--threads") == 0) {
             if (parse_int(val, 0, 1024, &o->threads) != 0) {
                 snprintf(err, errlen, "--threads expects a whole number in 0..1024, got '%s'",
@@ -417,4 +493,92 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         return -1;
     }
     return 0;
+}
+
+/* ---- limits that depend on the machine ----------------------------------- */
+
+/* The cgroup v2 memory.max of this process, or 0 when there is none (no
+ * cgroup v2, "max", unreadable).  A container's limit is the memory there
+ * is, whatever the host has. */
+static unsigned long long cgroup_memory_max(void)
+{
+    FILE *f = fopen("/sys/fs/cgroup/memory.max", "r");
+    if (!f) return 0;
+    unsigned long long v = 0;
+    if (fscanf(f, "%llu", &v) != 1) v = 0;
+    fclose(f);
+    return v;
+}
+
+unsigned long long cli_default_max_memory(const cli_options *o)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    unsigned long long ram = pages > 0 && page > 0 ? (unsigned long long)pages * page : 0;
+    unsigned long long cg = cgroup_memory_max();
+    if (cg && (!ram || cg < ram)) ram = cg;
+    if (!ram) ram = 4ULL << 30; /* unknown: a small machine's worth */
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    unsigned long long workers = cores > 0 ? (unsigned long long)cores : 1;
+    if (o->threads > 0 && (unsigned long long)o->threads > workers) workers = o->threads;
+    /* A thread's default stack is RLIMIT_STACK's size (glibc), 8 MiB
+     * unless set otherwise. */
+    struct rlimit rl;
+    unsigned long long stack = 8ULL << 20;
+    if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur > 0)
+        stack = rl.rlim_cur;
+    return ram / 4 * 3 + (1ULL << 30) + 2 * workers * stack;
+}
+
+void cli_format_size(unsigned long long bytes, char *buf, size_t len)
+{
+    static const char units[] = "TGMK";
+    for (int i = 0; i < 4; i++) {
+        unsigned long long u = 1ULL << (10 * (4 - i));
+        if (bytes >= u && bytes % u == 0) {
+            snprintf(buf, len, "%llu%c", bytes / u, units[i]);
+            return;
+        }
+    }
+    for (int i = 0; i < 4; i++) {
+        unsigned long long u = 1ULL << (10 * (4 - i));
+        if (bytes >= u) {
+            snprintf(buf, len, "%.1f%c", (double)bytes / (double)u, units[i]);
+            return;
+        }
+    }
+    snprintf(buf, len, "%llu", bytes);
+}
+
+const char *cli_memory_note(const cli_options *o, const char *msg, char *buf, size_t len)
+{
+    if (!o->max_memory_enforced || !strstr(msg, "out of memory")) return "";
+    char size[32];
+    cli_format_size(o->max_memory, size, sizeof size);
+    if (o->max_memory_enforced == 2)
+        snprintf(buf, len, " (more than the data limit rayscad was started under, %s)", size);
+    else
+        snprintf(buf, len, " (more than --max-memory %s)", size);
+    return buf;
+}
+
+void cli_print_error(const cli_options *o, const char *msg)
+{
+    char note[96];
+    fprintf(stderr, "rayscad: error: %s%s\n", msg, cli_memory_note(o, msg, note, sizeof note));
+}
+
+void cli_load_image_adapter(void)
+{
+    struct rlimit was, open;
+    int lifted = getrlimit(RLIMIT_DATA, &was) == 0 && was.rlim_cur != was.rlim_max;
+    if (lifted) {
+        open = was;
+        open.rlim_cur = was.rlim_max;
+        lifted = setrlimit(RLIMIT_DATA, &open) == 0;
+    }
+    /* io.h has no call that only loads the adapter; asking about a format
+     * outside the six it answers by itself (png jpg jpeg tif tiff exr)
+     * loads it, and BMP is one every OpenImageIO build has. */
+    (void)io_image_format_supported("rayscad.bmp");
+    if (lifted) setrlimit(RLIMIT_DATA, &was);
 }
