@@ -27,9 +27,10 @@
  * thin face turns that into a tilt that cuts the hull far off:
  *   - no two vertices are closer than WELD · eps (a grid of the vertices
  *     says; an eye that close to one is left out);
- *   - a face the eye is within eps of is replaced too, and so is the face
- *     beyond a horizon edge whose cone face would fold back (the first
- *     tetrahedron's centre, deep inside, not below it);
+ *   - the face beyond a horizon edge whose cone face would fold back over
+ *     it (the first tetrahedron's centre, deep inside, not below the cone
+ *     face) is replaced too (not every face the eye is within eps of: a
+ *     cylinder's flat cap would then be rebuilt for every rim point);
  *   - the seen faces' vertices off the horizon, and outside points above
  *     no new face, are placed again, the latter looked for beyond the
  *     horizon over faces they are within eps of;
@@ -38,9 +39,10 @@
  *     each moved at random by 10, 100, then 1000 eps (qhull's joggle);
  *   - at the end, a face with a neighbour's corner more than DENT · eps
  *     above its plane leaves its plane out.
- * On random points coplanar to within 40 eps, or 1e-9 to 1e-6 apart, the
- * result holds every point within a relative 1e-7 (iv_shape_hull can be
- * off by the whole size there, or take minutes).
+ * On random points 1e-9 to 1e-6 apart the result holds every point within
+ * a relative 1e-7, and on random points coplanar to within 20 eps mostly
+ * so, at worst within 1e-3 (iv_shape_hull can be off by the whole size
+ * there, or take minutes).
  */
 #include "hull3d.h"
 
@@ -434,16 +436,14 @@ static int add_point(hull *h, int f)
     h->F[f].mark = stamp;
     h->F[f].seen = 1;
     for (int done = 0;;) {
-        /* the faces the eye sees, walking out from f; a face it is within
-         * eps of goes too (kept, the cone face beside it could fold back
-         * over it) */
+        /* the faces the eye sees, walking out from f */
         for (; done < h->nvis; done++) {
             int g = h->vis[done];
             for (int j = 0; j < 3; j++) {
                 hface *Q = &h->F[h->F[g].nb[j]];
                 if (Q->mark == stamp) continue;
                 Q->mark = stamp;
-                Q->seen = dot3(Q->n, pe) - Q->d > -h->eps;
+                Q->seen = dot3(Q->n, pe) - Q->d > h->eps;
                 if (!Q->seen) continue;
                 if (GROW(h->vis, h->capvis, h->nvis + 1)) return SCAD_HULL_NO_MEMORY;
                 h->vis[h->nvis++] = h->F[g].nb[j];
