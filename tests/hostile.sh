@@ -35,7 +35,8 @@ parse_errors inc_cycle_a inc_self assert_fail gen_deep_parens_open gen_deep_brac
 gen_garbage_1 str_doubling rec_module_geometry children_deep_chain
 list_doubling"
 MUST_PASS="num_cube_1e300 num_nan_translate num_scale_zero size_zero size_negative
-poly_empty poly_open inc_missing loop_1e7 loop_list_1e7 lex_empty mix_union mix_hull_many"
+poly_empty poly_open inc_missing loop_1e7 loop_list_1e7 lex_empty mix_union mix_hull_many
+mix_minkowski_fine"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/rayscad-hostile.XXXXXX")
 trap 'rm -rf "$work"' EXIT

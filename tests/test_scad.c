@@ -619,3 +619,37 @@ Test(scad_limits, concat_counts_the_elements_it_copies)
     cr_expect(has_line(&m, "ECHO: [1, [2], 3, [4], \"ab\"]"));
     lines_free(&m);
 }
+
+Test(scad_limits, round_points_and_minkowski_sums_are_steps)
+{
+    /* minkowski() of two smooth spheres: 2048 points each, 4194304 sums */
+    lines m = {0};
+    cr_assert_eq(
+        eval_steps("minkowski() { sphere(1, $fn = 1e9); sphere(1, $fn = 1e9); }", &m, 1000000), -1);
+    cr_expect(
+        has_line(&m, "t.scad:1:1: error: evaluation took more than 1000000 steps (minkowski)"));
+    lines_free(&m);
+    /* a $fn of 10^9 asks for 5·10^9 points of a sphere: hull(), resize()
+     * and minkowski() count them before making them */
+    const char *src[] = {"hull($fn = 1e9) sphere(1);", "resize([1, 2, 3], $fn = 1e9) sphere(1);",
+                         "minkowski($fn = 1e9) { sphere(1); cube(); }"};
+    const char *want[] = {
+        "t.scad:1:1: error: evaluation took more than 10000000 steps (hull)",
+        "t.scad:1:1: error: evaluation took more than 10000000 steps (resize)",
+        "t.scad:1:1: error: evaluation took more than 10000000 steps (minkowski)"};
+    for (int i = 0; i < 3; i++) {
+        cr_expect_eq(eval_steps(src[i], &m, 0), -1, "case %d", i);
+        cr_expect(has_line(&m, want[i]), "case %d", i);
+        lines_free(&m);
+    }
+    /* and so does a sphere built with OpenSCAD's facets */
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.message = collect;
+    o.ud = &m;
+    o.facets = SCAD_FACETS_OPENSCAD;
+    scad_result r;
+    cr_expect_eq(scad_eval_string("t.scad", "sphere(1, $fn = 1e9);", &o, &r), -1);
+    cr_expect(has_line(&m, "t.scad:1:1: error: evaluation took more than 10000000 steps (sphere)"));
+    lines_free(&m);
+}

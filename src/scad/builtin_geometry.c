@@ -28,6 +28,7 @@
 #include "hull3d.h"
 #include "material.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -115,11 +116,20 @@ static scad_geom *optics_leaf(scad_eval *ev, scad_env *env, const scad_argv *a, 
     return scad_geom_leaf(ev, s, &st);
 }
 
-static scad_geom *hull_leaf(scad_eval *ev, scad_env *env, const scad_argv *a, const double (*P)[3],
-                            int n, const scad_state *state, const csg_affine local)
+static scad_geom *hull_leaf(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                            const double (*P)[3], int n, const scad_state *state,
+                            const csg_affine local)
 {
     iv_shape s;
-    if (scad_hull3d(&s, P, n) != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
+    /* every point of a sphere or cylinder is a vertex, and a hull of V
+     * vertices has 2V - 4 triangles: too many is known at once */
+    int rc = 2L * n - 4 > 65536 ? SCAD_HULL_TOO_MANY : scad_hull3d(&s, P, n);
+    if (rc == SCAD_HULL_TOO_MANY)
+        scad_diag_error(ev->d, st->loc,
+                        "%s() of %d points has more than 65536 faces, more than a polytope "
+                        "holds; nothing is drawn",
+                        st->name, n);
+    if (rc != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
     return optics_leaf(ev, env, a, &s, state, local);
 }
 
@@ -140,6 +150,12 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
         return optics_leaf(ev, env, a, &sh, state, NULL);
     }
     int n = scad_fragments(r, f), rings = (n + 1) / 2;
+    /* each point a step: a $fn of 10^9 would make 5·10^9 */
+    if (scad_eval_steps(ev, (long)n * rings, st->loc, "sphere")) return NULL;
+    if ((long)n * rings > INT_MAX / 32) { /* only under a raised step limit */
+        scad_eval_error(ev, st->loc, "sphere() of %ld points is too big", (long)n * rings);
+        return NULL;
+    }
     double(*P)[3] = malloc((size_t)n * (size_t)rings * sizeof *P);
     if (!P) return NULL;
     for (int i = 0; i < rings; i++) {
@@ -153,7 +169,7 @@ static scad_geom *m_sphere(scad_eval *ev, scad_env *env, const scad_stmt *st, co
             P[i * n + j][2] = z;
         }
     }
-    scad_geom *g = hull_leaf(ev, env, a, (const double(*)[3])P, n * rings, state, NULL);
+    scad_geom *g = hull_leaf(ev, env, st, a, (const double(*)[3])P, n * rings, state, NULL);
     free(P);
     return g;
 }
@@ -206,7 +222,7 @@ static scad_geom *m_cylinder(scad_eval *ev, scad_env *env, const scad_stmt *st, 
             P[np++][2] = k ? h : 0;
         }
     }
-    scad_geom *g = hull_leaf(ev, env, a, (const double(*)[3])P, np, state, t);
+    scad_geom *g = hull_leaf(ev, env, st, a, (const double(*)[3])P, np, state, t);
     free(P);
     return g;
 }
@@ -1030,12 +1046,23 @@ typedef struct pts {
     double (*p)[3];
     int n, cap;
     int any3d, any2d;
+    scad_eval *ev; /* each point a round leaf makes is a step of work, */
+    scad_loc loc;  /* counted here */
+    const char *who;
 } pts;
+
+/* Room for n more points of a round leaf: 0, or -1 past the step limit
+ * (reported; a $fn of 10^9 would make 5·10^9). */
+static int pts_steps(pts *P, long n)
+{
+    return scad_eval_steps(P->ev, n, P->loc, P->who);
+}
 
 static void pts_add(pts *P, const double local_from_world[12], const double xf[12], double x,
                     double y, double z)
 {
     if (P->n == P->cap) {
+        if (P->cap > INT_MAX / 2 / (int)sizeof *P->p) return;
         int cap = P->cap ? 2 * P->cap : 256;
         double(*v)[3] = realloc(P->p, (size_t)cap * sizeof *v);
         if (!v) return;
@@ -1050,7 +1077,7 @@ static void pts_add(pts *P, const double local_from_world[12], const double xf[1
 /* The points whose hull is the leaf's solid as OpenSCAD tessellates it. */
 static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_facet_params f)
 {
-    if (!g) return;
+    if (!g || P->ev->aborted) return;
     if (!g->is_leaf) {
         /* The hull of a difference is at most the hull of its first
          * operand; of an intersection, at most the hull of all. */
@@ -1072,6 +1099,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
         P->any3d = 1;
         double r = s->u.sphere.r;
         int n = scad_fragments(r, f), rings = (n + 1) / 2;
+        if (pts_steps(P, (long)n * rings)) return;
         for (int i = 0; i < rings; i++) {
             double phi = 180.0 * (i + 0.5) / rings;
             for (int j = 0; j < n; j++) {
@@ -1085,6 +1113,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
     case IV_SHAPE_CONE: {
         P->any3d = 1;
         int n = scad_fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
+        if (pts_steps(P, 2L * n)) return;
         for (int k = 0; k < 2; k++)
             for (int j = 0; j < n; j++) {
                 double c[2];
@@ -1107,6 +1136,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
         P->any2d = 1;
         if (!s->u.prism.g) {
             int n = scad_fragments(s->u.prism.r, f);
+            if (pts_steps(P, n)) return;
             for (int j = 0; j < n; j++) {
                 double c[2];
                 circle_pt(s->u.prism.r, j, n, c);
@@ -1173,9 +1203,10 @@ static scad_geom *hull_plain(scad_eval *ev, scad_env *env, const scad_stmt *st, 
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
-    pts P = {NULL, 0, 0, 0, 0};
+    pts P = {.ev = ev, .loc = st->loc, .who = "hull"};
     hull_points(&P, kids, inv, scad_facets_lookup(ev, env, a, st->loc));
     scad_geom *g = NULL;
+    if (ev->aborted) P.n = 0;
     if (P.any3d && P.n >= 4) {
         iv_shape s;
         int rc = scad_hull3d(&s, (const double(*)[3])P.p, P.n);
@@ -1205,14 +1236,15 @@ static scad_geom *hull_plain(scad_eval *ev, scad_env *env, const scad_stmt *st, 
  * its first operand, an intersection by the overlap of its operands' boxes
  * (exact for the usual cases; an upper bound where a solid trims another).
  * Returns 0, or -1 when empty. */
-static int tree_box(const scad_geom *g, scad_facet_params f, double lo[3], double hi[3], int *any3d)
+static int tree_box(scad_eval *ev, scad_loc loc, const scad_geom *g, scad_facet_params f,
+                    double lo[3], double hi[3], int *any3d)
 {
-    if (!g) return -1;
+    if (!g || ev->aborted) return -1;
     if (!g->is_leaf) {
         int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n, have = 0;
         for (int i = 0; i < n; i++) {
             double a[3], b[3];
-            if (tree_box(g->kids[i], f, a, b, any3d) != 0) {
+            if (tree_box(ev, loc, g->kids[i], f, a, b, any3d) != 0) {
                 if (g->op == CSG_OP_INTERSECTION) return -1;
                 continue;
             }
@@ -1228,8 +1260,9 @@ static int tree_box(const scad_geom *g, scad_facet_params f, double lo[3], doubl
             if (lo[k] > hi[k]) return -1;
         return 0;
     }
-    pts P = {NULL, 0, 0, 0, 0};
+    pts P = {.ev = ev, .loc = loc, .who = "resize"};
     hull_points(&P, g, csg_affine_identity, f);
+    if (ev->aborted) P.n = 0;
     *any3d |= P.any3d;
     for (int i = 0; i < P.n; i++)
         for (int k = 0; k < 3; k++) {
@@ -1283,7 +1316,7 @@ static scad_geom *m_resize(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     double lo[3], hi[3];
     int any3d = 0;
     double scale[3] = {1, 1, 1};
-    if (tree_box(kids, scad_facets_lookup(ev, env, a, st->loc), lo, hi, &any3d) == 0) {
+    if (tree_box(ev, st->loc, kids, scad_facets_lookup(ev, env, a, st->loc), lo, hi, &any3d) == 0) {
         int dim = any3d ? 3 : 2, imax = 0;
         for (int i = 0; i < dim; i++) {
             if (ns[i] == 0) continue;

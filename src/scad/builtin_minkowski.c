@@ -48,6 +48,7 @@ typedef struct parts {
 
 typedef struct mctx {
     scad_eval *ev;
+    scad_loc loc;
     const double *lfw;
     scad_facet_params f;
     const char *why; /* first reason a child cannot be decomposed */
@@ -139,7 +140,7 @@ static int convex_polygon(const double (*V)[2], int n)
 
 static void decompose(mctx *c, const scad_geom *g, parts *P)
 {
-    if (!g || c->why || c->oom) return;
+    if (!g || c->why || c->oom || c->ev->aborted) return;
     if (!g->is_leaf) {
         if (g->op != CSG_OP_UNION && g->n > 1) {
             c->why = g->op == CSG_OP_DIFFERENCE ? "a difference" : "an intersection";
@@ -161,6 +162,8 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
     case IV_SHAPE_SPHERE: {
         double r = s->u.sphere.r;
         int n = fragments(c, r), rings = (n + 1) / 2;
+        /* each point a step: the call's $fn of 10^9 would make 5·10^9 */
+        if (scad_eval_steps(c->ev, (long)n * rings, c->loc, "minkowski")) return;
         if (!(q = parts_new(c, P, n * rings))) return;
         for (int i = 0; i < rings; i++) {
             double phi = 180.0 * (i + 0.5) / rings;
@@ -258,8 +261,10 @@ static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
         parts b = {NULL, 0, 0}, next = {NULL, 0, 0};
         decompose(c, ops[i], &b);
         if (!c->why && (long)acc.n * b.n > MAX_PARTS) c->why = "too many convex parts";
-        for (int x = 0; x < acc.n && !c->why && !c->oom; x++)
+        for (int x = 0; x < acc.n && !c->why && !c->oom && !ev->aborted; x++)
             for (int y = 0; y < b.n && !c->oom; y++) {
+                /* each pairwise sum is a step of work */
+                if (scad_eval_steps(ev, (long)acc.v[x].n * b.v[y].n, st->loc, "minkowski")) break;
                 iv_shape h;
                 if (hull_of_sums(&acc.v[x], &b.v[y], &h) != 0) continue;
                 int m;
@@ -276,7 +281,9 @@ static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
         acc = next;
     }
     scad_geom *u = NULL;
-    if (c->why) {
+    if (ev->aborted) {
+        /* the step limit, reported */
+    } else if (c->why) {
         scad_diag_error(ev->d, st->loc,
                         "minkowski() of %s is not supported: each child must be a convex shape "
                         "or a union of convex shapes; nothing is drawn",
@@ -351,6 +358,6 @@ scad_geom *scad_module_minkowski(scad_eval *ev, scad_env *env, const scad_stmt *
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
     scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
     if (scad_geom_dims(kids) == 1) return sum_2d(ev, ops, nops, st, state, inv, f);
-    mctx c = {ev, inv, f, NULL, 0};
+    mctx c = {ev, st->loc, inv, f, NULL, 0};
     return sum_3d(ev, ops, nops, st, state, &c);
 }
