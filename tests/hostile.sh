@@ -33,7 +33,7 @@ MUST_FAIL="rec_module rec_function rec_mutual rec_let rec_list_comp rec_module_c
 rec_default_arg lex_unterminated_string lex_unterminated_comment
 parse_errors inc_cycle_a inc_self assert_fail gen_deep_parens_open gen_deep_brackets_open
 gen_garbage_1 str_doubling rec_module_geometry children_deep_chain
-list_doubling"
+list_doubling size_fn_extrude_slices"
 MUST_PASS="num_cube_1e300 num_nan_translate num_scale_zero size_zero size_negative
 poly_empty poly_open inc_missing loop_1e7 loop_list_1e7 lex_empty mix_union mix_hull_many
 mix_minkowski_fine"

@@ -653,3 +653,17 @@ Test(scad_limits, round_points_and_minkowski_sums_are_steps)
     cr_expect(has_line(&m, "t.scad:1:1: error: evaluation took more than 10000000 steps (sphere)"));
     lines_free(&m);
 }
+
+Test(scad_limits, twisted_extrusion_vertices_are_steps)
+{
+    /* a 100,000-gon at 25,000 slices: 2.5·10^9 mesh vertices, once built
+     * until memory ran out (minutes, then nothing drawn) */
+    lines m = {0};
+    cr_assert_eq(
+        eval_steps("linear_extrude(height = 1, twist = 90, slices = 25000) circle(1, $fn = 1e9);",
+                   &m, 0),
+        -1);
+    cr_expect(has_line(
+        &m, "t.scad:1:1: error: evaluation took more than 10000000 steps (linear_extrude)"));
+    lines_free(&m);
+}

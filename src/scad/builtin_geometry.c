@@ -510,6 +510,7 @@ static int disc_fragments(const scad_geom *g, scad_facet_params f)
 
 typedef struct twist_ctx {
     scad_eval *ev;
+    scad_loc loc;
     const double *local_from_world;
     const double *world_from_local;
     double h1, h2, twist, scale[2];
@@ -727,6 +728,32 @@ static int in_path(const double (*P)[2], int n, double x, double y)
     return in;
 }
 
+/* A flat cap face f of k vertices.  The mesh splits a polygon face into a
+ * fan from its first vertex, long thin triangles all through one corner,
+ * whose boxes a ray over a cap of many points meets by the thousand; a
+ * strictly convex cap (a circle's), when it is the only path, goes in as
+ * a zig-zag strip instead: triangles across the cap, side by side, the
+ * same solid (they tile it without overlap). */
+static void cap_face(mesh_build *m, const int *f, int k, int alone)
+{
+    int pos = 0, neg = 0;
+    for (int i = 0; alone && k > 3 && i < k && !(pos && neg); i++) {
+        const double *a = m->v[f[i]], *b = m->v[f[(i + 1) % k]], *c = m->v[f[(i + 2) % k]];
+        double t = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+        pos |= t > 0;
+        neg |= !(t > 0);
+    }
+    if (!alone || k <= 3 || (pos && neg) || !pos) {
+        mb_face(m, f, k);
+        return;
+    }
+    for (int lo = 0, hi = k - 1; hi - lo >= 2;) {
+        mb_face(m, (int[3]){f[lo], f[lo + 1], f[hi]}, 3);
+        if (hi - ++lo >= 2) mb_face(m, (int[3]){f[lo], f[hi - 1], f[hi]}, 3);
+        hi--;
+    }
+}
+
 /* The closed polyhedron OpenSCAD 2021.01 builds for region r
  * (extrudePolygon and add_slice): the outline points at each of the
  * slices + 1 layers turned by -twist·j/slices and scaled by 1 - (1 -
@@ -813,11 +840,11 @@ static int twisted_mesh(const twist_ctx *c, const iv_region *r, iv_shape *out)
         }
         for (int i = 0; i < k; i++)
             f[i] = b + (k - 1 - i);
-        mb_face(&m, f, k);
+        cap_face(&m, f, k, np == 1);
         if (top) {
             for (int i = 0; i < k; i++)
                 f[i] = b + S * k + i;
-            mb_face(&m, f, k);
+            cap_face(&m, f, k, np == 1);
         }
         free(f);
     }
@@ -838,7 +865,7 @@ fail:
 
 static void twist_tree(twist_ctx *c, scad_geom *g)
 {
-    if (!g) return;
+    if (!g || c->ev->aborted) return;
     if (!g->is_leaf) {
         for (int i = 0; i < g->n; i++)
             twist_tree(c, g->kids[i]);
@@ -850,7 +877,18 @@ static void twist_tree(twist_ctx *c, scad_geom *g)
     }
     iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
     iv_shape s;
-    int rc = r ? twisted_mesh(c, r, &s) : -1;
+    int n = 0, rc = -1;
+    if (r) iv_region_points(r, &n);
+    /* each vertex of the mesh is a step of work: a 100,000-gon at 25,000
+     * slices would be 2.5·10^9 */
+    if (r && !scad_eval_steps(c->ev, (long)n * (c->slices + 1), c->loc, "linear_extrude")) {
+        rc = twisted_mesh(c, r, &s);
+        if (rc != 0)
+            scad_diag_error(c->ev->d, c->loc,
+                            "linear_extrude(): no mesh of %d points at %d slices (out of "
+                            "memory); nothing is drawn",
+                            n, c->slices);
+    }
     if (r) iv_region_release(r);
     if (rc != 0 || scad_geom_keep(c->ev, &s) != 0) {
         make_empty(g);
@@ -873,6 +911,7 @@ static scad_geom *m_linear_extrude(scad_eval *ev, scad_env *env, const scad_stmt
     scad_value c = scad_argv_get(a, "center", 5);
     int center = c.kind == SV_BOOL && c.u.b;
     twist_ctx t = {.ev = ev,
+                   .loc = st->loc,
                    .world_from_local = state->xf,
                    .h1 = center ? -h / 2 : 0,
                    .h2 = center ? h / 2 : h,

@@ -1,0 +1,1 @@
+linear_extrude(height = 1, twist = 90, slices = 25000) circle(1, $fn = 1e9);
