@@ -205,6 +205,17 @@ Test(offset, of_a_difference_keeps_the_hole)
     cr_assert(fabs(a - (22 * 22 - 8 * 8)) < 0.01 * 420, "area %f", a);
 }
 
+Test(offset, many_parts_keep_their_holes)
+{
+    /* 100 framed squares: a set of 200 paths becomes a union of parts cut
+     * where no path spans across in x (geom2d.c), each frame's hole in its
+     * part: 100 · (2.2² - 0.8²) */
+    double a = volume_of("offset(delta = 0.1) for (i = [0:99]) translate([3 * i, 0])\n"
+                         "    difference() { square(2); translate([0.5, 0.5]) square(1); }",
+                         3000);
+    cr_expect(fabs(a - 420) < 0.01 * 420, "area %f", a);
+}
+
 Test(projection, sphere_shadow_is_a_disc)
 {
     double a = volume_of("projection() sphere(5);", 512);

@@ -77,16 +77,90 @@ int scad_geom_keep(scad_eval *ev, iv_shape *s)
     return 0;
 }
 
-scad_geom *scad_region_geom(scad_eval *ev, const scad_paths *p, const scad_state *state)
+/* One region leaf over paths [start[0], start[n]) of pts (copied). */
+static scad_geom *region_leaf(scad_eval *ev, const double (*pts)[2], const int *start, int n,
+                              const scad_state *state)
 {
-    if (!p || p->npaths == 0) return NULL;
-    iv_region *g = iv_region_new((const double(*)[2])p->pts, p->start, p->npaths);
+    iv_region *g = iv_region_new(pts, start, n);
     if (!g) return NULL;
     iv_shape s;
     iv_shape_prism(&s, g, -SLAB, SLAB);
     iv_region_release(g); /* the shape holds it now */
     if (scad_geom_keep(ev, &s) != 0) return NULL;
     return scad_geom_leaf(ev, &s, state);
+}
+
+typedef struct xspan {
+    double lo, hi;
+    int path;
+} xspan;
+
+static int cmp_xspan(const void *a, const void *b)
+{
+    const xspan *p = a, *q = b;
+    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
+    return (p->path > q->path) - (p->path < q->path);
+}
+
+/* A set of many paths (a line of text has thousands) is cut where no path
+ * spans across in x, and each part is a leaf of its own under a union: a
+ * path nested in another overlaps it in x, so each part keeps its holes,
+ * and the region's nesting test, every path against all the others, runs
+ * per part (a 5,000-character text() took seconds in it). */
+enum { CLUSTER_MIN = 64 };
+
+scad_geom *scad_region_geom(scad_eval *ev, const scad_paths *p, const scad_state *state)
+{
+    if (!p || p->npaths == 0) return NULL;
+    const double(*pts)[2] = (const double(*)[2])p->pts;
+    if (p->npaths < CLUSTER_MIN) return region_leaf(ev, pts, p->start, p->npaths, state);
+    int n = p->npaths;
+    xspan *sp = malloc((size_t)n * sizeof *sp);
+    double(*q)[2] = malloc((size_t)(p->start[n] - p->start[0]) * sizeof *q);
+    int *qs = malloc((size_t)(n + 1) * sizeof *qs);
+    scad_geom *u = NULL;
+    if (!sp || !q || !qs) {
+        free(sp);
+        free(q);
+        free(qs);
+        return region_leaf(ev, pts, p->start, n, state);
+    }
+    for (int i = 0; i < n; i++) {
+        sp[i].lo = INFINITY;
+        sp[i].hi = -INFINITY;
+        sp[i].path = i;
+        for (int k = p->start[i]; k < p->start[i + 1]; k++) {
+            sp[i].lo = fmin(sp[i].lo, pts[k][0]);
+            sp[i].hi = fmax(sp[i].hi, pts[k][0]);
+        }
+    }
+    qsort(sp, (size_t)n, sizeof *sp, cmp_xspan);
+    for (int i = 0; i < n && !ev->aborted;) {
+        /* the part: paths whose x ranges chain into one */
+        int j = i, nq = 0, np = 0;
+        double hi = sp[i].hi;
+        qs[0] = 0;
+        while (j < n && (j == i || !(sp[j].lo > hi))) {
+            hi = fmax(hi, sp[j].hi);
+            int a = p->start[sp[j].path], b = p->start[sp[j].path + 1];
+            memcpy(q + nq, pts + a, (size_t)(b - a) * sizeof *q);
+            nq += b - a;
+            qs[++np] = nq;
+            j++;
+        }
+        if (i == 0 && j == n) { /* one part: the set as it came */
+            u = region_leaf(ev, pts, p->start, n, state);
+            break;
+        }
+        scad_geom *leaf = region_leaf(ev, (const double(*)[2])q, qs, np, state);
+        if (leaf && !u) u = scad_geom_op(ev, CSG_OP_UNION);
+        scad_geom_add(ev, u, leaf);
+        i = j;
+    }
+    free(sp);
+    free(q);
+    free(qs);
+    return u;
 }
 
 void scad_paths_free(scad_paths *p)
