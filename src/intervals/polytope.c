@@ -19,6 +19,7 @@
  * which costs time, not correctness.
  */
 #include "shape_kinds.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -160,36 +161,9 @@ typedef struct face {
     int alive;
 } face;
 
-static void sub3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[0] - b[0];
-    o[1] = a[1] - b[1];
-    o[2] = a[2] - b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 static int make_face(const double (*P)[3], int a, int b, int c, face *f)
 {
-    double u[3], v[3];
-    sub3(P[b], P[a], u);
-    sub3(P[c], P[a], v);
-    cross3(u, v, f->n);
-    double l = sqrt(dot3(f->n, f->n));
-    if (!(l > 0)) return -1;
-    for (int k = 0; k < 3; k++)
-        f->n[k] /= l;
-    f->d = dot3(f->n, P[a]);
+    if (vec3_plane(P, a, b, c, f->n, &f->d) != 0) return -1;
     f->a = a;
     f->b = b;
     f->c = c;

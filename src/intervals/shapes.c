@@ -16,13 +16,9 @@
  * along a shared face.
  */
 #include "shape_kinds.h"
+#include "vec3.h"
 
 #include <math.h>
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 /* Append [t0, t1] with the given parts; 0 when it would be empty. */
 static int emit(iv_list *out, double t0, int p0, double t1, int p1, int32_t prim)

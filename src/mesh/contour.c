@@ -47,6 +47,7 @@
  * with the columns that cross in between flipped).
  */
 #include "dexels.h"
+#include "../intervals/vec3.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -350,11 +351,6 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     return 0;
 }
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* The point where the tangent lines of samples a and b cross within face f
  * of the cell at lo (side h), or 0 when they meet at less than the feature
  * angle, are nearly parallel in the face, or cross outside it.  The inputs
@@ -505,20 +501,6 @@ typedef struct lvert {
     int edge; /* cell edge, or -1 for a face point */
     double p[3];
 } lvert;
-
-static void sub3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[0] - b[0];
-    o[1] = a[1] - b[1];
-    o[2] = a[2] - b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* Normal (twice the area) of triangle a, b, c. */
 static void tri_normal(const double a[3], const double b[3], const double c[3], double n[3])

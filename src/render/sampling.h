@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "../intervals/vec3.h"
 #include "render.h"
 
 /* ---- random numbers --------------------------------------------------------
@@ -55,11 +56,6 @@ static inline void square_to_disc(double u, double v, double *x, double *y)
 }
 
 /* ---- small vector helpers --------------------------------------------------- */
-
-static inline double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 static inline void normalize3(double v[3])
 {

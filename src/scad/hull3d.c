@@ -45,6 +45,7 @@
  * there, or take minutes).
  */
 #include "hull3d.h"
+#include "../intervals/vec3.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -91,41 +92,6 @@ typedef struct hull {
     int *gnext;       /* linked through the points */
     size_t gcap;
 } hull;
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void sub3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[0] - b[0];
-    o[1] = a[1] - b[1];
-    o[2] = a[2] - b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* The unit normal of the triangle a, b, c (counter-clockwise) and its
- * offset, exactly as polytope.c's make_face; -1 when it has no area. */
-static int plane_of(const double (*P)[3], int a, int b, int c, double n[3], double *d)
-{
-    double u[3], v[3];
-    sub3(P[b], P[a], u);
-    sub3(P[c], P[a], v);
-    cross3(u, v, n);
-    double l = sqrt(dot3(n, n));
-    if (!(l > 0)) return -1;
-    for (int k = 0; k < 3; k++)
-        n[k] /= l;
-    *d = dot3(n, P[a]);
-    return 0;
-}
 
 static double above(const hull *h, int f, int p)
 {
@@ -242,7 +208,7 @@ static int tetrahedron(hull *h, int ids[4])
     }
     if (i2 < 0) return SCAD_HULL_FLAT;
     double n0[3], d0;
-    if (plane_of(P, i0, i1, i2, n0, &d0)) return SCAD_HULL_FLAT;
+    if (vec3_plane(P, i0, i1, i2, n0, &d0)) return SCAD_HULL_FLAT;
     int i3 = -1;
     best = eps;
     for (int i = 0; i < n; i++) {
@@ -262,7 +228,7 @@ static int tetrahedron(hull *h, int ids[4])
         }
     for (int k = 0; k < 4; k++) {
         double nn[3], dd;
-        if (plane_of(P, t[k][0], t[k][1], t[k][2], nn, &dd)) return SCAD_HULL_FLAT;
+        if (vec3_plane(P, t[k][0], t[k][1], t[k][2], nn, &dd)) return SCAD_HULL_FLAT;
         if (face_new(h, t[k][0], t[k][1], t[k][2], nn, dd) < 0) return SCAD_HULL_NO_MEMORY;
     }
     /* neighbours: the face holding each edge reversed */
@@ -467,7 +433,7 @@ static int add_point(hull *h, int f)
             const hface *G = &h->F[h->hor[i][0]];
             int j = h->hor[i][1], q = G->nb[j];
             double nn[3], dd;
-            if (!plane_of(h->P, G->v[j], G->v[(j + 1) % 3], eye, nn, &dd) &&
+            if (!vec3_plane(h->P, G->v[j], G->v[(j + 1) % 3], eye, nn, &dd) &&
                 dot3(nn, h->centre) - dd < -h->eps)
                 continue;
             if (h->F[q].seen) continue; /* already added for another edge */
@@ -491,7 +457,7 @@ static int add_point(hull *h, int f)
         const hface *G = &h->F[h->hor[i][0]];
         int a = G->v[h->hor[i][1]], b = G->v[(h->hor[i][1] + 1) % 3];
         double nn[3], dd;
-        if (h->start[b] == -1 || plane_of(h->P, a, b, eye, nn, &dd)) bad = 1;
+        if (h->start[b] == -1 || vec3_plane(h->P, a, b, eye, nn, &dd)) bad = 1;
     }
     int loops = 0; /* one loop, not several */
     if (!bad && h->nhor > 0) {
@@ -513,8 +479,8 @@ static int add_point(hull *h, int f)
     for (int i = 0; i < h->nhor; i++) {
         int g = h->hor[i][0], j = h->hor[i][1];
         int a = h->F[g].v[j], b = h->F[g].v[(j + 1) % 3], other = h->F[g].nb[j];
-        double nn[3], dd;
-        plane_of(h->P, a, b, eye, nn, &dd);
+        double nn[3], dd = 0;
+        vec3_plane(h->P, a, b, eye, nn, &dd); /* has area: checked with the horizon above */
         int nf = face_new(h, a, b, eye, nn, dd);
         if (nf < 0) return SCAD_HULL_NO_MEMORY;
         h->fresh[i] = nf;
