@@ -9,6 +9,7 @@
 #include "../src/csg/csg.h"
 #include "../src/io/io.h"
 #include "../src/render/render.h"
+#include "support.h"
 
 #include <criterion/criterion.h>
 
@@ -394,13 +395,7 @@ Test(render_colors, cornfield_and_modifiers)
 static csg_node *box_node(double x0, double y0, double z0, double x1, double y1, double z1,
                           const float *rgba)
 {
-    iv_shape s = {.kind = IV_SHAPE_BOX};
-    s.u.box.lo[0] = x0;
-    s.u.box.lo[1] = y0;
-    s.u.box.lo[2] = z0;
-    s.u.box.hi[0] = x1;
-    s.u.box.hi[1] = y1;
-    s.u.box.hi[2] = z1;
+    iv_shape s = box(x0, y0, z0, x1, y1, z1);
     csg_material m = {.rgba = {1, 1, 1, 1}};
     if (rgba) {
         memcpy(m.rgba, rgba, sizeof m.rgba);
