@@ -576,9 +576,6 @@ void cli_load_image_adapter(void)
         open.rlim_cur = was.rlim_max;
         lifted = setrlimit(RLIMIT_DATA, &open) == 0;
     }
-    /* io.h has no call that only loads the adapter; asking about a format
-     * outside the six it answers by itself (png jpg jpeg tif tiff exr)
-     * loads it, and BMP is one every OpenImageIO build has. */
-    (void)io_image_format_supported("rayscad.bmp");
+    (void)io_image_load(NULL, 0); /* a failure shows again at the write */
     if (lifted) setrlimit(RLIMIT_DATA, &was);
 }

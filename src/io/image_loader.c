@@ -116,6 +116,11 @@ static int ready(char *err, size_t errlen)
     return 0;
 }
 
+int io_image_load(char *err, size_t errlen)
+{
+    return ready(err, errlen);
+}
+
 int io_image_write(const char *path, int width, int height, int channels, const float *pixels,
                    char *err, size_t errlen)
 {

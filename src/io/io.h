@@ -35,6 +35,11 @@ int io_image_read(const char *path, int *width, int *height, int *channels, floa
  * loading it. */
 int io_image_format_supported(const char *path);
 
+/* Load OpenImageIO now rather than at the first image call (a caller that
+ * must control the conditions of the load, such as a memory limit).
+ * Returns 0, or -1 with the reason in err. */
+int io_image_load(char *err, size_t errlen);
+
 /* ---- meshes (OpenMesh; src/io/mesh.cpp) --------------------------------- */
 
 /* Meshes cross this boundary as flat arrays: v holds 3 floats (x, y, z) per
