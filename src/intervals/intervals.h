@@ -196,6 +196,13 @@ int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes,
  * tolerance; coplanar input has no volume).  Returns 0, or -1 when the hull
  * is flat or empty, or out of memory. */
 int iv_shape_hull(iv_shape *s, const double (*pts)[3], int n);
+/* The tetrahedron a convex hull of P[0..n) starts from (iv_shape_hull and
+ * src/scad/hull3d.c both): the point of least x, the point farthest from
+ * it, the farthest from their line and the farthest from their plane
+ * (ids, in that order), and its four faces t[k] wound counter-clockwise
+ * seen from outside.  Returns 0, or -1 when the points lie within eps of a
+ * line or a plane. */
+int iv_hull_tetrahedron(const double (*P)[3], int n, double eps, int ids[4], int t[4][3]);
 /* The vertices of a polytope (borrowed), or NULL for other kinds. */
 const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3];
 /* The planes of a polytope (borrowed): {nx, ny, nz, d} with unit n, inside

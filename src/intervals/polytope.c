@@ -171,26 +171,8 @@ static int make_face(const double (*P)[3], int a, int b, int c, face *f)
     return 0;
 }
 
-int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
+int iv_hull_tetrahedron(const double (*P)[3], int n, double eps, int ids[4], int t[4][3])
 {
-    if (n < 4) return -1;
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < n; i++)
-        for (int k = 0; k < 3; k++) {
-            if (!isfinite(P[i][k])) return -1;
-            lo[k] = fmin(lo[k], P[i][k]);
-            hi[k] = fmax(hi[k], P[i][k]);
-        }
-    double scale = 0;
-    for (int k = 0; k < 3; k++)
-        scale = fmax(scale, fmax(fabs(lo[k]), fabs(hi[k])));
-    scale = fmax(scale, fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2])));
-    /* Distances below eps count as on the plane: a few thousand ulps of the
-     * coordinates, far above the rounding of a plane test, far below any
-     * feature OpenSCAD's grid (1e-6 mm at its default snap) keeps. */
-    const double eps = 1e-11 * scale + 1e-300;
-    /* Initial tetrahedron: two extreme points, the farthest from their line,
-     * the farthest from their plane. */
     int i0 = 0, i1 = 0;
     for (int i = 0; i < n; i++)
         if (P[i][0] < P[i0][0]) i0 = i;
@@ -220,18 +202,53 @@ int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
         }
     }
     if (i2 < 0) return -1;
-    face f0;
-    if (make_face(P, i0, i1, i2, &f0)) return -1;
+    double n0[3], d0;
+    if (vec3_plane(P, i0, i1, i2, n0, &d0)) return -1;
     int i3 = -1;
     best = eps;
     for (int i = 0; i < n; i++) {
-        double l = fabs(dot3(f0.n, P[i]) - f0.d);
+        double l = fabs(dot3(n0, P[i]) - d0);
         if (l > best) {
             best = l;
             i3 = i;
         }
     }
     if (i3 < 0) return -1;
+    ids[0] = i0;
+    ids[1] = i1;
+    ids[2] = i2;
+    ids[3] = i3;
+    const int faces[4][3] = {{i0, i1, i2}, {i0, i3, i1}, {i1, i3, i2}, {i2, i3, i0}};
+    memcpy(t, faces, sizeof faces);
+    if (dot3(n0, P[i3]) - d0 > 0) /* i3 above (i0, i1, i2): turn every face */
+        for (int k = 0; k < 4; k++) {
+            int x = t[k][1];
+            t[k][1] = t[k][2];
+            t[k][2] = x;
+        }
+    return 0;
+}
+
+int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
+{
+    if (n < 4) return -1;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            if (!isfinite(P[i][k])) return -1;
+            lo[k] = fmin(lo[k], P[i][k]);
+            hi[k] = fmax(hi[k], P[i][k]);
+        }
+    double scale = 0;
+    for (int k = 0; k < 3; k++)
+        scale = fmax(scale, fmax(fabs(lo[k]), fabs(hi[k])));
+    scale = fmax(scale, fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2])));
+    /* Distances below eps count as on the plane: a few thousand ulps of the
+     * coordinates, far above the rounding of a plane test, far below any
+     * feature OpenSCAD's grid (1e-6 mm at its default snap) keeps. */
+    const double eps = 1e-11 * scale + 1e-300;
+    int ids[4], t[4][3];
+    if (iv_hull_tetrahedron(P, n, eps, ids, t) != 0) return -1;
     int cap = 64, nf = 0;
     face *F = malloc((size_t)cap * sizeof *F);
     int ecap = 64;
@@ -239,22 +256,10 @@ int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
     int *vis = NULL;
     int rc = -1;
     if (!F || !edges) goto done;
-    {
-        /* Orient the tetrahedron outward. */
-        int t[4][3] = {{i0, i1, i2}, {i0, i3, i1}, {i1, i3, i2}, {i2, i3, i0}};
-        if (dot3(f0.n, P[i3]) - f0.d > 0) {
-            /* i3 is above (i0, i1, i2): reverse every face. */
-            for (int k = 0; k < 4; k++) {
-                int x = t[k][1];
-                t[k][1] = t[k][2];
-                t[k][2] = x;
-            }
-        }
-        for (int k = 0; k < 4; k++)
-            if (make_face(P, t[k][0], t[k][1], t[k][2], &F[nf++])) goto done;
-    }
+    for (int k = 0; k < 4; k++)
+        if (make_face(P, t[k][0], t[k][1], t[k][2], &F[nf++])) goto done;
     for (int i = 0; i < n; i++) {
-        if (i == i0 || i == i1 || i == i2 || i == i3) continue;
+        if (i == ids[0] || i == ids[1] || i == ids[2] || i == ids[3]) continue;
         int ne = 0, nvis = 0;
         for (int k = 0; k < nf; k++) {
             if (!F[k].alive || !(dot3(F[k].n, P[i]) - F[k].d > eps)) continue;

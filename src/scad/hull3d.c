@@ -171,61 +171,13 @@ static int outside_add(hull *h, int f, int p, double dist)
     return 0;
 }
 
-/* Make the first tetrahedron, as polytope.c picks it: the point of least x,
- * the point farthest from it, the farthest from their line, the farthest
- * from their plane.  Returns 0, SCAD_HULL_FLAT or SCAD_HULL_NO_MEMORY. */
+/* Make the first tetrahedron, as polytope.c does (iv_hull_tetrahedron).
+ * Returns 0, SCAD_HULL_FLAT or SCAD_HULL_NO_MEMORY. */
 static int tetrahedron(hull *h, int ids[4])
 {
     const double(*P)[3] = h->P;
-    int n = h->n, i0 = 0, i1 = 0;
-    double eps = h->eps;
-    for (int i = 0; i < n; i++)
-        if (P[i][0] < P[i0][0]) i0 = i;
-    double best = -1;
-    for (int i = 0; i < n; i++) {
-        double v[3];
-        sub3(P[i], P[i0], v);
-        double l = dot3(v, v);
-        if (l > best) {
-            best = l;
-            i1 = i;
-        }
-    }
-    if (!(sqrt(best) > eps)) return SCAD_HULL_FLAT;
-    int i2 = -1;
-    best = eps;
-    double e[3];
-    sub3(P[i1], P[i0], e);
-    for (int i = 0; i < n; i++) {
-        double v[3], c[3];
-        sub3(P[i], P[i0], v);
-        cross3(e, v, c);
-        double l = sqrt(dot3(c, c) / dot3(e, e));
-        if (l > best) {
-            best = l;
-            i2 = i;
-        }
-    }
-    if (i2 < 0) return SCAD_HULL_FLAT;
-    double n0[3], d0;
-    if (vec3_plane(P, i0, i1, i2, n0, &d0)) return SCAD_HULL_FLAT;
-    int i3 = -1;
-    best = eps;
-    for (int i = 0; i < n; i++) {
-        double l = fabs(dot3(n0, P[i]) - d0);
-        if (l > best) {
-            best = l;
-            i3 = i;
-        }
-    }
-    if (i3 < 0) return SCAD_HULL_FLAT;
-    int t[4][3] = {{i0, i1, i2}, {i0, i3, i1}, {i1, i3, i2}, {i2, i3, i0}};
-    if (dot3(n0, P[i3]) - d0 > 0) /* i3 above (i0, i1, i2): turn every face */
-        for (int k = 0; k < 4; k++) {
-            int x = t[k][1];
-            t[k][1] = t[k][2];
-            t[k][2] = x;
-        }
+    int t[4][3];
+    if (iv_hull_tetrahedron(P, h->n, h->eps, ids, t) != 0) return SCAD_HULL_FLAT;
     for (int k = 0; k < 4; k++) {
         double nn[3], dd;
         if (vec3_plane(P, t[k][0], t[k][1], t[k][2], nn, &dd)) return SCAD_HULL_FLAT;
@@ -240,11 +192,7 @@ static int tetrahedron(hull *h, int ids[4])
                     if (h->F[g].v[k] == b && h->F[g].v[(k + 1) % 3] == a) h->F[f].nb[j] = g;
         }
     for (int k = 0; k < 3; k++)
-        h->centre[k] = (P[i0][k] + P[i1][k] + P[i2][k] + P[i3][k]) / 4;
-    ids[0] = i0;
-    ids[1] = i1;
-    ids[2] = i2;
-    ids[3] = i3;
+        h->centre[k] = (P[ids[0]][k] + P[ids[1]][k] + P[ids[2]][k] + P[ids[3]][k]) / 4;
     return 0;
 }
 
