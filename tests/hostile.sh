@@ -14,13 +14,15 @@
 #   - the files in MUST_FAIL do fail (so the checks above are exercised), and
 #     those in MUST_PASS render.
 #
-# Usage: tests/hostile.sh [BUILD]   (default build; the asan build is detected and
-# runs with a longer per-file timeout).  Runs as many files at once as there are
+# Usage: tests/hostile.sh [BUILD [PATTERN]]   (default build; the asan build is detected
+# and runs with a longer per-file timeout; PATTERN, a shell glob such as 'fuzz_*', runs
+# only the corpus files whose name matches it).  Runs as many files at once as there are
 # cores.  Exit status 0 when every file passes.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/.." && pwd)
 build=${1:-build}
+pattern=${2:-}
 bin="$root/$build/rayscad"
 [ -x "$bin" ] || { echo "hostile.sh: no $bin (make BUILD=$build first)" >&2; exit 1; }
 
@@ -33,10 +35,11 @@ MUST_FAIL="rec_module rec_function rec_mutual rec_let rec_list_comp rec_module_c
 rec_default_arg lex_unterminated_string lex_unterminated_comment
 parse_errors inc_cycle_a inc_self assert_fail gen_deep_parens_open gen_deep_brackets_open
 gen_garbage_1 str_doubling rec_module_geometry children_deep_chain
-list_doubling size_fn_extrude_slices"
+list_doubling size_fn_extrude_slices fuzz_concat_doubling fuzz_str_doubling"
 MUST_PASS="num_cube_1e300 num_nan_translate num_scale_zero size_zero size_negative
 poly_empty poly_open inc_missing loop_1e7 loop_list_1e7 lex_empty mix_union mix_hull_many
-mix_minkowski_fine"
+mix_minkowski_fine fuzz_minkowski_sphere_fn fuzz_extrude_twist_slices
+fuzz_extrude_twist_circle_fn"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/rayscad-hostile.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -90,9 +93,15 @@ check_one() { # index file
 export -f check_one
 export work bin limit MUST_FAIL MUST_PASS
 
-files=$( (ls "$here"/hostile/*.scad; find /usr/share/openscad/examples -name '*.scad' 2>/dev/null | sort) )
-n=$(echo "$files" | wc -l)
-[ "$n" -ge 100 ] || { echo "hostile.sh: only $n files found" >&2; exit 1; }
+if [ -n "$pattern" ]; then
+    files=$(ls "$here"/hostile/$pattern.scad 2>/dev/null)
+    [ -n "$files" ] || { echo "hostile.sh: no tests/hostile/$pattern.scad" >&2; exit 1; }
+    n=$(echo "$files" | wc -l)
+else
+    files=$( (ls "$here"/hostile/*.scad; find /usr/share/openscad/examples -name '*.scad' 2>/dev/null | sort) )
+    n=$(echo "$files" | wc -l)
+    [ "$n" -ge 100 ] || { echo "hostile.sh: only $n files found" >&2; exit 1; }
+fi
 jobs=$(nproc 2>/dev/null || echo 2)
 
 start=$SECONDS
