@@ -227,6 +227,19 @@ check "--max-string is a named error" sh -c "test $rc -eq 1 && grep -q 'string l
 run str.scad -o str.echo --max-steps 0
 check "a limit of 0 is a usage error" test "$rc" -eq 2
 
+# The error that stops an evaluation is the last thing it says: the
+# unwinding (an undef for len(), the next echo) adds no WARNING nor ECHO.
+printf 'function d(l, n) = n == 0 ? l : d(concat(l, l), n - 1);\necho(len(d([1], 40)));\necho("after");\n' >stop_steps.scad
+run stop_steps.scad -o stop_steps.echo --max-steps 100000
+check "a step limit is the only line on stderr" sh -c "test $rc -eq 1 && test \"\$(cat err.txt)\" = 'stop_steps.scad:1:35: error: evaluation took more than 100000 steps (concat)'"
+check "a step limit ends the .echo with its trace" sh -c "tail -n 1 stop_steps.echo | grep -qx \"TRACE: called by 'echo' in file stop_steps.scad, line 2\" && ! grep -Eq 'WARNING|ECHO' stop_steps.echo"
+printf 'function s(x, n) = n == 0 ? x : s(str(x, x), n - 1);\necho(len(s("ab", 40)));\n' >stop_str.scad
+run stop_str.scad -o stop_str.png --max-string 1000
+check "a string limit is the only line on stderr" sh -c "test $rc -eq 1 && test \"\$(cat err.txt)\" = 'stop_str.scad:1:35: error: string longer than 1000 bytes (str)'"
+printf 'function f(n) = [f(n + 1)];\necho(len(f(0)[0]), undefined_var);\ncube(1);\n' >stop_rec.scad
+run stop_rec.scad -o stop_rec.png --max-recursion 50
+check "a recursion limit is the only line on stderr" sh -c "test $rc -eq 1 && test \"\$(cat err.txt)\" = \"stop_rec.scad:1:18: error: recursion deeper than 50 calls (calling function 'f')\""
+
 # Output and memory limits: each a named error that names its flag, exit 1,
 # nothing written and an existing output left as it was.
 absent_or_kept() { # file: absent, or still holding "precious"

@@ -40,6 +40,7 @@ typedef struct scad_diag {
     int errors;
     int warnings;
     scad_loc first_syntax; /* file NULL until a syntax error */
+    int stopped; /* an error stopped the evaluation: later lines are dropped */
 } scad_diag;
 
 /* "file:line:col: error: <fmt>" as a SCAD_MSG_ERROR line. */
@@ -64,7 +65,10 @@ void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 void scad_diag_deprecated(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* A line sent as is, of the given kind (ECHO, DEPRECATED warnings …). */
+/* A line sent as is, of the given kind (ECHO, DEPRECATED warnings …).
+ * Dropped once d->stopped is set: after the error that stops an evaluation
+ * (and its trace), what the unwinding evaluator would still say (a
+ * function's undef result that len() cannot use …) is noise. */
 void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line);
 
 /* ---- tokens --------------------------------------------------------------- */

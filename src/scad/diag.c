@@ -17,6 +17,7 @@ enum { LINE_MAX_BYTES = 4096 };
 
 void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
 {
+    if (d->stopped) return;
     if (kind == SCAD_MSG_WARNING) d->warnings++;
     if (kind == SCAD_MSG_ERROR) d->errors++;
     if (d->opt && d->opt->message) d->opt->message(d->opt->ud, kind, line);

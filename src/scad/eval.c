@@ -11,7 +11,9 @@
  * scope evaluates all its assignments in order (each name once, at its
  * first position) before instantiating anything.  Every user call counts
  * against ev->max_depth and the C stack budget, and an error sets
- * ev->aborted, after which everything returns undef / no geometry at once.
+ * ev->aborted, after which everything returns undef / no geometry at once
+ * and nothing more is said (the error sets ev->d->stopped, which drops
+ * every later message line).
  */
 #include <limits.h>
 #include <math.h>
@@ -41,6 +43,7 @@ static void eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg,
         for (int i = ev->nframes - 1, k = 0; i >= 0 && k < TRACE_DEPTH; i--, k++)
             scad_diag_trace(ev->d, ev->frames[i].loc, "TRACE: called by '%s'",
                             ev->frames[i].name);
+        ev->d->stopped = 1;
     }
     ev->aborted = 1;
 }
