@@ -312,6 +312,24 @@ else
     check "--max-memory: a small render fits in 300M" sh -c "test $rc -eq 0 && test -s small.png"
     run ball.scad -o fine.stl --mesh-size 0.05 --max-memory 100M
     check "--max-memory: a mesh past it is a named error" sh -c "test $rc -eq 1 && grep -q '^rayscad: error: .*out of memory.* (more than --max-memory 100M)$' err.txt && test ! -e fine.stl"
+    # A million cubes run out of memory in the evaluator wherever the limit
+    # falls (a leaf, a node's children, the csg tree, the .csg text): each
+    # failure is at the statement being evaluated (the for at 1:1, translate
+    # at 1:22, cube at 1:43), never at "?".  A limit that lets the model
+    # through fails later, in the renderer or mesher, as rayscad's own error.
+    printf 'for (i = [0:999999]) translate([i, 0, 0]) cube();\n' >cubes.scad
+    located=0
+    for m in 60M 80M 100M 150M 200M; do
+        for out in cubes.png cubes.csg cubes.stl; do
+            run cubes.scad -o "$out" --imgsize=16,16 --max-memory $m
+            if grep -qE "^cubes\.scad:1:(1|22|43): error: out of memory( [a-z ]+)? \(more than --max-memory $m\)$" err.txt; then
+                located=$((located + 1))
+            else
+                check "--max-memory $m: $out fails with a located or named error" sh -c "test $rc -eq 1 && test \$(wc -l <err.txt) -eq 1 && grep -qE '^rayscad: error: .*out of memory.* \(more than --max-memory $m\)$' err.txt"
+            fi
+        done
+    done
+    check "--max-memory: the evaluator's out-of-memory errors carry file:line:col" test "$located" -ge 5
 fi
 
 echo "cli: $passed passed, $failed failed"

@@ -40,7 +40,7 @@ typedef struct scad_diag {
     int errors;
     int warnings;
     scad_loc first_syntax; /* file NULL until a syntax error */
-    int stopped; /* an error stopped the evaluation: later lines are dropped */
+    int stopped;           /* an error stopped the evaluation: later lines are dropped */
 } scad_diag;
 
 /* "file:line:col: error: <fmt>" as a SCAD_MSG_ERROR line. */

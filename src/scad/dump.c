@@ -35,7 +35,7 @@ scad_geom *scad_dump_node(scad_eval *ev, const char *text, scad_geom *list)
     size_t n = strlen(text);
     char *t = scad_arena_alloc(ev->arena, n + 1);
     if (!t) {
-        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        scad_eval_error(ev, scad_eval_here(ev), "out of memory");
         return NULL;
     }
     memcpy(t, text, n + 1);
@@ -46,32 +46,39 @@ scad_geom *scad_dump_node(scad_eval *ev, const char *text, scad_geom *list)
 
 /* ---- printing -------------------------------------------------------------- */
 
-static void write_node(scad_buf *b, const scad_geom *g, int indent)
+/* Returns NULL, or the node being written when b ran out of memory. */
+static const scad_geom *write_node(scad_buf *b, const scad_geom *g, int indent)
 {
     for (int i = 0; i < indent; i++)
         scad_buf_put(b, "\t", 1);
     scad_buf_puts(b, g->text);
     if (g->n == 0) {
         scad_buf_puts(b, ";\n");
-        return;
+        return b->oom ? g : NULL;
     }
     scad_buf_puts(b, " {\n");
-    for (int i = 0; i < g->n; i++)
-        write_node(b, g->kids[i], indent + 1);
+    if (b->oom) return g;
+    for (int i = 0; i < g->n; i++) {
+        const scad_geom *failed = write_node(b, g->kids[i], indent + 1);
+        if (failed) return failed;
+    }
     for (int i = 0; i < indent; i++)
         scad_buf_put(b, "\t", 1);
     scad_buf_puts(b, "}\n");
+    return b->oom ? g : NULL;
 }
 
-void scad_dump_write(scad_buf *b, const scad_geom *list)
+const scad_geom *scad_dump_write(scad_buf *b, const scad_geom *list)
 {
+    const scad_geom *failed = NULL;
     if (list && list->text) {
-        write_node(b, list, 0);
+        failed = write_node(b, list, 0);
     } else if (list) {
-        for (int i = 0; i < list->n; i++)
-            write_node(b, list->kids[i], 0);
+        for (int i = 0; i < list->n && !failed; i++)
+            failed = write_node(b, list->kids[i], 0);
     }
     scad_buf_puts(b, "\n");
+    return failed ? failed : b->oom ? list : NULL;
 }
 
 /* An ostream's default form of a double (6 significant digits). */

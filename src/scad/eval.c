@@ -58,6 +58,11 @@ void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     eval_error_worded(ev, loc, msg, msg);
 }
 
+scad_loc scad_eval_here(const scad_eval *ev)
+{
+    return ev->nframes > 0 ? ev->frames[ev->nframes - 1].loc : ev->at;
+}
+
 /* Enter a module instantiation or function call for the error trace.
  * Returns 0, or -1 when out of memory (the frame is then not recorded: a
  * shorter trace, nothing worse). */
@@ -142,7 +147,7 @@ static scad_env *env_new(scad_eval *ev, scad_env *parent, scad_env *dyn, const s
 {
     scad_env *e = calloc(1, sizeof *e);
     if (!e) {
-        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        scad_eval_error(ev, scad_eval_here(ev), "out of memory");
         return NULL;
     }
     e->parent = parent;
@@ -1364,11 +1369,12 @@ scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *st
 {
     scad_geom *g = scad_arena_alloc(ev->arena, sizeof *g);
     if (!g) {
-        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        scad_eval_error(ev, scad_eval_here(ev), "out of memory");
         return NULL;
     }
     g->is_leaf = 1;
     g->shape = *s;
+    g->loc = scad_eval_here(ev);
     memcpy(g->xf, state->xf, sizeof g->xf);
     g->mat = state->mat;
     return g;
@@ -1378,10 +1384,11 @@ scad_geom *scad_geom_op(scad_eval *ev, csg_op op)
 {
     scad_geom *g = scad_arena_alloc(ev->arena, sizeof *g);
     if (!g) {
-        scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+        scad_eval_error(ev, scad_eval_here(ev), "out of memory");
         return NULL;
     }
     g->op = op;
+    g->loc = scad_eval_here(ev);
     return g;
 }
 
@@ -1397,7 +1404,7 @@ void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child)
         int cap = parent->cap ? parent->cap * 2 : 4;
         scad_geom **k = scad_arena_alloc(ev->arena, sizeof *k * (size_t)cap);
         if (!k) {
-            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            scad_eval_error(ev, scad_eval_here(ev), "out of memory");
             return;
         }
         if (parent->n) memcpy(k, parent->kids, sizeof *k * (size_t)parent->n);
@@ -1425,7 +1432,7 @@ static void gather_add(scad_eval *ev, gather *g, scad_geom *x)
         int cap = g->cap ? g->cap * 2 : 8;
         scad_geom **v = realloc(g->v, sizeof *v * (size_t)cap);
         if (!v) {
-            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            scad_eval_error(ev, scad_eval_here(ev), "out of memory");
             return;
         }
         g->v = v;
@@ -1463,7 +1470,7 @@ static void list_add(scad_eval *ev, scad_geom ***v, int *n, int *cap, scad_geom 
         int c = *cap ? *cap * 2 : 4;
         scad_geom **nv = realloc(*v, sizeof *nv * (size_t)c);
         if (!nv) {
-            scad_eval_error(ev, (scad_loc){"?", 0, 0}, "out of memory");
+            scad_eval_error(ev, scad_eval_here(ev), "out of memory");
             return;
         }
         *v = nv;
@@ -1479,8 +1486,10 @@ static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
 
 static void run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s)
 {
-    for (int i = 0; i < s->nassigns && !ev->aborted; i++)
+    for (int i = 0; i < s->nassigns && !ev->aborted; i++) {
+        if (ev->nframes == 0) ev->at = s->assigns[i].loc;
         scad_env_set(env, s->assigns[i].name, scad_eval_expr(ev, env, s->assigns[i].value));
+    }
 }
 
 /* Instantiates the statements of s (all of them, or those picked) in env. */
@@ -1488,8 +1497,11 @@ static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s, const s
                       gather *out, const int *pick, int npick)
 {
     int n = pick ? npick : s->nstmts;
-    for (int i = 0; i < n && !ev->aborted; i++)
-        gather_add(ev, out, instantiate(ev, env, s->stmts[pick ? pick[i] : i], state));
+    for (int i = 0; i < n && !ev->aborted; i++) {
+        const scad_stmt *st = s->stmts[pick ? pick[i] : i];
+        if (ev->nframes == 0) ev->at = st->loc;
+        gather_add(ev, out, instantiate(ev, env, st, state));
+    }
 }
 
 /* A child scope: a fresh environment below env for its assignments. */

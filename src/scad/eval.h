@@ -29,6 +29,7 @@ struct scad_geom {
     scad_geom **kids;
     int n, cap;
     const char *text; /* dump mode only */
+    scad_loc loc;     /* the statement that made it (scad_eval_here) */
 };
 
 /* What a subtree inherits: the accumulated world_from_object transform and
@@ -105,6 +106,10 @@ typedef struct scad_eval {
         scad_loc loc;
     } *frames;
     int nframes, capframes;
+    /* Where a top-level error with no place of its own is reported: the
+     * top-level assignment or statement being evaluated (deeper, the
+     * innermost frame says it; see scad_eval_here). */
+    scad_loc at;
     int facets; /* scad_facets, from the options */
     const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by
@@ -147,6 +152,11 @@ int scad_eval_steps(scad_eval *ev, long n, scad_loc loc, const char *what);
 /* Error: reports "file:line:col: error: …" and stops the evaluation. */
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* Where the evaluation is: the module instantiation or function call
+ * being evaluated (the innermost frame), else the top-level assignment or
+ * statement (ev->at).  For errors such as running out of memory that
+ * arise in no particular expression. */
+scad_loc scad_eval_here(const scad_eval *ev);
 
 /* The file's scope evaluated in env; top-level objects as one union. */
 scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
@@ -209,8 +219,10 @@ scad_geom *scad_dump_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st,
                              const scad_argv *a);
 /* 1 when name is a builtin module scad_dump_builtin knows. */
 int scad_dump_is_builtin(const char *name);
-/* The tree as OpenSCAD's .csg text into b (each top-level node unindented). */
-void scad_dump_write(scad_buf *b, const scad_geom *list);
+/* The tree as OpenSCAD's .csg text into b (each top-level node unindented).
+ * Returns NULL, or when b ran out of memory (b->oom) the node whose text
+ * it could not take, borrowed from the tree. */
+const scad_geom *scad_dump_write(scad_buf *b, const scad_geom *list);
 /* The world_from_object matrix of translate/rotate/scale/mirror/multmatrix
  * (builtin_modules.c): 1 when name is one of them. */
 int scad_transform_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m);

@@ -67,38 +67,40 @@ char *scad_read_file(scad_arena *a, const char *path)
 
 /* ---- geometry → csg ------------------------------------------------------------ */
 
-static csg_node *to_csg(const scad_geom *g, int *oom)
+/* The csg tree of g.  Out of memory, *oom is set to the node that could
+ * not be made or take a child (its location goes into the error). */
+static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
 {
     if (!g || *oom) return NULL;
     if (g->is_leaf) {
         csg_node *n = csg_node_shape(&g->shape, g->xf, &g->mat);
-        if (!n) *oom = 1;
+        if (!n) *oom = g;
         return n;
     }
     csg_node *n = csg_node_op(g->op);
     if (!n) {
-        *oom = 1;
+        *oom = g;
         return NULL;
     }
     for (int i = 0; i < g->n; i++) {
         csg_node *k = to_csg(g->kids[i], oom);
-        if (k && csg_node_add(n, k)) *oom = 1;
+        if (k && csg_node_add(n, k) && !*oom) *oom = g;
     }
     return n;
 }
 
-static csg_node *list_to_csg(scad_geom **v, int n, int *oom)
+static csg_node *list_to_csg(scad_geom **v, int n, const scad_geom **oom)
 {
     if (n == 0) return NULL;
     if (n == 1) return to_csg(v[0], oom);
     csg_node *u = csg_node_op(CSG_OP_UNION);
     if (!u) {
-        *oom = 1;
+        *oom = v[0];
         return NULL;
     }
     for (int i = 0; i < n; i++) {
         csg_node *k = to_csg(v[i], oom);
-        if (k && csg_node_add(u, k)) *oom = 1;
+        if (k && csg_node_add(u, k) && !*oom) *oom = v[i];
     }
     return u;
 }
@@ -173,9 +175,10 @@ static void run_job(job *j)
         j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;
     ev.rand_state = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
     ev.dump = j->dump != NULL;
+    ev.at = (scad_loc){j->name, 1, 1};
     j->status = -1;
     if (!ev.arena) {
-        scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
+        scad_diag_error(j->d, ev.at, "out of memory");
         return;
     }
     scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
@@ -224,19 +227,19 @@ static void run_job(job *j)
             scad_diag_line(j->d, SCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");
         if (!ev.aborted && j->dump) {
-            scad_dump_write(j->dump, ev.has_root ? ev.root : model);
+            const scad_geom *failed = scad_dump_write(j->dump, ev.has_root ? ev.root : model);
             if (j->dump->oom)
-                scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
+                scad_diag_error(j->d, failed ? failed->loc : ev.at, "out of memory");
             else
                 j->status = 0;
         } else if (!ev.aborted) {
-            int oom = 0;
+            const scad_geom *oom = NULL;
             if (ev.has_root) model = ev.root;
             j->out->model = to_csg(model, &oom);
             j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, &oom);
             j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, &oom);
             if (oom) {
-                scad_diag_error(j->d, (scad_loc){"?", 1, 1}, "out of memory");
+                scad_diag_error(j->d, oom->loc.file ? oom->loc : ev.at, "out of memory");
                 scad_result_free(j->out);
             } else {
                 j->status = 0;
