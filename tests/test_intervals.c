@@ -810,3 +810,132 @@ Test(iv_bvh, split_separates_clusters)
                      it[i].id);
     }
 }
+
+/* ---- meshes: clipped references ------------------------------------------ */
+
+TestSuite(iv_mesh, .init = arena_setup, .fini = arena_teardown);
+
+#define PI 3.14159265358979323846
+
+enum { TWIST_N = 96 };
+
+/* An n-gon of radius 1 turned by 90° from z = 0 to z = 1 in one slice:
+ * 2n side triangles, each a long thin sliver across all three axes, and
+ * two planar n-gon ends.  Coordinates are multiples of 2^-10, so the
+ * midpoints where references are cut are short binary fractions too, and
+ * rays on a 2^-12 grid run in and through the cutting planes. */
+static int twisted_prism(iv_shape *s, double extra, long *nref)
+{
+    static double P[2 * TWIST_N][3];
+    static int F[2 * TWIST_N + 4 * TWIST_N], S[TWIST_N + 3];
+    for (int i = 0; i < TWIST_N; i++) {
+        double a = 2 * PI * i / TWIST_N, b = a + PI / 2;
+        P[i][0] = round(1024 * cos(a)) / 1024;
+        P[i][1] = round(1024 * sin(a)) / 1024;
+        P[i][2] = 0;
+        P[TWIST_N + i][0] = round(1024 * cos(b)) / 1024;
+        P[TWIST_N + i][1] = round(1024 * sin(b)) / 1024;
+        P[TWIST_N + i][2] = 1;
+    }
+    int k = 0, f = 0;
+    S[f++] = 0;
+    for (int i = 0; i < TWIST_N; i++)
+        F[k++] = i;
+    S[f++] = k;
+    for (int i = TWIST_N - 1; i >= 0; i--)
+        F[k++] = TWIST_N + i;
+    S[f++] = k;
+    for (int i = 0; i < TWIST_N; i++) {
+        int j = (i + 1) % TWIST_N;
+        F[k++] = i;
+        F[k++] = TWIST_N + i;
+        F[k++] = TWIST_N + j;
+        F[k++] = j;
+        S[f++] = k;
+    }
+    return iv_shape_mesh_budget(s, (const double(*)[3])P, 2 * TWIST_N, F, S, f - 1, extra, nref);
+}
+
+static double grid(double lo, double hi)
+{
+    return round(rng_uniform(lo, hi) * 4096) / 4096;
+}
+
+/* Rays of four kinds: anywhere; along an axis from a grid point; in a grid
+ * plane (one direction component zero); from vertex to vertex. */
+static void mesh_ray(int kind, double o[3], double d[3])
+{
+    const double lo[3] = {-1.3, -1.3, -0.3}, hi[3] = {1.3, 1.3, 1.3};
+    for (int k = 0; k < 3; k++) {
+        o[k] = kind == 0 ? rng_uniform(lo[k], hi[k]) : grid(lo[k], hi[k]);
+        d[k] = rng_uniform(-1, 1);
+    }
+    if (kind == 1) {
+        d[0] = d[1] = d[2] = 0;
+        d[rng_int(3)] = rng_int(2) ? 1 : -1;
+    } else if (kind == 2) {
+        d[rng_int(3)] = 0;
+    } else if (kind == 3) {
+        int a = rng_int(2 * TWIST_N), b = rng_int(2 * TWIST_N);
+        double ang[2] = {2 * PI * (a % TWIST_N) / TWIST_N + (a >= TWIST_N ? PI / 2 : 0),
+                         2 * PI * (b % TWIST_N) / TWIST_N + (b >= TWIST_N ? PI / 2 : 0)};
+        double pa[3] = {round(1024 * cos(ang[0])) / 1024, round(1024 * sin(ang[0])) / 1024,
+                        a >= TWIST_N};
+        double pb[3] = {round(1024 * cos(ang[1])) / 1024, round(1024 * sin(ang[1])) / 1024,
+                        b >= TWIST_N};
+        for (int k = 0; k < 3; k++) {
+            d[k] = pb[k] - pa[k];
+            o[k] = pa[k] - d[k];
+        }
+    }
+}
+
+/* A triangle met through several of its references is one crossing: the
+ * lists equal those of the unclipped hierarchy bitwise (t, sign), for rays
+ * that lie in cutting planes, cross them on box edges, and pass through
+ * vertices.  The parts differ (the triangles are stored in another order). */
+Test(iv_mesh, clipped_references_give_the_same_crossings)
+{
+    iv_shape plain, clipped[2];
+    long nplain = 0, nref[2] = {0, 0};
+    cr_assert_eq(twisted_prism(&plain, 0, &nplain), 0);
+    cr_assert_eq(twisted_prism(&clipped[0], 3, &nref[0]), 0);
+    cr_assert_eq(twisted_prism(&clipped[1], 16, &nref[1]), 0);
+    cr_assert_eq(nplain, 4 * TWIST_N - 4, "one reference per triangle");
+    cr_assert(nref[0] == 4 * nplain && nref[1] > 12 * nplain, "references %ld and %ld of %ld",
+              nref[0], nref[1], nplain);
+    const uint64_t seed = 0x7157;
+    rng_seed(seed);
+    int spans = 0;
+    for (int it = 0; it < 40000; it++) {
+        iv_arena_reset(arena);
+        double o[3], d[3];
+        mesh_ray(it % 4, o, d);
+        iv_list a;
+        cr_assert_eq(iv_list_init(&a, iv_shape_max_spans(&plain), arena), 0);
+        int ra = iv_shape_intersect(&plain, o, d, 3, &a);
+        cr_assert(ra >= 0);
+        check_invariant(&a, "plain");
+        spans += ra;
+        for (int c = 0; c < 2; c++) {
+            iv_list b;
+            cr_assert_eq(iv_list_init(&b, iv_shape_max_spans(&clipped[c]), arena), 0);
+            int rb = iv_shape_intersect(&clipped[c], o, d, 3, &b);
+            cr_assert_eq(rb, ra, "seed %#llx iter %d budget %d: %d spans, unclipped %d",
+                         (unsigned long long)seed, it, c, rb, ra);
+            for (int i = 0; i < ra; i++) {
+                const iv_span *x = &a.v[i], *y = &b.v[i];
+                cr_assert(x->enter.t == y->enter.t && x->exit.t == y->exit.t,
+                          "seed %#llx iter %d budget %d span %d: [%.17g, %.17g] vs [%.17g, %.17g]",
+                          (unsigned long long)seed, it, c, i, y->enter.t, y->exit.t, x->enter.t,
+                          x->exit.t);
+                cr_assert(y->enter.prim == 3 && y->exit.prim == 3 &&
+                          x->enter.flip == y->enter.flip && x->exit.flip == y->exit.flip);
+            }
+        }
+    }
+    cr_assert(spans > 10000, "too few hits (%d) to mean anything", spans);
+    iv_shape_release(&plain);
+    iv_shape_release(&clipped[0]);
+    iv_shape_release(&clipped[1]);
+}

@@ -3,14 +3,15 @@
  * twisted extrusions): a BVH over the triangles and a watertight ray test.
  *
  * Faces arrive as polygons wound clockwise seen from outside (OpenSCAD) and
- * are fan-triangulated.  Inside-ness along a line is the nonzero winding
- * rule: every triangle the line crosses adds +1 when the line enters through
- * it and -1 when it leaves, hits at equal t are summed before the state is
- * read, and the solid is where the running sum is positive.  A fan of a
- * concave face has triangles of both orientations whose signed cover is
- * exactly the face, so no ear clipping is needed — provided all triangles of
- * one face report bitwise the same t, which is why t comes from the face's
- * plane rather than from each triangle.
+ * are cut into triangles by diagonals (a fan when the face is not planar).
+ * Inside-ness along a line is the nonzero winding rule: every triangle the
+ * line crosses adds +1 when the line enters through it and -1 when it
+ * leaves, hits at equal t are summed before the state is read, and the
+ * solid is where the running sum is positive.  The triangles of a concave
+ * face have both orientations and their signed cover is exactly the face,
+ * so no ear clipping is needed — provided all triangles of one face report
+ * bitwise the same t, which is why t comes from the face's plane rather
+ * than from each triangle.
  *
  * The ray–triangle test is Woop, Benthin and Wald (JCGT 2013): shear the
  * ray onto +z and evaluate three 2D edge functions.  Shared vertices map to
@@ -21,10 +22,19 @@
  * edges, so every triangle around an edge or vertex agrees, and a line
  * through a vertex or along an edge counts exactly as a line beside it.
  *
+ * The BVH's leaves hold references to triangles.  A long thin triangle
+ * across the axes has a box far larger than itself, and a ray would test
+ * every such triangle whose box it meets (a 90° twist of a 10^5-gon: tens
+ * of thousands per ray), so before building, such triangles are clipped
+ * into several references with smaller boxes (bvh_split.c).  A ray may then
+ * meet one triangle through two references; its hits on one triangle have
+ * bitwise the same t, and all but one are dropped after sorting.
+ *
  * Ownership: the mesh is immutable after iv_shape_mesh and reference
- * counted (iv_shape_retain/release).  The triangles are stored in BVH order;
- * a boundary's part is the triangle index modulo 65536, and the normal picks
- * among the few candidates the one whose plane passes nearest the point.
+ * counted (iv_shape_retain/release).  The triangles are stored in the order
+ * of their first reference; a boundary's part is the triangle index modulo
+ * 65536, and the normal picks among the few candidates the one whose plane
+ * passes nearest the point.
  */
 #include "shape_kinds.h"
 #include "bvh_split.h"
@@ -44,9 +54,11 @@ struct iv_mesh {
     atomic_int refs;
     int nv, nt, nf, nn;
     double (*v)[3];
-    int (*tri)[3];   /* in BVH order */
+    int (*tri)[3];   /* in the order of their first reference */
     int *face;       /* source face (plane) of each triangle */
     double (*pl)[4]; /* per face: outward unit normal, offset */
+    int nr;          /* references: nt, or more when triangles were clipped */
+    int *ref;        /* the triangle of each reference, in BVH order */
     bnode *node;
     double lo[3], hi[3];
     double volume;
@@ -64,6 +76,7 @@ void mesh_release(iv_mesh *m)
     free(m->tri);
     free(m->face);
     free(m->pl);
+    free(m->ref);
     free(m->node);
     free(m);
 }
@@ -71,7 +84,7 @@ void mesh_release(iv_mesh *m)
 /* ---- building ------------------------------------------------------------------ */
 
 /* Node over items[start, start+count) (an item's id is its triangle);
- * returns its index.  Leaves of at most 4 triangles. */
+ * returns its index.  Leaves of at most 4 references. */
 static int build_node(iv_mesh *m, iv_bvh_item *items, int start, int count, int depth)
 {
     int ni = m->nn++;
@@ -82,8 +95,8 @@ static int build_node(iv_mesh *m, iv_bvh_item *items, int start, int count, int 
     }
     for (int i = start; i < start + count; i++)
         for (int k = 0; k < 3; k++) {
-            nd->lo[k] = fmin(nd->lo[k], items[i].lo[k]);
-            nd->hi[k] = fmax(nd->hi[k], items[i].hi[k]);
+            nd->lo[k] = items[i].lo[k] < nd->lo[k] ? items[i].lo[k] : nd->lo[k];
+            nd->hi[k] = items[i].hi[k] > nd->hi[k] ? items[i].hi[k] : nd->hi[k];
         }
     nd->start = start;
     nd->count = count;
@@ -138,8 +151,42 @@ static int is_closed(const iv_mesh *m)
     return closed;
 }
 
+/* Triangles of the polygon F[a..b] closed by the edge F[b]F[a] (b - a >= 2),
+ * appended at tri[*t]: the triangle (a, mid, b) and the two polygons it
+ * leaves.  Any diagonal splits a polygon's winding number into the sum of
+ * its two parts', so this covers a concave face as exactly as a fan; unlike
+ * a fan, whose triangles of a many-sided face all reach across it from one
+ * corner, its triangles are mostly small and near the boundary (those of a
+ * circle's 10^5-gon have boxes of about their own area, a fan's up to 10^4
+ * times theirs).  A quadrilateral gives the fan's two triangles. */
+static void split_face(const int *F, int a, int b, int (*tri)[3], int *t)
+{
+    if (b - a < 2) return;
+    int mid = a + (b - a + 1) / 2;
+    split_face(F, a, mid, tri, t);
+    tri[*t][0] = F[a];
+    tri[*t][1] = F[mid];
+    tri[*t][2] = F[b];
+    (*t)++;
+    split_face(F, mid, b, tri, t);
+}
+
+/* References that early split clipping may add, per triangle, and in all
+ * (80 bytes each while building, about 50 after).  Each extra reference per
+ * triangle costs about a microsecond of building on the twisted 10^5-gon,
+ * and the second one still halves the tests a ray makes there. */
+#define MESH_SPLIT_EXTRA 2.0
+enum { MESH_REF_MAX = 1 << 22 };
+
 int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                   const int *face_start, int nfaces)
+{
+    return iv_shape_mesh_budget(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA,
+                                NULL);
+}
+
+int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                         const int *face_start, int nfaces, double extra_per_triangle, long *nref)
 {
     if (nverts <= 0 || nfaces <= 0) return -1;
     for (int i = 0; i < nverts; i++)
@@ -157,7 +204,8 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
     iv_mesh *m = calloc(1, sizeof *m);
     if (!m) return -1;
     int rc = -1;
-    iv_bvh_item *items = malloc((size_t)nt * sizeof *items);
+    iv_bvh_item *items = NULL;
+    int *first = NULL;
     int(*tri)[3] = malloc((size_t)nt * sizeof *tri);
     int *face = malloc((size_t)nt * sizeof *face);
     m->v = malloc((size_t)nverts * sizeof *m->v);
@@ -166,8 +214,7 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
     m->pl = malloc((size_t)nt * sizeof *m->pl);
     m->tri = malloc((size_t)nt * sizeof *m->tri);
     m->face = malloc((size_t)nt * sizeof *m->face);
-    m->node = malloc((size_t)(2 * nt) * sizeof *m->node);
-    if (!tri || !face || !m->v || !m->pl || !m->tri || !m->face || !m->node || !items) goto done;
+    if (!tri || !face || !m->v || !m->pl || !m->tri || !m->face) goto done;
     memcpy(m->v, verts, (size_t)nverts * sizeof *m->v);
     m->nv = nverts;
     for (int k = 0; k < 3; k++) {
@@ -209,11 +256,19 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
                 if (fabs(dist) > 1e-9 * ext) planar = 0;
             }
         }
-        for (int j = 1; j + 1 < len; j++) {
-            tri[t][0] = F[0];
-            tri[t][1] = F[j];
-            tri[t][2] = F[j + 1];
-            const double *a = verts[F[0]], *p = verts[F[j]], *q = verts[F[j + 1]];
+        int t0 = t;
+        if (planar) {
+            split_face(F, 0, len - 1, tri, &t);
+        } else {
+            /* each fan triangle its own plane, as OpenSCAD triangulates */
+            for (int j = 1; j + 1 < len; j++, t++) {
+                tri[t][0] = F[0];
+                tri[t][1] = F[j];
+                tri[t][2] = F[j + 1];
+            }
+        }
+        for (t = t0; t < t0 + len - 2; t++) {
+            const double *a = verts[tri[t][0]], *p = verts[tri[t][1]], *q = verts[tri[t][2]];
             /* signed volume: OpenSCAD's winding is clockwise from outside,
              * so the right-handed triple product is negative for a proper
              * solid; negate it. */
@@ -238,7 +293,6 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
             } else {
                 face[t] = np;
             }
-            t++;
         }
         if (planar) {
             for (int k = 0; k < 3; k++)
@@ -264,21 +318,36 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
         vol = -vol;
     }
     m->volume = vol;
-    for (int i = 0; i < t; i++) {
-        iv_bvh_item *it = &items[i];
-        for (int k = 0; k < 3; k++) {
-            const double a = verts[tri[i][0]][k], b = verts[tri[i][1]][k], c = verts[tri[i][2]][k];
-            it->lo[k] = fmin(a, fmin(b, c));
-            it->hi[k] = fmax(a, fmax(b, c));
-            it->c[k] = (a + b + c) / 3;
+    long extra = 0;
+    if (extra_per_triangle > 0 && t < MESH_REF_MAX)
+        extra = (long)fmin(extra_per_triangle * t, (double)(MESH_REF_MAX - t));
+    long nr = 0;
+    items = iv_bvh_clip_triangles((const double(*)[3])verts, (const int(*)[3])tri, t, extra, &nr);
+    m->node = malloc((size_t)(2 * nr) * sizeof *m->node);
+    m->ref = malloc((size_t)nr * sizeof *m->ref);
+    first = malloc((size_t)t * sizeof *first);
+    if (!items || !m->node || !m->ref || !first) goto done;
+    m->nr = (int)nr;
+    build_node(m, items, 0, m->nr, 0);
+    bnode *shrunk = realloc(m->node, (size_t)m->nn * sizeof *m->node);
+    if (shrunk) m->node = shrunk;
+    /* Triangles in the order of their first reference: a leaf's are then
+     * near each other in memory, and with one reference each the
+     * references are 0, 1, 2, ... */
+    for (int i = 0; i < t; i++)
+        first[i] = -1;
+    int nt_seen = 0;
+    for (int j = 0; j < m->nr; j++) {
+        int id = items[j].id;
+        if (first[id] < 0) {
+            first[id] = nt_seen;
+            memcpy(m->tri[nt_seen], tri[id], sizeof *tri);
+            m->face[nt_seen] = face[id];
+            nt_seen++;
         }
-        it->id = i;
+        m->ref[j] = first[id];
     }
-    build_node(m, items, 0, t, 0);
-    for (int i = 0; i < t; i++) {
-        memcpy(m->tri[i], tri[items[i].id], sizeof *tri);
-        m->face[i] = face[items[i].id];
-    }
+    if (nref) *nref = nr;
     atomic_init(&m->refs, 1);
     memset(s, 0, sizeof *s);
     s->kind = IV_SHAPE_MESH;
@@ -288,6 +357,7 @@ done:
     free(tri);
     free(face);
     free(items);
+    free(first);
     if (rc < 0) {
         m->refs = 1;
         mesh_release(m);
@@ -349,6 +419,44 @@ static int cmp_bound(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* By t, then by prim (the triangle, while hits hold it). */
+static int cmp_bound_prim(const void *a, const void *b)
+{
+    const iv_bound *x = a, *y = b;
+    if (x->t != y->t) return (x->t > y->t) - (x->t < y->t);
+    return (x->prim > y->prim) - (x->prim < y->prim);
+}
+
+static int before(const iv_bound *x, const iv_bound *y, int by_prim)
+{
+    return x->t < y->t || (by_prim && x->t == y->t && x->prim < y->prim);
+}
+
+/* Sorts hit[0..nh) by t; with `dedup`, also by the triangle in prim, and
+ * drops all but one of the hits on the same triangle — they have bitwise
+ * the same t, which comes from the face's plane.  Returns the count. */
+static long sort_hits(iv_bound *hit, long nh, int dedup)
+{
+    if (nh < 24) {
+        for (long i = 1; i < nh; i++) {
+            iv_bound x = hit[i];
+            long j = i;
+            while (j > 0 && before(&x, &hit[j - 1], dedup)) {
+                hit[j] = hit[j - 1];
+                j--;
+            }
+            hit[j] = x;
+        }
+    } else {
+        qsort(hit, (size_t)nh, sizeof *hit, dedup ? cmp_bound_prim : cmp_bound);
+    }
+    if (!dedup) return nh;
+    long w = nh ? 1 : 0;
+    for (long i = 1; i < nh; i++)
+        if (hit[i].t != hit[w - 1].t || hit[i].prim != hit[w - 1].prim) hit[w++] = hit[i];
+    return w;
+}
+
 int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32_t prim,
                    iv_list *out)
 {
@@ -372,7 +480,10 @@ int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32
     iv_bound *hit = &out->v[out->n].enter;
     const long room = 2L * (out->cap - out->n);
     long nh = 0;
-    int stack[64], sp = 0;
+    /* Several references of a clipped triangle may report it: hits then
+     * carry the triangle in prim until they are sorted and deduplicated. */
+    const int clipped = m->nr > m->nt;
+    int stack[96], sp = 0;
     stack[sp++] = 0;
     while (sp > 0) {
         const bnode *nd = &m->node[stack[--sp]];
@@ -392,17 +503,22 @@ int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32
             /* 1e-9 relative slack: the box test must never reject a
              * triangle the exact test below would accept. */
             double slack = 1e-9 * (fabs(ta) + fabs(tb)) + 1e-300;
-            t0 = fmax(t0, ta - slack);
-            t1 = fmin(t1, tb + slack);
+            /* comparisons, not fmax/fmin (library calls): a NaN (0·∞
+             * for a subnormal direction) is skipped all the same */
+            t0 = ta - slack > t0 ? ta - slack : t0;
+            t1 = tb + slack < t1 ? tb + slack : t1;
         }
         if (miss || t0 > t1) continue;
         if (nd->count == 0) {
-            if (sp + 2 > 64) return -1; /* depth is ~log2(n) + small; cannot happen */
+            /* depth <= IV_BVH_SAH_DEPTH + log2(references): cannot happen */
+            if (sp + 2 > 96) return -1;
             stack[sp++] = nd->right;
             stack[sp++] = (int)(nd - m->node) + 1;
             continue;
         }
-        for (int i = nd->start; i < nd->start + nd->count; i++) {
+        for (int r = nd->start; r < nd->start + nd->count; r++) {
+            const int i = m->ref[r];
+            if (clipped && r > nd->start && i == m->ref[r - 1]) continue;
             const int *tv = m->tri[i];
             double X[3], Y[3];
             for (int j = 0; j < 3; j++) {
@@ -425,26 +541,19 @@ int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32
             if (a == 0) continue;
             double t = (q[3] - (q[0] * o[0] + q[1] * o[1] + q[2] * o[2])) / a;
             if (!isfinite(t)) continue;
+            if (nh >= room && clipped) nh = sort_hits(hit, nh, 1);
             if (nh >= room) return -1;
             /* pos: det > 0, the triangle turns its outward side away
              * from the ray (see the file comment): an exit. */
-            hit[nh++] = (iv_bound){t, prim, (uint16_t)(i & 0xffff), (uint16_t)(neg ? 1 : 0)};
+            hit[nh++] =
+                (iv_bound){t, clipped ? i : prim, (uint16_t)(i & 0xffff), (uint16_t)(neg ? 1 : 0)};
         }
     }
     if (nh == 0) return 0;
-    if (nh < 24) {
-        for (long i = 1; i < nh; i++) {
-            iv_bound x = hit[i];
-            long j = i;
-            while (j > 0 && hit[j - 1].t > x.t) {
-                hit[j] = hit[j - 1];
-                j--;
-            }
-            hit[j] = x;
-        }
-    } else {
-        qsort(hit, (size_t)nh, sizeof *hit, cmp_bound);
-    }
+    nh = sort_hits(hit, nh, clipped);
+    if (clipped)
+        for (long i = 0; i < nh; i++)
+            hit[i].prim = prim;
     /* Sweep: sum the signs at each distinct t, emit on state changes.  The
      * write index never passes the read index. */
     long w = 0;
