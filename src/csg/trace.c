@@ -45,6 +45,9 @@ typedef struct frame {
 typedef struct ray {
     const csg_scene *s;
     double o[3], d[3], inv[3];
+    int cull;       /* the scene's: box tests on */
+    uint8_t neg[3]; /* d[k] < 0: a box's near plane on axis k is hi, not lo */
+    uint8_t flat;   /* some d[k] is 0: the slab test needs box_entry_flat */
     iv_arena *a;
     iv_span *sp; /* the span stack */
     int cap;
@@ -74,29 +77,43 @@ static int reserve(ray *r, long need, int live)
     return 0;
 }
 
+/* box_entry for a ray parallel to some axis: on that axis the ray is
+ * inside the slab or never meets it. */
+static int box_entry_flat(const ray *r, const csg_fnode *n, double t0, double t1, double *te)
+{
+    for (int k = 0; k < 3; k++) {
+        if (r->d[k] == 0) {
+            if (r->o[k] < n->lo[k] || r->o[k] > n->hi[k]) return 0;
+            continue;
+        }
+        double ta = ((r->neg[k] ? n->hi[k] : n->lo[k]) - r->o[k]) * r->inv[k];
+        double tb = ((r->neg[k] ? n->lo[k] : n->hi[k]) - r->o[k]) * r->inv[k];
+        if (ta > t0) t0 = ta;
+        if (tb < t1) t1 = tb;
+    }
+    *te = t0;
+    return t0 <= t1;
+}
+
 /* Whether the segment t in [t0, t1] of the ray meets the node's box, and
  * where it enters it (*te; t0 itself when the scene does not cull).  The
  * slab products may be NaN (a bound plane through o with a subnormal d,
  * giving 0·inf); every comparison with NaN is false, so such a slab narrows
- * nothing and the test errs on the side of "hit". */
-static int box_entry(const ray *r, const csg_fnode *n, double t0, double t1, double *te)
+ * nothing and the test errs on the side of "hit".  The near and far planes
+ * are picked by the ray's signs (precomputed), so the common case has no
+ * data-dependent branch: this test is most of a big union's traversal. */
+static inline int box_entry(const ray *r, const csg_fnode *n, double t0, double t1, double *te)
 {
-    if (r->s->cull) {
-        for (int k = 0; k < 3; k++) {
-            if (r->d[k] == 0) {
-                if (r->o[k] < n->lo[k] || r->o[k] > n->hi[k]) return 0;
-                continue;
-            }
-            double ta = (n->lo[k] - r->o[k]) * r->inv[k];
-            double tb = (n->hi[k] - r->o[k]) * r->inv[k];
-            if (r->inv[k] < 0) {
-                double tt = ta;
-                ta = tb;
-                tb = tt;
-            }
-            if (ta > t0) t0 = ta;
-            if (tb < t1) t1 = tb;
-        }
+    if (!r->cull) {
+        *te = t0;
+        return t0 <= t1;
+    }
+    if (r->flat) return box_entry_flat(r, n, t0, t1, te);
+    for (int k = 0; k < 3; k++) {
+        double ta = ((r->neg[k] ? n->hi[k] : n->lo[k]) - r->o[k]) * r->inv[k];
+        double tb = ((r->neg[k] ? n->lo[k] : n->hi[k]) - r->o[k]) * r->inv[k];
+        t0 = ta > t0 ? ta : t0;
+        t1 = tb < t1 ? tb : t1;
     }
     *te = t0;
     return t0 <= t1;
@@ -135,11 +152,13 @@ static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
  * arena is out of memory. */
 static int ray_init(ray *r, const csg_scene *s, const double o[3], const double d[3], iv_arena *a)
 {
-    *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0, .max = iv_arena_list_limit(a)};
+    *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0, .max = iv_arena_list_limit(a), .cull = s->cull};
     for (int k = 0; k < 3; k++) {
         r->o[k] = o[k];
         r->d[k] = d[k];
         r->inv[k] = 1 / d[k]; /* ±inf when d[k] = ±0; the box tests never use it then */
+        r->neg[k] = d[k] < 0;
+        r->flat |= d[k] == 0;
     }
     r->fr = iv_arena_alloc(a, (size_t)(s->max_depth > 0 ? s->max_depth : 1) * sizeof *r->fr);
     if (!r->fr || reserve(r, 16, 0) != 0) return -1;

@@ -172,29 +172,43 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
 /* Pixel (px, py) maps to GL's normalised device coordinates as the
  * rasteriser samples it: x_ndc = 2·px/W - 1, y_ndc = 1 - 2·py/H (the PNG's
  * top row is GL's last).  gluPerspective puts the image plane at unit depth
- * with half-height tan(fovy/2) and half-width aspect times that; glOrtho's
- * half-height is ortho_half_height. */
-void render_camera_ray(const render_camera *c, int width, int height, double px, double py,
-                       double o[3], double d[3])
+ * with half-height s = tan(fovy/2) and half-width aspect times that;
+ * glOrtho's half-height s is ortho_half_height.  Both are linear in px and
+ * py, so one image's rays are a base plus per-pixel steps. */
+void render_raygen_init(render_raygen *g, const render_camera *c, int width, int height)
 {
     double aspect = (double)width / (double)height;
-    double nx = 2 * px / width - 1, ny = 1 - 2 * py / height;
-    if (c->ortho) {
-        double sx = nx * aspect * c->ortho_half_height, sy = ny * c->ortho_half_height;
-        for (int i = 0; i < 3; i++) {
-            o[i] = c->eye[i] + sx * c->right[i] + sy * c->up[i];
-            d[i] = c->forward[i];
-        }
-        return;
-    }
-    double th = tan(c->fovy_deg / 2 * PI / 180);
-    double sx = nx * aspect * th, sy = ny * th, len2 = 0;
+    double s = c->ortho ? c->ortho_half_height : tan(c->fovy_deg / 2 * PI / 180);
+    double ax = 2 * aspect * s / width, ay = -2 * s / height; /* per pixel */
     for (int i = 0; i < 3; i++) {
-        o[i] = c->eye[i];
-        d[i] = c->forward[i] + sx * c->right[i] + sy * c->up[i];
+        double base = -aspect * s * c->right[i] + s * c->up[i];
+        double dx = ax * c->right[i], dy = ay * c->up[i];
+        g->org[i] = c->eye[i] + (c->ortho ? base : 0);
+        g->odx[i] = c->ortho ? dx : 0;
+        g->ody[i] = c->ortho ? dy : 0;
+        g->d0[i] = c->forward[i] + (c->ortho ? 0 : base);
+        g->ddx[i] = c->ortho ? 0 : dx;
+        g->ddy[i] = c->ortho ? 0 : dy;
+    }
+}
+
+void render_raygen_ray(const render_raygen *g, double px, double py, double o[3], double d[3])
+{
+    double len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        o[i] = g->org[i] + px * g->odx[i] + py * g->ody[i];
+        d[i] = g->d0[i] + px * g->ddx[i] + py * g->ddy[i];
         len2 += d[i] * d[i];
     }
     double inv = 1 / sqrt(len2);
     for (int i = 0; i < 3; i++)
         d[i] *= inv;
+}
+
+void render_camera_ray(const render_camera *c, int width, int height, double px, double py,
+                       double o[3], double d[3])
+{
+    render_raygen g;
+    render_raygen_init(&g, c, width, height);
+    render_raygen_ray(&g, px, py, o, d);
 }

@@ -96,6 +96,7 @@ typedef struct pt_light {
 typedef struct pt_job {
     const csg_scene *scene;
     const render_camera *cam;
+    render_raygen gen; /* cam's primary rays at this image size */
     const render_options *opt;
     float *rgba;
     int tiles_x, ntiles;
@@ -556,7 +557,7 @@ static int render_tile(const pt_job *J, pt_worker *w, int tile)
                 double jx = fmod(ox + k * 0.75487766624669276, 1.0);
                 double jy = fmod(oy + k * 0.56984029099805327, 1.0);
                 double o[3], d[3], tmin, tmax, L[3];
-                render_camera_ray(c, opt->width, opt->height, x + jx, y + jy, o, d);
+                render_raygen_ray(&J->gen, x + jx, y + jy, o, d);
                 double df = dot3(d, c->forward);
                 if (opt->aperture > 0 && df > 0) {
                     double f[3], lx, ly;
@@ -738,6 +739,7 @@ int render_path_trace(const csg_scene *s, const render_camera *cam, const render
     memset(&J, 0, sizeof J);
     J.scene = s;
     J.cam = cam;
+    render_raygen_init(&J.gen, cam, opt->width, opt->height);
     J.opt = opt;
     J.rgba = rgba;
     J.tiles_x = (opt->width + TILE - 1) / TILE;

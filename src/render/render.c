@@ -57,6 +57,7 @@ enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_THREADS = 256, MAX_LIGHT_
 typedef struct job {
     const csg_scene *scene;
     const render_camera *cam;
+    render_raygen gen; /* cam's primary rays at this image size */
     const render_options *opt;
     float *rgba;
     int nroots;
@@ -484,7 +485,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
 static void primary_ray(const job *J, rng *g, double px, double py, double o[3], double d[3])
 {
     const render_options *opt = J->opt;
-    render_camera_ray(J->cam, opt->width, opt->height, px, py, o, d);
+    render_raygen_ray(&J->gen, px, py, o, d);
     if (!(opt->aperture > 0)) return;
     const render_camera *c = J->cam;
     double df = dot3(d, c->forward);
@@ -657,6 +658,7 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     memset(&J, 0, sizeof J);
     J.scene = s;
     J.cam = cam;
+    render_raygen_init(&J.gen, cam, opt->width, opt->height);
     J.opt = opt;
     J.rgba = rgba;
     J.nroots = csg_scene_root_count(s);

@@ -57,6 +57,16 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
 void render_camera_ray(const render_camera *c, int width, int height, double px, double py,
                        double o[3], double d[3]);
 
+/* The same rays precomputed for one image size, for the per-pixel loops:
+ * o = org + px·odx + py·ody and d = d0 + px·ddx + py·ddy, normalised. */
+typedef struct render_raygen {
+    double org[3], odx[3], ody[3];
+    double d0[3], ddx[3], ddy[3];
+} render_raygen;
+
+void render_raygen_init(render_raygen *g, const render_camera *c, int width, int height);
+void render_raygen_ray(const render_raygen *g, double px, double py, double o[3], double d[3]);
+
 /* An OpenSCAD colour scheme, sRGB in [0, 1]. */
 typedef struct render_colors {
     float background[3];
