@@ -147,10 +147,9 @@ static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
     }
 }
 
-/* Set up r for one ray: the frame array (one per open operation, at most
- * the scene's depth) and a first span stack.  Returns 0, or -1 when the
- * arena is out of memory. */
-static int ray_init(ray *r, const csg_scene *s, const double o[3], const double d[3], iv_arena *a)
+/* Set up r for one ray: its inverse direction and signs; the frame array
+ * and the span stack come from the arena when first needed. */
+static void ray_init(ray *r, const csg_scene *s, const double o[3], const double d[3], iv_arena *a)
 {
     *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0, .max = iv_arena_list_limit(a), .cull = s->cull};
     for (int k = 0; k < 3; k++) {
@@ -160,9 +159,16 @@ static int ray_init(ray *r, const csg_scene *s, const double o[3], const double 
         r->neg[k] = d[k] < 0;
         r->flat |= d[k] == 0;
     }
-    r->fr = iv_arena_alloc(a, (size_t)(s->max_depth > 0 ? s->max_depth : 1) * sizeof *r->fr);
-    if (!r->fr || reserve(r, 16, 0) != 0) return -1;
-    return 0;
+}
+
+/* The frame array, made on the first operation a ray opens (most rays of a
+ * big union meet leaves alone); NULL when the arena is out of memory. */
+static frame *frames(ray *r)
+{
+    if (!r->fr)
+        r->fr = iv_arena_alloc(r->a, (size_t)(r->s->max_depth > 0 ? r->s->max_depth : 1) *
+                                         sizeof *r->fr);
+    return r->fr;
 }
 
 /* The list of the subtree at node `node`, clipped to [tmin, tmax], written at
@@ -172,7 +178,7 @@ static int ray_init(ray *r, const csg_scene *s, const double o[3], const double 
 static int eval(ray *r, int32_t node, double tmin, double tmax, int at)
 {
     const csg_fnode *nodes = r->s->nodes;
-    frame *fr = r->fr;
+    frame *fr = NULL;
     int depth = 0; /* open frames */
     int32_t cur = node;
     double t0 = tmin, t1 = tmax;
@@ -187,6 +193,7 @@ static int eval(ray *r, int32_t node, double tmin, double tmax, int at)
             nres = trace_leaf(r, n->prim, t0, t1, at);
             if (nres < 0) return -1;
         } else {
+            if (!fr && !(fr = frames(r))) return -1;
             fr[depth++] = (frame){cur, cur + 1, at, -1, t0, t1};
             cur = cur + 1;
             continue;
@@ -256,7 +263,7 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
     out->n = out->cap = 0;
     if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
     ray r;
-    if (ray_init(&r, s, o, d, a) != 0) return -1;
+    ray_init(&r, s, o, d, a);
     int n = eval(&r, s->roots[root], tmin, tmax, 0);
     if (n < 0) return -1;
     out->v = r.sp;
@@ -319,18 +326,17 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
 {
     if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
     ray r;
-    if (ray_init(&r, s, o, d, a) != 0) return -1;
+    ray_init(&r, s, o, d, a);
     const csg_fnode *nodes = s->nodes;
     if (nodes[s->roots[root]].op != CSG_OP_UNION) { /* the frontier is the root alone */
         int m = eval(&r, s->roots[root], tmin, tmax, 0);
         if (m > 0) *hit = r.sp[0].enter;
         return m < 0 ? -1 : m > 0;
     }
-    int cap = 64, sn = 0;
-    pending *st = iv_arena_alloc(a, (size_t)cap * sizeof *st);
-    if (!st) return -1;
     double te;
     if (!box_entry(&r, &nodes[s->roots[root]], tmin, tmax, &te)) return 0;
+    pending local[64], *st = local; /* to the arena past 64 */
+    int cap = 64, sn = 0;
     st[sn++] = (pending){s->roots[root], te};
     int found = 0;
     double bt = 0;  /* the best boundary's t … */

@@ -51,18 +51,15 @@
  */
 #include "path_trace.h"
 #include "sampling.h"
+#include "tiles.h"
 
 #include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
-enum { TILE = 32, MAX_THREADS = 256, DEFAULT_DEPTH = 8, RR_AFTER = 3, MAX_PASS = 64 };
+enum { TILE = 32, DEFAULT_DEPTH = 8, RR_AFTER = 3, MAX_PASS = 64 };
 
 #define PI 3.14159265358979323846
 /* Opacity past which a surface stops shadow rays and camera rays (render.c). */
@@ -108,11 +105,6 @@ typedef struct pt_job {
     int max_depth;
     double eps; /* offset of secondary ray origins */
     double focus;
-    atomic_int next, done;
-    atomic_int failed; /* the first worker's iv_arena_failure_kind; 0: none */
-    pthread_mutex_t mu;
-    pthread_cond_t cv;
-    int exited;
 } pt_job;
 
 /* ---- random numbers: splitmix64 over a counter, per pixel --------------- */
@@ -537,8 +529,11 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
 
 /* ---- the image --------------------------------------------------------------------- */
 
-static int render_tile(const pt_job *J, pt_worker *w, int tile)
+static int render_tile(const void *job, iv_arena *a, void *state, int tile)
 {
+    const pt_job *J = job;
+    pt_worker *w = state;
+    w->a = a;
     const render_options *opt = J->opt;
     const render_camera *c = J->cam;
     int x0 = (tile % J->tiles_x) * TILE, y0 = (tile / J->tiles_x) * TILE;
@@ -584,42 +579,6 @@ static int render_tile(const pt_job *J, pt_worker *w, int tile)
             px[3] = 1;
         }
     return 0;
-}
-
-/* A worker stops: keep the first reason, as render.c's workers do. */
-static void fail(pt_job *J, const iv_arena *a)
-{
-    int none = 0;
-    int why = a ? (int)iv_arena_failure(a) : IV_ARENA_OUT_OF_MEMORY;
-    atomic_compare_exchange_strong(&J->failed, &none, why ? why : IV_ARENA_OUT_OF_MEMORY);
-}
-
-static void *worker(void *arg)
-{
-    pt_job *J = arg;
-    pt_worker w = {.a = iv_arena_new(0)};
-    if (w.a)
-        iv_arena_set_list_limit(w.a, J->opt->max_intervals);
-    else
-        fail(J, NULL);
-    while (w.a && !atomic_load(&J->failed)) {
-        int t = atomic_fetch_add(&J->next, 1);
-        if (t >= J->ntiles) break;
-        if (render_tile(J, &w, t) != 0) {
-            fail(J, w.a);
-            break;
-        }
-        atomic_fetch_add(&J->done, 1);
-        pthread_mutex_lock(&J->mu);
-        pthread_cond_signal(&J->cv);
-        pthread_mutex_unlock(&J->mu);
-    }
-    iv_arena_free(w.a);
-    pthread_mutex_lock(&J->mu);
-    J->exited++;
-    pthread_cond_signal(&J->cv);
-    pthread_mutex_unlock(&J->mu);
-    return NULL;
 }
 
 /* The lights, per-primitive emission and the scale of the scene, once. */
@@ -748,65 +707,20 @@ int render_path_trace(const csg_scene *s, const render_camera *cam, const render
     const char *msg = "render: out of memory while path tracing";
     char too_long[96];
     if (setup(&J) != 0) goto done;
-    atomic_init(&J.next, 0);
-    atomic_init(&J.done, 0);
-    atomic_init(&J.failed, 0);
-    if (pthread_mutex_init(&J.mu, NULL) != 0) {
-        msg = "render: cannot create a mutex";
-        goto done;
-    }
-    if (pthread_cond_init(&J.cv, NULL) != 0) {
-        pthread_mutex_destroy(&J.mu);
-        msg = "render: cannot create a condition variable";
-        goto done;
-    }
-    int nthreads = opt->threads;
-    if (nthreads <= 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        nthreads = n > 0 ? (int)n : 1;
-    }
-    if (nthreads > MAX_THREADS) nthreads = MAX_THREADS;
-    if (nthreads > J.ntiles) nthreads = J.ntiles;
-    pthread_t tids[MAX_THREADS];
-    int started = 0;
-    for (int i = 0; i < nthreads; i++) {
-        if (pthread_create(&tids[started], NULL, worker, &J) != 0) break;
-        started++;
-    }
-    if (started == 0) {
-        worker(&J);
-    } else {
-        /* the calling thread reports progress while the workers draw */
-        int reported = -1;
-        pthread_mutex_lock(&J.mu);
-        while (J.exited < started) {
-            int d = atomic_load(&J.done);
-            if (d != reported && opt->progress) {
-                reported = d;
-                pthread_mutex_unlock(&J.mu);
-                opt->progress(opt->ud, (double)d / J.ntiles);
-                pthread_mutex_lock(&J.mu);
-                continue;
-            }
-            struct timespec ts;
-            clock_gettime(CLOCK_REALTIME, &ts);
-            ts.tv_nsec += 100 * 1000 * 1000;
-            if (ts.tv_nsec >= 1000000000L) {
-                ts.tv_sec++;
-                ts.tv_nsec -= 1000000000L;
-            }
-            pthread_cond_timedwait(&J.cv, &J.mu, &ts);
-        }
-        pthread_mutex_unlock(&J.mu);
-        for (int i = 0; i < started; i++)
-            pthread_join(tids[i], NULL);
-    }
-    pthread_cond_destroy(&J.cv);
-    pthread_mutex_destroy(&J.mu);
-    if (!atomic_load(&J.failed)) {
+    render_pool pool = {
+        .ntiles = J.ntiles,
+        .threads = opt->threads,
+        .max_intervals = opt->max_intervals,
+        .state_size = sizeof(pt_worker),
+        .tile = render_tile,
+        .job = &J,
+        .progress = opt->progress,
+        .ud = opt->ud,
+    };
+    int failed = render_pool_run(&pool);
+    if (!failed) {
         rc = 0;
-        if (opt->progress) opt->progress(opt->ud, 1.0);
-    } else if (atomic_load(&J.failed) == IV_ARENA_LIST_TOO_LONG) {
+    } else if (failed == IV_ARENA_LIST_TOO_LONG) {
         snprintf(too_long, sizeof too_long,
                  "render: a ray's interval list holds more than %d intervals",
                  opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);

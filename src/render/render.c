@@ -1,7 +1,7 @@
 /*
- * render.c — the image loop: 32×32 tiles handed out by a shared atomic
- * counter to `threads` pthreads, each with its own iv_arena that is reset
- * after every primary sample.
+ * render.c — the image loop: 32×32 tiles drawn by the worker pool
+ * (tiles.c), each worker with its own iv_arena that is reset after every
+ * primary sample.
  *
  * Per ray (deferred shading): trace every root of the scene into interval
  * lists, merge their boundaries by depth (a three-way merge: each list is
@@ -38,18 +38,15 @@
 #include "path_trace.h"
 #include "sampling.h"
 #include "shade.h"
+#include "tiles.h"
 
 #include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
-enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_THREADS = 256, MAX_LIGHT_SAMPLES = 16 };
+enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_LIGHT_SAMPLES = 16 };
 
 /* Opacity past which the surfaces behind cannot change a byte. */
 #define OPAQUE (1.0 - 1.0 / 4096)
@@ -61,7 +58,7 @@ typedef struct job {
     const render_options *opt;
     float *rgba;
     int nroots;
-    int tiles_x, ntiles;
+    int tiles_x;
     /* the light model, resolved once */
     int lit;      /* shadow rays and the lights below */
     int keylight; /* lit by the preview's own pair, the key one shadowed */
@@ -73,12 +70,6 @@ typedef struct job {
     double eps;        /* offset of secondary ray origins */
     double focus;      /* thin lens */
     int first_hit;     /* csg_trace_first may stand in for the full lists */
-    atomic_int next;   /* next tile to hand out */
-    atomic_int done;   /* tiles finished */
-    atomic_int failed; /* the first worker's iv_arena_failure_kind; 0: none */
-    pthread_mutex_t mu;
-    pthread_cond_t cv;
-    int exited; /* workers that returned; guarded by mu */
 } job;
 
 static void set_err(char *err, size_t errlen, const char *msg)
@@ -96,13 +87,13 @@ static rng rng_for_pixel(unsigned seed, int x, int y)
 
 /* What a worker thread carries from ray to ray: its arena, the current
  * pixel's random stream, and whether the last primary (or shadow) ray's
- * first surface was one that csg_trace_first alone could have handled.
+ * first surface was one that csg_trace_first alone could not have handled.
  * Both paths give the same bytes (see trace_ray); the flags only guess which
  * is cheaper, so a transparent region is not traced twice per ray. */
 typedef struct worker_ctx {
     iv_arena *a;
     rng g;
-    int first_primary, first_shadow;
+    int full_primary, full_shadow; /* 0 (as the pool starts it): try the first boundary */
 } worker_ctx;
 
 /* Where two boundaries share a depth, the one drawn later by OpenSCAD wins
@@ -167,18 +158,18 @@ static int stops_light(const job *J, const iv_bound *b)
 static double transmittance(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                             double tmax)
 {
-    if (J->first_hit && wk->first_shadow) {
+    if (J->first_hit && !wk->full_shadow) {
         iv_bound b;
         int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
         if (rc < 0) return -1;
         if (rc == 0) return 1; /* nothing in the way: the loop below leaves T = 1 */
         if (stops_light(J, &b)) return 0;
-        wk->first_shadow = 0;
+        wk->full_shadow = 1;
     }
     iv_list l;
     memset(&l, 0, sizeof l);
     if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
-    if (J->first_hit) wk->first_shadow = l.n == 0 || stops_light(J, &l.v[0].enter);
+    if (J->first_hit) wk->full_shadow = !(l.n == 0 || stops_light(J, &l.v[0].enter));
     double T = 1;
     for (int i = 0; i < l.n && T > 1.0 / 4096; i++) {
         const iv_span *sp = &l.v[i];
@@ -337,7 +328,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         volume[r] = 0;
     }
     int traced = 0;
-    if (J->first_hit && wk->first_primary) {
+    if (J->first_hit && !wk->full_primary) {
         /* The walk below composites the nearest boundary of all roots
          * first; when that one is opaque it ends there, so its lists might
          * as well hold that boundary alone. */
@@ -360,7 +351,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
             }
             traced = 1;
         } else {
-            wk->first_primary = 0;
+            wk->full_primary = 1;
         }
     }
     if (!traced) {
@@ -373,7 +364,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
                 best = r;
         }
         if (J->first_hit)
-            wk->first_primary = best < 0 || ends_walk(J, best, &lists[best].v[0].enter);
+            wk->full_primary = !(best < 0 || ends_walk(J, best, &lists[best].v[0].enter));
     }
 
     double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
@@ -501,8 +492,11 @@ static void primary_ray(const job *J, rng *g, double px, double py, double o[3],
     normalize3(d);
 }
 
-static int render_tile(const job *J, worker_ctx *wk, int tile)
+static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
 {
+    const job *J = job_;
+    worker_ctx *wk = state;
+    wk->a = a;
     const render_options *opt = J->opt;
     int x0 = (tile % J->tiles_x) * TILE, y0 = (tile / J->tiles_x) * TILE;
     int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
@@ -535,44 +529,6 @@ static int render_tile(const job *J, worker_ctx *wk, int tile)
             p[3] = 1;
         }
     return 0;
-}
-
-/* A worker stops: keep the first reason (why its arena failed; a worker
- * without an arena ran out of memory) for render_image to report. */
-static void fail(job *J, const iv_arena *a)
-{
-    int none = 0;
-    int why = a ? (int)iv_arena_failure(a) : IV_ARENA_OUT_OF_MEMORY;
-    atomic_compare_exchange_strong(&J->failed, &none, why ? why : IV_ARENA_OUT_OF_MEMORY);
-}
-
-static void *worker(void *arg)
-{
-    job *J = arg;
-    worker_ctx w = {.a = iv_arena_new(0), .first_primary = 1, .first_shadow = 1};
-    iv_arena *a = w.a;
-    if (a)
-        iv_arena_set_list_limit(a, J->opt->max_intervals);
-    else
-        fail(J, NULL);
-    while (a && !atomic_load(&J->failed)) {
-        int t = atomic_fetch_add(&J->next, 1);
-        if (t >= J->ntiles) break;
-        if (render_tile(J, &w, t) != 0) {
-            fail(J, a);
-            break;
-        }
-        atomic_fetch_add(&J->done, 1);
-        pthread_mutex_lock(&J->mu);
-        pthread_cond_signal(&J->cv);
-        pthread_mutex_unlock(&J->mu);
-    }
-    iv_arena_free(a);
-    pthread_mutex_lock(&J->mu);
-    J->exited++;
-    pthread_cond_signal(&J->cv);
-    pthread_mutex_unlock(&J->mu);
-    return NULL;
 }
 
 /* Resolve the opt-in light model once, before any ray: the lights (the
@@ -666,76 +622,24 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     if (J.nroots < 0) J.nroots = 0;
     if (resolve_light_model(&J, err, errlen) != 0) return -1;
     J.tiles_x = (opt->width + TILE - 1) / TILE;
-    int tiles_y = (opt->height + TILE - 1) / TILE;
-    J.ntiles = J.tiles_x * tiles_y;
-    atomic_init(&J.next, 0);
-    atomic_init(&J.done, 0);
-    atomic_init(&J.failed, 0);
-    if (pthread_mutex_init(&J.mu, NULL) != 0) {
-        set_err(err, errlen, "render: cannot create a mutex");
-        return -1;
-    }
-    if (pthread_cond_init(&J.cv, NULL) != 0) {
-        pthread_mutex_destroy(&J.mu);
-        set_err(err, errlen, "render: cannot create a condition variable");
-        return -1;
-    }
-
-    int nthreads = opt->threads;
-    if (nthreads <= 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        nthreads = n > 0 ? (int)n : 1;
-    }
-    if (nthreads > MAX_THREADS) nthreads = MAX_THREADS;
-    if (nthreads > J.ntiles) nthreads = J.ntiles;
-    pthread_t tids[MAX_THREADS];
-    int started = 0;
-    for (int i = 0; i < nthreads; i++) {
-        if (pthread_create(&tids[started], NULL, worker, &J) != 0) break;
-        started++;
-    }
-
-    if (started == 0) {
-        /* No thread to be had: draw on the calling thread. */
-        worker(&J);
-        if (opt->progress && !atomic_load(&J.failed)) opt->progress(opt->ud, 1.0);
-    } else {
-        /* The calling thread reports progress while the workers draw. */
-        int reported = -1;
-        pthread_mutex_lock(&J.mu);
-        while (J.exited < started) {
-            int d = atomic_load(&J.done);
-            if (d != reported && opt->progress) {
-                reported = d;
-                pthread_mutex_unlock(&J.mu);
-                opt->progress(opt->ud, (double)d / J.ntiles);
-                pthread_mutex_lock(&J.mu);
-                continue;
-            }
-            struct timespec ts;
-            clock_gettime(CLOCK_REALTIME, &ts);
-            ts.tv_nsec += 100 * 1000 * 1000;
-            if (ts.tv_nsec >= 1000000000L) {
-                ts.tv_sec++;
-                ts.tv_nsec -= 1000000000L;
-            }
-            pthread_cond_timedwait(&J.cv, &J.mu, &ts);
-        }
-        pthread_mutex_unlock(&J.mu);
-        for (int i = 0; i < started; i++)
-            pthread_join(tids[i], NULL);
-        if (opt->progress && !atomic_load(&J.failed) && reported != J.ntiles)
-            opt->progress(opt->ud, 1.0);
-    }
-    pthread_cond_destroy(&J.cv);
-    pthread_mutex_destroy(&J.mu);
-    if (atomic_load(&J.failed) == IV_ARENA_LIST_TOO_LONG) {
+    render_pool pool = {
+        .ntiles = J.tiles_x * ((opt->height + TILE - 1) / TILE),
+        .threads = opt->threads,
+        .max_intervals = opt->max_intervals,
+        .state_size = sizeof(worker_ctx),
+        .tile = render_tile,
+        .job = &J,
+        .progress = opt->progress,
+        .ud = opt->ud,
+    };
+    int failed = render_pool_run(&pool);
+    if (failed == IV_ARENA_LIST_TOO_LONG) {
         if (err && errlen)
             snprintf(err, errlen, "render: a ray's interval list holds more than %d intervals",
                      opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
         return RENDER_ERR_INTERVALS;
     }
-    if (atomic_load(&J.failed)) {
+    if (failed) {
         set_err(err, errlen, "render: out of memory while tracing rays");
         return -1;
     }
