@@ -151,7 +151,16 @@ static int trace_leaf(ray *r, int32_t prim, double t0, double t1, int at)
  * and the span stack come from the arena when first needed. */
 static void ray_init(ray *r, const csg_scene *s, const double o[3], const double d[3], iv_arena *a)
 {
-    *r = (ray){.s = s, .a = a, .sp = NULL, .cap = 0, .max = iv_arena_list_limit(a), .cull = s->cull};
+    /* Field by field: a compound literal would zero the whole struct first
+     * (a rep stos, a tenth of a simple scene's ray). */
+    r->s = s;
+    r->a = a;
+    r->sp = NULL;
+    r->cap = 0;
+    r->fr = NULL;
+    r->max = iv_arena_list_limit(a);
+    r->cull = s->cull;
+    r->flat = 0;
     for (int k = 0; k < 3; k++) {
         r->o[k] = o[k];
         r->d[k] = d[k];
