@@ -292,11 +292,22 @@ static csg_node *group_build(builder *b, iv_bvh_item *items, int m, int depth)
             g->kids[i] = b->ops[items[i].id];
         g->nkids = m;
     } else {
+        /* Two levels of binary splits at once: up to four subgroups, so a
+         * ray pops half as many groups on its way down. */
         int l = iv_bvh_split(items, m, depth);
-        g->kids[0] = group_build(b, items, l, depth + 1);
-        g->kids[1] = g->kids[0] ? group_build(b, items + l, m - l, depth + 1) : NULL;
-        if (!g->kids[1]) return NULL;
-        g->nkids = 2;
+        int part[5] = {0, l, l, m, m}, n = 0;
+        for (int h = 0; h < 2; h++) {
+            int a = part[2 * h], z = part[2 * h + 2], c = z - a;
+            part[2 * h + 1] = c > GROUP_MAX ? a + iv_bvh_split(items + a, c, depth + 1) : z;
+        }
+        for (int i = 0; i < 4; i++) {
+            int a = part[i], z = part[i + 1];
+            if (z - a == 1) /* no group of one */
+                g->kids[n++] = b->ops[items[a].id];
+            else if (z > a && !(g->kids[n++] = group_build(b, items + a, z - a, depth + 2)))
+                return NULL;
+        }
+        g->nkids = n;
     }
     memcpy(g->lo, g->kids[0]->lo, sizeof g->lo);
     memcpy(g->hi, g->kids[0]->hi, sizeof g->hi);
