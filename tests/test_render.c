@@ -309,6 +309,81 @@ Test(render_camera, centre_pixel_is_forward)
         cr_expect(fabs(o[i] + 30 * d[i] - at[i]) < 1e-9);
 }
 
+/* render_raygen_cover: over random views and boxes, the ray of every pixel
+ * position outside the rectangle misses the box (an independent slab test
+ * on the ray render_raygen_ray makes), and every corner's own pixel lies
+ * inside it.  A box reaching behind a perspective eye has no rectangle. */
+Test(render_camera, cover_rectangle_holds_every_ray_that_meets_the_box)
+{
+    rng_seed(7);
+    int W = 48, H = 32, stated = 0, outside = 0, tight = 0;
+    for (int trial = 0; trial < 150; trial++) {
+        render_view v = {.kind = RENDER_CAMERA_GIMBAL,
+                         .v = {rng_uniform(-5, 5), rng_uniform(-5, 5), rng_uniform(-5, 5),
+                               rng_uniform(0, 360), rng_uniform(0, 360), rng_uniform(0, 360),
+                               rng_uniform(20, 80)},
+                         .ortho = trial % 3 == 0};
+        render_camera c;
+        cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, W, H, &c), 0);
+        render_raygen g;
+        render_raygen_init(&g, &c, W, H);
+        double lo[3], hi[3], rect[4];
+        for (int k = 0; k < 3; k++) {
+            double m = rng_uniform(-12, 12), e = rng_uniform(0.1, trial % 5 == 0 ? 60 : 6);
+            lo[k] = m - e;
+            hi[k] = m + e;
+        }
+        if (render_raygen_cover(&g, lo, hi, rect) != 0) {
+            /* only a perspective view with some corner at or behind the eye */
+            cr_expect(!c.ortho);
+            int behind = 0;
+            for (int k = 0; k < 8; k++) {
+                double p[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1],
+                               k & 4 ? hi[2] : lo[2]};
+                double f = 0;
+                for (int i = 0; i < 3; i++)
+                    f += (p[i] - c.eye[i]) * c.forward[i];
+                behind |= f <= 0;
+            }
+            cr_expect(behind, "trial %d: no rectangle for a box in front of the eye", trial);
+            continue;
+        }
+        stated++;
+        /* hx0..hy1: the extent of the positions whose rays meet the box */
+        double hx0 = INFINITY, hx1 = -INFINITY, hy0 = INFINITY, hy1 = -INFINITY;
+        /* positions over three times the image each way, every half pixel */
+        for (int y = -2 * H; y <= 4 * H; y++)
+            for (int x = -2 * W; x <= 4 * W; x++) {
+                double px = x / 2.0, py = y / 2.0, o[3], d[3];
+                render_raygen_ray(&g, px, py, o, d);
+                int hit = ray_hits_box(o, d, c.ortho ? -INFINITY : 0, INFINITY, lo, hi);
+                if (hit) {
+                    hx0 = fmin(hx0, px);
+                    hx1 = fmax(hx1, px);
+                    hy0 = fmin(hy0, py);
+                    hy1 = fmax(hy1, py);
+                }
+                if (px >= rect[0] && px <= rect[1] && py >= rect[2] && py <= rect[3]) continue;
+                outside++;
+                cr_assert(!hit, "trial %d: the ray of (%g, %g) meets the box outside [%g %g]x[%g %g]",
+                          trial, px, py, rect[0], rect[1], rect[2], rect[3]);
+            }
+        /* and tight: a rectangle within the sampled range lies within a few
+         * pixels of the hits — the margin, plus the sampling step and the
+         * thin tips of the box's outline that the half-pixel grid misses */
+        if (rect[0] > -W && rect[1] < 2 * W && rect[2] > -H && rect[3] < 2 * H) {
+            cr_expect(hx0 - rect[0] <= 3, "trial %d left %g %g ortho %d", trial, hx0, rect[0], c.ortho);
+            cr_expect(rect[1] - hx1 <= 3, "trial %d right %g %g ortho %d", trial, hx1, rect[1], c.ortho);
+            cr_expect(hy0 - rect[2] <= 3, "trial %d top", trial);
+            cr_expect(rect[3] - hy1 <= 3, "trial %d bottom", trial);
+            tight++;
+        }
+    }
+    cr_expect(stated > 75, "only %d of 150 views stated a rectangle", stated);
+    cr_expect(tight > 30, "only %d rectangles checked for tightness", tight);
+    cr_expect(outside > 100000, "only %d positions fell outside a rectangle", outside);
+}
+
 /* ---- colour schemes ------------------------------------------------------- */
 
 /* Read "key" : "#rrggbb" out of one of OpenSCAD's installed scheme files. */

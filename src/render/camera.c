@@ -22,6 +22,7 @@
  * GL eye-space origin lies in world space.
  */
 #include "render.h"
+#include "../intervals/vec3.h"
 
 #include <math.h>
 
@@ -203,6 +204,51 @@ void render_raygen_ray(const render_raygen *g, double px, double py, double o[3]
     double inv = 1 / sqrt(len2);
     for (int i = 0; i < 3; i++)
         d[i] *= inv;
+}
+
+/* det[a b c] = a · (b × c). */
+static double det3(const double a[3], const double b[3], const double c[3])
+{
+    double bc[3];
+    cross3(b, c, bc);
+    return dot3(a, bc);
+}
+
+/* A point c lies on the ray of pixel (px, py) when c - org = px·odx + py·ody
+ * + t·d with t > 0 and d = d0 + px·ddx + py·ddy.  Perspective (odx = ody =
+ * 0): c - org = s·d0 + s·px·ddx + s·py·ddy, solved for (s, s·px, s·py) by
+ * Cramer's rule, s > 0.  Orthographic (ddx = ddy = 0): c - org = px·odx +
+ * py·ody + t·d0, solved for (px, py, t).  Either map sends the box, convex
+ * and in front of the eye, onto the convex hull of its corners' images, so
+ * a pixel outside their bounds sees none of it; the pixel of margin covers
+ * rounding, in these solves and in the rays themselves, many times over. */
+int render_raygen_cover(const render_raygen *g, const double lo[3], const double hi[3],
+                        double rect[4])
+{
+    int ortho = dot3(g->ddx, g->ddx) == 0 && dot3(g->ddy, g->ddy) == 0;
+    const double *a = ortho ? g->odx : g->d0, *b = ortho ? g->ody : g->ddx,
+                 *c = ortho ? g->d0 : g->ddy;
+    double det = det3(a, b, c);
+    if (!(fabs(det) > 0) || !isfinite(det)) return -1;
+    rect[0] = rect[2] = INFINITY;
+    rect[1] = rect[3] = -INFINITY;
+    for (int k = 0; k < 8; k++) {
+        double p[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]}, v[3];
+        sub3(p, g->org, v);
+        double u0 = det3(v, b, c) / det, u1 = det3(a, v, c) / det, u2 = det3(a, b, v) / det;
+        double px = ortho ? u0 : u1 / u0, py = ortho ? u1 : u2 / u0;
+        if (!ortho && !(u0 > 0)) return -1; /* at or behind the eye */
+        if (!isfinite(px) || !isfinite(py)) return -1;
+        rect[0] = fmin(rect[0], px);
+        rect[1] = fmax(rect[1], px);
+        rect[2] = fmin(rect[2], py);
+        rect[3] = fmax(rect[3], py);
+    }
+    rect[0] -= 1;
+    rect[1] += 1;
+    rect[2] -= 1;
+    rect[3] += 1;
+    return 0;
 }
 
 void render_camera_ray(const render_camera *c, int width, int height, double px, double py,

@@ -70,6 +70,10 @@ typedef struct job {
     double eps;        /* offset of secondary ray origins */
     double focus;      /* thin lens */
     int first_hit;     /* csg_trace_first may stand in for the full lists */
+    /* Primary samples outside cover (x0, x1, y0, y1) see the background
+     * alone (render_raygen_cover); covered: no such rectangle is known. */
+    double cover[4];
+    int covered;
 } job;
 
 static void set_err(char *err, size_t errlen, const char *msg)
@@ -514,8 +518,16 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
                 for (int i = 0; i < s; i++) {
                     double jx = J->jitter ? rng_next(&wk->g) : 0.5;
                     double jy = J->jitter ? rng_next(&wk->g) : 0.5;
-                    double o[3], d[3], tmin, tmax, c[3];
-                    primary_ray(J, &wk->g, x + (i + jx) / s, y + (j + jy) / s, o, d);
+                    double o[3], d[3], tmin, tmax, c[3], px = x + (i + jx) / s,
+                                                          py = y + (j + jy) / s;
+                    if (!J->covered && !(px >= J->cover[0] && px <= J->cover[1] &&
+                                         py >= J->cover[2] && py <= J->cover[3])) {
+                        /* what trace_ray gives a ray that meets nothing */
+                        for (int k = 0; k < 3; k++)
+                            sum[k] += (float)(double)J->opt->colors.background[k];
+                        continue;
+                    }
+                    primary_ray(J, &wk->g, px, py, o, d);
                     ray_range(J->cam, d, &tmin, &tmax);
                     int rc = trace_ray(J, wk, o, d, tmin, tmax, 0, c);
                     iv_arena_reset(wk->a);
@@ -598,6 +610,32 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
     return 0;
 }
 
+/* The image rectangle the scene's bounds project to (job.cover).  A lens
+ * moves the rays' origins off the pinhole, so it has none. */
+static void find_cover(job *J)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    int any = 0;
+    J->covered = 1;
+    if (J->opt->aperture > 0) return;
+    for (int r = 0; r < J->nroots; r++) {
+        double l[3], h[3];
+        if (csg_scene_bounds(J->scene, r, l, h) != 0) continue;
+        any = 1;
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], l[k]);
+            hi[k] = fmax(hi[k], h[k]);
+        }
+    }
+    if (!any) { /* nothing to see: every sample is background */
+        J->cover[0] = J->cover[2] = 1;
+        J->cover[1] = J->cover[3] = -1;
+        J->covered = 0;
+        return;
+    }
+    J->covered = render_raygen_cover(&J->gen, lo, hi, J->cover) != 0;
+}
+
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
                  float *rgba, char *err, size_t errlen)
 {
@@ -621,6 +659,7 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     if (J.nroots > MAX_ROOTS) J.nroots = MAX_ROOTS;
     if (J.nroots < 0) J.nroots = 0;
     if (resolve_light_model(&J, err, errlen) != 0) return -1;
+    find_cover(&J);
     J.tiles_x = (opt->width + TILE - 1) / TILE;
     render_pool pool = {
         .ntiles = J.tiles_x * ((opt->height + TILE - 1) / TILE),

@@ -67,6 +67,14 @@ typedef struct render_raygen {
 void render_raygen_init(render_raygen *g, const render_camera *c, int width, int height);
 void render_raygen_ray(const render_raygen *g, double px, double py, double o[3], double d[3]);
 
+/* The image rectangle rect = {x0, x1, y0, y1} (pixel coordinates, as
+ * render_raygen_ray takes them) outside which every ray of g misses the box
+ * [lo, hi]: the bounds of its corners' projections, widened by a pixel.
+ * Returns 0, or -1 when there is no such rectangle to state (an infinite
+ * box, or one reaching to or behind the eye). */
+int render_raygen_cover(const render_raygen *g, const double lo[3], const double hi[3],
+                        double rect[4]);
+
 /* An OpenSCAD colour scheme, sRGB in [0, 1]. */
 typedef struct render_colors {
     float background[3];
