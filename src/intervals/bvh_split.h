@@ -27,6 +27,12 @@ enum { IV_BVH_SAH_DEPTH = 40 };
  * median on the axis where the centres spread most. */
 int iv_bvh_split(iv_bvh_item *items, int m, int depth);
 
+/* iv_bvh_split, and the boxes of the two parts (the union of their items'
+ * boxes) into box[0] (left) and box[1] (right), each {lo, hi}, when box is
+ * not NULL: the binning has them, and a builder need not pass over the
+ * items again for them. */
+int iv_bvh_split_boxes(iv_bvh_item *items, int m, int depth, double box[2][2][3]);
+
 /* Early split clipping (Ernst and Greiner, "Early split clipping for
  * bounding volume hierarchies", 2007): items for the triangles tri[0..nt)
  * over the vertices v, one per triangle (its box, its centroid, id = its

@@ -83,54 +83,84 @@ void mesh_release(iv_mesh *m)
 
 /* ---- building ------------------------------------------------------------------ */
 
-/* Node over items[start, start+count) (an item's id is its triangle);
- * returns its index.  Leaves of at most 4 references. */
-static int build_node(iv_mesh *m, iv_bvh_item *items, int start, int count, int depth)
+/* Node over items[start, start+count) (an item's id is its triangle), whose
+ * box is box = {lo, hi}; returns its index.  Leaves of at most 4
+ * references. */
+static int build_node(iv_mesh *m, iv_bvh_item *items, int start, int count, int depth,
+                      const double box[2][3])
 {
     int ni = m->nn++;
     bnode *nd = &m->node[ni];
-    for (int k = 0; k < 3; k++) {
-        nd->lo[k] = INFINITY;
-        nd->hi[k] = -INFINITY;
-    }
-    for (int i = start; i < start + count; i++)
-        for (int k = 0; k < 3; k++) {
-            nd->lo[k] = items[i].lo[k] < nd->lo[k] ? items[i].lo[k] : nd->lo[k];
-            nd->hi[k] = items[i].hi[k] > nd->hi[k] ? items[i].hi[k] : nd->hi[k];
-        }
+    memcpy(nd->lo, box[0], sizeof nd->lo);
+    memcpy(nd->hi, box[1], sizeof nd->hi);
     nd->start = start;
     nd->count = count;
     nd->right = -1;
     if (count <= 4) return ni;
-    int l = iv_bvh_split(items + start, count, depth);
+    double kids[2][2][3];
+    int l = iv_bvh_split_boxes(items + start, count, depth, kids);
     m->node[ni].count = 0;
-    build_node(m, items, start, l, depth + 1);
-    int r = build_node(m, items, start + l, count - l, depth + 1);
+    build_node(m, items, start, l, depth + 1, (const double(*)[3])kids[0]);
+    int r = build_node(m, items, start + l, count - l, depth + 1, (const double(*)[3])kids[1]);
     m->node[ni].right = r;
     return ni;
 }
 
 static int cmp_edge(const void *a, const void *b)
 {
-    const long long *x = a, *y = b;
+    const unsigned long long *x = a, *y = b;
     return (*x > *y) - (*x < *y);
+}
+
+/* Sorts e[0..n) with the help of tmp[0..n): least significant digit first,
+ * 11 bits a pass, as many passes as the largest key needs (4 for the edges
+ * of 2·10^5 vertices) — a qsort of a million edges spends its time in
+ * comparator calls. */
+static void sort_keys(unsigned long long *e, unsigned long long *tmp, size_t n)
+{
+    unsigned long long max = 0, *src = e, *dst = tmp;
+    for (size_t i = 0; i < n; i++)
+        max = e[i] > max ? e[i] : max;
+    for (int shift = 0; shift < 64 && (max >> shift) != 0; shift += 11) {
+        size_t at[2048] = {0};
+        for (size_t i = 0; i < n; i++)
+            at[(src[i] >> shift) & 2047]++;
+        size_t sum = 0;
+        for (int b = 0; b < 2048; b++) {
+            size_t c = at[b];
+            at[b] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; i++)
+            dst[at[(src[i] >> shift) & 2047]++] = src[i];
+        unsigned long long *x = src;
+        src = dst;
+        dst = x;
+    }
+    if (src != e) memcpy(e, src, n * sizeof *e);
 }
 
 /* 1 when every directed edge is matched by exactly one reverse edge. */
 static int is_closed(const iv_mesh *m)
 {
-    long long *e = malloc((size_t)m->nt * 3 * sizeof *e);
+    unsigned long long *e = malloc((size_t)m->nt * 3 * sizeof *e);
     if (!e) return 1;
     size_t ne = 0;
     for (int i = 0; i < m->nt; i++)
         for (int j = 0; j < 3; j++) {
-            long long a = m->tri[i][j], b = m->tri[i][(j + 1) % 3];
+            unsigned long long a = (unsigned)m->tri[i][j], b = (unsigned)m->tri[i][(j + 1) % 3];
             if (a == b) continue;
-            /* key: unordered pair, and direction in the low bit */
-            long long lo = a < b ? a : b, hi = a < b ? b : a;
-            e[ne++] = ((lo * (long long)m->nv + hi) << 1) | (a < b);
+            /* key: unordered pair, and direction in the low bit (< 2^63,
+             * as nv < 2^31) */
+            unsigned long long lo = a < b ? a : b, hi = a < b ? b : a;
+            e[ne++] = ((lo * (unsigned long long)m->nv + hi) << 1) | (a < b);
         }
-    qsort(e, ne, sizeof *e, cmp_edge);
+    unsigned long long *tmp = malloc(ne * sizeof *tmp);
+    if (tmp)
+        sort_keys(e, tmp, ne);
+    else
+        qsort(e, ne, sizeof *e, cmp_edge);
+    free(tmp);
     int closed = 1;
     for (size_t i = 0; i < ne;) {
         size_t j = i;
@@ -328,7 +358,17 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
     first = malloc((size_t)t * sizeof *first);
     if (!items || !m->node || !m->ref || !first) goto done;
     m->nr = (int)nr;
-    build_node(m, items, 0, m->nr, 0);
+    double box[2][3];
+    for (int k = 0; k < 3; k++) {
+        box[0][k] = INFINITY;
+        box[1][k] = -INFINITY;
+    }
+    for (int j = 0; j < m->nr; j++)
+        for (int k = 0; k < 3; k++) {
+            box[0][k] = items[j].lo[k] < box[0][k] ? items[j].lo[k] : box[0][k];
+            box[1][k] = items[j].hi[k] > box[1][k] ? items[j].hi[k] : box[1][k];
+        }
+    build_node(m, items, 0, m->nr, 0, (const double(*)[3])box);
     bnode *shrunk = realloc(m->node, (size_t)m->nn * sizeof *m->node);
     if (shrunk) m->node = shrunk;
     /* Triangles in the order of their first reference: a leaf's are then
