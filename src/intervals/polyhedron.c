@@ -352,9 +352,22 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
     if (extra_per_triangle > 0 && t < MESH_REF_MAX)
         extra = (long)fmin(extra_per_triangle * t, (double)(MESH_REF_MAX - t));
     long nr = 0;
-    items = iv_bvh_clip_triangles((const double(*)[3])verts, (const int(*)[3])tri, t, extra, &nr);
-    m->node = malloc((size_t)(2 * nr) * sizeof *m->node);
-    m->ref = malloc((size_t)nr * sizeof *m->ref);
+    for (;;) {
+        items =
+            iv_bvh_clip_triangles((const double(*)[3])verts, (const int(*)[3])tri, t, extra, &nr);
+        m->node = malloc((size_t)(2 * nr) * sizeof *m->node);
+        m->ref = malloc((size_t)nr * sizeof *m->ref);
+        if ((items && m->node && m->ref) || extra == 0) break;
+        /* short of memory (a data limit): the plain hierarchy, slower for
+         * long thin triangles but no larger than the mesh itself */
+        free(items);
+        free(m->node);
+        free(m->ref);
+        items = NULL;
+        m->node = NULL;
+        m->ref = NULL;
+        extra = 0;
+    }
     first = malloc((size_t)t * sizeof *first);
     if (!items || !m->node || !m->ref || !first) goto done;
     m->nr = (int)nr;
