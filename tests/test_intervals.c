@@ -939,3 +939,103 @@ Test(iv_mesh, clipped_references_give_the_same_crossings)
     iv_shape_release(&clipped[0]);
     iv_shape_release(&clipped[1]);
 }
+
+/* A star prism: its ends are concave 2n-gons, cut into triangles by
+ * diagonals that leave the face, whose signed cover must still be exactly
+ * the face.  Checked against an even-odd point test. */
+enum { STAR_N = 2 * 17 };
+
+static void star_point(int k, double p[2])
+{
+    double r = k % 2 ? 0.35 : 1, a = 2 * PI * k / STAR_N;
+    p[0] = r * cos(a);
+    p[1] = r * sin(a);
+}
+
+/* The signed distance to the star prism's boundary (< 0 inside), exact
+ * enough to skip points within 1e-7 of it. */
+static double star_sdf(const double p[3])
+{
+    int inside = 0;
+    double dmin = INFINITY;
+    for (int i = 0; i < STAR_N; i++) {
+        double a[2], b[2];
+        star_point(i, a);
+        star_point((i + 1) % STAR_N, b);
+        if ((a[1] > p[1]) != (b[1] > p[1]) &&
+            p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+            inside = !inside;
+        double ex = b[0] - a[0], ey = b[1] - a[1];
+        double u = ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / (ex * ex + ey * ey);
+        u = u < 0 ? 0 : u > 1 ? 1 : u;
+        dmin = fmin(dmin, hypot(p[0] - a[0] - u * ex, p[1] - a[1] - u * ey));
+    }
+    double d2 = inside ? -dmin : dmin, dz = fmax(-p[2], p[2] - 1);
+    return d2 > 0 && dz > 0 ? hypot(d2, dz) : fmax(d2, dz);
+}
+
+Test(iv_mesh, concave_ends_by_diagonals_match_point_test)
+{
+    double P[2 * STAR_N][3];
+    int F[2 * STAR_N + 4 * STAR_N], S[STAR_N + 3];
+    for (int i = 0; i < STAR_N; i++) {
+        star_point(i, P[i]);
+        P[STAR_N + i][0] = P[i][0];
+        P[STAR_N + i][1] = P[i][1];
+        P[i][2] = 0;
+        P[STAR_N + i][2] = 1;
+    }
+    int k = 0, f = 0;
+    S[f++] = 0;
+    for (int i = 0; i < STAR_N; i++)
+        F[k++] = i;
+    S[f++] = k;
+    for (int i = STAR_N - 1; i >= 0; i--)
+        F[k++] = STAR_N + i;
+    S[f++] = k;
+    for (int i = 0; i < STAR_N; i++) {
+        int j = (i + 1) % STAR_N;
+        F[k++] = i;
+        F[k++] = STAR_N + i;
+        F[k++] = STAR_N + j;
+        F[k++] = j;
+        S[f++] = k;
+    }
+    iv_shape s;
+    cr_assert_eq(iv_shape_mesh(&s, (const double(*)[3])P, 2 * STAR_N, F, S, f - 1), 0);
+    const uint64_t seed = 0x57a2;
+    rng_seed(seed);
+    int spans = 0;
+    for (int it = 0; it < 20000; it++) {
+        iv_arena_reset(arena);
+        double o[3], d[3];
+        for (int j = 0; j < 3; j++) {
+            o[j] = rng_uniform(-1.5, 1.5);
+            d[j] = rng_uniform(-1, 1);
+        }
+        if (it % 3 == 0) d[0] = d[1] = 0; /* through both ends */
+        iv_list l;
+        cr_assert_eq(iv_list_init(&l, iv_shape_max_spans(&s), arena), 0);
+        int r = iv_shape_intersect(&s, o, d, 1, &l);
+        cr_assert(r >= 0);
+        check_invariant(&l, "star");
+        spans += r;
+        double dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int q = 0; q < 32; q++) {
+            double t = rng_uniform(-4, 4);
+            double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
+            double sd = star_sdf(p);
+            if (fabs(sd) < 1e-7) continue;
+            int near_bound = 0;
+            for (int i = 0; i < l.n; i++)
+                if (fabs(t - l.v[i].enter.t) * dl < 1e-7 || fabs(t - l.v[i].exit.t) * dl < 1e-7)
+                    near_bound = 1;
+            if (near_bound) continue;
+            cr_assert_eq(iv_list_contains(&l, t), sd < 0,
+                         "seed %#llx iter %d t %.17g: list says %d, point test %g",
+                         (unsigned long long)seed, it, t, iv_list_contains(&l, t), sd);
+        }
+    }
+    cr_assert(spans > 5000, "too few hits (%d) to mean anything", spans);
+    iv_shape_release(&s);
+}
