@@ -10,7 +10,7 @@
 CC  ?= cc
 CXX ?= c++
 BUILD ?= build
-OPT ?= -O2 -g
+OPT ?= -O3 -g
 
 WARN = \
 	-Wall \
