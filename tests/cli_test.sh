@@ -330,6 +330,19 @@ else
         done
     done
     check "--max-memory: the evaluator's out-of-memory errors carry file:line:col" test "$located" -ge 5
+    # surface() reads a PNG through OpenImageIO while the limit applies (whose
+    # initialisation used to crash below about 100M): it renders, or fails
+    # with an error at the surface() call or rayscad's own, never a signal.
+    run ok.scad -o height.png --imgsize=8,6
+    printf 'surface(file = "height.png");\n' >surface.scad
+    for m in 20M 60M 80M 100M 150M 300M; do
+        run surface.scad -o surface.png --imgsize=16,16 --max-memory $m
+        check "--max-memory $m: surface() of a PNG renders or fails cleanly" sh -c "test $rc -eq 0 -o $rc -eq 1 && { test $rc -eq 0 || grep -qE '^(surface\.scad:1:1|rayscad): error: .*out of memory' err.txt; }"
+    done
+    run surface.scad -o surface.png --imgsize=16,16 --max-memory 20M
+    check "--max-memory: surface() of a PNG past it is an error at the call" sh -c "test $rc -eq 1 && grep -qx 'surface.scad:1:1: error: surface(): height.png: out of memory for a 8x6 image (more than --max-memory 20M)' err.txt"
+    run surface.scad -o surface.png --imgsize=16,16 --max-memory 300M
+    check "--max-memory 300M: surface() of a PNG renders" sh -c "test $rc -eq 0 && test -s surface.png && ! grep -q WARNING err.txt"
 fi
 
 echo "cli: $passed passed, $failed failed"

@@ -16,12 +16,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "../io/io.h"
 #include "../io/polygon.h"
 #include "../io/text.h"
 #include "../mesh/mesh.h"
+#include "options.h"
 
 /* The whole file at path, malloc'ed, its length in *n; NULL on failure. */
 static char *slurp(const char *path, size_t *n)
@@ -122,11 +124,67 @@ static int read_mesh(void *ud, const char *path, float **v, int *nv, int32_t **t
     return rc;
 }
 
+/* The width and height of a PNG file from its IHDR chunk: 0, or -1 when
+ * path is not a readable PNG. */
+static int png_size(const char *path, unsigned long *w, unsigned long *h)
+{
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char b[24];
+    FILE *f = fopen(path, "rb");
+    if (!f) return -1;
+    size_t n = fread(b, 1, sizeof b, f);
+    fclose(f);
+    if (n != sizeof b || memcmp(b, sig, 8) || memcmp(b + 12, "IHDR", 4)) return -1;
+    *w = (unsigned long)b[16] << 24 | (unsigned long)b[17] << 16 | (unsigned long)b[18] << 8 | b[19];
+    *h = (unsigned long)b[20] << 24 | (unsigned long)b[21] << 16 | (unsigned long)b[22] << 8 | b[23];
+    return 0;
+}
+
+/* The process's data memory as RLIMIT_DATA counts it (VmData), in bytes;
+ * 0 when unknown. */
+static unsigned long long data_in_use(void)
+{
+    FILE *f = fopen("/proc/self/status", "r");
+    if (!f) return 0;
+    char line[256];
+    unsigned long long kb = 0;
+    while (fgets(line, sizeof line, f))
+        if (sscanf(line, "VmData: %llu kB", &kb) == 1) break;
+    fclose(f);
+    return kb * 1024;
+}
+
+/* surface() runs while --max-memory applies, and OpenImageIO does not
+ * survive that: its libraries' initialisers, and the first read (its
+ * plugin catalogue and thread pool: about 100 MB of VmData), throw where
+ * they cannot unwind or dereference null below about 150 MiB.  So the
+ * adapter is loaded with the limit lifted (cli_load_image_adapter), and a
+ * PNG is read with it lifted too, but only when its pixels fit under the
+ * limit beside what the process holds: twice the image as 4 floats a
+ * pixel (ours and OpenImageIO's scanlines), else out of memory.  Other
+ * files are read under the limit. */
 static int read_image(void *ud, const char *path, int *width, int *height, int *channels,
                       float **pixels, char *err, size_t errlen)
 {
     (void)ud;
-    return io_image_read(path, width, height, channels, pixels, err, errlen);
+    cli_load_image_adapter();
+    unsigned long w, h;
+    struct rlimit was, open;
+    if (png_size(path, &w, &h) != 0 || getrlimit(RLIMIT_DATA, &was) != 0 ||
+        was.rlim_cur == was.rlim_max)
+        return io_image_read(path, width, height, channels, pixels, err, errlen);
+    unsigned long long need = 2ULL * w * h * 4 * sizeof(float), used = data_in_use();
+    if (!used || need > (unsigned long long)was.rlim_cur - used || used > was.rlim_cur) {
+        snprintf(err, errlen, "%s: out of memory for a %lux%lu image", path, w, h);
+        *pixels = NULL;
+        return -1;
+    }
+    open = was;
+    open.rlim_cur = was.rlim_max;
+    int lifted = setrlimit(RLIMIT_DATA, &open) == 0;
+    int rc = io_image_read(path, width, height, channels, pixels, err, errlen);
+    if (lifted) setrlimit(RLIMIT_DATA, &was);
+    return rc;
 }
 
 /* ---- 2D geometry: offset, projection, minkowski, text --------------------------

@@ -275,8 +275,16 @@ static int read_png(scad_eval *ev, const scad_stmt *st, const char *path, int in
         scad_diag_error(ev->d, st->loc, "surface() of an image is not available here");
         return 1;
     }
+    err[0] = 0;
     if (ev->services->read_image(ev->services->ud, path, &w, &h, &ch, &px, err, sizeof err) != 0) {
+        /* an image that is there but does not fit is an error, not OpenSCAD's
+         * warning for a file it cannot read (the model would lose a part) */
+        if (strstr(err, "out of memory")) {
+            scad_eval_error(ev, st->loc, "surface(): %s", err);
+            return 1;
+        }
         scad_diag_warning(ev->d, st->loc, "Can't read PNG image '%s'", path);
+        if (err[0]) scad_diag_note(ev->d, st->loc, "surface(): %s", err); /* why, in our words */
         return 1;
     }
     m->z = malloc((size_t)w * (size_t)h * sizeof *m->z);
