@@ -4,6 +4,11 @@
  * sweeps over the bins give every plane's cost, one pass partitions.
  * Linear in m per split, so a build is O(m log m) while the splits stay
  * balanced and the median fallback keeps it so when they are not.
+ *
+ * Then early split clipping for meshes: long thin triangles become several
+ * references whose boxes together cover the triangle (Ernst and Greiner,
+ * 2007).  A box needs only contain its piece: a ray that meets a triangle
+ * meets at least one of its references' boxes, and maybe more.
  */
 #include "bvh_split.h"
 
@@ -204,8 +209,8 @@ static int clip_axis(const double (*poly)[3], int n, double (*out)[3], int k, do
             m++;
         }
         if (ina != inb) {
-            /* one end strictly inside, the other strictly outside, so
-             * b[k] != a[k] and u is in (0, 1) */
+            /* one end inside or on the plane, the other strictly
+             * outside, so b[k] != a[k] and u is in [0, 1) */
             double u = (s - a[k]) / (b[k] - a[k]);
             for (int j = 0; j < 3; j++)
                 out[m][j] = a[j] + u * (b[j] - a[j]);
