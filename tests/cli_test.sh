@@ -240,6 +240,31 @@ printf 'function f(n) = [f(n + 1)];\necho(len(f(0)[0]), undefined_var);\ncube(1)
 run stop_rec.scad -o stop_rec.png --max-recursion 50
 check "a recursion limit is the only line on stderr" sh -c "test $rc -eq 1 && test \"\$(cat err.txt)\" = \"stop_rec.scad:1:18: error: recursion deeper than 50 calls (calling function 'f')\""
 
+# The output does not depend on the number of threads: the same bytes with
+# 1, 2 and 5 workers for an image with every random choice in play
+# (antialiasing samples, an area light's soft shadows, a thin lens's depth
+# of field, a path-traced image) and for a mesh.  The options must matter,
+# or the comparison proves nothing: each image differs from a plain render.
+demo=$root/models/demo.scad
+look=(--imgsize=96,72 --samples 2 --light=40,-30,60,8 --light-samples 2 --aperture 3 --seed 7)
+for t in 1 2 5; do
+    run "$demo" -o "det_$t.png" "${look[@]}" --threads=$t
+    check "threads=$t: the antialiased, soft-shadowed, defocused image renders" sh -c "test $rc -eq 0 && test -s det_$t.png"
+    run "$demo" -o "det_pt_$t.png" --imgsize=48,36 --path-trace=4 --seed 7 --threads=$t
+    check "threads=$t: the path-traced image renders" sh -c "test $rc -eq 0 && test -s det_pt_$t.png"
+    run "$root/models/gear.scad" -o "det_$t.stl" --threads=$t
+    check "threads=$t: the mesh is written" sh -c "test $rc -eq 0 && test -s det_$t.stl"
+done
+run "$demo" -o det_plain.png --imgsize=96,72 --threads=2
+run "$demo" -o det_sharp.png --imgsize=96,72 --samples 2 --light=40,-30,60,8 --light-samples 2 --seed 7 --threads=2
+check "the sampled image differs from a plain one" quiet sh -c "! cmp -s det_1.png det_plain.png"
+check "--aperture changes the image" quiet sh -c "! cmp -s det_1.png det_sharp.png"
+for t in 2 5; do
+    check "threads=$t: the image is byte-identical to threads=1" cmp -s det_1.png "det_$t.png"
+    check "threads=$t: the path-traced image is byte-identical to threads=1" cmp -s det_pt_1.png "det_pt_$t.png"
+    check "threads=$t: the STL is byte-identical to threads=1" cmp -s det_1.stl "det_$t.stl"
+done
+
 # Output and memory limits: each a named error that names its flag, exit 1,
 # nothing written and an existing output left as it was.
 absent_or_kept() { # file: absent, or still holding "precious"
