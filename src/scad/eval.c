@@ -1382,7 +1382,7 @@ scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *st
 
 scad_geom *scad_geom_op(scad_eval *ev, csg_op op)
 {
-    scad_geom *g = scad_arena_alloc(ev->arena, sizeof *g);
+    scad_geom *g = scad_arena_alloc(ev->arena, offsetof(scad_geom, shape)); /* eval.h */
     if (!g) {
         scad_eval_error(ev, scad_eval_here(ev), "out of memory");
         return NULL;
