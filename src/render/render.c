@@ -242,7 +242,7 @@ static double light_factor(const job *J, worker_ctx *wk, const double p[3], cons
         if (!(dist > 0)) continue;
         normalize3(w);
         int ns = L->radius > 0 ? n : 1;
-        if (ns > 1) basis_of(w, u, v);
+        basis_of(w, u, v); /* used only when ns > 1 */
         double sum = 0;
         for (int sj = 0; sj < ns; sj++)
             for (int si = 0; si < ns; si++) {

@@ -365,7 +365,7 @@ static double directed_hausdorff(const tmesh *from, grid *to, double s, double w
         if (n < 1) n = 1;
         if (n > 4096) n = 4096;
         for (int i = 0; i <= n; i++)
-            for (int j = 0; i + j <= n; j++) {
+            for (int j = 0; j <= n - i; j++) {
                 if ((i == 0 && j == 0) || i == n || j == n) continue;
                 double u = (double)i / n, v = (double)j / n, p[3];
                 for (int k = 0; k < 3; k++)
