@@ -592,29 +592,9 @@ static int setup(pt_job *J)
     J->lights = calloc((size_t)np + RENDER_MAX_LIGHTS + 1, sizeof *J->lights);
     if (!J->le || !J->sampled || !J->lights) return -1;
 
-    /* Secondary rays leave a surface 1e-7 of the model's size along its
-     * normal, as render.c's do: far above the rounding of t, far below any
-     * feature. */
-    double lo[3], hi[3], size = 1, centre[3] = {0, 0, 0};
-    if (csg_scene_bounds(S, RENDER_ROOT_MODEL, lo, hi) == 0) {
-        double s2 = 0;
-        for (int i = 0; i < 3; i++) {
-            double e = isfinite(hi[i] - lo[i]) ? hi[i] - lo[i] : 0;
-            s2 += e * e;
-            centre[i] = isfinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0;
-        }
-        if (s2 > 0) size = sqrt(s2);
-        for (int i = 0; i < 3; i++)
-            size = fmax(size, fabs(centre[i]));
-    }
+    double centre[3], size = model_scale(S, centre); /* as render.c's */
     J->eps = 1e-7 * size;
-    const render_camera *c = J->cam;
-    if (opt->focus > 0) {
-        J->focus = opt->focus;
-    } else {
-        double v[3] = {centre[0] - c->eye[0], centre[1] - c->eye[1], centre[2] - c->eye[2]};
-        J->focus = fmax(dot3(v, c->forward), 1e-6 * size);
-    }
+    J->focus = lens_focus(opt, J->cam, centre, size);
 
     for (int li = 0; li < opt->nlights && li < RENDER_MAX_LIGHTS; li++) {
         const render_light *R = &opt->lights[li];
@@ -671,6 +651,7 @@ static int setup(pt_job *J)
     }
     if (opt->nlights == 0 && emitters == 0) {
         /* the preview's key light, (-1,-1,1)/√3 in (right, forward, up) */
+        const render_camera *c = J->cam;
         pt_light *L = &J->lights[J->nlights++];
         L->kind = PT_KEY;
         for (int i = 0; i < 3; i++)

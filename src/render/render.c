@@ -562,11 +562,9 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
         J->lights[J->nlights++] = opt->lights[i];
     for (int i = 0; i < J->nlights; i++)
         if (!(J->lights[i].intensity > 0)) J->lights[i].intensity = 1;
-    int emitters = 0;
     for (int p = 0; p < csg_scene_prim_count(J->scene); p++) {
         const csg_material *m = csg_scene_material(J->scene, p);
         if (!(m->emit > 0)) continue;
-        emitters++;
         if (J->nlights == RENDER_MAX_LIGHTS) continue;
         render_light *L = &J->lights[J->nlights++];
         for (int i = 0; i < 3; i++)
@@ -576,7 +574,6 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
     }
     J->lit = opt->shadows || J->nlights > 0;
     J->keylight = J->lit && J->nlights == 0;
-    (void)emitters;
     J->light_n = opt->light_samples > 0 ? opt->light_samples : 4;
     J->max_depth = opt->bounces > 0 ? opt->bounces : 4;
     J->jitter = J->lit || opt->aperture > 0;
@@ -584,29 +581,9 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
      * first boundary never settles a ray. */
     J->first_hit = !(opt->xray > 0 && opt->xray < OPAQUE);
 
-    /* Secondary rays leave a surface this far along its normal: about 1e-9
-     * of the model's size, far above the rounding of t (a few ulps of the
-     * distances involved) and far below any feature. */
-    double lo[3], hi[3], size = 1, centre[3] = {0, 0, 0};
-    if (csg_scene_bounds(J->scene, RENDER_ROOT_MODEL, lo, hi) == 0) {
-        double s2 = 0;
-        for (int i = 0; i < 3; i++) {
-            double e = isfinite(hi[i] - lo[i]) ? hi[i] - lo[i] : 0;
-            s2 += e * e;
-            centre[i] = isfinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0;
-        }
-        if (s2 > 0) size = sqrt(s2);
-        for (int i = 0; i < 3; i++)
-            size = fmax(size, fabs(centre[i]));
-    }
+    double centre[3], size = model_scale(J->scene, centre);
     J->eps = 1e-7 * size;
-    if (opt->focus > 0) {
-        J->focus = opt->focus;
-    } else {
-        const render_camera *c = J->cam;
-        double v[3] = {centre[0] - c->eye[0], centre[1] - c->eye[1], centre[2] - c->eye[2]};
-        J->focus = fmax(dot3(v, c->forward), 1e-6 * size);
-    }
+    J->focus = lens_focus(opt, J->cam, centre, size);
     return 0;
 }
 

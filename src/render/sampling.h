@@ -79,6 +79,42 @@ static inline void basis_of(const double w[3], double u[3], double v[3])
     v[2] = w[0] * u[1] - w[1] * u[0];
 }
 
+/* ---- the model's scale, for offsets and the lens ---------------------------- */
+
+/* The model's size — the diagonal of its bounds (infinite extents count as
+ * 0), at least 1 and at least its centre's distance from the origin along
+ * any axis — and its centre (the origin when it has no bounds).  Secondary
+ * rays leave a surface 1e-7 of this along its normal: far above the
+ * rounding of t (a few ulps of the distances involved), far below any
+ * feature. */
+static inline double model_scale(const csg_scene *s, double centre[3])
+{
+    double lo[3], hi[3], size = 1;
+    for (int i = 0; i < 3; i++)
+        centre[i] = 0;
+    if (csg_scene_bounds(s, RENDER_ROOT_MODEL, lo, hi) != 0) return size;
+    double s2 = 0;
+    for (int i = 0; i < 3; i++) {
+        double e = isfinite(hi[i] - lo[i]) ? hi[i] - lo[i] : 0;
+        s2 += e * e;
+        centre[i] = isfinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0;
+    }
+    if (s2 > 0) size = sqrt(s2);
+    for (int i = 0; i < 3; i++)
+        size = fmax(size, fabs(centre[i]));
+    return size;
+}
+
+/* The thin lens's focal distance along forward: the option's, else the
+ * depth of the model's centre (at least 1e-6 of its size). */
+static inline double lens_focus(const render_options *opt, const render_camera *c,
+                                const double centre[3], double size)
+{
+    if (opt->focus > 0) return opt->focus;
+    double v[3] = {centre[0] - c->eye[0], centre[1] - c->eye[1], centre[2] - c->eye[2]};
+    return fmax(dot3(v, c->forward), 1e-6 * size);
+}
+
 /* The parameter range [tmin, tmax] along o + t·d that the camera keeps: its
  * clip planes are depths along forward, and depth = t·(d·forward). */
 static inline void ray_range(const render_camera *c, const double d[3], double *tmin, double *tmax)
