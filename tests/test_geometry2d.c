@@ -166,7 +166,29 @@ Test(io_polygon, out_of_range_is_an_error)
     io_paths a = {P, st, 1}, none = {NULL, NULL, 0}, r;
     char err[256] = "";
     cr_assert_eq(io_polygon_clip(IO_CLIP_UNION, &a, 0, &none, 0, &r, err, sizeof err), -1);
-    cr_assert(strlen(err) > 0);
+    cr_assert(strstr(err, "out of range"), "%s", err);
+    /* every entry point turns the exception into the same error */
+    strcpy(err, "");
+    cr_assert_eq(io_polygon_offset(&a, 1, IO_JOIN_ROUND, 2, 0, &r, err, sizeof err), -1);
+    cr_assert(strstr(err, "out of range"), "%s", err);
+    strcpy(err, "");
+    cr_assert_eq(io_polygon_offset(&none, NAN, IO_JOIN_ROUND, 2, 0, &r, err, sizeof err), -1);
+    cr_assert(strstr(err, "offset out of range"), "%s", err);
+    strcpy(err, "");
+    cr_assert_eq(io_polygon_minkowski(&a, &a, &r, err, sizeof err), -1);
+    cr_assert(strstr(err, "out of range"), "%s", err);
+}
+
+Test(io_polygon, minkowski_with_nothing_is_nothing)
+{
+    double P[4][2];
+    int st[2];
+    io_paths a = square10(P, st), none = {NULL, NULL, 0}, r;
+    char err[256];
+    cr_assert_eq(io_polygon_minkowski(&a, &none, &r, err, sizeof err), 0);
+    cr_expect_eq(r.npaths, 0);
+    cr_expect_null(r.pts);
+    io_paths_free(&r);
 }
 
 /* ---- the modules -------------------------------------------------------------------- */

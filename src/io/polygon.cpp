@@ -99,6 +99,33 @@ ClipperLib::PolyFillType fill(int evenodd)
     return evenodd ? ClipperLib::pftEvenOdd : ClipperLib::pftNonZero;
 }
 
+/* The one way out of every entry point: make(tree) fills a PolyTree (false:
+ * the operation failed, and `failed` says so), which becomes *out.  Every
+ * exception ends here as -1 and a message, so none crosses into C. */
+template <class Make>
+int run(const char *failed, io_paths *out, char *err, size_t errlen, Make make)
+{
+    try {
+        ClipperLib::PolyTree tree;
+        if (!make(tree)) {
+            set_err(err, errlen, failed);
+            return -1;
+        }
+        if (from_tree(tree, out) != 0) {
+            set_err(err, errlen, "out of memory");
+            return -1;
+        }
+        return 0;
+    } catch (const std::bad_alloc &) {
+        set_err(err, errlen, "out of memory");
+    } catch (const std::exception &e) {
+        set_err(err, errlen, e.what());
+    } catch (...) {
+        set_err(err, errlen, failed);
+    }
+    return -1;
+}
+
 } // namespace
 
 extern "C" void io_paths_free(io_paths *p)
@@ -114,37 +141,21 @@ extern "C" void io_paths_free(io_paths *p)
 extern "C" int io_polygon_clip(io_clip_op op, const io_paths *a, int a_evenodd, const io_paths *b,
                                int b_evenodd, io_paths *out, char *err, size_t errlen)
 {
-    try {
+    return run("polygon boolean failed", out, err, errlen, [&](ClipperLib::PolyTree &tree) {
         static const ClipperLib::ClipType types[] = {ClipperLib::ctUnion,
                                                      ClipperLib::ctIntersection,
                                                      ClipperLib::ctDifference, ClipperLib::ctXor};
         ClipperLib::Clipper c;
         c.AddPaths(to_clipper(a), ClipperLib::ptSubject, true);
         c.AddPaths(to_clipper(b), ClipperLib::ptClip, true);
-        ClipperLib::PolyTree tree;
-        if (!c.Execute(types[op], tree, fill(a_evenodd), fill(b_evenodd))) {
-            set_err(err, errlen, "polygon boolean failed");
-            return -1;
-        }
-        if (from_tree(tree, out) != 0) {
-            set_err(err, errlen, "out of memory");
-            return -1;
-        }
-        return 0;
-    } catch (const std::bad_alloc &) {
-        set_err(err, errlen, "out of memory");
-    } catch (const std::exception &e) {
-        set_err(err, errlen, e.what());
-    } catch (...) {
-        set_err(err, errlen, "polygon boolean failed");
-    }
-    return -1;
+        return c.Execute(types[op], tree, fill(a_evenodd), fill(b_evenodd));
+    });
 }
 
 extern "C" int io_polygon_offset(const io_paths *a, double delta, io_join join, double miter_limit,
                                  double arc_tolerance, io_paths *out, char *err, size_t errlen)
 {
-    try {
+    return run("polygon offset failed", out, err, errlen, [&](ClipperLib::PolyTree &tree) {
         if (!std::isfinite(delta) || std::fabs(delta) > RANGE)
             throw std::range_error("offset out of range");
         static const ClipperLib::JoinType types[] = {ClipperLib::jtRound, ClipperLib::jtMiter,
@@ -153,21 +164,9 @@ extern "C" int io_polygon_offset(const io_paths *a, double delta, io_join join, 
          * Clipper takes an arc tolerance <= 0 as its default 0.25 units. */
         ClipperLib::ClipperOffset co(miter_limit, arc_tolerance * SCALE);
         co.AddPaths(to_clipper(a), types[join], ClipperLib::etClosedPolygon);
-        ClipperLib::PolyTree tree;
         co.Execute(tree, delta * SCALE);
-        if (from_tree(tree, out) != 0) {
-            set_err(err, errlen, "out of memory");
-            return -1;
-        }
-        return 0;
-    } catch (const std::bad_alloc &) {
-        set_err(err, errlen, "out of memory");
-    } catch (const std::exception &e) {
-        set_err(err, errlen, e.what());
-    } catch (...) {
-        set_err(err, errlen, "polygon offset failed");
-    }
-    return -1;
+        return true;
+    });
 }
 
 namespace {
@@ -212,14 +211,9 @@ void fill_insides(const Paths &a, const Paths &b, Paths &out)
 extern "C" int io_polygon_minkowski(const io_paths *a, const io_paths *b, io_paths *out,
                                     char *err, size_t errlen)
 {
-    try {
+    return run("Minkowski sum failed", out, err, errlen, [&](ClipperLib::PolyTree &tree) {
         Paths pa = to_clipper(a), pb = to_clipper(b), terms;
-        if (pa.empty() || pb.empty()) {
-            out->pts = nullptr;
-            out->start = nullptr;
-            out->npaths = 0;
-            return 0;
-        }
+        if (pa.empty() || pb.empty()) return true; /* the empty tree: no outline */
         for (const Path &p : pa)
             for (const Path &q : pb)
                 sweep_edges(p, q, terms);
@@ -227,22 +221,6 @@ extern "C" int io_polygon_minkowski(const io_paths *a, const io_paths *b, io_pat
         fill_insides(pb, pa, terms);
         ClipperLib::Clipper c;
         c.AddPaths(terms, ClipperLib::ptSubject, true);
-        ClipperLib::PolyTree tree;
-        if (!c.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero)) {
-            set_err(err, errlen, "Minkowski sum failed");
-            return -1;
-        }
-        if (from_tree(tree, out) != 0) {
-            set_err(err, errlen, "out of memory");
-            return -1;
-        }
-        return 0;
-    } catch (const std::bad_alloc &) {
-        set_err(err, errlen, "out of memory");
-    } catch (const std::exception &e) {
-        set_err(err, errlen, e.what());
-    } catch (...) {
-        set_err(err, errlen, "Minkowski sum failed");
-    }
-    return -1;
+        return c.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    });
 }
