@@ -817,6 +817,31 @@ TestSuite(iv_mesh, .init = arena_setup, .fini = arena_teardown);
 
 #define PI 3.14159265358979323846
 
+/* The faces of a prism over an n-gon whose bottom ring is points 0..n-1
+ * and top ring n..2n-1 (as polyhedron() takes them: F the indices, S[i]
+ * where face i starts): the bottom, the top reversed, and n quads.
+ * Returns the face count, n + 2; F holds 6n indices, S n + 3 entries. */
+static int prism_faces(int n, int *F, int *S)
+{
+    int k = 0, f = 0;
+    S[f++] = 0;
+    for (int i = 0; i < n; i++)
+        F[k++] = i;
+    S[f++] = k;
+    for (int i = n - 1; i >= 0; i--)
+        F[k++] = n + i;
+    S[f++] = k;
+    for (int i = 0; i < n; i++) {
+        int j = (i + 1) % n;
+        F[k++] = i;
+        F[k++] = n + i;
+        F[k++] = n + j;
+        F[k++] = j;
+        S[f++] = k;
+    }
+    return f - 1;
+}
+
 enum { TWIST_N = 96 };
 
 /* An n-gon of radius 1 turned by 90° from z = 0 to z = 1 in one slice:
@@ -837,23 +862,8 @@ static int twisted_prism(iv_shape *s, double extra, long *nref)
         P[TWIST_N + i][1] = round(1024 * sin(b)) / 1024;
         P[TWIST_N + i][2] = 1;
     }
-    int k = 0, f = 0;
-    S[f++] = 0;
-    for (int i = 0; i < TWIST_N; i++)
-        F[k++] = i;
-    S[f++] = k;
-    for (int i = TWIST_N - 1; i >= 0; i--)
-        F[k++] = TWIST_N + i;
-    S[f++] = k;
-    for (int i = 0; i < TWIST_N; i++) {
-        int j = (i + 1) % TWIST_N;
-        F[k++] = i;
-        F[k++] = TWIST_N + i;
-        F[k++] = TWIST_N + j;
-        F[k++] = j;
-        S[f++] = k;
-    }
-    return iv_shape_mesh_budget(s, (const double(*)[3])P, 2 * TWIST_N, F, S, f - 1, extra, nref);
+    int nf = prism_faces(TWIST_N, F, S);
+    return iv_shape_mesh_budget(s, (const double(*)[3])P, 2 * TWIST_N, F, S, nf, extra, nref);
 }
 
 static double grid(double lo, double hi)
@@ -985,24 +995,9 @@ Test(iv_mesh, concave_ends_by_diagonals_match_point_test)
         P[i][2] = 0;
         P[STAR_N + i][2] = 1;
     }
-    int k = 0, f = 0;
-    S[f++] = 0;
-    for (int i = 0; i < STAR_N; i++)
-        F[k++] = i;
-    S[f++] = k;
-    for (int i = STAR_N - 1; i >= 0; i--)
-        F[k++] = STAR_N + i;
-    S[f++] = k;
-    for (int i = 0; i < STAR_N; i++) {
-        int j = (i + 1) % STAR_N;
-        F[k++] = i;
-        F[k++] = STAR_N + i;
-        F[k++] = STAR_N + j;
-        F[k++] = j;
-        S[f++] = k;
-    }
+    int nf = prism_faces(STAR_N, F, S);
     iv_shape s;
-    cr_assert_eq(iv_shape_mesh(&s, (const double(*)[3])P, 2 * STAR_N, F, S, f - 1), 0);
+    cr_assert_eq(iv_shape_mesh(&s, (const double(*)[3])P, 2 * STAR_N, F, S, nf), 0);
     const uint64_t seed = 0x57a2;
     rng_seed(seed);
     int spans = 0;
