@@ -382,70 +382,43 @@ static scad_expr *unary(parser *P)
     return power(P);
 }
 
-static scad_expr *multiplication(parser *P)
+/* How tightly a binary operator binds (OpenSCAD 2021.01's parser.y, all
+ * left associative): || 1, && 2, == != 3, < > <= >= 4, + - 5, * / % 6;
+ * 0 when t is not a binary operator.  *op gets the operator as binary()
+ * takes it: the character, or the token kind. */
+static int binary_priority(const scad_token *t, int *op)
+{
+    static const struct {
+        scad_tok_kind kind;
+        int ch, priority;
+    } ops[] = {
+        {TK_OR, 0, 1},     {TK_AND, 0, 2},    {TK_EQ, 0, 3},     {TK_NE, 0, 3},
+        {TK_CHAR, '<', 4}, {TK_CHAR, '>', 4}, {TK_LE, 0, 4},     {TK_GE, 0, 4},
+        {TK_CHAR, '+', 5}, {TK_CHAR, '-', 5}, {TK_CHAR, '*', 6}, {TK_CHAR, '/', 6},
+        {TK_CHAR, '%', 6},
+    };
+    for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++)
+        if (t->kind == ops[i].kind && (t->kind != TK_CHAR || t->ch == ops[i].ch)) {
+            *op = t->kind == TK_CHAR ? t->ch : (int)t->kind;
+            return ops[i].priority;
+        }
+    *op = 0;
+    return 0;
+}
+
+/* The binary operators that bind tighter than `limit`, over unary operands:
+ * precedence climbing, as Lua's subexpr.  A right operand takes only
+ * operators tighter than its own, so equal ones group to the left; a chain
+ * of equal operators is this loop, not recursion. */
+static scad_expr *binary_chain(parser *P, int limit)
 {
     scad_expr *l = unary(P);
-    while (l && (is_ch(peek(P), '*') || is_ch(peek(P), '/') || is_ch(peek(P), '%'))) {
-        scad_token *t = next(P);
-        l = binary(P, t->ch, t->loc, l, unary(P));
-    }
-    return l;
-}
-
-static scad_expr *addition(parser *P)
-{
-    scad_expr *l = multiplication(P);
-    while (l && (is_ch(peek(P), '+') || is_ch(peek(P), '-'))) {
-        scad_token *t = next(P);
-        l = binary(P, t->ch, t->loc, l, multiplication(P));
-    }
-    return l;
-}
-
-static scad_expr *comparison(parser *P)
-{
-    scad_expr *l = addition(P);
     for (;;) {
-        scad_token *t = peek(P);
-        int op = is_ch(t, '<')      ? '<'
-                 : is_ch(t, '>')    ? '>'
-                 : t->kind == TK_LE ? TK_LE
-                 : t->kind == TK_GE ? TK_GE
-                                    : 0;
-        if (!l || !op) return l;
-        next(P);
-        l = binary(P, op, t->loc, l, addition(P));
-    }
-}
-
-static scad_expr *equality(parser *P)
-{
-    scad_expr *l = comparison(P);
-    while (l && (peek(P)->kind == TK_EQ || peek(P)->kind == TK_NE)) {
+        int op, priority = binary_priority(peek(P), &op);
+        if (!l || priority <= limit) return l;
         scad_token *t = next(P);
-        l = binary(P, t->kind, t->loc, l, comparison(P));
+        l = binary(P, op, t->loc, l, binary_chain(P, priority));
     }
-    return l;
-}
-
-static scad_expr *logic_and(parser *P)
-{
-    scad_expr *l = equality(P);
-    while (l && peek(P)->kind == TK_AND) {
-        scad_token *t = next(P);
-        l = binary(P, TK_AND, t->loc, l, equality(P));
-    }
-    return l;
-}
-
-static scad_expr *logic_or(parser *P)
-{
-    scad_expr *l = logic_and(P);
-    while (l && peek(P)->kind == TK_OR) {
-        scad_token *t = next(P);
-        l = binary(P, TK_OR, t->loc, l, logic_and(P));
-    }
-    return l;
 }
 
 /* let/assert/echo(args) expr, and function(params) expr. */
@@ -485,7 +458,7 @@ static scad_expr *expr(parser *P)
     } else if (t->kind == TK_ECHO) {
         e = prefixed(P, EX_ECHO, 1);
     } else {
-        e = logic_or(P);
+        e = binary_chain(P, 0);
         if (e && is_ch(peek(P), '?')) {
             scad_token *q = next(P);
             scad_expr *c = new_expr(P, EX_TERNARY, q->loc);
