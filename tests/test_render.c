@@ -338,8 +338,7 @@ Test(render_camera, cover_rectangle_holds_every_ray_that_meets_the_box)
             cr_expect(!c.ortho);
             int behind = 0;
             for (int k = 0; k < 8; k++) {
-                double p[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1],
-                               k & 4 ? hi[2] : lo[2]};
+                double p[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
                 double f = 0;
                 for (int i = 0; i < 3; i++)
                     f += (p[i] - c.eye[i]) * c.forward[i];
@@ -365,15 +364,18 @@ Test(render_camera, cover_rectangle_holds_every_ray_that_meets_the_box)
                 }
                 if (px >= rect[0] && px <= rect[1] && py >= rect[2] && py <= rect[3]) continue;
                 outside++;
-                cr_assert(!hit, "trial %d: the ray of (%g, %g) meets the box outside [%g %g]x[%g %g]",
+                cr_assert(!hit,
+                          "trial %d: the ray of (%g, %g) meets the box outside [%g %g]x[%g %g]",
                           trial, px, py, rect[0], rect[1], rect[2], rect[3]);
             }
         /* and tight: a rectangle within the sampled range lies within a few
          * pixels of the hits — the margin, plus the sampling step and the
          * thin tips of the box's outline that the half-pixel grid misses */
         if (rect[0] > -W && rect[1] < 2 * W && rect[2] > -H && rect[3] < 2 * H) {
-            cr_expect(hx0 - rect[0] <= 3, "trial %d left %g %g ortho %d", trial, hx0, rect[0], c.ortho);
-            cr_expect(rect[1] - hx1 <= 3, "trial %d right %g %g ortho %d", trial, hx1, rect[1], c.ortho);
+            cr_expect(hx0 - rect[0] <= 3, "trial %d left %g %g ortho %d", trial, hx0, rect[0],
+                      c.ortho);
+            cr_expect(rect[1] - hx1 <= 3, "trial %d right %g %g ortho %d", trial, hx1, rect[1],
+                      c.ortho);
             cr_expect(hy0 - rect[2] <= 3, "trial %d top", trial);
             cr_expect(rect[3] - hy1 <= 3, "trial %d bottom", trial);
             tight++;

@@ -175,8 +175,8 @@ static void ray_init(ray *r, const csg_scene *s, const double o[3], const double
 static frame *frames(ray *r)
 {
     if (!r->fr)
-        r->fr = iv_arena_alloc(r->a, (size_t)(r->s->max_depth > 0 ? r->s->max_depth : 1) *
-                                         sizeof *r->fr);
+        r->fr = iv_arena_alloc(r->a,
+                               (size_t)(r->s->max_depth > 0 ? r->s->max_depth : 1) * sizeof *r->fr);
     return r->fr;
 }
 

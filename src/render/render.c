@@ -65,11 +65,11 @@ typedef struct job {
     int jitter;   /* stratified samples jittered (stochastic features on) */
     render_light lights[RENDER_MAX_LIGHTS];
     int nlights;
-    int light_n;       /* shadow rays per light: light_n² */
-    int max_depth;     /* secondary rays */
-    double eps;        /* offset of secondary ray origins */
-    double focus;      /* thin lens */
-    int first_hit;     /* csg_trace_first may stand in for the full lists */
+    int light_n;   /* shadow rays per light: light_n² */
+    int max_depth; /* secondary rays */
+    double eps;    /* offset of secondary ray origins */
+    double focus;  /* thin lens */
+    int first_hit; /* csg_trace_first may stand in for the full lists */
     /* Primary samples outside cover (x0, x1, y0, y1) see the background
      * alone (render_raygen_cover); covered: no such rectangle is known. */
     double cover[4];
@@ -519,7 +519,7 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
                     double jx = J->jitter ? rng_next(&wk->g) : 0.5;
                     double jy = J->jitter ? rng_next(&wk->g) : 0.5;
                     double o[3], d[3], tmin, tmax, c[3], px = x + (i + jx) / s,
-                                                          py = y + (j + jy) / s;
+                                                         py = y + (j + jy) / s;
                     if (!J->covered && !(px >= J->cover[0] && px <= J->cover[1] &&
                                          py >= J->cover[2] && py <= J->cover[3])) {
                         /* what trace_ray gives a ray that meets nothing */
