@@ -196,6 +196,11 @@ int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes,
  * tolerance; coplanar input has no volume).  Returns 0, or -1 when the hull
  * is flat or empty, or out of memory. */
 int iv_shape_hull(iv_shape *s, const double (*pts)[3], int n);
+/* The tolerance of a convex hull of P[0..n) (iv_shape_hull and
+ * src/scad/hull3d.c both, so the same points give the same solid): 1e-11
+ * of the larger of the points' extent and their largest coordinate.
+ * Returns 0, or -1 when a coordinate is not finite. */
+int iv_hull_eps(const double (*P)[3], int n, double *eps);
 /* The tetrahedron a convex hull of P[0..n) starts from (iv_shape_hull and
  * src/scad/hull3d.c both): the point of least x, the point farthest from
  * it, the farthest from their line and the farthest from their plane

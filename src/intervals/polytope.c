@@ -229,9 +229,11 @@ int iv_hull_tetrahedron(const double (*P)[3], int n, double eps, int ids[4], int
     return 0;
 }
 
-int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
+/* Distances below eps count as on the plane: a few thousand ulps of the
+ * coordinates, far above the rounding of a plane test, far below any
+ * feature OpenSCAD's grid (1e-6 mm at its default snap) keeps. */
+int iv_hull_eps(const double (*P)[3], int n, double *eps)
 {
-    if (n < 4) return -1;
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int i = 0; i < n; i++)
         for (int k = 0; k < 3; k++) {
@@ -243,10 +245,14 @@ int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
     for (int k = 0; k < 3; k++)
         scale = fmax(scale, fmax(fabs(lo[k]), fabs(hi[k])));
     scale = fmax(scale, fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2])));
-    /* Distances below eps count as on the plane: a few thousand ulps of the
-     * coordinates, far above the rounding of a plane test, far below any
-     * feature OpenSCAD's grid (1e-6 mm at its default snap) keeps. */
-    const double eps = 1e-11 * scale + 1e-300;
+    *eps = 1e-11 * scale + 1e-300;
+    return 0;
+}
+
+int iv_shape_hull(iv_shape *s, const double (*P)[3], int n)
+{
+    double eps;
+    if (n < 4 || iv_hull_eps(P, n, &eps) != 0) return -1;
     int ids[4], t[4][3];
     if (iv_hull_tetrahedron(P, n, eps, ids, t) != 0) return -1;
     int cap = 64, nf = 0;

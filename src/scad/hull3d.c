@@ -631,18 +631,8 @@ done:
 int scad_hull3d(iv_shape *s, const double (*P)[3], int n)
 {
     if (n < 4) return SCAD_HULL_FLAT;
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < n; i++)
-        for (int k = 0; k < 3; k++) {
-            if (!isfinite(P[i][k])) return SCAD_HULL_BAD_INPUT;
-            lo[k] = fmin(lo[k], P[i][k]);
-            hi[k] = fmax(hi[k], P[i][k]);
-        }
-    double scale = 0;
-    for (int k = 0; k < 3; k++)
-        scale = fmax(scale, fmax(fabs(lo[k]), fabs(hi[k])));
-    scale = fmax(scale, fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2])));
-    const double eps = 1e-11 * scale + 1e-300; /* polytope.c's tolerance: the same solid */
+    double eps; /* polytope.c's tolerance: the same solid */
+    if (iv_hull_eps(P, n, &eps) != 0) return SCAD_HULL_BAD_INPUT;
     int *idx = NULL, m = 0, *sub = NULL, ms = 0;
     int rc = quickhull(P, P, n, eps, s, &idx, &m);
     /* A failed step (rounding in nearly coplanar input): again over the
