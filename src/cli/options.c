@@ -567,15 +567,23 @@ void cli_print_error(const cli_options *o, const char *msg)
     fprintf(stderr, "rayscad: error: %s%s\n", msg, cli_memory_note(o, msg, note, sizeof note));
 }
 
+int cli_data_limit_lift(struct rlimit *was)
+{
+    if (getrlimit(RLIMIT_DATA, was) != 0 || was->rlim_cur == was->rlim_max) return 0;
+    struct rlimit open = *was;
+    open.rlim_cur = was->rlim_max;
+    return setrlimit(RLIMIT_DATA, &open) == 0;
+}
+
+void cli_data_limit_restore(int lifted, const struct rlimit *was)
+{
+    if (lifted) setrlimit(RLIMIT_DATA, was);
+}
+
 void cli_load_image_adapter(void)
 {
-    struct rlimit was, open;
-    int lifted = getrlimit(RLIMIT_DATA, &was) == 0 && was.rlim_cur != was.rlim_max;
-    if (lifted) {
-        open = was;
-        open.rlim_cur = was.rlim_max;
-        lifted = setrlimit(RLIMIT_DATA, &open) == 0;
-    }
+    struct rlimit was;
+    int lifted = cli_data_limit_lift(&was);
     (void)io_image_load(NULL, 0); /* a failure shows again at the write */
-    if (lifted) setrlimit(RLIMIT_DATA, &was);
+    cli_data_limit_restore(lifted, &was);
 }

@@ -7,6 +7,8 @@
 
 #include "../render/render.h"
 
+#include <sys/resource.h>
+
 enum { CLI_MAX_DEFINES = 256 };
 
 typedef struct cli_options {
@@ -91,6 +93,12 @@ const char *cli_memory_note(const cli_options *o, const char *msg, char *buf, si
  * must not meet --max-memory, whatever the model holds at that moment.
  * Call it before the adapter would be loaded under the limit. */
 void cli_load_image_adapter(void);
+
+/* Lift the soft data limit (--max-memory) to the hard one around work the
+ * limit must not see: returns 1 when it was lifted, keeping the old limit
+ * in *was for cli_data_limit_restore, which puts it back. */
+int cli_data_limit_lift(struct rlimit *was);
+void cli_data_limit_restore(int lifted, const struct rlimit *was);
 
 /* The --help text. */
 extern const char cli_usage[];

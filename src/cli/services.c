@@ -169,7 +169,7 @@ static int read_image(void *ud, const char *path, int *width, int *height, int *
     (void)ud;
     cli_load_image_adapter();
     unsigned long w, h;
-    struct rlimit was, open;
+    struct rlimit was;
     if (png_size(path, &w, &h) != 0 || getrlimit(RLIMIT_DATA, &was) != 0 ||
         was.rlim_cur == was.rlim_max)
         return io_image_read(path, width, height, channels, pixels, err, errlen);
@@ -179,11 +179,9 @@ static int read_image(void *ud, const char *path, int *width, int *height, int *
         *pixels = NULL;
         return -1;
     }
-    open = was;
-    open.rlim_cur = was.rlim_max;
-    int lifted = setrlimit(RLIMIT_DATA, &open) == 0;
+    int lifted = cli_data_limit_lift(&was);
     int rc = io_image_read(path, width, height, channels, pixels, err, errlen);
-    if (lifted) setrlimit(RLIMIT_DATA, &was);
+    cli_data_limit_restore(lifted, &was);
     return rc;
 }
 
