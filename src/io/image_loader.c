@@ -11,6 +11,17 @@
  * stays one self-contained file.  Meshes, --measure, .echo, .csg and .pov
  * never load it.
  *
+ * Most of that time is symbol lookup: a dlopen relocates every library it
+ * brings in against one search list, the adapter's breadth-first dependency
+ * order, so a library deep in that order walks past a couple of hundred
+ * others' hash tables for each of its own symbols.  Opening the libraries
+ * one by one first, leaves first (the list the build took from ldd, embedded
+ * beside the adapter as RAYSCAD_IMAGE_DEPS), relocates each against its own
+ * short list instead: 0.37 s → 0.20 s for the whole load.  Those opens only
+ * warm the loader; any of them may fail (a library moved, or one that
+ * depends on a symbol it does not link), and the adapter's own dlopen then
+ * finds or loads the rest in the usual way and reports any real failure.
+ *
  * Loading in the background while the model renders was measured and does
  * not pay: the render threads then run 5–8× slower (the loader's hundreds of
  * mmap and mprotect calls stall their page faults), and the whole process
@@ -41,6 +52,14 @@ __asm__(".section .rodata\n"
         ".previous\n");
 extern const unsigned char rayscad_image_so[], rayscad_image_so_end[];
 #endif
+#ifdef RAYSCAD_IMAGE_DEPS
+__asm__(".section .rodata\n"
+        "rayscad_image_deps:\n"
+        ".incbin \"" RAYSCAD_IMAGE_DEPS "\"\n"
+        ".byte 0\n"
+        ".previous\n");
+extern const char rayscad_image_deps[];
+#endif
 
 typedef int (*write_fn)(const char *, int, int, int, const float *, char *, size_t);
 typedef int (*read_fn)(const char *, int *, int *, int *, float **, char *, size_t);
@@ -54,10 +73,31 @@ static struct {
 } fn;
 static char load_err[256]; /* empty when the adapter loaded */
 
+/* Open the adapter's libraries leaves first, one path per line of the
+ * embedded list, ignoring failures (see the top of the file).  The handles
+ * are kept: the adapter holds the libraries for the life of the process. */
+static void preload(void)
+{
+#ifdef RAYSCAD_IMAGE_DEPS
+    for (const char *p = rayscad_image_deps; *p;) {
+        size_t n = strcspn(p, "\n");
+        char path[4096];
+        if (n > 0 && n < sizeof path) {
+            memcpy(path, p, n);
+            path[n] = 0;
+            if (!dlopen(path, RTLD_LAZY | RTLD_LOCAL)) (void)dlerror();
+        }
+        p += n;
+        if (*p) p++;
+    }
+#endif
+}
+
 /* dlopen the embedded adapter; fills fn or load_err.  Runs once. */
 static void load(void)
 {
 #ifdef RAYSCAD_IMAGE_SO
+    preload();
     const unsigned char *p = rayscad_image_so;
     size_t left = (size_t)(rayscad_image_so_end - rayscad_image_so);
     int fd = memfd_create("rayscad-image.so", MFD_CLOEXEC);
