@@ -37,8 +37,25 @@ typedef struct csg_fnode {
     double lo[3], hi[3]; /* world AABB, padded outward; may be infinite */
     int32_t next;
     int32_t prim; /* leaf: primitive index; op: -1 */
+    int32_t wide; /* union: its first csg_wide record; other nodes: -1 */
     uint8_t op;   /* csg_op, or FNODE_LEAF */
 } csg_fnode;
+
+/* A union's operands, four to a record, as csg_trace_first reads them: the
+ * boxes axis by axis, so that one ray tests four at once, and what a popped
+ * operand needs without reading its csg_fnode (`ref`: a union's first
+ * record, -2 - prim for a leaf, -1 for an intersection or a difference).  A
+ * union of more than four operands has a chain of records, its operands in
+ * order.  Lanes from n on are unused and never read. */
+enum { WIDE = 4 };
+
+typedef struct csg_wide {
+    double lo[3][WIDE], hi[3][WIDE]; /* lo[k][i]: operand i's box on axis k */
+    int32_t node[WIDE];              /* the operands' node indices */
+    int32_t ref[WIDE];
+    int32_t n;    /* operands in this record, 1 to WIDE */
+    int32_t more; /* the union's next record, or -1 */
+} csg_wide;
 
 /* What the per-ray loop reads for a primitive. */
 typedef struct csg_prim {
@@ -59,14 +76,32 @@ struct csg_scene {
     csg_prim *prims;
     csg_prim_cold *cold;
     int nprims;
+    csg_wide *wide; /* the unions' operand records (csg_fnode.wide) */
+    int nwide;
     int32_t *roots; /* node index of each root, or -1 when empty */
     int nroots;
     int max_depth; /* deepest root, in nodes; sizes the trace's stack */
     int cull;      /* 1: test node bounds (0 only in tests, via csg_scene_set_cull) */
+    int avx;       /* 1: csg_trace_first tests csg_wide boxes with AVX (the CPU has it) */
 };
 
 /* Testing hook: turn bounds culling off (0) or on (1) to check that culling
  * never changes a result.  Not thread-safe against concurrent traces. */
 void csg_scene_set_cull(csg_scene *s, int on);
+
+/* Testing hook: test csg_wide boxes with AVX (1, where the CPU has it) or
+ * with scalar code (0), to check that the two agree bit for bit.  Returns
+ * whether AVX is now used.  Not thread-safe against concurrent traces. */
+int csg_scene_set_avx(csg_scene *s, int on);
+
+/* Testing hook: csg_trace_first's box test of record w's operands (with
+ * AVX or not, as csg_scene_set_avx chose) for the ray o + t·d over
+ * [t0, t1]: bit i set when operand i's box is met, te[i] where the ray
+ * enters it (defined for set bits).  The arena is only read. */
+unsigned csg_scene_wide_entry(const csg_scene *s, int32_t w, const double o[3], const double d[3],
+                              double t0, double t1, iv_arena *a, double te[WIDE]);
+
+/* Whether this CPU and OS run AVX code (csg_trace_first's box tests). */
+int csg_cpu_has_avx(void);
 
 #endif

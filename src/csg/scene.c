@@ -420,6 +420,7 @@ static void flatten(csg_scene *s, csg_node *root, int at, int *prim)
         memcpy(f->lo, x->lo, sizeof f->lo);
         memcpy(f->hi, x->hi, sizeof f->hi);
         f->next = at + x->size;
+        f->wide = -1;
         if (x->is_leaf) {
             int p = (*prim)++;
             f->op = FNODE_LEAF;
@@ -448,6 +449,66 @@ static void flatten(csg_scene *s, csg_node *root, int at, int *prim)
     }
 }
 
+/* The unions' operand records (csg_internal.h), from the flat nodes: a
+ * first pass numbers each union's records, so that the second can name a
+ * union operand's.  Returns 0, or -1 when out of memory. */
+static int build_wide(csg_scene *s)
+{
+    csg_fnode *nodes = s->nodes;
+    int nw = 0;
+    for (int i = 0; i < s->nnodes; i++) {
+        if (nodes[i].op != CSG_OP_UNION) continue;
+        int n = 0;
+        for (int32_t c = i + 1; c < nodes[i].next; c = nodes[c].next)
+            n++;
+        nodes[i].wide = nw;
+        nw += (n + WIDE - 1) / WIDE;
+    }
+    s->wide = malloc((size_t)(nw ? nw : 1) * sizeof *s->wide);
+    if (!s->wide) return -1;
+    s->nwide = nw;
+    for (int i = 0; i < s->nnodes; i++) {
+        if (nodes[i].op != CSG_OP_UNION) continue;
+        csg_wide *w = NULL;
+        int32_t at = nodes[i].wide;
+        for (int32_t c = i + 1; c < nodes[i].next; c = nodes[c].next) {
+            if (!w || w->n == WIDE) {
+                if (w) w->more = at;
+                w = &s->wide[at++];
+                for (int k = 0; k < 3; k++)
+                    for (int j = 0; j < WIDE; j++) { /* an empty box in unused lanes */
+                        w->lo[k][j] = INFINITY;
+                        w->hi[k][j] = -INFINITY;
+                    }
+                memset(w->node, 0, sizeof w->node);
+                memset(w->ref, 0, sizeof w->ref);
+                w->n = 0;
+                w->more = -1;
+            }
+            const csg_fnode *f = &nodes[c];
+            int lane = w->n++;
+            for (int k = 0; k < 3; k++) {
+                w->lo[k][lane] = f->lo[k];
+                w->hi[k][lane] = f->hi[k];
+            }
+            w->node[lane] = c;
+            w->ref[lane] = f->op == FNODE_LEAF     ? -2 - f->prim
+                           : f->op == CSG_OP_UNION ? f->wide
+                                                   : -1;
+        }
+    }
+    return 0;
+}
+
+int csg_cpu_has_avx(void)
+{
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+    return __builtin_cpu_supports("avx") != 0;
+#else
+    return 0;
+#endif
+}
+
 csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
 {
     csg_scene *s = calloc(1, sizeof *s);
@@ -461,6 +522,7 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
     }
     s->nroots = n;
     s->cull = 1;
+    s->avx = csg_cpu_has_avx();
     long nodes = 0, prims = 0;
     for (int r = 0; r < n; r++) {
         roots[r] = simplify(roots[r]);
@@ -503,6 +565,11 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
     }
     s->nnodes = at;
     s->nprims = prim;
+    if (build_wide(s) != 0) {
+        csg_scene_free(s);
+        if (err && errlen) snprintf(err, errlen, "out of memory committing the scene");
+        return NULL;
+    }
     return s;
 }
 
@@ -514,6 +581,7 @@ void csg_scene_free(csg_scene *s)
     free(s->nodes);
     free(s->prims);
     free(s->cold);
+    free(s->wide);
     free(s->roots);
     free(s);
 }
@@ -521,6 +589,12 @@ void csg_scene_free(csg_scene *s)
 void csg_scene_set_cull(csg_scene *s, int on)
 {
     s->cull = on;
+}
+
+int csg_scene_set_avx(csg_scene *s, int on)
+{
+    s->avx = on && csg_cpu_has_avx();
+    return s->avx;
 }
 
 int csg_scene_root_count(const csg_scene *s)

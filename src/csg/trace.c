@@ -297,20 +297,136 @@ int csg_trace(const csg_scene *s, int root, const double o[3], const double d[3]
  * double above t*, so a span entering at t* survives).  A clip only changes
  * what lies at or beyond hi, and eval's invariant makes each result the
  * node's true list clipped, so the first boundary found is exactly the full
- * trace's.  A node whose box entry lies beyond that window is skipped. */
+ * trace's.  A node whose box entry lies beyond that window is skipped.
+ *
+ * A union's operands come from its csg_wide records (scene.c), four boxes
+ * tested at once, with AVX where the CPU has it; both tests do box_entry's
+ * operations in box_entry's order, so every entry is its bit for bit, and a
+ * stack entry carries what its node's evaluation needs (`ref`) without
+ * reading the node. */
 
 typedef struct pending {
-    int32_t node;
     double te; /* where the ray enters the node's box (tmin when not culling) */
+    int32_t node;
+    int32_t ref; /* as csg_wide's */
 } pending;
 
+/* Which operands of record w the segment [t0, t1] meets (bit i for lane i),
+ * and where each enters its box (te[i]): box_entry on each lane, the same
+ * operations in the same order, so every te is box_entry's bit for bit. */
+static unsigned wide_entry(const ray *r, const csg_wide *w, double t0, double t1, double te[WIDE])
+{
+    unsigned hit = 0;
+    for (int i = 0; i < w->n; i++) {
+        double a = t0, b = t1;
+        int in = 1;
+        for (int k = 0; k < 3 && r->cull; k++) {
+            if (r->d[k] == 0) {
+                if (r->o[k] < w->lo[k][i] || r->o[k] > w->hi[k][i]) in = 0;
+                continue;
+            }
+            double ta = ((r->neg[k] ? w->hi[k][i] : w->lo[k][i]) - r->o[k]) * r->inv[k];
+            double tb = ((r->neg[k] ? w->lo[k][i] : w->hi[k][i]) - r->o[k]) * r->inv[k];
+            a = ta > a ? ta : a;
+            b = tb < b ? tb : b;
+        }
+        te[i] = a;
+        hit |= (unsigned)(in && a <= b) << i;
+    }
+    return hit;
+}
+
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define HAVE_AVX_PATH 1
+
+/* wide_entry with the four lanes at once.  maxpd(x, y) is x > y ? x : y
+ * and minpd(x, y) is x < y ? x : y, NaN operands included, so with the
+ * slab product first they are box_entry's ternaries exactly; the flat axes'
+ * test is !(o < lo) && !(o > hi), unordered compares, as box_entry_flat's
+ * rejection is o < lo || o > hi. */
+__attribute__((target("avx"))) static unsigned wide_entry_avx(const ray *r, const csg_wide *w,
+                                                              double t0, double t1, double te[WIDE])
+{
+    __m256d a = _mm256_set1_pd(t0), b = _mm256_set1_pd(t1);
+    __m256d in = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    for (int k = 0; k < 3; k++) {
+        __m256d lo = _mm256_loadu_pd(w->lo[k]), hi = _mm256_loadu_pd(w->hi[k]);
+        __m256d o = _mm256_set1_pd(r->o[k]);
+        if (r->d[k] == 0) {
+            in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(o, lo, _CMP_NLT_UQ),
+                                                 _mm256_cmp_pd(o, hi, _CMP_NGT_UQ)));
+            continue;
+        }
+        __m256d inv = _mm256_set1_pd(r->inv[k]);
+        __m256d ta = _mm256_mul_pd(_mm256_sub_pd(r->neg[k] ? hi : lo, o), inv);
+        __m256d tb = _mm256_mul_pd(_mm256_sub_pd(r->neg[k] ? lo : hi, o), inv);
+        a = _mm256_max_pd(ta, a);
+        b = _mm256_min_pd(tb, b);
+    }
+    _mm256_storeu_pd(te, a);
+    in = _mm256_and_pd(in, _mm256_cmp_pd(a, b, _CMP_LE_OQ));
+    return (unsigned)_mm256_movemask_pd(in) & ((1u << w->n) - 1);
+}
+#endif
+
+unsigned csg_scene_wide_entry(const csg_scene *s, int32_t w, const double o[3], const double d[3],
+                              double t0, double t1, iv_arena *a, double te[WIDE])
+{
+    ray r;
+    ray_init(&r, s, o, d, a);
+#ifdef HAVE_AVX_PATH
+    if (s->avx && r.cull) return wide_entry_avx(&r, &s->wide[w], t0, t1, te);
+#endif
+    return wide_entry(&r, &s->wide[w], t0, t1, te);
+}
+
+/* Whether entry x comes off the stack after y: a farther box entry, or the
+ * same and a later node.  Entries are never NaN (box_entry's t0 starts at
+ * tmin and a NaN slab leaves it), and no two hold one node, so this is a
+ * strict total order and any correct sort gives the one result. */
+static inline int later(const pending *x, const pending *y)
+{
+    return x->te > y->te || (x->te == y->te && x->node > y->node);
+}
+
+/* Put the later of v[i], v[j] (i < j) at i. */
+static inline void order2(pending *v, int i, int j)
+{
+    pending x = v[i], y = v[j];
+    int sw = later(&y, &x);
+    v[i] = sw ? y : x;
+    v[j] = sw ? x : y;
+}
+
 /* Children sorted in place with the nearest box entry last (it is popped
- * first), the lower index last among equal entries.  Insertion sort: a
- * grouped union has 2 to 4 operands; past 32 (an ungrouped union, only when
- * grouping ran out of memory) the order is left as pushed, reversed so that
- * pre-order comes off first — any order is correct, only slower. */
+ * first), the lower index last among equal entries.  Sorting networks for
+ * a grouped union's 2 to 4 operands, insertion sort up to 32; past that (an
+ * ungrouped union, only when grouping ran out of memory) the order is left
+ * as pushed, reversed so that pre-order comes off first — any order is
+ * correct, only slower. */
 static void sort_pending(pending *v, int n)
 {
+    switch (n) {
+    case 0:
+    case 1:
+        return;
+    case 2:
+        order2(v, 0, 1);
+        return;
+    case 3:
+        order2(v, 0, 1);
+        order2(v, 1, 2);
+        order2(v, 0, 1);
+        return;
+    case 4:
+        order2(v, 0, 1);
+        order2(v, 2, 3);
+        order2(v, 0, 2);
+        order2(v, 1, 3);
+        order2(v, 1, 2);
+        return;
+    }
     if (n > 32) {
         for (int i = 0, j = n - 1; i < j; i++, j--) {
             pending t = v[i];
@@ -322,7 +438,7 @@ static void sort_pending(pending *v, int n)
     for (int i = 1; i < n; i++) {
         pending x = v[i];
         int j = i;
-        while (j > 0 && (v[j - 1].te < x.te || (v[j - 1].te == x.te && v[j - 1].node < x.node))) {
+        while (j > 0 && later(&x, &v[j - 1])) {
             v[j] = v[j - 1];
             j--;
         }
@@ -337,16 +453,21 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
     ray r;
     ray_init(&r, s, o, d, a);
     const csg_fnode *nodes = s->nodes;
-    if (nodes[s->roots[root]].op != CSG_OP_UNION) { /* the frontier is the root alone */
+    const csg_fnode *rn = &nodes[s->roots[root]];
+    if (rn->op != CSG_OP_UNION) { /* the frontier is the root alone */
         int m = eval(&r, s->roots[root], tmin, tmax, 0);
         if (m > 0) *hit = r.sp[0].enter;
         return m < 0 ? -1 : m > 0;
     }
     double te;
-    if (!box_entry(&r, &nodes[s->roots[root]], tmin, tmax, &te)) return 0;
+    if (!box_entry(&r, rn, tmin, tmax, &te)) return 0;
+    unsigned (*entry)(const ray *, const csg_wide *, double, double, double *) = wide_entry;
+#ifdef HAVE_AVX_PATH
+    if (s->avx && r.cull) entry = wide_entry_avx;
+#endif
     pending local[64], *st = local; /* to the arena past 64 */
     int cap = 64, sn = 0;
-    st[sn++] = (pending){s->roots[root], te};
+    st[sn++] = (pending){te, s->roots[root], rn->wide};
     int found = 0;
     double bt = 0;  /* the best boundary's t … */
     int32_t bk = 0; /* … and the frontier node it came from */
@@ -354,14 +475,13 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
         pending p = st[--sn];
         double hi = tmax;
         if (found) {
-            if (p.te > bt || (p.te == bt && p.node > bk)) continue;
+            if (later(&p, &(pending){bt, bk, 0})) continue;
             /* bt < tmax (a clipped list's first entry), so hi <= tmax. */
             hi = p.node < bk ? nextafter(bt, INFINITY) : bt;
         }
-        const csg_fnode *n = &nodes[p.node];
-        if (n->op != CSG_OP_UNION) {
-            int m = n->op == FNODE_LEAF ? trace_leaf(&r, n->prim, tmin, hi, 0)
-                                        : eval(&r, p.node, tmin, hi, 0);
+        if (p.ref < 0) {
+            int m = p.ref == -1 ? eval(&r, p.node, tmin, hi, 0)
+                                : trace_leaf(&r, -2 - p.ref, tmin, hi, 0);
             if (m < 0) return -1;
             if (m > 0) { /* inside the window, so it beats the best */
                 *hit = r.sp[0].enter;
@@ -372,16 +492,19 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
             continue;
         }
         int from = sn;
-        for (int32_t c = p.node + 1; c < n->next; c = nodes[c].next) {
-            if (!box_entry(&r, &nodes[c], tmin, hi, &te)) continue;
-            if (sn == cap) {
+        for (int32_t k = p.ref; k >= 0; k = s->wide[k].more) {
+            const csg_wide *w = &s->wide[k];
+            double t[WIDE];
+            unsigned m = entry(&r, w, tmin, hi, t);
+            if (sn + WIDE > cap) {
                 pending *v = iv_arena_alloc(a, 2 * (size_t)cap * sizeof *v);
                 if (!v) return -1;
                 memcpy(v, st, (size_t)sn * sizeof *v);
                 st = v;
                 cap *= 2;
             }
-            st[sn++] = (pending){c, te};
+            for (int i = 0; i < w->n; i++)
+                if (m >> i & 1) st[sn++] = (pending){t[i], w->node[i], w->ref[i]};
         }
         sort_pending(st + from, sn - from);
     }
