@@ -818,7 +818,7 @@ Test(csg_trace, wide_entry_matches_box_test)
             d[k] = rng_int(4) ? rng_uniform(-1, 1) : tiny[rng_int(4)];
             if (rng_int(3) == 0) { /* on a plane of some lane's box */
                 int i = rng_int(w->n);
-                o[k] = rng_int(2) ? w->lo[k][i] : w->hi[k][i];
+                o[k] = w->box[rng_int(2)][k][i];
                 if (isinf(o[k])) o[k] = 0;
             }
         }
@@ -838,7 +838,7 @@ Test(csg_trace, wide_entry_matches_box_test)
             csg_scene_node_info info;
             csg_scene_node_get(s, w->node[i], &info);
             for (int k = 0; k < 3; k++) {
-                cr_assert(w->lo[k][i] == info.lo[k] && w->hi[k][i] == info.hi[k]);
+                cr_assert(w->box[0][k][i] == info.lo[k] && w->box[1][k][i] == info.hi[k]);
                 if (o[k] == info.lo[k] || o[k] == info.hi[k])
                     nan_slabs += d[k] != 0 && !isnormal(d[k]);
             }

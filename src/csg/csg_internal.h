@@ -50,7 +50,7 @@ typedef struct csg_fnode {
 enum { WIDE = 4 };
 
 typedef struct csg_wide {
-    double lo[3][WIDE], hi[3][WIDE]; /* lo[k][i]: operand i's box on axis k */
+    double box[2][3][WIDE]; /* box[0][k][i], box[1][k][i]: operand i's lo, hi on axis k */
     int32_t node[WIDE];              /* the operands' node indices */
     int32_t ref[WIDE];
     int32_t n;    /* operands in this record, 1 to WIDE */

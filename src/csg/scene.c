@@ -477,8 +477,8 @@ static int build_wide(csg_scene *s)
                 w = &s->wide[at++];
                 for (int k = 0; k < 3; k++)
                     for (int j = 0; j < WIDE; j++) { /* an empty box in unused lanes */
-                        w->lo[k][j] = INFINITY;
-                        w->hi[k][j] = -INFINITY;
+                        w->box[0][k][j] = INFINITY;
+                        w->box[1][k][j] = -INFINITY;
                     }
                 memset(w->node, 0, sizeof w->node);
                 memset(w->ref, 0, sizeof w->ref);
@@ -488,8 +488,8 @@ static int build_wide(csg_scene *s)
             const csg_fnode *f = &nodes[c];
             int lane = w->n++;
             for (int k = 0; k < 3; k++) {
-                w->lo[k][lane] = f->lo[k];
-                w->hi[k][lane] = f->hi[k];
+                w->box[0][k][lane] = f->lo[k];
+                w->box[1][k][lane] = f->hi[k];
             }
             w->node[lane] = c;
             w->ref[lane] = f->op == FNODE_LEAF     ? -2 - f->prim

@@ -314,19 +314,21 @@ typedef struct pending {
 /* Which operands of record w the segment [t0, t1] meets (bit i for lane i),
  * and where each enters its box (te[i]): box_entry on each lane, the same
  * operations in the same order, so every te is box_entry's bit for bit. */
-static unsigned wide_entry(const ray *r, const csg_wide *w, double t0, double t1, double te[WIDE])
+static unsigned wide_entry(const void *ray_, const csg_wide *w, double t0, double t1,
+                           double te[WIDE])
 {
+    const ray *r = ray_;
     unsigned hit = 0;
     for (int i = 0; i < w->n; i++) {
         double a = t0, b = t1;
         int in = 1;
         for (int k = 0; k < 3 && r->cull; k++) {
             if (r->d[k] == 0) {
-                if (r->o[k] < w->lo[k][i] || r->o[k] > w->hi[k][i]) in = 0;
+                if (r->o[k] < w->box[0][k][i] || r->o[k] > w->box[1][k][i]) in = 0;
                 continue;
             }
-            double ta = ((r->neg[k] ? w->hi[k][i] : w->lo[k][i]) - r->o[k]) * r->inv[k];
-            double tb = ((r->neg[k] ? w->lo[k][i] : w->hi[k][i]) - r->o[k]) * r->inv[k];
+            double ta = (w->box[r->neg[k]][k][i] - r->o[k]) * r->inv[k];
+            double tb = (w->box[!r->neg[k]][k][i] - r->o[k]) * r->inv[k];
             a = ta > a ? ta : a;
             b = tb < b ? tb : b;
         }
@@ -334,51 +336,6 @@ static unsigned wide_entry(const ray *r, const csg_wide *w, double t0, double t1
         hit |= (unsigned)(in && a <= b) << i;
     }
     return hit;
-}
-
-#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#define HAVE_AVX_PATH 1
-
-/* wide_entry with the four lanes at once.  maxpd(x, y) is x > y ? x : y
- * and minpd(x, y) is x < y ? x : y, NaN operands included, so with the
- * slab product first they are box_entry's ternaries exactly; the flat axes'
- * test is !(o < lo) && !(o > hi), unordered compares, as box_entry_flat's
- * rejection is o < lo || o > hi. */
-__attribute__((target("avx"))) static unsigned wide_entry_avx(const ray *r, const csg_wide *w,
-                                                              double t0, double t1, double te[WIDE])
-{
-    __m256d a = _mm256_set1_pd(t0), b = _mm256_set1_pd(t1);
-    __m256d in = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    for (int k = 0; k < 3; k++) {
-        __m256d lo = _mm256_loadu_pd(w->lo[k]), hi = _mm256_loadu_pd(w->hi[k]);
-        __m256d o = _mm256_set1_pd(r->o[k]);
-        if (r->d[k] == 0) {
-            in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(o, lo, _CMP_NLT_UQ),
-                                                 _mm256_cmp_pd(o, hi, _CMP_NGT_UQ)));
-            continue;
-        }
-        __m256d inv = _mm256_set1_pd(r->inv[k]);
-        __m256d ta = _mm256_mul_pd(_mm256_sub_pd(r->neg[k] ? hi : lo, o), inv);
-        __m256d tb = _mm256_mul_pd(_mm256_sub_pd(r->neg[k] ? lo : hi, o), inv);
-        a = _mm256_max_pd(ta, a);
-        b = _mm256_min_pd(tb, b);
-    }
-    _mm256_storeu_pd(te, a);
-    in = _mm256_and_pd(in, _mm256_cmp_pd(a, b, _CMP_LE_OQ));
-    return (unsigned)_mm256_movemask_pd(in) & ((1u << w->n) - 1);
-}
-#endif
-
-unsigned csg_scene_wide_entry(const csg_scene *s, int32_t w, const double o[3], const double d[3],
-                              double t0, double t1, iv_arena *a, double te[WIDE])
-{
-    ray r;
-    ray_init(&r, s, o, d, a);
-#ifdef HAVE_AVX_PATH
-    if (s->avx && r.cull) return wide_entry_avx(&r, &s->wide[w], t0, t1, te);
-#endif
-    return wide_entry(&r, &s->wide[w], t0, t1, te);
 }
 
 /* Whether entry x comes off the stack after y: a farther box entry, or the
@@ -405,7 +362,7 @@ static inline void order2(pending *v, int i, int j)
  * ungrouped union, only when grouping ran out of memory) the order is left
  * as pushed, reversed so that pre-order comes off first — any order is
  * correct, only slower. */
-static void sort_pending(pending *v, int n)
+static inline void sort_pending(pending *v, int n)
 {
     switch (n) {
     case 0:
@@ -446,28 +403,37 @@ static void sort_pending(pending *v, int n)
     }
 }
 
-int csg_trace_first(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
-                    double tmax, iv_arena *a, iv_bound *hit)
+/* The stack st (sn entries, capacity *cap) moved to twice the room in the
+ * arena; NULL when the arena is out of memory. */
+static pending *grow(iv_arena *a, const pending *st, int sn, int *cap)
 {
-    if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
-    ray r;
-    ray_init(&r, s, o, d, a);
-    const csg_fnode *nodes = s->nodes;
-    const csg_fnode *rn = &nodes[s->roots[root]];
-    if (rn->op != CSG_OP_UNION) { /* the frontier is the root alone */
-        int m = eval(&r, s->roots[root], tmin, tmax, 0);
-        if (m > 0) *hit = r.sp[0].enter;
-        return m < 0 ? -1 : m > 0;
-    }
-    double te;
-    if (!box_entry(&r, rn, tmin, tmax, &te)) return 0;
-    unsigned (*entry)(const ray *, const csg_wide *, double, double, double *) = wide_entry;
-#ifdef HAVE_AVX_PATH
-    if (s->avx && r.cull) entry = wide_entry_avx;
+    pending *v = iv_arena_alloc(a, 2 * (size_t)*cap * sizeof *v);
+    if (!v) return NULL;
+    memcpy(v, st, (size_t)sn * sizeof *v);
+    *cap *= 2;
+    return v;
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
 #endif
+
+/* A record's box test: wide_entry, or one of the AVX ones with their
+ * per-ray constants in ctx. */
+typedef unsigned entry_fn(const void *ctx, const csg_wide *w, double t0, double t1,
+                          double te[WIDE]);
+
+/* csg_trace_first's walk from the root union's entry `top`, with the box
+ * test `entry` (a constant at each call, so that it is inlined). */
+static ALWAYS_INLINE int walk(ray *r, pending top, double tmin, double tmax, iv_bound *hit,
+                              entry_fn *entry, const void *ctx)
+{
+    const csg_wide *wide = r->s->wide;
     pending local[64], *st = local; /* to the arena past 64 */
     int cap = 64, sn = 0;
-    st[sn++] = (pending){te, s->roots[root], rn->wide};
+    st[sn++] = top;
     int found = 0;
     double bt = 0;  /* the best boundary's t … */
     int32_t bk = 0; /* … and the frontier node it came from */
@@ -480,11 +446,11 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
             hi = p.node < bk ? nextafter(bt, INFINITY) : bt;
         }
         if (p.ref < 0) {
-            int m = p.ref == -1 ? eval(&r, p.node, tmin, hi, 0)
-                                : trace_leaf(&r, -2 - p.ref, tmin, hi, 0);
+            int m =
+                p.ref == -1 ? eval(r, p.node, tmin, hi, 0) : trace_leaf(r, -2 - p.ref, tmin, hi, 0);
             if (m < 0) return -1;
             if (m > 0) { /* inside the window, so it beats the best */
-                *hit = r.sp[0].enter;
+                *hit = r->sp[0].enter;
                 bt = hit->t;
                 bk = p.node;
                 found = 1;
@@ -492,23 +458,143 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
             continue;
         }
         int from = sn;
-        for (int32_t k = p.ref; k >= 0; k = s->wide[k].more) {
-            const csg_wide *w = &s->wide[k];
+        for (int32_t k = p.ref; k >= 0; k = wide[k].more) {
+            const csg_wide *w = &wide[k];
             double t[WIDE];
-            unsigned m = entry(&r, w, tmin, hi, t);
-            if (sn + WIDE > cap) {
-                pending *v = iv_arena_alloc(a, 2 * (size_t)cap * sizeof *v);
-                if (!v) return -1;
-                memcpy(v, st, (size_t)sn * sizeof *v);
-                st = v;
-                cap *= 2;
-            }
+            unsigned m = entry(ctx, w, tmin, hi, t);
+            if (sn + WIDE > cap && !(st = grow(r->a, st, sn, &cap))) return -1;
             for (int i = 0; i < w->n; i++)
                 if (m >> i & 1) st[sn++] = (pending){t[i], w->node[i], w->ref[i]};
         }
         sort_pending(st + from, sn - from);
     }
     return found;
+}
+
+static int walk_scalar(ray *r, pending top, double tmin, double tmax, iv_bound *hit)
+{
+    return walk(r, top, tmin, tmax, hit, wide_entry, r);
+}
+
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define HAVE_AVX_PATH 1
+
+/* A ray as entry_avx reads it: with the near and far planes of each axis
+ * as indices into a record's box viewed as six rows (3j + k for box[j][k]),
+ * so that picking them costs no arithmetic per record. */
+typedef struct avx_ray {
+    const ray *r;
+    int near[3], far[3];
+} avx_ray;
+
+static void avx_ray_init(avx_ray *q, const ray *r)
+{
+    q->r = r;
+    for (int k = 0; k < 3; k++) {
+        q->near[k] = 3 * r->neg[k] + k;
+        q->far[k] = 3 * (r->neg[k] ^ 1) + k;
+    }
+}
+
+/* wide_entry with the four lanes at once, for a ray with no zero d[k]
+ * (culling on).  maxpd(x, y) is x > y ? x : y and minpd(x, y) is
+ * x < y ? x : y, NaN operands included, so with the slab product first
+ * they are box_entry's ternaries exactly.  Not inlined: the walk stays
+ * SSE code, and the function's exit clears the upper halves (vzeroupper),
+ * which legacy SSE code after 256-bit AVX code would otherwise pay for. */
+__attribute__((target("avx"), noinline)) static unsigned
+entry_avx(const void *ctx, const csg_wide *w, double t0, double t1, double te[WIDE])
+{
+    const avx_ray *q = ctx;
+    const ray *r = q->r;
+    const double(*plane)[WIDE] = w->box[0]; /* box[j][k] is plane[3j + k] */
+    __m256d a = _mm256_set1_pd(t0), b = _mm256_set1_pd(t1);
+    for (int k = 0; k < 3; k++) {
+        __m256d o = _mm256_set1_pd(r->o[k]), inv = _mm256_set1_pd(r->inv[k]);
+        __m256d n = _mm256_loadu_pd(plane[q->near[k]]);
+        __m256d f = _mm256_loadu_pd(plane[q->far[k]]);
+        a = _mm256_max_pd(_mm256_mul_pd(_mm256_sub_pd(n, o), inv), a);
+        b = _mm256_min_pd(_mm256_mul_pd(_mm256_sub_pd(f, o), inv), b);
+    }
+    _mm256_storeu_pd(te, a);
+    return (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(a, b, _CMP_LE_OQ)) & ((1u << w->n) - 1);
+}
+
+/* The same for a ray with some zero d[k]: on those axes the ray is inside
+ * the slab or misses the box, !(o < lo) && !(o > hi) with unordered
+ * compares, as box_entry_flat rejects o < lo || o > hi. */
+__attribute__((target("avx"), noinline)) static unsigned
+entry_avx_flat(const void *ray_, const csg_wide *w, double t0, double t1, double te[WIDE])
+{
+    const ray *r = ray_;
+    __m256d a = _mm256_set1_pd(t0), b = _mm256_set1_pd(t1);
+    __m256d in = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    for (int k = 0; k < 3; k++) {
+        __m256d o = _mm256_set1_pd(r->o[k]);
+        __m256d lo = _mm256_loadu_pd(w->box[0][k]), hi = _mm256_loadu_pd(w->box[1][k]);
+        if (r->d[k] == 0) {
+            in = _mm256_and_pd(in, _mm256_and_pd(_mm256_cmp_pd(o, lo, _CMP_NLT_UQ),
+                                                 _mm256_cmp_pd(o, hi, _CMP_NGT_UQ)));
+            continue;
+        }
+        __m256d inv = _mm256_set1_pd(r->inv[k]);
+        __m256d n = r->neg[k] ? hi : lo, f = r->neg[k] ? lo : hi;
+        a = _mm256_max_pd(_mm256_mul_pd(_mm256_sub_pd(n, o), inv), a);
+        b = _mm256_min_pd(_mm256_mul_pd(_mm256_sub_pd(f, o), inv), b);
+    }
+    _mm256_storeu_pd(te, a);
+    in = _mm256_and_pd(in, _mm256_cmp_pd(a, b, _CMP_LE_OQ));
+    return (unsigned)_mm256_movemask_pd(in) & ((1u << w->n) - 1);
+}
+
+static int walk_avx(ray *r, pending top, double tmin, double tmax, iv_bound *hit)
+{
+    if (r->flat) return walk(r, top, tmin, tmax, hit, entry_avx_flat, r);
+    avx_ray q;
+    avx_ray_init(&q, r);
+    return walk(r, top, tmin, tmax, hit, entry_avx, &q);
+}
+
+static unsigned wide_entry_avx(const ray *r, const csg_wide *w, double t0, double t1,
+                               double te[WIDE])
+{
+    avx_ray q;
+    avx_ray_init(&q, r);
+    return r->flat ? entry_avx_flat(r, w, t0, t1, te) : entry_avx(&q, w, t0, t1, te);
+}
+#endif
+
+unsigned csg_scene_wide_entry(const csg_scene *s, int32_t w, const double o[3], const double d[3],
+                              double t0, double t1, iv_arena *a, double te[WIDE])
+{
+    ray r;
+    ray_init(&r, s, o, d, a);
+#ifdef HAVE_AVX_PATH
+    if (s->avx && r.cull) return wide_entry_avx(&r, &s->wide[w], t0, t1, te);
+#endif
+    return wide_entry(&r, &s->wide[w], t0, t1, te);
+}
+
+int csg_trace_first(const csg_scene *s, int root, const double o[3], const double d[3], double tmin,
+                    double tmax, iv_arena *a, iv_bound *hit)
+{
+    if (root < 0 || root >= s->nroots || s->roots[root] < 0 || !(tmin < tmax)) return 0;
+    ray r;
+    ray_init(&r, s, o, d, a);
+    const csg_fnode *rn = &s->nodes[s->roots[root]];
+    if (rn->op != CSG_OP_UNION) { /* the frontier is the root alone */
+        int m = eval(&r, s->roots[root], tmin, tmax, 0);
+        if (m > 0) *hit = r.sp[0].enter;
+        return m < 0 ? -1 : m > 0;
+    }
+    double te;
+    if (!box_entry(&r, rn, tmin, tmax, &te)) return 0;
+    pending top = {te, s->roots[root], rn->wide};
+#ifdef HAVE_AVX_PATH
+    if (s->avx && r.cull) return walk_avx(&r, top, tmin, tmax, hit);
+#endif
+    return walk_scalar(&r, top, tmin, tmax, hit);
 }
 
 void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],
