@@ -590,6 +590,12 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
     }
     double te;
     if (!box_entry(&r, rn, tmin, tmax, &te)) return 0;
+    /* The leaves' lists start on the C stack (reserve moves them to the
+     * arena should they outgrow it): most rays meet a leaf or two, and then
+     * need no arena allocation at all. */
+    iv_span sp[16];
+    r.sp = sp;
+    r.cap = 16;
     pending top = {te, s->roots[root], rn->wide};
 #ifdef HAVE_AVX_PATH
     if (s->avx && r.cull) return walk_avx(&r, top, tmin, tmax, hit);
