@@ -51,7 +51,7 @@ enum { WIDE = 4 };
 
 typedef struct csg_wide {
     double box[2][3][WIDE]; /* box[0][k][i], box[1][k][i]: operand i's lo, hi on axis k */
-    int32_t node[WIDE];              /* the operands' node indices */
+    int32_t node[WIDE];     /* the operands' node indices */
     int32_t ref[WIDE];
     int32_t n;    /* operands in this record, 1 to WIDE */
     int32_t more; /* the union's next record, or -1 */
