@@ -16,8 +16,9 @@
  * order, so a library deep in that order walks past a couple of hundred
  * others' hash tables for each of its own symbols.  Opening the libraries
  * one by one first, leaves first (the list the build took from ldd, embedded
- * beside the adapter as RAYSCAD_IMAGE_DEPS), relocates each against its own
- * short list instead: 0.37 s → 0.20 s for the whole load.  Those opens only
+ * beside the adapter as RAYSCAD_IMAGE_DEPS; sanitizer builds go without,
+ * the Makefile says why), relocates each against its own short list
+ * instead: 0.37 s → 0.20 s for the whole load.  Those opens only
  * warm the loader; any of them may fail (a library moved, or one that
  * depends on a symbol it does not link), and the adapter's own dlopen then
  * finds or loads the rest in the usual way and reports any real failure.
