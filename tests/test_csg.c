@@ -704,6 +704,38 @@ static tnode *random_wide_union(void)
     return u;
 }
 
+/* csg_trace_first's boundary of root 0 along o + t·d over [tmin, tmax] is the
+ * full trace's first, culling with csg_wide's AVX box tests (where the CPU
+ * has them), with its scalar ones, and not culling.  Returns whether the ray
+ * meets the root; leaves culling and AVX on. */
+static int first_boundary_agrees(csg_scene *s, const double o[3], const double d[3], double tmin,
+                                 double tmax, unsigned long long seed, int tree, int ray)
+{
+    int met = 0;
+    for (int mode = 2; mode >= 0; mode--) {
+        csg_scene_set_cull(s, mode > 0);
+        csg_scene_set_avx(s, mode == 2);
+        iv_arena_reset(arena);
+        iv_list l;
+        iv_bound b = {-1, -7, 7, 7};
+        cr_assert_eq(csg_trace(s, 0, o, d, tmin, tmax, arena, &l), 0);
+        int rc = csg_trace_first(s, 0, o, d, tmin, tmax, arena, &b);
+        cr_assert_eq(rc, l.n > 0, "seed %#llx tree %d ray %d mode %d: found %d, %d spans", seed,
+                     tree, ray, mode, rc, l.n);
+        met = l.n > 0;
+        if (!met) continue;
+        const iv_bound *w = &l.v[0].enter;
+        cr_assert(same_bound(&b, w),
+                  "seed %#llx tree %d ray %d mode %d: first (%.17g, prim %d, part %d, flip %d), "
+                  "full trace (%.17g, prim %d, part %d, flip %d)",
+                  seed, tree, ray, mode, b.t, b.prim, b.part, b.flip, w->t, w->prim, w->part,
+                  w->flip);
+    }
+    csg_scene_set_cull(s, 1);
+    csg_scene_set_avx(s, 1);
+    return met;
+}
+
 Test(csg_trace, first_boundary_matches_full_trace)
 {
     const uint64_t seed = 0xf1257;
@@ -737,28 +769,7 @@ Test(csg_trace, first_boundary_matches_full_trace)
             double tmin = rng_int(3) ? 0 : rng_uniform(-4, 2);
             double tmax = rng_int(4) ? rng_uniform(1, 8) : INFINITY;
             if (rng_int(6) == 0) tmin = -INFINITY;
-            /* cull 2: culling with csg_wide's AVX box tests (where the CPU
-             * has them), 1: with its scalar ones, 0: no culling. */
-            for (int cull = 2; cull >= 0; cull--) {
-                csg_scene_set_cull(s, cull > 0);
-                csg_scene_set_avx(s, cull == 2);
-                iv_arena_reset(arena);
-                iv_list l;
-                iv_bound b = {-1, -7, 7, 7};
-                cr_assert_eq(csg_trace(s, 0, o, d, tmin, tmax, arena, &l), 0);
-                int rc = csg_trace_first(s, 0, o, d, tmin, tmax, arena, &b);
-                cr_assert_eq(rc, l.n > 0, "seed %#llx tree %d ray %d cull %d: found %d, %d spans",
-                             (unsigned long long)seed, tree, ray, cull, rc, l.n);
-                if (l.n == 0) continue;
-                const iv_bound *w = &l.v[0].enter;
-                cr_assert(same_bound(&b, w),
-                          "seed %#llx tree %d ray %d cull %d: first (%.17g, prim %d, part %d, "
-                          "flip %d), full trace (%.17g, prim %d, part %d, flip %d)",
-                          (unsigned long long)seed, tree, ray, cull, b.t, b.prim, b.part, b.flip,
-                          w->t, w->prim, w->part, w->flip);
-                hits += cull == 2;
-            }
-            csg_scene_set_cull(s, 1);
+            hits += first_boundary_agrees(s, o, d, tmin, tmax, seed, tree, ray);
         }
         csg_scene_free(s);
     }
@@ -915,26 +926,7 @@ Test(csg_trace, first_boundary_of_big_unions)
             if (!(d[0] || d[1] || d[2])) d[rng_int(3)] = 1;
             double tmin = rng_int(3) ? 0 : -INFINITY;
             double tmax = rng_int(2) ? INFINITY : rng_uniform(1, 30);
-            iv_arena_reset(arena);
-            iv_list l;
-            cr_assert_eq(csg_trace(s, 0, o, d, tmin, tmax, arena, &l), 0);
-            for (int mode = 2; mode >= 0; mode--) {
-                csg_scene_set_cull(s, mode > 0);
-                int avx = csg_scene_set_avx(s, mode == 2);
-                if (mode == 2 && !avx) continue; /* not on this CPU */
-                iv_bound b = {-1, -7, 7, 7};
-                int rc = csg_trace_first(s, 0, o, d, tmin, tmax, arena, &b);
-                cr_assert_eq(rc, l.n > 0, "seed %#llx tree %d ray %d mode %d: found %d, %d spans",
-                             (unsigned long long)seed, tree, ray, mode, rc, l.n);
-                if (l.n == 0) continue;
-                const iv_bound *w = &l.v[0].enter;
-                cr_assert(same_bound(&b, w),
-                          "seed %#llx tree %d ray %d mode %d: first (%.17g, prim %d, part %d, "
-                          "flip %d), full trace (%.17g, prim %d, part %d, flip %d)",
-                          (unsigned long long)seed, tree, ray, mode, b.t, b.prim, b.part, b.flip,
-                          w->t, w->prim, w->part, w->flip);
-                hits += mode == 1;
-            }
+            hits += first_boundary_agrees(s, o, d, tmin, tmax, seed, tree, ray);
             rays++;
         }
         csg_scene_free(s);
