@@ -79,15 +79,16 @@ static int reserve(ray *r, long need, int live)
 
 /* box_entry for a ray parallel to some axis: on that axis the ray is
  * inside the slab or never meets it. */
-static int box_entry_flat(const ray *r, const csg_fnode *n, double t0, double t1, double *te)
+static int box_entry_flat(const ray *r, const double lo[3], const double hi[3], double t0,
+                          double t1, double *te)
 {
     for (int k = 0; k < 3; k++) {
         if (r->d[k] == 0) {
-            if (r->o[k] < n->lo[k] || r->o[k] > n->hi[k]) return 0;
+            if (r->o[k] < lo[k] || r->o[k] > hi[k]) return 0;
             continue;
         }
-        double ta = ((r->neg[k] ? n->hi[k] : n->lo[k]) - r->o[k]) * r->inv[k];
-        double tb = ((r->neg[k] ? n->lo[k] : n->hi[k]) - r->o[k]) * r->inv[k];
+        double ta = ((r->neg[k] ? hi[k] : lo[k]) - r->o[k]) * r->inv[k];
+        double tb = ((r->neg[k] ? lo[k] : hi[k]) - r->o[k]) * r->inv[k];
         if (ta > t0) t0 = ta;
         if (tb < t1) t1 = tb;
     }
@@ -95,23 +96,24 @@ static int box_entry_flat(const ray *r, const csg_fnode *n, double t0, double t1
     return t0 <= t1;
 }
 
-/* Whether the segment t in [t0, t1] of the ray meets the node's box, and
+/* Whether the segment t in [t0, t1] of the ray meets the box [lo, hi], and
  * where it enters it (*te; t0 itself when the scene does not cull).  The
  * slab products may be NaN (a bound plane through o with a subnormal d,
  * giving 0·inf); every comparison with NaN is false, so such a slab narrows
  * nothing and the test errs on the side of "hit".  The near and far planes
  * are picked by the ray's signs (precomputed), so the common case has no
  * data-dependent branch: this test is most of a big union's traversal. */
-static inline int box_entry(const ray *r, const csg_fnode *n, double t0, double t1, double *te)
+static inline int box_entry(const ray *r, const double lo[3], const double hi[3], double t0,
+                            double t1, double *te)
 {
     if (!r->cull) {
         *te = t0;
         return t0 <= t1;
     }
-    if (r->flat) return box_entry_flat(r, n, t0, t1, te);
+    if (r->flat) return box_entry_flat(r, lo, hi, t0, t1, te);
     for (int k = 0; k < 3; k++) {
-        double ta = ((r->neg[k] ? n->hi[k] : n->lo[k]) - r->o[k]) * r->inv[k];
-        double tb = ((r->neg[k] ? n->lo[k] : n->hi[k]) - r->o[k]) * r->inv[k];
+        double ta = ((r->neg[k] ? hi[k] : lo[k]) - r->o[k]) * r->inv[k];
+        double tb = ((r->neg[k] ? lo[k] : hi[k]) - r->o[k]) * r->inv[k];
         t0 = ta > t0 ? ta : t0;
         t1 = tb < t1 ? tb : t1;
     }
@@ -196,7 +198,7 @@ static int eval(ray *r, int32_t node, double tmin, double tmax, int at)
         /* Descend from cur until a list is known. */
         const csg_fnode *n = &nodes[cur];
         double te;
-        if (!box_entry(r, n, t0, t1, &te)) {
+        if (!box_entry(r, n->lo, n->hi, t0, t1, &te)) {
             nres = 0;
         } else if (n->op == FNODE_LEAF) {
             nres = trace_leaf(r, n->prim, t0, t1, at);
@@ -312,28 +314,20 @@ typedef struct pending {
 } pending;
 
 /* Which operands of record w the segment [t0, t1] meets (bit i for lane i),
- * and where each enters its box (te[i]): box_entry on each lane, the same
- * operations in the same order, so every te is box_entry's bit for bit. */
+ * and where each enters its box (te[i], defined for the lanes met):
+ * box_entry on each lane's bounds. */
 static unsigned wide_entry(const void *ray_, const csg_wide *w, double t0, double t1,
                            double te[WIDE])
 {
     const ray *r = ray_;
     unsigned hit = 0;
     for (int i = 0; i < w->n; i++) {
-        double a = t0, b = t1;
-        int in = 1;
-        for (int k = 0; k < 3 && r->cull; k++) {
-            if (r->d[k] == 0) {
-                if (r->o[k] < w->box[0][k][i] || r->o[k] > w->box[1][k][i]) in = 0;
-                continue;
-            }
-            double ta = (w->box[r->neg[k]][k][i] - r->o[k]) * r->inv[k];
-            double tb = (w->box[!r->neg[k]][k][i] - r->o[k]) * r->inv[k];
-            a = ta > a ? ta : a;
-            b = tb < b ? tb : b;
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; k++) {
+            lo[k] = w->box[0][k][i];
+            hi[k] = w->box[1][k][i];
         }
-        te[i] = a;
-        hit |= (unsigned)(in && a <= b) << i;
+        hit |= (unsigned)box_entry(r, lo, hi, t0, t1, &te[i]) << i;
     }
     return hit;
 }
@@ -589,7 +583,7 @@ int csg_trace_first(const csg_scene *s, int root, const double o[3], const doubl
         return m < 0 ? -1 : m > 0;
     }
     double te;
-    if (!box_entry(&r, rn, tmin, tmax, &te)) return 0;
+    if (!box_entry(&r, rn->lo, rn->hi, tmin, tmax, &te)) return 0;
     /* The leaves' lists start on the C stack (reserve moves them to the
      * arena should they outgrow it): most rays meet a leaf or two, and then
      * need no arena allocation at all. */
