@@ -509,17 +509,24 @@ int csg_cpu_has_avx(void)
 #endif
 }
 
+/* csg_scene_new giving up: the trees not yet flattened (roots[r] is NULL
+ * once one is) and the scene so far are freed, and err says why. */
+static csg_scene *commit_failed(csg_scene *s, csg_node **roots, int n, char *err, size_t errlen,
+                                const char *why)
+{
+    for (int r = 0; r < n; r++)
+        csg_node_free(roots[r]);
+    csg_scene_free(s);
+    if (err && errlen) snprintf(err, errlen, "%s", why);
+    return NULL;
+}
+
 csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
 {
+    static const char oom[] = "out of memory committing the scene";
     csg_scene *s = calloc(1, sizeof *s);
     if (s && n > 0) s->roots = malloc((size_t)n * sizeof *s->roots);
-    if (!s || (n > 0 && !s->roots)) {
-        for (int r = 0; r < n; r++)
-            csg_node_free(roots[r]);
-        free(s);
-        if (err && errlen) snprintf(err, errlen, "out of memory committing the scene");
-        return NULL;
-    }
+    if (!s || (n > 0 && !s->roots)) return commit_failed(s, roots, n, err, errlen, oom);
     s->nroots = n;
     s->cull = 1;
     s->avx = csg_cpu_has_avx();
@@ -534,23 +541,14 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
         }
     }
     if (nodes > INT32_MAX) {
-        for (int r = 0; r < n; r++)
-            csg_node_free(roots[r]);
-        free(s->roots);
-        free(s);
-        if (err && errlen) snprintf(err, errlen, "scene has more than %ld nodes", (long)INT32_MAX);
-        return NULL;
+        char why[64];
+        snprintf(why, sizeof why, "scene has more than %ld nodes", (long)INT32_MAX);
+        return commit_failed(s, roots, n, err, errlen, why);
     }
     s->nodes = malloc((size_t)(nodes ? nodes : 1) * sizeof *s->nodes);
     s->prims = malloc((size_t)(prims ? prims : 1) * sizeof *s->prims);
     s->cold = malloc((size_t)(prims ? prims : 1) * sizeof *s->cold);
-    if (!s->nodes || !s->prims || !s->cold) {
-        for (int r = 0; r < n; r++)
-            csg_node_free(roots[r]);
-        csg_scene_free(s);
-        if (err && errlen) snprintf(err, errlen, "out of memory committing the scene");
-        return NULL;
-    }
+    if (!s->nodes || !s->prims || !s->cold) return commit_failed(s, roots, n, err, errlen, oom);
     int at = 0, prim = 0;
     for (int r = 0; r < n; r++) {
         if (!roots[r]) {
@@ -565,11 +563,7 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
     }
     s->nnodes = at;
     s->nprims = prim;
-    if (build_wide(s) != 0) {
-        csg_scene_free(s);
-        if (err && errlen) snprintf(err, errlen, "out of memory committing the scene");
-        return NULL;
-    }
+    if (build_wide(s) != 0) return commit_failed(s, roots, n, err, errlen, oom);
     return s;
 }
 
