@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "../src/scad/ast.h"
 #include "../src/scad/scad.h"
 
 /* ---- collecting messages ------------------------------------------------- */
@@ -198,6 +199,82 @@ static void expect_bounds(const char *src, double x0, double y0, double z0, doub
     }
     csg_scene_free(s);
     lines_free(&m);
+}
+
+/* ---- numerals --------------------------------------------------------------- */
+
+static unsigned long long lcg_state;
+static int lcg(int n) /* uniform in [0, n) */
+{
+    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (int)((lcg_state >> 33) % (unsigned long long)n);
+}
+
+/* n random digits at p, the first nonzero when `lead` is 0; returns n. */
+static int digits(char *p, int n, int lead)
+{
+    for (int i = 0; i < n; i++)
+        p[i] = (char)('0' + (i == 0 && !lead ? 1 + lcg(9) : lcg(10)));
+    return n;
+}
+
+/* Numerals of every shape the lexer reads — 1 to 25 digits and some of 100
+ * to 400 (past any fixed buffer), fractions with and without an integer
+ * part, leading and trailing zeros, exponents e/E with and without a sign
+ * up to ±400 — each read bit for bit as glibc's strtod reads its text. */
+Test(scad_lex, numerals_read_as_strtod)
+{
+    enum { N = 60000 };
+    lcg_state = 0x7e57;
+    size_t cap = (size_t)N * 64 + 4 * 100000, len = 0;
+    char *src = malloc(cap);
+    size_t *at = malloc(N * sizeof *at);
+    cr_assert(src && at);
+    for (int i = 0; i < N; i++) {
+        char *p = src + len;
+        int n = 0, form = lcg(8);
+        int whole = form == 0 ? 0 : lcg(50) == 0 ? 100 + lcg(300) : 1 + lcg(25);
+        if (whole) n += digits(p + n, whole, lcg(4) == 0);
+        if (form < 4) {
+            p[n++] = '.';
+            int frac = lcg(50) == 0 ? 100 + lcg(300) : lcg(20);
+            if (!whole && frac == 0) frac = 1;
+            n += digits(p + n, frac, 1);
+            if (lcg(3) == 0) n += sprintf(p + n, "000");
+        }
+        if (lcg(3) == 0) {
+            p[n++] = lcg(2) ? 'e' : 'E';
+            int sign = lcg(3);
+            if (sign) p[n++] = sign == 1 ? '-' : '+';
+            n += sprintf(p + n, "%d", lcg(5) == 0 ? lcg(400) : lcg(30));
+        }
+        p[n++] = ' ';
+        at[i] = len;
+        len += (size_t)n;
+        cr_assert(len + 2000 < cap);
+    }
+    src[len] = 0;
+    scad_arena *a = scad_arena_new();
+    scad_diag d = {0};
+    scad_token *t;
+    int n = scad_lex(a, &d, "numerals", src, &t);
+    cr_assert_eq(n, N + 1, "%d tokens for %d numerals", n, N);
+    cr_assert_eq(d.errors, 0);
+    long fast = 0;
+    for (int i = 0; i < N; i++) {
+        char *end;
+        double want = strtod(src + at[i], &end);
+        cr_assert_eq(*end, ' ', "numeral %d: strtod stopped early", i);
+        cr_assert_eq(t[i].kind, TK_NUMBER, "numeral %d '%.*s'", i, (int)(end - src - at[i]),
+                     src + at[i]);
+        cr_assert(memcmp(&t[i].num, &want, sizeof want) == 0, "'%.*s': lexed %.17g, strtod %.17g",
+                  (int)(end - src - at[i]), src + at[i], t[i].num, want);
+        fast += end - (src + at[i]) < 12;
+    }
+    cr_assert(fast > N / 4, "only %ld short numerals", fast);
+    scad_arena_free(a);
+    free(src);
+    free(at);
 }
 
 Test(scad_tree, translate_cube)

@@ -41,7 +41,7 @@ void scad_arena_free(scad_arena *a)
     free(a);
 }
 
-void *scad_arena_alloc(scad_arena *a, size_t bytes)
+void *scad_arena_alloc_raw(scad_arena *a, size_t bytes)
 {
     bytes = (bytes + 15) & ~(size_t)15;
     if (bytes == 0) bytes = 16;
@@ -60,13 +60,19 @@ void *scad_arena_alloc(scad_arena *a, size_t bytes)
     }
     void *p = c->data + c->used;
     c->used += bytes;
-    memset(p, 0, bytes);
+    return p;
+}
+
+void *scad_arena_alloc(scad_arena *a, size_t bytes)
+{
+    void *p = scad_arena_alloc_raw(a, bytes);
+    if (p) memset(p, 0, bytes);
     return p;
 }
 
 char *scad_arena_strndup(scad_arena *a, const char *s, size_t n)
 {
-    char *p = scad_arena_alloc(a, n + 1);
+    char *p = scad_arena_alloc_raw(a, n + 1);
     if (!p) return NULL;
     memcpy(p, s, n);
     p[n] = 0;

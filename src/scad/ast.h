@@ -22,6 +22,8 @@ void scad_arena_free(scad_arena *a);
 /* Zeroed, 16-byte aligned memory valid until scad_arena_free; NULL when out
  * of memory. */
 void *scad_arena_alloc(scad_arena *a, size_t bytes);
+/* The same, not zeroed: for memory the caller fills before reading. */
+void *scad_arena_alloc_raw(scad_arena *a, size_t bytes);
 /* A NUL-terminated copy of s[0..n). */
 char *scad_arena_strndup(scad_arena *a, const char *s, size_t n);
 
@@ -115,7 +117,8 @@ typedef struct scad_token {
 
 /* Tokenise src.  Returns the number of tokens (the last is TK_EOF) and sets
  * *out to an array in the arena; reports lexical errors through d and keeps
- * going (an unterminated string or comment ends the input). */
+ * going (an unterminated string or comment ends the input).  Out of memory:
+ * *out = NULL, 0. */
 int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, scad_token **out);
 
 /* The whole file at path as a NUL-terminated string in the arena, or NULL

@@ -10,6 +10,7 @@
  * a stray character) are reported and lexing goes on.
  */
 #include <ctype.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,7 +24,8 @@ typedef struct lexer {
     int line, col;
     scad_token *v;
     int n, cap;
-    int failed;
+    int failed; /* stop: out of memory, or an unterminated string */
+    int oom;    /* out of memory: the tokens are incomplete */
 } lexer;
 
 static void advance(lexer *L, size_t k)
@@ -39,12 +41,30 @@ static void advance(lexer *L, size_t k)
     }
 }
 
+static void out_of_memory(lexer *L)
+{
+    L->oom = L->failed = 1;
+}
+
+/* A token's text: a copy of p[0..n) in the arena (NULL when out of
+ * memory, recorded). */
+static const char *text_of(lexer *L, const char *p, size_t n)
+{
+    char *t = scad_arena_strndup(L->a, p, n);
+    if (!t) out_of_memory(L);
+    return t;
+}
+
+/* A new token at the end of the array; NULL when out of memory (recorded). */
 static scad_token *push(lexer *L, scad_tok_kind kind, scad_loc loc)
 {
     if (L->n == L->cap) {
         int cap = L->cap ? L->cap * 2 : 256;
-        scad_token *v = scad_arena_alloc(L->a, sizeof *v * (size_t)cap);
-        if (!v) return NULL;
+        scad_token *v = scad_arena_alloc_raw(L->a, sizeof *v * (size_t)cap);
+        if (!v) {
+            out_of_memory(L);
+            return NULL;
+        }
         if (L->n) memcpy(v, L->v, sizeof *v * (size_t)L->n);
         L->v = v;
         L->cap = cap;
@@ -85,6 +105,59 @@ static size_t number_length(const char *s)
         }
     }
     return i;
+}
+
+/* The value of the numeral s[0..n) (number_length's syntax), as strtod
+ * reads it: correctly rounded.  Most numerals in a model have a few digits
+ * and a small exponent, and for those Clinger's fast path is exact: with the
+ * digits as an integer m < 2^53 and the decimal exponent e in -22..22, m and
+ * 10^|e| are both doubles, so the one multiplication or division rounds
+ * correctly.  Everything else (long digit strings, big exponents) goes to
+ * strtod, which costs about twenty times as much.  Returns -1 when a copy
+ * for strtod cannot be made (out of memory). */
+static int number_value(scad_arena *a, const char *s, size_t n, double *out)
+{
+    static const double p10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    uint64_t m = 0;
+    int sig = 0, e = 0, fast = 1;
+    size_t i = 0;
+    for (int frac = 0; i < n; i++) {
+        if (s[i] == '.') {
+            frac = 1;
+            continue;
+        }
+        if (!isdigit((unsigned char)s[i])) break;
+        if (m > 0 || s[i] != '0') sig++;
+        if (sig > 15) fast = 0; /* m < 10^15 < 2^53 */
+        m = m * 10 + (uint64_t)(s[i] - '0');
+        e -= frac;
+    }
+    if (fast && i < n) { /* the exponent: e, E, an optional sign, digits */
+        i++;
+        int neg = s[i] == '-';
+        if (s[i] == '+' || s[i] == '-') i++;
+        int x = 0;
+        for (; i < n && x < 1000; i++)
+            x = x * 10 + (s[i] - '0');
+        fast = i == n;
+        e += neg ? -x : x;
+    }
+    if (fast && m == 0) {
+        *out = 0;
+        return 0;
+    }
+    if (fast && e >= -22 && e <= 22) {
+        *out = e < 0 ? (double)m / p10[-e] : (double)m * p10[e];
+        return 0;
+    }
+    char tmp[128], *buf = n < sizeof tmp ? tmp : scad_arena_alloc_raw(a, n + 1);
+    if (!buf) return -1;
+    memcpy(buf, s, n);
+    buf[n] = 0;
+    *out = strtod(buf, NULL);
+    return 0;
 }
 
 static int hexval(int c)
@@ -128,7 +201,7 @@ static void lex_string(lexer *L, scad_loc loc)
         cap += (s[cap] == '\\' && s[cap + 1]) ? 2 : 1;
     char *buf = scad_arena_alloc(L->a, cap + 8);
     if (!buf) {
-        L->failed = 1;
+        out_of_memory(L);
         return;
     }
     size_t n = 0;
@@ -206,10 +279,7 @@ static void lex_string(lexer *L, scad_loc loc)
     }
     buf[n] = 0;
     scad_token *t = push(L, TK_STRING, loc);
-    if (!t) {
-        L->failed = 1;
-        return;
-    }
+    if (!t) return;
     t->text = buf;
     t->len = n;
 }
@@ -239,11 +309,8 @@ static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kin
         return 1;
     }
     scad_token *t = push(L, kind, loc);
-    if (!t) {
-        L->failed = 1;
-        return 1;
-    }
-    t->text = scad_arena_strndup(L->a, q + 1, (size_t)(end - q - 1));
+    if (!t) return 1;
+    t->text = text_of(L, q + 1, (size_t)(end - q - 1));
     t->len = (size_t)(end - q - 1);
     advance(L, (size_t)(end - L->p) + 1);
     return 1;
@@ -251,7 +318,7 @@ static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kin
 
 int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, scad_token **out)
 {
-    lexer L = {a, d, file, src, 1, 1, NULL, 0, 0, 0};
+    lexer L = {a, d, file, src, 1, 1, NULL, 0, 0, 0, 0};
     while (!L.failed) {
         char c = *L.p;
         scad_loc loc = {file, L.line, L.col};
@@ -294,11 +361,10 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
         if (nl > 0 && nl >= il) {
             scad_token *t = push(&L, TK_NUMBER, loc);
             if (!t) break;
-            char tmp[128];
-            size_t k = nl < sizeof tmp - 1 ? nl : sizeof tmp - 1;
-            memcpy(tmp, L.p, k);
-            tmp[k] = 0;
-            t->num = strtod(tmp, NULL);
+            if (number_value(a, L.p, nl, &t->num) != 0) {
+                out_of_memory(&L);
+                break;
+            }
             advance(&L, nl);
             continue;
         }
@@ -312,7 +378,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
             if (il == 3 && memcmp(L.p, "use", 3) == 0 && lex_include(&L, loc, 3, TK_USE)) continue;
             scad_token *t = push(&L, kind, loc);
             if (!t) break;
-            t->text = scad_arena_strndup(a, L.p, il);
+            t->text = text_of(&L, L.p, il);
             t->len = il;
             advance(&L, il);
             continue;
@@ -325,7 +391,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
         int done = 0;
         for (size_t k = 0; k < sizeof two / sizeof two[0]; k++) {
             if (c == two[k].s[0] && L.p[1] == two[k].s[1]) {
-                if (!push(&L, two[k].kind, loc)) L.failed = 1;
+                push(&L, two[k].kind, loc);
                 advance(&L, 2);
                 done = 1;
                 break;
@@ -344,7 +410,7 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
         advance(&L, 1);
     }
     scad_loc loc = {file, L.line, L.col};
-    if (!push(&L, TK_EOF, loc)) {
+    if (L.oom || !push(&L, TK_EOF, loc)) {
         *out = NULL;
         return 0;
     }
