@@ -58,6 +58,7 @@ typedef struct job {
     const render_options *opt;
     float *rgba;
     int nroots;
+    int live[MAX_ROOTS], nlive; /* the roots that are not empty, in order */
     int tiles_x;
     /* the light model, resolved once */
     int lit;      /* shadow rays and the lights below */
@@ -326,7 +327,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
     iv_list lists[MAX_ROOTS];
     int pos[MAX_ROOTS];    /* next boundary of each list: span pos/2, exit if odd */
     int volume[MAX_ROOTS]; /* the current span was composited as a volume */
-    for (int r = 0; r < J->nroots; r++) {
+    for (int q = 0; q < J->nlive; q++) {
+        int r = J->live[q];
         memset(&lists[r], 0, sizeof lists[r]);
         pos[r] = 0;
         volume[r] = 0;
@@ -338,7 +340,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
          * as well hold that boundary alone. */
         iv_bound fb[MAX_ROOTS];
         int best = -1;
-        for (int r = 0; r < J->nroots; r++) {
+        for (int q = 0; q < J->nlive; q++) {
+            int r = J->live[q];
             int rc = csg_trace_first(J->scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
             if (rc < 0) return -1;
             if (rc && (best < 0 || fb[r].t < fb[best].t ||
@@ -360,7 +363,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
     }
     if (!traced) {
         int best = -1;
-        for (int r = 0; r < J->nroots; r++) {
+        for (int q = 0; q < J->nlive; q++) {
+            int r = J->live[q];
             if (csg_trace(J->scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
             if (lists[r].n > 0 && (best < 0 || lists[r].v[0].enter.t < lists[best].v[0].enter.t ||
                                    (lists[r].v[0].enter.t == lists[best].v[0].enter.t &&
@@ -375,7 +379,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
     while (acc_a < OPAQUE) {
         int best = -1;
         const iv_bound *bb = NULL;
-        for (int r = 0; r < J->nroots; r++) {
+        for (int q = 0; q < J->nlive; q++) {
+            int r = J->live[q];
             if (pos[r] >= 2 * lists[r].n) continue;
             const iv_span *sp = &lists[r].v[pos[r] / 2];
             const iv_bound *b = (pos[r] & 1) ? &sp->exit : &sp->enter;
@@ -510,7 +515,8 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double sum[3] = {0, 0, 0};
-            wk->g = rng_for_pixel(opt->seed, x, y);
+            if (J->jitter) /* only the light model draws random numbers */
+                wk->g = rng_for_pixel(opt->seed, x, y);
             /* s×s strata.  The preview look samples each at its centre
              * (deterministic, and s = 1 is the pixel centre where GL
              * samples coverage); the light model jitters within them. */
@@ -635,6 +641,8 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     J.nroots = csg_scene_root_count(s);
     if (J.nroots > MAX_ROOTS) J.nroots = MAX_ROOTS;
     if (J.nroots < 0) J.nroots = 0;
+    for (int r = 0; r < J.nroots; r++)
+        if (csg_scene_root_node(s, r) >= 0) J.live[J.nlive++] = r;
     if (resolve_light_model(&J, err, errlen) != 0) return -1;
     find_cover(&J);
     J.tiles_x = (opt->width + TILE - 1) / TILE;
