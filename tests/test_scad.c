@@ -16,6 +16,7 @@
 
 #include "../src/scad/ast.h"
 #include "../src/scad/scad.h"
+#include "support.h"
 
 /* ---- collecting messages ------------------------------------------------- */
 
@@ -203,18 +204,11 @@ static void expect_bounds(const char *src, double x0, double y0, double z0, doub
 
 /* ---- numerals --------------------------------------------------------------- */
 
-static unsigned long long lcg_state;
-static int lcg(int n) /* uniform in [0, n) */
-{
-    lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (int)((lcg_state >> 33) % (unsigned long long)n);
-}
-
 /* n random digits at p, the first nonzero when `lead` is 0; returns n. */
 static int digits(char *p, int n, int lead)
 {
     for (int i = 0; i < n; i++)
-        p[i] = (char)('0' + (i == 0 && !lead ? 1 + lcg(9) : lcg(10)));
+        p[i] = (char)('0' + (i == 0 && !lead ? 1 + rng_int(9) : rng_int(10)));
     return n;
 }
 
@@ -225,28 +219,28 @@ static int digits(char *p, int n, int lead)
 Test(scad_lex, numerals_read_as_strtod)
 {
     enum { N = 60000 };
-    lcg_state = 0x7e57;
+    rng_seed(0x7e57);
     size_t cap = (size_t)N * 64 + 4 * 100000, len = 0;
     char *src = malloc(cap);
     size_t *at = malloc(N * sizeof *at);
     cr_assert(src && at);
     for (int i = 0; i < N; i++) {
         char *p = src + len;
-        int n = 0, form = lcg(8);
-        int whole = form == 0 ? 0 : lcg(50) == 0 ? 100 + lcg(300) : 1 + lcg(25);
-        if (whole) n += digits(p + n, whole, lcg(4) == 0);
+        int n = 0, form = rng_int(8);
+        int whole = form == 0 ? 0 : rng_int(50) == 0 ? 100 + rng_int(300) : 1 + rng_int(25);
+        if (whole) n += digits(p + n, whole, rng_int(4) == 0);
         if (form < 4) {
             p[n++] = '.';
-            int frac = lcg(50) == 0 ? 100 + lcg(300) : lcg(20);
+            int frac = rng_int(50) == 0 ? 100 + rng_int(300) : rng_int(20);
             if (!whole && frac == 0) frac = 1;
             n += digits(p + n, frac, 1);
-            if (lcg(3) == 0) n += sprintf(p + n, "000");
+            if (rng_int(3) == 0) n += sprintf(p + n, "000");
         }
-        if (lcg(3) == 0) {
-            p[n++] = lcg(2) ? 'e' : 'E';
-            int sign = lcg(3);
+        if (rng_int(3) == 0) {
+            p[n++] = rng_int(2) ? 'e' : 'E';
+            int sign = rng_int(3);
             if (sign) p[n++] = sign == 1 ? '-' : '+';
-            n += sprintf(p + n, "%d", lcg(5) == 0 ? lcg(400) : lcg(30));
+            n += sprintf(p + n, "%d", rng_int(5) == 0 ? rng_int(400) : rng_int(30));
         }
         p[n++] = ' ';
         at[i] = len;
