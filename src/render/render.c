@@ -295,14 +295,15 @@ static int refract_dir(const double d[3], const double nf[3], double eta, double
  * composites as a surface (no absorption, which needs the span's exit) with
  * alpha >= OPAQUE, so the accumulated opacity passes OPAQUE at once — and
  * then neither later surfaces nor refraction are looked at.  Mirror rays
- * and shadow rays are traced from b alone, so they do not care. */
-static int ends_walk(const job *J, int r, const iv_bound *b)
+ * and shadow rays are traced from b alone, so they do not care.  Fills c
+ * with b's colour (surface_color) and *m with its material when it does. */
+static int ends_walk(const job *J, int r, const iv_bound *b, float c[4], const csg_material **m)
 {
     if (b->prim == IV_PRIM_NONE || !isfinite(b->t)) return 0;
-    float c[4];
     surface_color(J, r, b, c);
     double alpha = c[3];
-    return alpha >= OPAQUE && absorption(J, csg_scene_material(J->scene, b->prim), alpha) == 0;
+    *m = csg_scene_material(J->scene, b->prim);
+    return alpha >= OPAQUE && absorption(J, *m, alpha) == 0;
 }
 
 static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
@@ -318,64 +319,122 @@ static int trace_from(const job *J, worker_ctx *wk, const double p[3], const dou
     return trace_ray(J, wk, o, dir, 0, INFINITY, depth, out);
 }
 
+/* The light a surface sends back along the ray at boundary bb, whose
+ * material (sb's: bb itself, or the exit of the span a clip opened) has
+ * colour c and material m: its shading, mixed with a mirror ray when it
+ * reflects, in local; the point and the normal facing the ray in p and nf,
+ * for a refracted ray.  Returns 0, or -1 when the arena is out of memory. */
+static int surface_light(const job *J, worker_ctx *wk, const iv_bound *bb, const iv_bound *sb,
+                         const float c[4], const csg_material *m, const double o[3],
+                         const double d[3], int depth, double local[3], double p[3], double nf[3])
+{
+    double n[3];
+    csg_scene_normal(J->scene, sb, o, d, n);
+    for (int i = 0; i < 3; i++)
+        p[i] = o[i] + bb->t * d[i];
+    double side = dot3(n, d) > 0 ? -1 : 1;
+    for (int i = 0; i < 3; i++)
+        nf[i] = side * n[i];
+
+    float lit[3];
+    if (m->emit > 0) {
+        for (int i = 0; i < 3; i++)
+            lit[i] = c[i];
+    } else if (J->lit) {
+        double f = light_factor(J, wk, p, nf);
+        if (f < 0) return -1;
+        render_shade_apply(c, f, lit);
+    } else {
+        render_shade_apply(c, render_shade_factor(J->cam, n), lit);
+    }
+    for (int i = 0; i < 3; i++)
+        local[i] = lit[i];
+
+    if (m->reflect > 0 && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
+        double rd[3], rc[3], dn = dot3(d, nf);
+        for (int i = 0; i < 3; i++)
+            rd[i] = d[i] - 2 * dn * nf[i];
+        if (trace_from(J, wk, p, nf, rd, depth + 1, rc) != 0) return -1;
+        for (int i = 0; i < 3; i++)
+            local[i] = (1 - m->reflect) * local[i] + m->reflect * rc[i];
+    }
+    return 0;
+}
+
+/* The root whose first boundary fb[r] (NULL: none) comes first, ties to the
+ * one OpenSCAD draws last (root_rank); -1 when no live root has one. */
+static int nearest_root(const job *J, const iv_bound *const fb[MAX_ROOTS])
+{
+    int best = -1;
+    for (int q = 0; q < J->nlive; q++) {
+        int r = J->live[q];
+        if (fb[r] && (best < 0 || fb[r]->t < fb[best]->t ||
+                      (fb[r]->t == fb[best]->t && root_rank[r] < root_rank[best])))
+            best = r;
+    }
+    return best;
+}
+
 /* One ray: composite every surface of every root front to back over the
  * scheme's background.  Returns 0, or -1 when the arena is out of memory. */
 static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                      double tmin, double tmax, int depth, double out[3])
 {
-    const render_camera *cam = J->cam;
-    iv_list lists[MAX_ROOTS];
-    int pos[MAX_ROOTS];    /* next boundary of each list: span pos/2, exit if odd */
-    int volume[MAX_ROOTS]; /* the current span was composited as a volume */
-    for (int q = 0; q < J->nlive; q++) {
-        int r = J->live[q];
-        memset(&lists[r], 0, sizeof lists[r]);
-        pos[r] = 0;
-        volume[r] = 0;
-    }
-    int traced = 0;
+    const float *bg = J->opt->colors.background;
+    double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
     if (J->first_hit && !wk->full_primary) {
         /* The walk below composites the nearest boundary of all roots
-         * first; when that one is opaque it ends there, so its lists might
-         * as well hold that boundary alone. */
+         * first; when that one is opaque it ends there, and the ray needs
+         * that boundary alone. */
         iv_bound fb[MAX_ROOTS];
-        int best = -1;
+        const iv_bound *have[MAX_ROOTS] = {NULL, NULL, NULL};
         for (int q = 0; q < J->nlive; q++) {
             int r = J->live[q];
             int rc = csg_trace_first(J->scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
             if (rc < 0) return -1;
-            if (rc && (best < 0 || fb[r].t < fb[best].t ||
-                       (fb[r].t == fb[best].t && root_rank[r] < root_rank[best])))
-                best = r;
+            if (rc) have[r] = &fb[r];
         }
-        if (best < 0 || ends_walk(J, best, &fb[best])) {
-            if (best >= 0) {
-                iv_span *sp = iv_arena_alloc(wk->a, sizeof *sp);
-                if (!sp) return -1;
-                /* The exit is never reached: the walk stops at the entry. */
-                *sp = (iv_span){fb[best], {INFINITY, IV_PRIM_NONE, 0, 0}};
-                lists[best] = (iv_list){sp, 1, 1};
+        int best = nearest_root(J, have);
+        float c[4];
+        const csg_material *m;
+        if (best < 0) {
+            for (int i = 0; i < 3; i++)
+                out[i] = acc[i] + (1 - acc_a) * bg[i];
+            return 0;
+        }
+        if (ends_walk(J, best, &fb[best], c, &m)) {
+            /* The walk's one step, as it takes it for this boundary. */
+            double local[3], p[3], nf[3];
+            if (surface_light(J, wk, &fb[best], &fb[best], c, m, o, d, depth, local, p, nf) != 0)
+                return -1;
+            double w = (1 - acc_a) * c[3];
+            for (int i = 0; i < 3; i++) {
+                acc[i] += w * local[i];
+                out[i] = acc[i] + (1 - (acc_a + w)) * bg[i];
             }
-            traced = 1;
-        } else {
-            wk->full_primary = 1;
+            return 0;
         }
-    }
-    if (!traced) {
-        int best = -1;
-        for (int q = 0; q < J->nlive; q++) {
-            int r = J->live[q];
-            if (csg_trace(J->scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
-            if (lists[r].n > 0 && (best < 0 || lists[r].v[0].enter.t < lists[best].v[0].enter.t ||
-                                   (lists[r].v[0].enter.t == lists[best].v[0].enter.t &&
-                                    root_rank[r] < root_rank[best])))
-                best = r;
-        }
-        if (J->first_hit)
-            wk->full_primary = !(best < 0 || ends_walk(J, best, &lists[best].v[0].enter));
+        wk->full_primary = 1;
     }
 
-    double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
+    iv_list lists[MAX_ROOTS];
+    int pos[MAX_ROOTS];    /* next boundary of each list: span pos/2, exit if odd */
+    int volume[MAX_ROOTS]; /* the current span was composited as a volume */
+    const iv_bound *first[MAX_ROOTS] = {NULL, NULL, NULL};
+    for (int q = 0; q < J->nlive; q++) {
+        int r = J->live[q];
+        pos[r] = 0;
+        volume[r] = 0;
+        if (csg_trace(J->scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
+        if (lists[r].n > 0) first[r] = &lists[r].v[0].enter;
+    }
+    if (J->first_hit) {
+        int best = nearest_root(J, first);
+        float c[4];
+        const csg_material *m;
+        wk->full_primary = !(best < 0 || ends_walk(J, best, first[best], c, &m));
+    }
+
     while (acc_a < OPAQUE) {
         int best = -1;
         const iv_bound *bb = NULL;
@@ -423,35 +482,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         }
         if (!(alpha > 0)) continue;
 
-        double n[3], p[3], nf[3];
-        csg_scene_normal(J->scene, sb, o, d, n);
-        for (int i = 0; i < 3; i++)
-            p[i] = o[i] + bb->t * d[i];
-        double side = dot3(n, d) > 0 ? -1 : 1;
-        for (int i = 0; i < 3; i++)
-            nf[i] = side * n[i];
-
-        float lit[3];
-        if (m->emit > 0) {
-            for (int i = 0; i < 3; i++)
-                lit[i] = c[i];
-        } else if (J->lit) {
-            double f = light_factor(J, wk, p, nf);
-            if (f < 0) return -1;
-            render_shade_apply(c, f, lit);
-        } else {
-            render_shade_apply(c, render_shade_factor(cam, n), lit);
-        }
-        double local[3] = {lit[0], lit[1], lit[2]};
-
-        if (m->reflect > 0 && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
-            double rd[3], rc[3], dn = dot3(d, nf);
-            for (int i = 0; i < 3; i++)
-                rd[i] = d[i] - 2 * dn * nf[i];
-            if (trace_from(J, wk, p, nf, rd, depth + 1, rc) != 0) return -1;
-            for (int i = 0; i < 3; i++)
-                local[i] = (1 - m->reflect) * local[i] + m->reflect * rc[i];
-        }
+        double local[3], p[3], nf[3];
+        if (surface_light(J, wk, bb, sb, c, m, o, d, depth, local, p, nf) != 0) return -1;
 
         double w = (1 - acc_a) * alpha;
         for (int i = 0; i < 3; i++)
@@ -473,7 +505,6 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
             return 0;
         }
     }
-    const float *bg = J->opt->colors.background;
     for (int i = 0; i < 3; i++)
         out[i] = acc[i] + (1 - acc_a) * bg[i];
     return 0;
@@ -512,6 +543,23 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
     int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
     int s = opt->samples;
     double inv = 1.0 / ((double)s * s);
+    if (!J->covered &&
+        !(x1 >= J->cover[0] && x0 <= J->cover[1] && y1 >= J->cover[2] && y0 <= J->cover[3])) {
+        /* Every sample lies in [x0, x1] × [y0, y1], so none is covered:
+         * the loop below would give each pixel this background sum. */
+        double sum[3] = {0, 0, 0};
+        for (int k = 0; k < s * s; k++)
+            for (int i = 0; i < 3; i++)
+                sum[i] += (float)(double)opt->colors.background[i];
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++) {
+                float *p = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
+                for (int i = 0; i < 3; i++)
+                    p[i] = (float)(sum[i] * inv);
+                p[3] = 1;
+            }
+        return 0;
+    }
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double sum[3] = {0, 0, 0};
