@@ -375,19 +375,36 @@ static int nearest_root(const job *J, const iv_bound *const fb[MAX_ROOTS])
     return best;
 }
 
+/* Composite a surface of opacity alpha sending light `local` under what
+ * the ray has gathered so far (acc, *acc_a: premultiplied). */
+static void composite(double acc[3], double *acc_a, double alpha, const double local[3])
+{
+    double w = (1 - *acc_a) * alpha;
+    for (int i = 0; i < 3; i++)
+        acc[i] += w * local[i];
+    *acc_a += w;
+}
+
+/* What the ray shows once compositing stops: acc over the background. */
+static void over_background(const job *J, const double acc[3], double acc_a, double out[3])
+{
+    const float *bg = J->opt->colors.background;
+    for (int i = 0; i < 3; i++)
+        out[i] = acc[i] + (1 - acc_a) * bg[i];
+}
+
 /* One ray: composite every surface of every root front to back over the
  * scheme's background.  Returns 0, or -1 when the arena is out of memory. */
 static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                      double tmin, double tmax, int depth, double out[3])
 {
-    const float *bg = J->opt->colors.background;
     double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
     if (J->first_hit && !wk->full_primary) {
         /* The walk below composites the nearest boundary of all roots
          * first; when that one is opaque it ends there, and the ray needs
          * that boundary alone. */
         iv_bound fb[MAX_ROOTS];
-        const iv_bound *have[MAX_ROOTS] = {NULL, NULL, NULL};
+        const iv_bound *have[MAX_ROOTS] = {NULL};
         for (int q = 0; q < J->nlive; q++) {
             int r = J->live[q];
             int rc = csg_trace_first(J->scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
@@ -398,8 +415,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         float c[4];
         const csg_material *m;
         if (best < 0) {
-            for (int i = 0; i < 3; i++)
-                out[i] = acc[i] + (1 - acc_a) * bg[i];
+            over_background(J, acc, acc_a, out);
             return 0;
         }
         if (ends_walk(J, best, &fb[best], c, &m)) {
@@ -407,11 +423,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
             double local[3], p[3], nf[3];
             if (surface_light(J, wk, &fb[best], &fb[best], c, m, o, d, depth, local, p, nf) != 0)
                 return -1;
-            double w = (1 - acc_a) * c[3];
-            for (int i = 0; i < 3; i++) {
-                acc[i] += w * local[i];
-                out[i] = acc[i] + (1 - (acc_a + w)) * bg[i];
-            }
+            composite(acc, &acc_a, c[3], local);
+            over_background(J, acc, acc_a, out);
             return 0;
         }
         wk->full_primary = 1;
@@ -420,7 +433,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
     iv_list lists[MAX_ROOTS];
     int pos[MAX_ROOTS];    /* next boundary of each list: span pos/2, exit if odd */
     int volume[MAX_ROOTS]; /* the current span was composited as a volume */
-    const iv_bound *first[MAX_ROOTS] = {NULL, NULL, NULL};
+    const iv_bound *first[MAX_ROOTS] = {NULL};
     for (int q = 0; q < J->nlive; q++) {
         int r = J->live[q];
         pos[r] = 0;
@@ -485,10 +498,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         double local[3], p[3], nf[3];
         if (surface_light(J, wk, bb, sb, c, m, o, d, depth, local, p, nf) != 0) return -1;
 
-        double w = (1 - acc_a) * alpha;
-        for (int i = 0; i < 3; i++)
-            acc[i] += w * local[i];
-        acc_a += w;
+        composite(acc, &acc_a, alpha, local);
 
         double ior = m->ior > 1 ? m->ior : J->opt->ior > 1 && alpha < 1 ? J->opt->ior : 0;
         if (ior > 1 && acc_a < OPAQUE && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
@@ -505,8 +515,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
             return 0;
         }
     }
-    for (int i = 0; i < 3; i++)
-        out[i] = acc[i] + (1 - acc_a) * bg[i];
+    over_background(J, acc, acc_a, out);
     return 0;
 }
 
@@ -532,6 +541,15 @@ static void primary_ray(const job *J, rng *g, double px, double py, double o[3],
     normalize3(d);
 }
 
+/* Pixel (x, y): the mean of its s² samples, whose sum is sum (inv = 1/s²). */
+static void put_pixel(const job *J, int x, int y, const double sum[3], double inv)
+{
+    float *p = J->rgba + ((size_t)y * (size_t)J->opt->width + (size_t)x) * 4;
+    for (int k = 0; k < 3; k++)
+        p[k] = (float)(sum[k] * inv);
+    p[3] = 1;
+}
+
 static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
 {
     const job *J = job_;
@@ -552,12 +570,8 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
             for (int i = 0; i < 3; i++)
                 sum[i] += (float)(double)opt->colors.background[i];
         for (int y = y0; y < y1; y++)
-            for (int x = x0; x < x1; x++) {
-                float *p = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
-                for (int i = 0; i < 3; i++)
-                    p[i] = (float)(sum[i] * inv);
-                p[3] = 1;
-            }
+            for (int x = x0; x < x1; x++)
+                put_pixel(J, x, y, sum, inv);
         return 0;
     }
     for (int y = y0; y < y1; y++)
@@ -589,10 +603,7 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
                     for (int k = 0; k < 3; k++)
                         sum[k] += (float)c[k];
                 }
-            float *p = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
-            for (int k = 0; k < 3; k++)
-                p[k] = (float)(sum[k] * inv);
-            p[3] = 1;
+            put_pixel(J, x, y, sum, inv);
         }
     return 0;
 }
