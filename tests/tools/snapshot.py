@@ -1,0 +1,194 @@
+#!/usr/bin/env python3
+"""Every output of every model, for checking that a change of structure
+changes nothing (issue 17's "byte-identical before and after").
+
+  snapshot.py run BIN DIR [--only GLOB] [--kinds echo,csg,png,stl]
+      run BIN on every file below and keep each output, its exit status and
+      its stderr under DIR (DIR/manifest.json indexes them)
+  snapshot.py diff DIR_A DIR_B [--rerun BIN_A]
+      list every file whose outputs, exit status or stderr differ; with
+      --rerun, a difference that BIN_A itself does not reproduce on a second
+      run (rands() without a seed, time) is reported as unstable, not as a
+      change
+
+The files: tests/**.scad, models/, bench/scenes/ (and union_1000 from
+gen_union.py), OpenSCAD's bundled examples, and ../shared/corpora: the
+regression corpus's scad/ and BOSL2's examples and the scripts of its
+tests/*.scadtest (written into a scratch copy of BOSL2, as its README asks).
+Each runs in its own folder with OPENSCADPATH at the corpora.  Outputs: .echo,
+.csg, a 320x240 PNG, an STL.  Not a test: the expected outputs are our own.
+"""
+import fnmatch
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import tomllib
+from concurrent.futures import ThreadPoolExecutor
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+CORPORA = os.path.abspath(os.path.join(ROOT, "..", "shared", "corpora"))
+EXAMPLES = "/usr/share/openscad/examples"
+SCRATCH = os.path.join(tempfile.gettempdir(), "rayscad-snapshot-corpora")
+KINDS = ["echo", "csg", "png", "stl"]
+TIMEOUT = 60
+
+
+def bosl2_scratch():
+    """A scratch copy of BOSL2 whose tests/ holds one .scad per [[test]]."""
+    src = os.path.join(CORPORA, "BOSL2")
+    if not os.path.isdir(src):
+        return []
+    dst = os.path.join(SCRATCH, "BOSL2")
+    if not os.path.isdir(dst):
+        shutil.copytree(src, dst)
+    files = []
+    for t in sorted(os.listdir(os.path.join(src, "tests"))):
+        if not t.endswith(".scadtest"):
+            continue
+        with open(os.path.join(src, "tests", t), "rb") as f:
+            doc = tomllib.load(f)
+        for i, test in enumerate(doc.get("test", [])):
+            name = "%s__%03d_%s.scad" % (t[:-9], i, test.get("name", "x"))
+            path = os.path.join(dst, "tests", name)
+            if not os.path.exists(path):
+                with open(path, "w") as f:
+                    f.write(test["script"])
+            files.append(path)
+    return files
+
+
+def all_files():
+    files = []
+    for base in ("tests", "models", "bench/scenes"):
+        for d, _, names in os.walk(os.path.join(ROOT, base)):
+            files += [os.path.join(d, n) for n in names if n.endswith(".scad")]
+    union = os.path.join(SCRATCH, "union_1000.scad")
+    if not os.path.exists(union):
+        os.makedirs(SCRATCH, exist_ok=True)
+        subprocess.run([sys.executable, os.path.join(ROOT, "bench/scenes/gen_union.py"),
+                        "1000", union], check=True)
+    files.append(union)
+    for base in (EXAMPLES, os.path.join(CORPORA, "openscad-tests/data/scad"),
+                 os.path.join(CORPORA, "BOSL2/examples")):
+        for d, _, names in os.walk(base):
+            files += [os.path.join(d, n) for n in names if n.endswith(".scad")]
+    files += bosl2_scratch()
+    return sorted(set(files))
+
+
+def key_of(path):
+    for prefix, tag in ((ROOT + "/", ""), (SCRATCH + "/", "scratch/"),
+                        (CORPORA + "/", "corpora/"), (EXAMPLES + "/", "examples/")):
+        if path.startswith(prefix):
+            return tag + path[len(prefix):]
+    return path
+
+
+def run_one(binary, path, kind, outdir):
+    key = key_of(path)
+    stem = os.path.join(outdir, "files", key.replace("/", "__"))
+    out = "%s.%s" % (stem, kind)
+    args = [binary, os.path.basename(path), "-o", out]
+    if kind == "png":
+        args.append("--imgsize=320,240")
+    env = dict(os.environ, OPENSCADPATH=CORPORA)
+    try:
+        p = subprocess.run(["timeout", "-k", "5", str(TIMEOUT)] + args, cwd=os.path.dirname(path),
+                           env=env, capture_output=True)
+        rc, err = p.returncode, p.stderr
+    except OSError as e:
+        rc, err = -1, str(e).encode()
+    # the output's own name appears in some messages; make it DIR-independent
+    err = err.replace(out.encode(), b"OUT").replace(outdir.encode(), b"DIR")
+    digest = None
+    if os.path.exists(out):
+        with open(out, "rb") as f:
+            digest = hashlib.sha256(f.read()).hexdigest()
+    return key, kind, {"rc": rc, "stderr": err.decode("utf-8", "replace"), "sha": digest}
+
+
+def cmd_run(binary, outdir, only, kinds):
+    binary = os.path.abspath(binary)
+    outdir = os.path.abspath(outdir)
+    os.makedirs(os.path.join(outdir, "files"), exist_ok=True)
+    files = [f for f in all_files() if not only or fnmatch.fnmatch(key_of(f), only)]
+    manifest_path = os.path.join(outdir, "manifest.json")
+    manifest = {}
+    if os.path.exists(manifest_path):
+        with open(manifest_path) as f:
+            manifest = json.load(f)
+    jobs = [(f, k) for f in files for k in kinds]
+    done = 0
+    with ThreadPoolExecutor(max_workers=int(os.environ.get("SNAPSHOT_JOBS", "2"))) as pool:
+        for key, kind, res in pool.map(lambda j: run_one(binary, j[0], j[1], outdir), jobs):
+            manifest.setdefault(key, {})[kind] = res
+            done += 1
+            if done % 200 == 0:
+                print("%d of %d" % (done, len(jobs)), flush=True)
+    with open(manifest_path, "w") as f:
+        json.dump(manifest, f, indent=1, sort_keys=True)
+    print("%d files, %d outputs -> %s" % (len(files), len(jobs), manifest_path))
+
+
+def cmd_diff(a_dir, b_dir, rerun):
+    with open(os.path.join(a_dir, "manifest.json")) as f:
+        a = json.load(f)
+    with open(os.path.join(b_dir, "manifest.json")) as f:
+        b = json.load(f)
+    by_key = {key_of(p): p for p in all_files()} if rerun else {}
+    changed = unstable = 0
+    for key in sorted(set(a) & set(b)):
+        for kind in sorted(set(a[key]) & set(b[key])):
+            x, y = a[key][kind], b[key][kind]
+            if x == y:
+                continue
+            if rerun and key in by_key:
+                with tempfile.TemporaryDirectory() as t:
+                    os.makedirs(os.path.join(t, "files"))
+                    _, _, again = run_one(os.path.abspath(rerun), by_key[key], kind, t)
+                again["stderr"] = again["stderr"].replace(t, a_dir)
+                if again != x:
+                    unstable += 1
+                    print("unstable %s (%s)" % (key, kind))
+                    continue
+            changed += 1
+            what = [f for f in ("rc", "sha", "stderr") if x[f] != y[f]]
+            print("CHANGED %s (%s): %s" % (key, kind, ", ".join(what)))
+            if "rc" in what:
+                print("    rc %s -> %s" % (x["rc"], y["rc"]))
+            if "stderr" in what:
+                print("    stderr before: %s" % x["stderr"][:300].replace("\n", "\n      "))
+                print("    stderr after:  %s" % y["stderr"][:300].replace("\n", "\n      "))
+    missing = sorted(set(a) ^ set(b))
+    for key in missing:
+        print("ONLY IN %s: %s" % ("first" if key in a else "second", key))
+    print("%d changed, %d unstable, %d in one snapshot only" % (changed, unstable, len(missing)))
+    return 1 if changed or missing else 0
+
+
+def main(argv):
+    if len(argv) >= 3 and argv[0] == "run":
+        only, kinds = None, KINDS
+        rest = argv[3:]
+        while rest:
+            if rest[0] == "--only":
+                only, rest = rest[1], rest[2:]
+            elif rest[0] == "--kinds":
+                kinds, rest = rest[1].split(","), rest[2:]
+            else:
+                break
+        cmd_run(argv[1], argv[2], only, kinds)
+        return 0
+    if len(argv) >= 3 and argv[0] == "diff":
+        rerun = argv[4] if len(argv) >= 5 and argv[3] == "--rerun" else None
+        return cmd_diff(argv[1], argv[2], rerun)
+    print(__doc__)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
