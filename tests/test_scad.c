@@ -251,7 +251,7 @@ Test(scad_lex, numerals_read_as_strtod)
     scad_arena *a = scad_arena_new();
     scad_diag d = {0};
     scad_token *t;
-    int n = scad_lex(a, &d, "numerals", src, &t);
+    int n = scad_lex(a, &d, scad_names_new(a), "numerals", src, &t);
     cr_assert_eq(n, N + 1, "%d tokens for %d numerals", n, N);
     cr_assert_eq(d.errors, 0);
     long fast = 0;
@@ -269,6 +269,52 @@ Test(scad_lex, numerals_read_as_strtod)
     scad_arena_free(a);
     free(src);
     free(at);
+}
+
+/* Interning against strcmp: 5000 names (enough to grow the table several
+ * times), each interned twice from different buffers, give one pointer per
+ * distinct string and distinct pointers for distinct strings. */
+Test(scad_names, equal_names_are_one_pointer)
+{
+    scad_arena *a = scad_arena_new();
+    scad_names *t = scad_names_new(a);
+    cr_assert(t);
+    enum { N = 5000 };
+    static const char *first[N];
+    char buf[32];
+    for (int i = 0; i < N; i++) {
+        int n = snprintf(buf, sizeof buf, "n%d_%c", i % 2500, 'a' + i / 2500);
+        first[i] = scad_names_intern(t, buf, (size_t)n);
+        cr_assert_str_eq(first[i], buf);
+    }
+    for (int i = 0; i < N; i++) {
+        int n = snprintf(buf, sizeof buf, "n%d_%c", i % 2500, 'a' + i / 2500);
+        cr_assert_eq(scad_names_intern(t, buf, (size_t)n), first[i], "%s", buf);
+        cr_assert_eq(scad_names_find(t, buf), first[i]);
+        if (i > 0) cr_assert_neq(first[i], first[i - 1]);
+    }
+    cr_assert_null(scad_names_find(t, "never_seen"));
+    cr_assert_eq(scad_name_keyword(scad_names_intern(t, "module", 6)), TK_MODULE);
+    cr_assert_eq(scad_name_keyword(scad_names_intern(t, "modules", 7)), 0);
+    scad_arena_free(a);
+}
+
+/* A scope finds the last of several definitions of a name, as openscad
+ * 2021.01 does (its .echo of this source is the two lines asserted). */
+Test(scad_names, scope_finds_the_last_definition)
+{
+    lines m = {0};
+    scad_result r;
+    int rc = eval_src("function f() = 1; function g() = 2; function f() = 3;\n"
+                      "module m() echo(\"first\"); module m() echo(\"second\");\n"
+                      "echo(f(), g()); m();\n",
+                      &m, &r, 0);
+    cr_assert_eq(rc, 0);
+    scad_result_free(&r);
+    cr_assert_eq(m.n, 2);
+    cr_assert_str_eq(m.v[0], "ECHO: 3, 2");
+    cr_assert_str_eq(m.v[1], "ECHO: \"second\"");
+    lines_free(&m);
 }
 
 Test(scad_tree, translate_cube)

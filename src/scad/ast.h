@@ -10,6 +10,7 @@
 #define RAYSCAD_SCAD_AST_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "scad.h"
 
@@ -26,6 +27,45 @@ void *scad_arena_alloc(scad_arena *a, size_t bytes);
 void *scad_arena_alloc_raw(scad_arena *a, size_t bytes);
 /* A NUL-terminated copy of s[0..n). */
 char *scad_arena_strndup(scad_arena *a, const char *s, size_t n);
+
+/* ---- interned names ------------------------------------------------------- */
+
+/* The names of a parse (names.c): every identifier the lexer reads, once,
+ * in the parse's arena.  Equal names are the same pointer, so the
+ * evaluator compares names with == and hashes them by address; a name
+ * from C code (a special variable's, a builtin's) must be interned in the
+ * same table before it is compared with one from the source. */
+typedef struct scad_names scad_names;
+
+typedef struct scad_name_header {
+    uint32_t hash, len;
+    int keyword; /* the scad_tok_kind of a reserved word, else 0 */
+    char s[];
+} scad_name_header;
+
+/* A table in arena a, holding the language's keywords; NULL when out of
+ * memory. */
+scad_names *scad_names_new(scad_arena *a);
+/* The interned copy of s[0..n) (made on first use); NULL when out of
+ * memory. */
+const char *scad_names_intern(scad_names *t, const char *s, size_t n);
+/* The interned copy of the NUL-terminated s, or NULL when no such name was
+ * ever interned (so no definition or variable can have it). */
+const char *scad_names_find(const scad_names *t, const char *s);
+
+static inline const scad_name_header *scad_name_header_of(const char *name)
+{
+    return (const scad_name_header *)(const void *)(name - offsetof(scad_name_header, s));
+}
+/* Only for interned names. */
+static inline uint32_t scad_name_hash(const char *name)
+{
+    return scad_name_header_of(name)->hash;
+}
+static inline int scad_name_keyword(const char *name)
+{
+    return scad_name_header_of(name)->keyword;
+}
 
 /* ---- locations and diagnostics -------------------------------------------- */
 
@@ -119,7 +159,8 @@ typedef struct scad_token {
  * *out to an array in the arena; reports lexical errors through d and keeps
  * going (an unterminated string or comment ends the input).  Out of memory:
  * *out = NULL, 0. */
-int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, scad_token **out);
+int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, const char *src,
+             scad_token **out);
 
 /* The whole file at path as a NUL-terminated string in the arena, or NULL
  * when it cannot be read. */
@@ -231,7 +272,16 @@ struct scad_scope {
     int nfuncs, capfuncs;
     scad_scope **uses; /* top scopes of the files `use`d here, in order */
     int nuses, capuses;
+    /* funcs and mods by name (scope.c), built when the parse ends */
+    int *fslot, *mslot;
+    uint32_t fmask, mmask;
 };
+
+/* Index s's definitions by name (scope.c); 0, or -1 when out of memory. */
+int scad_scope_index(scad_arena *a, scad_scope *s);
+/* The last function (module) s defines under the interned name, or NULL. */
+const scad_funcdef *scad_scope_function(const scad_scope *s, const char *name);
+const scad_moddef *scad_scope_module(const scad_scope *s, const char *name);
 
 /* The file a `use <name>` / `include <name>` in file `from` refers to, in
  * OpenSCAD's search order: from's own folder, then each folder of
@@ -242,6 +292,7 @@ char *scad_find_library(scad_arena *a, const char *from, const char *name);
 
 /* Parse a whole file.  Returns the top-level scope (in arena a), or NULL
  * when any syntax error was reported through d (all are reported). */
-scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file, const char *src);
+scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,
+                       const char *src);
 
 #endif

@@ -275,7 +275,7 @@ static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const ch
     scad_value v = scad_argv_get(a, name, -1);
     if (v.kind == SV_NUM) return v.u.num;
     int found;
-    v = scad_env_lookup(ev, env, name, loc, 1, &found);
+    v = scad_env_lookup_cstr(ev, env, name, loc, 1, &found);
     return v.kind == SV_NUM ? v.u.num : dflt;
 }
 

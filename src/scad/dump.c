@@ -118,7 +118,7 @@ static double special(scad_eval *ev, scad_env *env, const scad_stmt *st, const s
                       const char *name)
 {
     scad_value v = scad_argv_get(a, name, -1);
-    if (!scad_argv_given(a, name, -1)) v = scad_env_lookup(ev, env, name, st->loc, 1, NULL);
+    if (!scad_argv_given(a, name, -1)) v = scad_env_lookup_cstr(ev, env, name, st->loc, 1, NULL);
     double x = 0;
     num(v, &x);
     return x;

@@ -164,6 +164,7 @@ static void env_release(scad_env *e)
     for (int i = 0; i < e->nvars; i++)
         scad_value_drop(e->vars[i].v);
     if (e->vars != e->inline_vars) free(e->vars);
+    free(e->index);
     free(e);
 }
 
@@ -220,14 +221,53 @@ static int special_index(const char *name)
     }
 }
 
+/* An environment with more variables than this finds them by hashing (the
+ * file scope of a library such as BOSL2 holds hundreds); below, a scan of
+ * a few pointers is quicker. */
+enum { ENV_INDEXED = 8 };
+
+/* The slot of name in env->index, or the empty one where it would go. */
+static uint32_t index_slot(const scad_env *env, const char *name)
+{
+    uint32_t k = scad_name_hash(name) & env->index_mask;
+    while (env->index[k] && env->vars[env->index[k] - 1].name != name)
+        k = (k + 1) & env->index_mask;
+    return k;
+}
+
+/* Rebuild env->index for env->cap variables; on failure the index is
+ * dropped and lookups scan. */
+static void index_rebuild(scad_env *env)
+{
+    uint32_t cap = 16;
+    while (cap < 2 * (uint32_t)env->cap)
+        cap *= 2;
+    free(env->index);
+    env->index = calloc(cap, sizeof *env->index);
+    if (!env->index) return;
+    env->index_mask = cap - 1;
+    for (int i = 0; i < env->nvars; i++)
+        env->index[index_slot(env, env->vars[i].name)] = i + 1;
+}
+
+static scad_var *env_find(scad_env *env, const char *name)
+{
+    if (env->index) {
+        int i = env->index[index_slot(env, name)];
+        return i ? &env->vars[i - 1] : NULL;
+    }
+    for (int i = 0; i < env->nvars; i++)
+        if (env->vars[i].name == name) return &env->vars[i];
+    return NULL;
+}
+
 void scad_env_set(scad_env *env, const char *name, scad_value v)
 {
-    for (int i = 0; i < env->nvars; i++) {
-        if (strcmp(env->vars[i].name, name) == 0) {
-            scad_value_drop(env->vars[i].v);
-            env->vars[i].v = v;
-            return;
-        }
+    scad_var *old = env_find(env, name);
+    if (old) {
+        scad_value_drop(old->v);
+        old->v = v;
+        return;
     }
     if (env->nvars == env->cap) {
         int cap = env->cap * 2;
@@ -244,18 +284,16 @@ void scad_env_set(scad_env *env, const char *name, scad_value v)
     env->vars[env->nvars].name = name;
     env->vars[env->nvars].v = v;
     env->nvars++;
+    if (env->nvars > ENV_INDEXED && (!env->index || 2 * (uint32_t)env->nvars > env->index_mask))
+        index_rebuild(env);
+    else if (env->index)
+        env->index[index_slot(env, name)] = env->nvars;
     if (name[0] == '$') {
         int k = special_index(name);
         if (k >= 0) env->special[k] = env;
     }
 }
 
-static scad_var *env_find(scad_env *env, const char *name)
-{
-    for (int i = 0; i < env->nvars; i++)
-        if (strcmp(env->vars[i].name, name) == 0) return &env->vars[i];
-    return NULL;
-}
 
 scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_loc loc, int silent,
                            int *found)
@@ -277,6 +315,16 @@ scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_
             return v->v;
         }
     }
+    if (found) *found = 0;
+    if (!silent) scad_diag_warning(ev->d, loc, "Ignoring unknown variable '%s'", name);
+    return scad_undef();
+}
+
+scad_value scad_env_lookup_cstr(scad_eval *ev, scad_env *env, const char *name, scad_loc loc,
+                                int silent, int *found)
+{
+    const char *interned = scad_names_find(ev->names, name);
+    if (interned) return scad_env_lookup(ev, env, interned, loc, silent, found);
     if (found) *found = 0;
     if (!silent) scad_diag_warning(ev->d, loc, "Ignoring unknown variable '%s'", name);
     return scad_undef();
@@ -308,17 +356,15 @@ static const void *find_def(scad_eval *ev, scad_env *env, const char *name, int 
         if (!e->defs) continue;
         for (int k = -1; k < e->defs->nuses; k++) {
             const scad_scope *s = k < 0 ? e->defs : e->defs->uses[k];
-            int n = want_module ? s->nmods : s->nfuncs;
-            for (int i = n - 1; i >= 0; i--) {
-                const char *dn = want_module ? s->mods[i]->name : s->funcs[i]->name;
-                if (strcmp(dn, name) != 0) continue;
-                if (def_env) {
-                    *fresh = k >= 0;
-                    *def_env = k < 0 ? e : use_env(ev, s);
-                    if (!*def_env) return NULL;
-                }
-                return want_module ? (const void *)s->mods[i] : (const void *)s->funcs[i];
+            const void *def = want_module ? (const void *)scad_scope_module(s, name)
+                                          : (const void *)scad_scope_function(s, name);
+            if (!def) continue;
+            if (def_env) {
+                *fresh = k >= 0;
+                *def_env = k < 0 ? e : use_env(ev, s);
+                if (!*def_env) return NULL;
             }
+            return def;
         }
     }
     return NULL;
@@ -403,12 +449,12 @@ static int eval_args_ordered(scad_eval *ev, scad_env *env, const scad_args *args
         if (named && params && name[0] != '$') {
             int known = 0;
             for (int k = 0; k < params->n && !known; k++)
-                known = strcmp(params->v[k].name, name) == 0;
+                known = params->v[k].name == name;
             if (!known)
                 scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", name);
         }
         int k = 0;
-        while (name && k < nkeys && !(out->names[k] && strcmp(out->names[k], name) == 0))
+        while (name && k < nkeys && out->names[k] != name)
             k++;
         if (name && k < nkeys) {
             if (named) scad_diag_warning(ev->d, loc, "argument %s supplied more than once", name);
@@ -833,7 +879,7 @@ enum { MAX_TAIL_CALLS = 1000000 };
 static int is_self_call(scad_eval *ev, scad_env *env, const scad_expr *x, const scad_funcdef *def)
 {
     if (!def || x->kind != EX_CALL || x->a[0]->kind != EX_VAR) return 0;
-    if (strcmp(x->a[0]->str, def->name) != 0) return 0;
+    if (x->a[0]->str != def->name) return 0;
     int found;
     scad_value v = scad_env_lookup(ev, env, def->name, x->loc, 1, &found);
     if (found && v.kind == SV_FUNC) return 0;
@@ -959,7 +1005,8 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
         int found;
         fv = scad_env_lookup(ev, env, callee->str, callee->loc, 1, &found);
         if (fv.kind != SV_FUNC && !strcmp(callee->str, "is_undef") && e->args.n == 1 &&
-            e->args.v[0].value->kind == EX_VAR && !find_function(ev, env, "is_undef", NULL, NULL)) {
+            e->args.v[0].value->kind == EX_VAR &&
+            !find_function(ev, env, callee->str, NULL, NULL)) {
             /* OpenSCAD looks the variable up silently here */
             int there;
             scad_env_lookup(ev, env, e->args.v[0].value->str, e->loc, 1, &there);
@@ -1566,7 +1613,7 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     me->children = st->children;
     me->children_env = env;
     scad_bind_given(me, &argv);
-    scad_env_set(me, "$children", scad_num(st->children ? st->children->nstmts : 0));
+    scad_env_set(me, ev->sym_children, scad_num(st->children ? st->children->nstmts : 0));
     if (ev->module_depth == ev->module_names_cap) {
         int cap = ev->module_names_cap ? ev->module_names_cap * 2 : 64;
         const char **nn = realloc(ev->module_names, sizeof *nn * (size_t)cap);
@@ -1578,12 +1625,12 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     if (ev->module_depth < ev->module_names_cap)
         ev->module_names[ev->module_depth] = m->name;
     ev->module_depth++;
-    scad_env_set(me, "$parent_modules", scad_num(ev->module_depth));
+    scad_env_set(me, ev->sym_parent_modules, scad_num(ev->module_depth));
     for (int i = 0; i < m->body->nassigns; i++) {
         const scad_assign *as = &m->body->assigns[i];
         if (!is_literal(as->value)) continue;
         for (int k = 0; k < m->params.n; k++)
-            if (strcmp(m->params.v[k].name, as->name) == 0)
+            if (m->params.v[k].name == as->name)
                 scad_diag_warning(ev->d, as->loc,
                                   "Module %s: Parameter %s is overwritten with a literal",
                                   m->name, as->name);

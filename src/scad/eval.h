@@ -76,6 +76,10 @@ struct scad_env {
     scad_var *vars;
     int nvars, cap;
     scad_var inline_vars[4];
+    /* Past ENV_INDEXED variables, vars by name: open addressing on the
+     * interned name's hash, slot = 1 + index into vars, 0 empty. */
+    int *index;
+    uint32_t index_mask;
     scad_env *special[SCAD_ENV_NSPECIAL];
     int is_module;
     const scad_scope *children;
@@ -86,6 +90,8 @@ struct scad_env {
 
 typedef struct scad_eval {
     scad_diag *d;
+    scad_names *names; /* the parse's; names set from C are interned here */
+    const char *sym_children, *sym_parent_modules; /* interned "$children" … */
     scad_arena *arena; /* geometry */
     int depth, max_depth;
     int max_list, max_string; /* value size limits (scad_options) */
@@ -134,11 +140,15 @@ typedef struct scad_argv {
 } scad_argv;
 
 scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e);
-/* Borrowed value of a variable; undef (with OpenSCAD's warning unless
- * silent) when unknown.  *found tells which. */
+/* Borrowed value of the variable of the interned name; undef (with
+ * OpenSCAD's warning unless silent) when unknown.  *found tells which. */
 scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_loc loc, int silent,
                            int *found);
-/* Set (or replace) a variable in env; takes ownership of v. */
+/* The same for a name from C code, which need not be interned. */
+scad_value scad_env_lookup_cstr(scad_eval *ev, scad_env *env, const char *name, scad_loc loc,
+                                int silent, int *found);
+/* Set (or replace) the variable of the interned name in env; takes
+ * ownership of v. */
 void scad_env_set(scad_env *env, const char *name, scad_value v);
 
 /* Bind a call to parameters in two steps, in OpenSCAD 2021.01's order:

@@ -27,7 +27,7 @@ static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const ch
     double x;
     if (scad_to_num(scad_argv_get(a, name, -1), &x)) return x;
     int found;
-    if (scad_to_num(scad_env_lookup(ev, env, name, loc, 1, &found), &x)) return x;
+    if (scad_to_num(scad_env_lookup_cstr(ev, env, name, loc, 1, &found), &x)) return x;
     return dflt;
 }
 

@@ -19,6 +19,7 @@
 typedef struct lexer {
     scad_arena *a;
     scad_diag *d;
+    scad_names *names;
     const char *file;
     const char *p;
     int line, col;
@@ -284,15 +285,6 @@ static void lex_string(lexer *L, scad_loc loc)
     t->len = n;
 }
 
-static const struct {
-    const char *word;
-    scad_tok_kind kind;
-} keywords[] = {
-    {"module", TK_MODULE}, {"function", TK_FUNCTION}, {"if", TK_IF},         {"else", TK_ELSE},
-    {"for", TK_FOR},       {"let", TK_LET},           {"assert", TK_ASSERT}, {"echo", TK_ECHO},
-    {"each", TK_EACH},     {"true", TK_TRUE},         {"false", TK_FALSE},   {"undef", TK_UNDEF},
-};
-
 /* include <path> / use <path>: returns 1 when one was lexed. */
 static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kind)
 {
@@ -316,9 +308,10 @@ static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kin
     return 1;
 }
 
-int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, scad_token **out)
+int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, const char *src,
+             scad_token **out)
 {
-    lexer L = {a, d, file, src, 1, 1, NULL, 0, 0, 0, 0};
+    lexer L = {a, d, names, file, src, 1, 1, NULL, 0, 0, 0, 0};
     while (!L.failed) {
         char c = *L.p;
         scad_loc loc = {file, L.line, L.col};
@@ -369,16 +362,18 @@ int scad_lex(scad_arena *a, scad_diag *d, const char *file, const char *src, sca
             continue;
         }
         if (il > 0) {
-            scad_tok_kind kind = TK_ID;
-            for (size_t k = 0; k < sizeof keywords / sizeof keywords[0]; k++)
-                if (strlen(keywords[k].word) == il && memcmp(keywords[k].word, L.p, il) == 0)
-                    kind = keywords[k].kind;
             if (il == 7 && memcmp(L.p, "include", 7) == 0 && lex_include(&L, loc, 7, TK_INCLUDE))
                 continue;
             if (il == 3 && memcmp(L.p, "use", 3) == 0 && lex_include(&L, loc, 3, TK_USE)) continue;
-            scad_token *t = push(&L, kind, loc);
+            const char *name = scad_names_intern(L.names, L.p, il);
+            if (!name) {
+                out_of_memory(&L);
+                break;
+            }
+            int keyword = scad_name_keyword(name);
+            scad_token *t = push(&L, keyword ? (scad_tok_kind)keyword : TK_ID, loc);
             if (!t) break;
-            t->text = text_of(&L, L.p, il);
+            t->text = name;
             t->len = il;
             advance(&L, il);
             continue;

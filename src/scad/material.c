@@ -27,7 +27,7 @@ static int lookup(scad_eval *ev, scad_env *env, const scad_argv *a, const char *
     if (a && scad_argv_given(a, name, -1)) v = scad_argv_get(a, name, -1);
     int found = 0;
     if (v.kind == SV_UNDEF && env)
-        v = scad_env_lookup(ev, env, name, scad_eval_here(ev), 1, &found);
+        v = scad_env_lookup_cstr(ev, env, name, scad_eval_here(ev), 1, &found);
     if (v.kind == SV_BOOL) {
         *out = v.u.b ? 1 : 0;
         return 1;

@@ -28,16 +28,21 @@ typedef struct parser {
     int errors;
     int oom;
     int include_depth;
-    struct used_files *used; /* shared by a parse and its includes and uses */
+    struct shared *shared; /* one for a parse and its includes and uses */
 } parser;
 
-/* Files already `use`d in this parse, so that each is parsed once (and a
- * cycle of uses ends). */
-typedef struct used_files {
+/* What a parse shares with the parses of the files it includes and uses:
+ * the names, the files already `use`d (each is parsed once, and a cycle of
+ * uses ends), and the scopes that define functions or modules, indexed by
+ * name when the whole parse is done. */
+typedef struct shared {
+    scad_names *names;
     const char **path;
     scad_scope **scope;
     int n, cap;
-} used_files;
+    scad_scope **defining;
+    int ndefining, capdefining;
+} shared;
 
 /* Raised by a failing rule: the whole statement is abandoned. */
 #define FAIL_IF(cond)                                                                              \
@@ -564,7 +569,7 @@ static int statement(parser *P, scad_scope *s);
 static void add_assign(parser *P, scad_scope *s, const char *name, scad_expr *value, scad_loc loc)
 {
     for (int i = 0; i < s->nassigns; i++) {
-        if (strcmp(s->assigns[i].name, name) == 0) {
+        if (s->assigns[i].name == name) {
             scad_diag_warning(P->d, loc, "%s was assigned on line %d but was overwritten", name,
                               s->assigns[i].loc.line);
             s->assigns[i].value = value;
@@ -613,7 +618,7 @@ static scad_stmt *instantiation(parser *P)
         next(P);
         st = alloc(P, sizeof *st);
         if (st) {
-            st->name = "if";
+            st->name = t->text;
             st->loc = t->loc;
             if (!expect(P, '(', "'('") || !(st->cond = expr(P)) || !expect(P, ')', "')'") ||
                 !(st->children = child_scope(P))) {
@@ -641,6 +646,15 @@ static scad_stmt *instantiation(parser *P)
     return st;
 }
 
+/* Note that s defines something, for scad_parse to index it at the end. */
+static void defining(parser *P, scad_scope *s)
+{
+    if (s->nfuncs + s->nmods != 1) return; /* not its first definition */
+    shared *sh = P->shared;
+    sh->defining = grow(P, sh->defining, sh->ndefining, &sh->capdefining, sizeof *sh->defining);
+    if (sh->defining) sh->defining[sh->ndefining++] = s;
+}
+
 static int definition(parser *P, scad_scope *s)
 {
     scad_token *kw = next(P);
@@ -663,6 +677,7 @@ static int definition(parser *P, scad_scope *s)
         if (!statement(P, body)) return 0;
         s->mods = grow(P, s->mods, s->nmods, &s->capmods, sizeof *s->mods);
         if (s->mods) s->mods[s->nmods++] = m;
+        defining(P, s);
         return 1;
     }
     scad_funcdef *f = alloc(P, sizeof *f);
@@ -673,6 +688,7 @@ static int definition(parser *P, scad_scope *s)
     if (!(f->body = expr(P)) || !expect(P, ';', "';'")) return 0;
     s->funcs = grow(P, s->funcs, s->nfuncs, &s->capfuncs, sizeof *s->funcs);
     if (s->funcs) s->funcs[s->nfuncs++] = f;
+    defining(P, s);
     return 1;
 }
 
@@ -828,7 +844,7 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         scad_diag_line(P->d, SCAD_MSG_WARNING, line);
         return;
     }
-    used_files *u = P->used;
+    shared *u = P->shared;
     scad_scope *scope = NULL;
     for (int i = 0; i < u->n; i++)
         if (strcmp(u->path[i], path) == 0) scope = u->scope[i];
@@ -862,7 +878,7 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         u->scope[u->n] = scope;
         u->n++;
         scad_token *toks;
-        int n = scad_lex(P->a, P->d, path, src, &toks);
+        int n = scad_lex(P->a, P->d, u->names, path, src, &toks);
         if (!toks) {
             P->oom = 1;
             return;
@@ -899,7 +915,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
         return;
     }
     scad_token *toks;
-    int n = scad_lex(P->a, P->d, path, src, &toks);
+    int n = scad_lex(P->a, P->d, P->shared->names, path, src, &toks);
     if (!toks) {
         P->oom = 1;
         return;
@@ -914,12 +930,13 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
     P->oom |= sub.oom;
 }
 
-scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file, const char *src)
+scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,
+                       const char *src)
 {
-    used_files used = {NULL, NULL, 0, 0};
-    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, &used};
+    shared sh = {names, NULL, NULL, 0, 0, NULL, 0, 0};
+    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, &sh};
     int errors_before = d->errors;
-    P.ntok = scad_lex(a, d, file, src, &P.t);
+    P.ntok = scad_lex(a, d, names, file, src, &P.t);
     if (!P.t) {
         scad_diag_error(d, (scad_loc){file, 1, 1}, "out of memory");
         return NULL;
@@ -927,6 +944,8 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, const char *file, const char
     scad_scope *s = new_scope(&P);
     if (!s) return NULL;
     parse_into(&P, s);
+    for (int i = 0; i < sh.ndefining && !P.oom; i++)
+        if (scad_scope_index(a, sh.defining[i]) != 0) P.oom = 1;
     if (P.oom) scad_diag_error(d, (scad_loc){file, 1, 1}, "out of memory");
     if (P.errors || P.oom || d->errors != errors_before) return NULL;
     return s;

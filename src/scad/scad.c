@@ -110,6 +110,7 @@ static csg_node *list_to_csg(scad_geom **v, int n, const scad_geom **oom)
 typedef struct job {
     const scad_options *opt;
     scad_diag *d;
+    scad_names *names;
     const char *name, *src; /* parsed by the job itself (parse_job) */
     scad_arena *a;
     scad_scope *top;
@@ -119,12 +120,21 @@ typedef struct job {
     scad_buf *dump; /* non-NULL: write the .csg text here, build no trees */
 } job;
 
-static void set_num(scad_env *e, const char *name, double x)
+static void set_value(scad_eval *ev, scad_env *e, const char *name, scad_value v)
 {
-    scad_env_set(e, name, scad_num(x));
+    const char *n = scad_names_intern(ev->names, name, strlen(name));
+    if (n)
+        scad_env_set(e, n, v);
+    else
+        scad_eval_error(ev, ev->at, "out of memory");
 }
 
-static void set_vec3(scad_env *e, const char *name, double x, double y, double z)
+static void set_num(scad_eval *ev, scad_env *e, const char *name, double x)
+{
+    set_value(ev, e, name, scad_num(x));
+}
+
+static void set_vec3(scad_eval *ev, scad_env *e, const char *name, double x, double y, double z)
 {
     scad_value v = scad_vec_new(3);
     if (v.kind == SV_VEC) {
@@ -132,7 +142,7 @@ static void set_vec3(scad_env *e, const char *name, double x, double y, double z
         v.u.vec->v[1] = scad_num(y);
         v.u.vec->v[2] = scad_num(z);
     }
-    scad_env_set(e, name, v);
+    set_value(ev, e, name, v);
 }
 
 /* Camera::updateView's reading of one $vp variable: $vpr and $vpt take 2
@@ -162,6 +172,7 @@ static void run_job(job *j)
     scad_eval ev;
     memset(&ev, 0, sizeof ev);
     ev.d = j->d;
+    ev.names = j->names;
     ev.arena = scad_arena_new();
     ev.max_depth =
         j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion : DEFAULT_MAX_RECURSION;
@@ -181,17 +192,24 @@ static void run_job(job *j)
         scad_diag_error(j->d, ev.at, "out of memory");
         return;
     }
+    ev.sym_children = scad_names_intern(ev.names, "$children", 9);
+    ev.sym_parent_modules = scad_names_intern(ev.names, "$parent_modules", 15);
+    if (!ev.sym_children || !ev.sym_parent_modules) {
+        scad_diag_error(j->d, ev.at, "out of memory");
+        scad_arena_free(ev.arena);
+        return;
+    }
     scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
     if (builtins) { /* set before any environment below it is made (eval.h) */
-        set_num(builtins, "PI", 3.14159265358979323846);
-        set_num(builtins, "$fn", 0);
-        set_num(builtins, "$fa", 12);
-        set_num(builtins, "$fs", 2);
-        set_num(builtins, "$t", 0);
-        scad_env_set(builtins, "$preview", scad_bool(1));
-        set_num(builtins, "$vpd", 500);
-        set_vec3(builtins, "$vpr", 0, 0, 0);
-        set_vec3(builtins, "$vpt", 0, 0, 0);
+        set_num(&ev, builtins, "PI", 3.14159265358979323846);
+        set_num(&ev, builtins, "$fn", 0);
+        set_num(&ev, builtins, "$fa", 12);
+        set_num(&ev, builtins, "$fs", 2);
+        set_num(&ev, builtins, "$t", 0);
+        set_value(&ev, builtins, "$preview", scad_bool(1));
+        set_num(&ev, builtins, "$vpd", 500);
+        set_vec3(&ev, builtins, "$vpr", 0, 0, 0);
+        set_vec3(&ev, builtins, "$vpt", 0, 0, 0);
     }
     scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
     ev.builtins = builtins;
@@ -259,7 +277,8 @@ static void run_job(job *j)
 
 /* ---- -D overrides ------------------------------------------------------------------ */
 
-static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const scad_options *opt)
+static int apply_defines(scad_arena *a, scad_diag *d, scad_names *names, scad_scope *top,
+                         const scad_options *opt)
 {
     if (!opt) return 0;
     for (int i = 0; i < opt->define_count; i++) {
@@ -269,7 +288,7 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const sca
         if (!src) return -1;
         memcpy(src, def, n);
         src[n] = ';';
-        scad_scope *s = scad_parse(a, d, "<-D>", src);
+        scad_scope *s = scad_parse(a, d, names, "<-D>", src);
         if (!s) return -1;
         if (s->nassigns != 1 || s->nstmts || s->nmods || s->nfuncs) {
             scad_diag_error(d, (scad_loc){"<-D>", 1, 1}, "-D expects name=value, got '%s'", def);
@@ -278,7 +297,7 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const sca
         scad_assign *as = &s->assigns[0];
         int k;
         for (k = 0; k < top->nassigns; k++)
-            if (strcmp(top->assigns[k].name, as->name) == 0) break;
+            if (top->assigns[k].name == as->name) break;
         if (k < top->nassigns) {
             top->assigns[k].value = as->value;
             continue;
@@ -300,13 +319,13 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_scope *top, const sca
  * Returns 0, or -1 after reporting the error. */
 static int parse_job(job *j)
 {
-    j->top = scad_parse(j->a, j->d, j->name, j->src);
+    j->top = scad_parse(j->a, j->d, j->names, j->name, j->src);
     if (!j->top) {
         if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
         scad_diag_parse_failed(j->d, j->name);
         return -1;
     }
-    if (apply_defines(j->a, j->d, j->top, j->opt)) {
+    if (apply_defines(j->a, j->d, j->names, j->top, j->opt)) {
         if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
         return -1;
     }
@@ -330,7 +349,12 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
     d.opt = opt;
     const char *slash = strrchr(name, '/');
     d.base_dir = slash ? scad_arena_strndup(a, name, (size_t)(slash - name + 1)) : "";
-    job j = {opt, &d, name, src, a, NULL, out, EVAL_STACK, -1, dump};
+    scad_names *names = scad_names_new(a);
+    if (!names) {
+        scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
+        return -1;
+    }
+    job j = {opt, &d, names, name, src, a, NULL, out, EVAL_STACK, -1, dump};
     pthread_attr_t attr;
     pthread_t th;
     int started = 0;

@@ -44,19 +44,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     d.opt = &opt;
     d.base_dir = "";
     scad_arena *a = scad_arena_new();
-    if (a) {
+    scad_names *names = a ? scad_names_new(a) : NULL;
+    if (names) {
         scad_token *toks;
-        (void)scad_lex(a, &d, "fuzz.scad", src, &toks);
-        scad_arena_free(a);
+        (void)scad_lex(a, &d, names, "fuzz.scad", src, &toks);
     }
+    scad_arena_free(a);
     memset(&d, 0, sizeof d);
     d.opt = &opt;
     d.base_dir = "";
     a = scad_arena_new();
-    if (a) {
-        (void)scad_parse(a, &d, "fuzz.scad", src);
-        scad_arena_free(a);
-    }
+    names = a ? scad_names_new(a) : NULL;
+    if (names) (void)scad_parse(a, &d, names, "fuzz.scad", src);
+    scad_arena_free(a);
     free(src);
     return 0;
 }
