@@ -64,7 +64,7 @@ enum { SCAD_ENV_NSPECIAL = 9 };
  * $-variables).  A module call's context also knows its children.
  *
  * special[k] is the nearest environment on the dynamic chain, this one
- * included, that defines the k-th well-known special variable (eval.c:
+ * included, that defines the k-th well-known special variable (env.c:
  * special_names), or NULL: inherited from dyn when the environment is
  * made, and pointed at itself when the name is first set here.  It stays
  * exact because an environment's variables are only set while no
@@ -92,14 +92,14 @@ typedef struct scad_eval {
     scad_diag *d;
     scad_names *names; /* the parse's; names set from C are interned here */
     const char *sym_children, *sym_parent_modules; /* interned "$children" … */
-    scad_arena *arena; /* geometry */
+    scad_arena *arena;                             /* geometry */
     int depth, max_depth;
-    int max_list, max_string; /* value size limits (scad_options) */
-    long steps, max_steps; /* work done and its limit (scad_options.max_steps) */
-    int module_depth; /* user modules being instantiated: $parent_modules */
+    int max_list, max_string;  /* value size limits (scad_options) */
+    long steps, max_steps;     /* work done and its limit (scad_options.max_steps) */
+    int module_depth;          /* user modules being instantiated: $parent_modules */
     const char **module_names; /* their names, outermost first (parent_module) */
     int module_names_cap;
-    int aborted;      /* an error stopped the evaluation */
+    int aborted; /* an error stopped the evaluation */
     char *stack_base;
     size_t stack_budget;
     scad_env *captured;
@@ -110,20 +110,20 @@ typedef struct scad_eval {
     int nhighlights, caphighlights;
     scad_geom **backgrounds;
     int nbackgrounds, capbackgrounds;
-    int dump; /* build OpenSCAD's node tree for .csg output, no geometry */
+    int dump;           /* build OpenSCAD's node tree for .csg output, no geometry */
     scad_env *builtins; /* the root environment (PI, $fn …) */
     /* The module instantiations and function calls being evaluated,
      * outermost first: OpenSCAD's "TRACE: called by" lines after an error. */
     struct scad_frame {
         const char *name;
         scad_loc loc;
-    } *frames;
+    } * frames;
     int nframes, capframes;
     /* Where a top-level error with no place of its own is reported: the
      * top-level assignment or statement being evaluated (deeper, the
      * innermost frame says it; see scad_eval_here). */
     scad_loc at;
-    int facets; /* scad_facets, from the options */
+    int facets;                    /* scad_facets, from the options */
     const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by
      * scad_geometry_release */
@@ -140,6 +140,75 @@ typedef struct scad_argv {
 } scad_argv;
 
 scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e);
+/* A call expression (eval_call.c): a user function, a function literal or
+ * a builtin function. */
+scad_value scad_eval_call(scad_eval *ev, scad_env *env, const scad_expr *e);
+
+/* ---- limits and the error trace (eval_call.c) ------------------------------- */
+
+/* One step of work (a call, a module instantiation, or a value of a loop or
+ * list being built): 0 to go on; past ev->max_steps, an error and -1. */
+int scad_eval_step(scad_eval *ev, scad_loc loc);
+/* Enter a module instantiation or function call for the error trace: 0,
+ * or -1 when out of memory (not recorded: a shorter trace, nothing worse);
+ * scad_frame_pop takes what scad_frame_push returned. */
+int scad_frame_push(scad_eval *ev, const char *name, scad_loc loc);
+void scad_frame_pop(scad_eval *ev, int pushed);
+/* On entry to every user function or module (what: "function" or
+ * "module"): 0 to go on, or -1 after the recursion error; each 0 is paired
+ * with a scad_call_leave. */
+int scad_call_enter(scad_eval *ev, scad_loc loc, const char *what, const char *name);
+void scad_call_leave(scad_eval *ev);
+
+/* ---- environments and binding (env.c) --------------------------------------- */
+
+/* A new environment below parent (lexical) and dyn (dynamic) for the
+ * definitions of defs (may be NULL); NULL after an out-of-memory error. */
+scad_env *scad_env_new(scad_eval *ev, scad_env *parent, scad_env *dyn, const scad_scope *defs);
+/* A function literal closes over e: keep it and its lexical ancestors
+ * until scad_eval_free_captured. */
+void scad_env_capture(scad_eval *ev, scad_env *e);
+/* The function (module) that name refers to from env: the innermost scope
+ * that defines it, then the files that scope `use`s.  With def_env NULL
+ * only the definition is looked up; else *def_env is where it was defined,
+ * and *fresh says whether that is a new environment of a used file, which
+ * the caller frees after the call. */
+const scad_funcdef *scad_find_function(scad_eval *ev, scad_env *env, const char *name,
+                                       scad_env **def_env, int *fresh);
+const scad_moddef *scad_find_module(scad_eval *ev, scad_env *env, const char *name,
+                                    scad_env **def_env, int *fresh);
+/* Evaluate a call's arguments (env.c says in which order).  resolve 0:
+ * first to last, names as written.  resolve 1: bound to params by
+ * OpenSCAD's rule, the first npositional of them taking the unnamed
+ * arguments; params NULL: unnamed ones stay unnamed.  0, or -1 after an
+ * out-of-memory error; free out with scad_argv_free. */
+int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out, int resolve,
+                   const scad_args *params, int npositional, scad_loc loc);
+int scad_args_eval(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out);
+void scad_argv_free(scad_argv *a);
+/* The assignments of scope s, in order, into env (eval_stmt.c). */
+void scad_run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s);
+
+/* ---- value lists and iteration (eval_expr.c) ---------------------------------- */
+
+typedef struct scad_vlist {
+    scad_value *v;
+    int n, cap;
+} scad_vlist;
+
+/* Append v (taken) as one step of work, within the list limit. */
+void scad_vlist_push(scad_eval *ev, scad_vlist *l, scad_value v, scad_loc loc);
+/* The list as a vector value; l is emptied. */
+scad_value scad_vlist_take(scad_vlist *l);
+void scad_vlist_free(scad_vlist *l);
+/* The values a for loop visits over v, appended to out: their count, or -1
+ * when refused (warned). */
+int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out);
+/* echo()'s line, assert()'s check (0 when it holds, else the error and
+ * -1), and let()'s assignments in sequence. */
+void scad_echo_line(scad_eval *ev, const scad_argv *a);
+int scad_check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_loc loc);
+void scad_assign_seq(scad_eval *ev, scad_env *env, const scad_args *args);
 /* Borrowed value of the variable of the interned name; undef (with
  * OpenSCAD's warning unless silent) when unknown.  *found tells which. */
 scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_loc loc, int silent,
@@ -154,7 +223,7 @@ void scad_env_set(scad_env *env, const char *name, scad_value v);
 /* Bind a call to parameters in two steps, in OpenSCAD 2021.01's order:
  * scad_bind_defaults evaluates every default in def_env (given or not);
  * then the caller evaluates the call's arguments, resolved to parameter
- * names (eval.c: eval_args_ordered), and scad_bind_given sets each of them
+ * names (scad_args_bind), and scad_bind_given sets each of them
  * by name.  The values in argv are borrowed. */
 void scad_bind_defaults(scad_eval *ev, scad_env *target, scad_env *def_env,
                         const scad_args *params);
@@ -177,9 +246,7 @@ scad_loc scad_eval_here(const scad_eval *ev);
 
 /* The file's scope evaluated in env; top-level objects as one union. */
 scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s);
-/* An environment below parent (lexical and dynamic); free with
- * scad_env_free (a no-op for environments a closure captured). */
-scad_env *scad_env_new_root(scad_eval *ev, scad_env *parent, const scad_scope *defs);
+/* Free e (a no-op for environments a closure captured). */
 void scad_env_free(scad_env *e);
 /* Frees the environments closures kept alive; call once at the end. */
 void scad_eval_free_captured(scad_eval *ev);
@@ -232,8 +299,7 @@ scad_geom *scad_dump_node(scad_eval *ev, const char *text, scad_geom *list);
 /* The dump node of a builtin geometry module (primitives, transforms,
  * colour, CSG operations, extrusions, import …) with its children
  * evaluated; NULL when name is not one of OpenSCAD's builtin modules. */
-scad_geom *scad_dump_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                             const scad_argv *a);
+scad_geom *scad_dump_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a);
 /* 1 when name is a builtin module scad_dump_builtin knows. */
 int scad_dump_is_builtin(const char *name);
 /* The tree as OpenSCAD's .csg text into b (each top-level node unindented).

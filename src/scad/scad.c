@@ -199,7 +199,7 @@ static void run_job(job *j)
         scad_arena_free(ev.arena);
         return;
     }
-    scad_env *builtins = scad_env_new_root(&ev, NULL, NULL);
+    scad_env *builtins = scad_env_new(&ev, NULL, NULL, NULL);
     if (builtins) { /* set before any environment below it is made (eval.h) */
         set_num(&ev, builtins, "PI", 3.14159265358979323846);
         set_num(&ev, builtins, "$fn", 0);
@@ -211,7 +211,7 @@ static void run_job(job *j)
         set_vec3(&ev, builtins, "$vpr", 0, 0, 0);
         set_vec3(&ev, builtins, "$vpt", 0, 0, 0);
     }
-    scad_env *file = builtins ? scad_env_new_root(&ev, builtins, j->top) : NULL;
+    scad_env *file = builtins ? scad_env_new(&ev, builtins, builtins, j->top) : NULL;
     ev.builtins = builtins;
     ev.facets = j->opt ? j->opt->facets : SCAD_FACETS_AUTO;
     static const scad_services no_services;

@@ -1,0 +1,690 @@
+/*
+ * eval_expr.c — expressions: operators with OpenSCAD's warnings, vectors and
+ * list comprehensions, ranges and iteration, let, assert, echo and function
+ * literals.  Function calls are eval_call.c's.
+ */
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval.h"
+
+enum { MAX_LOOP_ELEMENTS = 1000000 };
+
+/* ---- operators ---------------------------------------------------------------- */
+
+static const char *op_name(int op)
+{
+    static const char *two[] = {"<=", ">=", "==", "!=", "&&", "||"};
+    static char one[8][2];
+    if (op >= TK_LE && op <= TK_OR) return two[op - TK_LE];
+    char *s = one[op & 7];
+    s[0] = (char)op;
+    s[1] = 0;
+    return s;
+}
+
+static int is_num_vec(scad_value v)
+{
+    if (v.kind != SV_VEC) return 0;
+    for (int i = 0; i < v.u.vec->n; i++)
+        if (v.u.vec->v[i].kind != SV_NUM) return 0;
+    return 1;
+}
+
+/* Elementwise +, - over the shorter length; non-matching elements give undef. */
+static scad_value arith(int op, scad_value a, scad_value b, int *defined)
+{
+    *defined = 1;
+    if (a.kind == SV_NUM && b.kind == SV_NUM) {
+        switch (op) {
+        case '+':
+            return scad_num(a.u.num + b.u.num);
+        case '-':
+            return scad_num(a.u.num - b.u.num);
+        case '*':
+            return scad_num(a.u.num * b.u.num);
+        case '/':
+            return scad_num(a.u.num / b.u.num);
+        case '%':
+            return scad_num(fmod(a.u.num, b.u.num));
+        case '^':
+            return scad_num(pow(a.u.num, b.u.num));
+        }
+    }
+    if ((op == '+' || op == '-') && a.kind == SV_VEC && b.kind == SV_VEC) {
+        int n = a.u.vec->n < b.u.vec->n ? a.u.vec->n : b.u.vec->n;
+        scad_value r = scad_vec_new(n);
+        if (r.kind != SV_VEC) return r;
+        int dummy;
+        for (int i = 0; i < n; i++)
+            r.u.vec->v[i] = arith(op, a.u.vec->v[i], b.u.vec->v[i], &dummy);
+        return r;
+    }
+    if ((op == '*' && a.kind == SV_VEC && b.kind == SV_NUM) ||
+        (op == '*' && a.kind == SV_NUM && b.kind == SV_VEC) ||
+        (op == '/' && (a.kind == SV_VEC) != (b.kind == SV_VEC) &&
+         (a.kind == SV_NUM || b.kind == SV_NUM))) {
+        scad_value vec = a.kind == SV_VEC ? a : b;
+        scad_value r = scad_vec_new(vec.u.vec->n);
+        if (r.kind != SV_VEC) return r;
+        int dummy;
+        for (int i = 0; i < vec.u.vec->n; i++)
+            r.u.vec->v[i] = a.kind == SV_VEC ? arith(op, a.u.vec->v[i], b, &dummy)
+                                             : arith(op, a, b.u.vec->v[i], &dummy);
+        return r;
+    }
+    *defined = 0;
+    return scad_undef();
+}
+
+static scad_value dot(const scad_vec *a, const scad_vec *b)
+{
+    double s = 0;
+    for (int i = 0; i < a->n; i++)
+        s += a->v[i].u.num * b->v[i].u.num;
+    return scad_num(s);
+}
+
+/* Vector and matrix products, with OpenSCAD's warnings. */
+static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value b, int *defined)
+{
+    if (!(a.kind == SV_VEC && b.kind == SV_VEC)) return arith('*', a, b, defined);
+    *defined = 1;
+    const scad_vec *A = a.u.vec, *B = b.u.vec;
+    if (A->n == 0 || B->n == 0) return scad_undef();
+    if (A->v[0].kind == SV_NUM) {
+        if (B->v[0].kind == SV_NUM) { /* dot product */
+            if (A->n != B->n) {
+                scad_diag_warning(ev->d, loc, "vector*vector requires matching lengths (%d != %d)",
+                                  A->n, B->n);
+                return scad_undef();
+            }
+            if (!is_num_vec(a) || !is_num_vec(b)) return scad_undef();
+            return dot(A, B);
+        }
+        /* vector * matrix */
+        if (A->n != B->n) {
+            scad_diag_warning(
+                ev->d, loc,
+                "vector*matrix requires vector length to match matrix row count (%d != %d)", A->n,
+                B->n);
+            return scad_undef();
+        }
+        if (!is_num_vec(a) || !is_num_vec(B->v[0])) return scad_undef();
+        int cols = B->v[0].u.vec->n;
+        for (int i = 0; i < B->n; i++)
+            if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != cols) return scad_undef();
+        scad_value r = scad_vec_new(cols);
+        if (r.kind != SV_VEC) return r;
+        for (int j = 0; j < cols; j++) {
+            double s = 0;
+            for (int i = 0; i < A->n; i++)
+                s += A->v[i].u.num * B->v[i].u.vec->v[j].u.num;
+            r.u.vec->v[j] = scad_num(s);
+        }
+        return r;
+    }
+    if (A->v[0].kind != SV_VEC) return scad_undef();
+    int acols = A->v[0].u.vec->n;
+    for (int i = 0; i < A->n; i++)
+        if (!is_num_vec(A->v[i]) || A->v[i].u.vec->n != acols) return scad_undef();
+    if (B->v[0].kind == SV_NUM) { /* matrix * vector */
+        if (acols != B->n) {
+            scad_diag_warning(
+                ev->d, loc,
+                "matrix*vector requires matrix column count to match vector length (%d != %d)",
+                acols, B->n);
+            return scad_undef();
+        }
+        if (!is_num_vec(b)) return scad_undef();
+        scad_value r = scad_vec_new(A->n);
+        if (r.kind != SV_VEC) return r;
+        for (int i = 0; i < A->n; i++)
+            r.u.vec->v[i] = dot(A->v[i].u.vec, B);
+        return r;
+    }
+    if (B->v[0].kind != SV_VEC) return scad_undef();
+    int bcols = B->v[0].u.vec->n;
+    for (int i = 0; i < B->n; i++)
+        if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != bcols) return scad_undef();
+    if (acols != B->n) {
+        scad_diag_warning(ev->d, loc,
+                          "matrix*matrix requires left operand column count to match right operand "
+                          "row count (%d != %d)",
+                          acols, B->n);
+        return scad_undef();
+    }
+    scad_value r = scad_vec_new(A->n);
+    if (r.kind != SV_VEC) return r;
+    for (int i = 0; i < A->n; i++) {
+        scad_value row = scad_vec_new(bcols);
+        if (row.kind != SV_VEC) break;
+        for (int j = 0; j < bcols; j++) {
+            double s = 0;
+            for (int k = 0; k < acols; k++)
+                s += A->v[i].u.vec->v[k].u.num * B->v[k].u.vec->v[j].u.num;
+            row.u.vec->v[j] = scad_num(s);
+        }
+        r.u.vec->v[i] = row;
+    }
+    return r;
+}
+
+static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_value b)
+{
+    int op = e->op, defined = 1;
+    scad_value r;
+    switch (op) {
+    case TK_EQ:
+        return scad_bool(scad_value_equal(a, b));
+    case TK_NE:
+        return scad_bool(!scad_value_equal(a, b));
+    case '<':
+    case '>':
+    case TK_LE:
+    case TK_GE: {
+        int c = scad_value_compare(a, b);
+        if (c == 2) {
+            if (a.kind == SV_NUM && b.kind == SV_NUM) return scad_bool(0); /* NaN */
+            defined = 0;
+            r = scad_undef();
+            break;
+        }
+        r = scad_bool(op == '<' ? c < 0 : op == '>' ? c > 0 : op == TK_LE ? c <= 0 : c >= 0);
+        break;
+    }
+    case '*':
+        r = multiply(ev, e->loc, a, b, &defined);
+        break;
+    default:
+        r = arith(op, a, b, &defined);
+        break;
+    }
+    if (!defined)
+        scad_diag_warning(ev->d, e->loc, "undefined operation (%s %s %s)", scad_value_type_name(a),
+                          op_name(op), scad_value_type_name(b));
+    return r;
+}
+
+static scad_value negate(scad_value v, int *defined)
+{
+    if (v.kind == SV_NUM) return scad_num(-v.u.num);
+    if (v.kind == SV_VEC) {
+        scad_value r = scad_vec_new(v.u.vec->n);
+        if (r.kind != SV_VEC) return r;
+        int dummy;
+        for (int i = 0; i < v.u.vec->n; i++)
+            r.u.vec->v[i] = negate(v.u.vec->v[i], &dummy);
+        return r;
+    }
+    *defined = 0;
+    return scad_undef();
+}
+
+/* ---- growable value lists ------------------------------------------------------ */
+
+void scad_vlist_push(scad_eval *ev, scad_vlist *l, scad_value v, scad_loc loc)
+{
+    if (scad_eval_step(ev, loc)) {
+        scad_value_drop(v);
+        return;
+    }
+    if (l->n >= ev->max_list) {
+        scad_value_drop(v);
+        scad_eval_error(ev, loc, "list longer than %d elements", ev->max_list);
+        return;
+    }
+    if (l->n == l->cap) {
+        int cap = l->cap ? l->cap * 2 : 8;
+        scad_value *nv = realloc(l->v, sizeof *nv * (size_t)cap);
+        if (!nv) {
+            scad_value_drop(v);
+            scad_eval_error(ev, loc, "out of memory building a vector");
+            return;
+        }
+        l->v = nv;
+        l->cap = cap;
+    }
+    l->v[l->n++] = v;
+}
+
+scad_value scad_vlist_take(scad_vlist *l)
+{
+    scad_value r = scad_vec_new(l->n);
+    if (r.kind == SV_VEC) {
+        if (l->n) memcpy(r.u.vec->v, l->v, sizeof *l->v * (size_t)l->n);
+    } else {
+        for (int i = 0; i < l->n; i++)
+            scad_value_drop(l->v[i]);
+    }
+    free(l->v);
+    l->v = NULL;
+    l->n = l->cap = 0;
+    return r;
+}
+
+void scad_vlist_free(scad_vlist *l)
+{
+    for (int i = 0; i < l->n; i++)
+        scad_value_drop(l->v[i]);
+    free(l->v);
+}
+
+/* ---- iteration (for, each) --------------------------------------------------- */
+
+/* Number of values of a range as OpenSCAD counts them: the quotient is
+ * nudged up by one ulp so that [0:0.1:0.3] has 4 values; a zero step or an
+ * infinite end gives UINT32_MAX (which the loop limit then refuses). */
+double scad_range_steps(const scad_range *r)
+{
+    if (isnan(r->begin) || isnan(r->end) || isnan(r->step)) return 0;
+    if (r->step < 0 ? r->begin < r->end : r->begin > r->end) return 0;
+    if (r->begin == r->end || isinf(r->step)) return 1;
+    if (isinf(r->begin) || isinf(r->end) || r->step == 0) return 4294967295.0;
+    double q = floor(nextafter((r->end - r->begin) / r->step, INFINITY));
+    if (q >= 4294967295.0) return 4294967295.0;
+    return q + 1;
+}
+
+/* Expands v into the list of values a for loop visits.  Returns the count,
+ * or -1 when refused (warned).  Borrowed items are referenced into out. */
+int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
+{
+    switch (v.kind) {
+    case SV_UNDEF:
+        return 0;
+    case SV_RANGE: {
+        double n = scad_range_steps(v.u.range);
+        if (n > MAX_LOOP_ELEMENTS) {
+            scad_diag_warning(ev->d, loc,
+                              "Bad range parameter in for statement: too many elements (%.0f)", n);
+            return -1;
+        }
+        for (int i = 0; i < (int)n && !ev->aborted; i++)
+            scad_vlist_push(ev, out, scad_num(v.u.range->begin + i * v.u.range->step), loc);
+        return out->n;
+    }
+    case SV_VEC:
+        for (int i = 0; i < v.u.vec->n && !ev->aborted; i++)
+            scad_vlist_push(ev, out, scad_value_ref(v.u.vec->v[i]), loc);
+        return out->n;
+    case SV_STR: {
+        const char *s = v.u.str->s;
+        size_t i = 0;
+        while (i < v.u.str->len && !ev->aborted) {
+            size_t k = 1;
+            while (i + k < v.u.str->len && ((unsigned char)s[i + k] & 0xC0) == 0x80)
+                k++;
+            scad_vlist_push(ev, out, scad_str_new(s + i, k), loc);
+            i += k;
+        }
+        return out->n;
+    }
+    default:
+        scad_vlist_push(ev, out, scad_value_ref(v), loc);
+        return 1;
+    }
+}
+
+/* ---- expressions -------------------------------------------------------------- */
+
+static scad_value eval_index(scad_value v, scad_value i)
+{
+    if (i.kind != SV_NUM || isnan(i.u.num) || i.u.num < 0) return scad_undef();
+    double k = floor(i.u.num);
+    if (v.kind == SV_VEC) {
+        if (k >= v.u.vec->n) return scad_undef();
+        return scad_value_ref(v.u.vec->v[(int)k]);
+    }
+    if (v.kind == SV_STR) {
+        if (k >= (double)v.u.str->nchars) return scad_undef();
+        const char *s = v.u.str->s;
+        size_t pos = 0, c = 0;
+        while (c < (size_t)k) {
+            pos++;
+            while (pos < v.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80)
+                pos++;
+            c++;
+        }
+        size_t len = 1;
+        while (pos + len < v.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
+            len++;
+        return scad_str_new(s + pos, len);
+    }
+    if (v.kind == SV_RANGE) {
+        const scad_range *r = v.u.range;
+        if (k == 0) return scad_num(r->begin);
+        if (k == 1) return scad_num(r->step);
+        if (k == 2) return scad_num(r->end);
+    }
+    return scad_undef();
+}
+
+/* Runs the let/for assignments of args one after another in env. */
+void scad_assign_seq(scad_eval *ev, scad_env *env, const scad_args *args)
+{
+    for (int i = 0; i < args->n && !ev->aborted; i++) {
+        scad_value v = scad_eval_expr(ev, env, args->v[i].value);
+        if (args->v[i].name)
+            scad_env_set(env, args->v[i].name, v);
+        else
+            scad_value_drop(v);
+    }
+}
+
+void scad_echo_line(scad_eval *ev, const scad_argv *a)
+{
+    scad_buf b = {0};
+    scad_buf_puts(&b, "ECHO: ");
+    for (int i = 0; i < a->n; i++) {
+        if (i) scad_buf_puts(&b, ", ");
+        if (a->names[i]) scad_buf_printf(&b, "%s = ", a->names[i]);
+        scad_value_format(&b, a->v[i], 1);
+    }
+    scad_diag_line(ev->d, SCAD_MSG_ECHO, scad_buf_str(&b));
+    scad_buf_free(&b);
+}
+
+/* assert(condition, message): 0 when it holds, else reports and aborts. */
+int scad_check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_loc loc)
+{
+    scad_argv a;
+    if (scad_args_eval(ev, env, args, &a)) return -1;
+    scad_value c = scad_argv_get(&a, "condition", 0);
+    int ok = scad_value_truthy(c);
+    if (!ok && !ev->aborted) {
+        scad_buf b = {0};
+        const scad_expr *ce = NULL;
+        for (int i = 0; i < args->n; i++)
+            if (!args->v[i].name || strcmp(args->v[i].name, "condition") == 0) {
+                ce = args->v[i].value;
+                break;
+            }
+        scad_buf_puts(&b, "Assertion '");
+        if (ce) scad_expr_format(&b, ce);
+        scad_buf_puts(&b, "' failed");
+        if (scad_argv_given(&a, "message", 1)) {
+            scad_buf_puts(&b, ": ");
+            scad_value_format(&b, scad_argv_get(&a, "message", 1), 1);
+        }
+        scad_eval_error(ev, loc, "%s", scad_buf_str(&b));
+        scad_buf_free(&b);
+    }
+    scad_argv_free(&a);
+    return ok ? 0 : -1;
+}
+
+static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, scad_vlist *out);
+
+/* for (a = …, b = …) in a comprehension: nested, each level evaluated in
+ * the environment of the levels outside it. */
+static void lc_for(scad_eval *ev, scad_env *env, const scad_expr *e, int k, scad_vlist *out)
+{
+    if (ev->aborted) return;
+    if (k == e->args.n) {
+        lc_eval(ev, env, e->a[0], out);
+        return;
+    }
+    const scad_arg *arg = &e->args.v[k];
+    scad_value src = scad_eval_expr(ev, env, arg->value);
+    scad_vlist items = {0};
+    if (scad_iter_values(ev, src, arg->loc, &items) > 0) {
+        for (int i = 0; i < items.n && !ev->aborted; i++) {
+            scad_env *ie = scad_env_new(ev, env, env, NULL);
+            if (!ie) break;
+            if (arg->name) scad_env_set(ie, arg->name, scad_value_ref(items.v[i]));
+            lc_for(ev, ie, e, k + 1, out);
+            scad_env_free(ie);
+        }
+    }
+    scad_vlist_free(&items);
+    scad_value_drop(src);
+}
+
+static void push_each(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
+{
+    if (v.kind == SV_VEC || v.kind == SV_RANGE || v.kind == SV_STR) {
+        scad_vlist items = {0};
+        if (scad_iter_values(ev, v, loc, &items) > 0)
+            for (int i = 0; i < items.n; i++)
+                scad_vlist_push(ev, out, scad_value_ref(items.v[i]), loc);
+        scad_vlist_free(&items);
+        scad_value_drop(v);
+    } else {
+        scad_vlist_push(ev, out, v, loc);
+    }
+}
+
+static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, scad_vlist *out)
+{
+    if (ev->aborted) return;
+    switch (e->kind) {
+    case LC_FOR:
+        lc_for(ev, env, e, 0, out);
+        break;
+    case LC_CFOR: {
+        scad_env *ie = scad_env_new(ev, env, env, NULL);
+        if (!ie) return;
+        scad_assign_seq(ev, ie, &e->args);
+        long iterations = 0;
+        for (;;) {
+            scad_value c = scad_eval_expr(ev, ie, e->a[1]);
+            int go = scad_value_truthy(c);
+            scad_value_drop(c);
+            if (!go || ev->aborted) break;
+            if (++iterations > MAX_LOOP_ELEMENTS) {
+                scad_diag_warning(ev->d, e->loc, "for loop stopped after %d iterations",
+                                  MAX_LOOP_ELEMENTS);
+                break;
+            }
+            lc_eval(ev, ie, e->a[0], out);
+            /* the update reads the old values and makes a new environment */
+            scad_env *ne = scad_env_new(ev, env, env, NULL);
+            if (!ne) break;
+            for (int i = 0; i < ie->nvars; i++)
+                scad_env_set(ne, ie->vars[i].name, scad_value_ref(ie->vars[i].v));
+            for (int i = 0; i < e->args2.n && !ev->aborted; i++) {
+                scad_value v = scad_eval_expr(ev, ie, e->args2.v[i].value);
+                if (e->args2.v[i].name)
+                    scad_env_set(ne, e->args2.v[i].name, v);
+                else
+                    scad_value_drop(v);
+            }
+            scad_env_free(ie);
+            ie = ne;
+        }
+        scad_env_free(ie);
+        break;
+    }
+    case LC_IF: {
+        scad_value c = scad_eval_expr(ev, env, e->a[1]);
+        int t = scad_value_truthy(c);
+        scad_value_drop(c);
+        if (t)
+            lc_eval(ev, env, e->a[0], out);
+        else if (e->a[2])
+            lc_eval(ev, env, e->a[2], out);
+        break;
+    }
+    case LC_LET: {
+        scad_env *le = scad_env_new(ev, env, env, NULL);
+        if (!le) return;
+        scad_assign_seq(ev, le, &e->args);
+        lc_eval(ev, le, e->a[0], out);
+        scad_env_free(le);
+        break;
+    }
+    case LC_EACH: {
+        if (e->a[0]->kind >= LC_FOR) {
+            scad_vlist inner = {0};
+            lc_eval(ev, env, e->a[0], &inner);
+            for (int i = 0; i < inner.n; i++) {
+                push_each(ev, inner.v[i], e->loc, out);
+                inner.v[i] = scad_undef();
+            }
+            scad_vlist_free(&inner);
+        } else {
+            push_each(ev, scad_eval_expr(ev, env, e->a[0]), e->loc, out);
+        }
+        break;
+    }
+    default:
+        scad_vlist_push(ev, out, scad_eval_expr(ev, env, e), e->loc);
+        break;
+    }
+}
+
+scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
+{
+    if (ev->aborted) return scad_undef();
+    switch (e->kind) {
+    case EX_NUMBER:
+        return scad_num(e->num);
+    case EX_STRING:
+        return scad_str_new(e->str, e->len);
+    case EX_BOOL:
+        return scad_bool((int)e->num);
+    case EX_UNDEF:
+        return scad_undef();
+    case EX_VAR:
+        return scad_value_ref(scad_env_lookup(ev, env, e->str, e->loc, 0, NULL));
+    case EX_RANGE: {
+        /* OpenSCAD 2021.01's order: begin, end, step */
+        scad_value b = scad_eval_expr(ev, env, e->a[0]);
+        scad_value en = scad_eval_expr(ev, env, e->a[2]);
+        scad_value s = e->a[1] ? scad_eval_expr(ev, env, e->a[1]) : scad_num(1);
+        scad_value r = scad_undef();
+        if (b.kind == SV_NUM && s.kind == SV_NUM && en.kind == SV_NUM) {
+            double bb = b.u.num, ss = s.u.num, ee = en.u.num;
+            if (!e->a[1] && bb > ee) {
+                scad_diag_deprecated(ev->d, e->loc,
+                                     "Using ranges of the form [begin:end] with begin value "
+                                     "greater than the end value is deprecated");
+                double t = bb;
+                bb = ee;
+                ee = t;
+            } else if (e->a[1] && ss < 0 && bb < ee) {
+                scad_diag_warning(ev->d, e->loc,
+                                  "begin is smaller than the end, but step is negative");
+            } else if (e->a[1] && ss > 0 && bb > ee) {
+                scad_diag_warning(ev->d, e->loc,
+                                  "begin is greater than the end, but step is positive");
+            }
+            r = scad_range_new(bb, ss, ee);
+        }
+        scad_value_drop(b);
+        scad_value_drop(s);
+        scad_value_drop(en);
+        return r;
+    }
+    case EX_VECTOR: {
+        scad_vlist l = {0};
+        for (int i = 0; i < e->n && !ev->aborted; i++)
+            lc_eval(ev, env, e->list[i], &l);
+        if (ev->aborted) {
+            scad_vlist_free(&l);
+            return scad_undef();
+        }
+        return scad_vlist_take(&l);
+    }
+    case EX_UNARY: {
+        scad_value v = scad_eval_expr(ev, env, e->a[0]);
+        scad_value r;
+        int defined = 1;
+        if (e->op == '!')
+            r = scad_bool(!scad_value_truthy(v));
+        else if (e->op == '-')
+            r = negate(v, &defined);
+        else if (v.kind == SV_NUM || v.kind == SV_VEC)
+            r = scad_value_ref(v);
+        else
+            defined = 0, r = scad_undef();
+        if (!defined && !ev->aborted)
+            scad_diag_warning(ev->d, e->loc, "undefined operation (%c%s)", e->op,
+                              scad_value_type_name(v));
+        scad_value_drop(v);
+        return r;
+    }
+    case EX_BINARY: {
+        if (e->op == TK_AND || e->op == TK_OR) {
+            scad_value a = scad_eval_expr(ev, env, e->a[0]);
+            int t = scad_value_truthy(a);
+            scad_value_drop(a);
+            if (e->op == TK_AND ? !t : t) return scad_bool(t);
+            scad_value b = scad_eval_expr(ev, env, e->a[1]);
+            t = scad_value_truthy(b);
+            scad_value_drop(b);
+            return scad_bool(t);
+        }
+        /* the right operand first, as OpenSCAD 2021.01 (built by GCC) does:
+         * its echo() output and warnings come first */
+        scad_value b = scad_eval_expr(ev, env, e->a[1]);
+        scad_value a = scad_eval_expr(ev, env, e->a[0]);
+        scad_value r = ev->aborted ? scad_undef() : binary(ev, e, a, b);
+        scad_value_drop(a);
+        scad_value_drop(b);
+        return r;
+    }
+    case EX_TERNARY: {
+        scad_value c = scad_eval_expr(ev, env, e->a[0]);
+        int t = scad_value_truthy(c);
+        scad_value_drop(c);
+        return scad_eval_expr(ev, env, e->a[t ? 1 : 2]);
+    }
+    case EX_CALL:
+        return scad_eval_call(ev, env, e);
+    case EX_INDEX: {
+        scad_value i = scad_eval_expr(ev, env, e->a[1]); /* the index first */
+        scad_value v = scad_eval_expr(ev, env, e->a[0]);
+        scad_value r = eval_index(v, i);
+        scad_value_drop(v);
+        scad_value_drop(i);
+        return r;
+    }
+    case EX_MEMBER: {
+        scad_value v = scad_eval_expr(ev, env, e->a[0]);
+        scad_value r = scad_undef();
+        const char *m = e->str;
+        int k = -1;
+        if (v.kind == SV_VEC)
+            k = !strcmp(m, "x") ? 0 : !strcmp(m, "y") ? 1 : !strcmp(m, "z") ? 2 : -1;
+        if (v.kind == SV_RANGE)
+            k = !strcmp(m, "begin") ? 0 : !strcmp(m, "step") ? 1 : !strcmp(m, "end") ? 2 : -1;
+        if (k >= 0) r = eval_index(v, scad_num(k));
+        scad_value_drop(v);
+        return r;
+    }
+    case EX_LET: {
+        scad_env *le = scad_env_new(ev, env, env, NULL);
+        if (!le) return scad_undef();
+        scad_assign_seq(ev, le, &e->args);
+        scad_value r = scad_eval_expr(ev, le, e->a[0]);
+        scad_env_free(le);
+        return r;
+    }
+    case EX_ASSERT:
+        if (scad_check_assert(ev, env, &e->args, e->loc)) return scad_undef();
+        return e->a[0] ? scad_eval_expr(ev, env, e->a[0]) : scad_undef();
+    case EX_ECHO: {
+        scad_argv a;
+        if (scad_args_eval(ev, env, &e->args, &a)) return scad_undef();
+        if (!ev->aborted) scad_echo_line(ev, &a);
+        scad_argv_free(&a);
+        return e->a[0] ? scad_eval_expr(ev, env, e->a[0]) : scad_undef();
+    }
+    case EX_FUNCLIT:
+        scad_env_capture(ev, env);
+        return scad_func_new(e, env);
+    default: {
+        /* a comprehension outside [ ]: not produced by the parser */
+        scad_vlist l = {0};
+        lc_eval(ev, env, e, &l);
+        return scad_vlist_take(&l);
+    }
+    }
+}

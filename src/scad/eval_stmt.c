@@ -1,0 +1,518 @@
+/*
+ * eval_stmt.c — statements: the geometry nodes a scope makes, assignments,
+ * instantiations of user modules, builtin modules (through the registry)
+ * and the control modules (if, for, intersection_for, let, echo, assert,
+ * children), and the file's top-level scope.
+ *
+ * A scope evaluates all its assignments in order (each name once, at its
+ * first position) before instantiating anything.
+ */
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "eval.h"
+
+/* ---- geometry ----------------------------------------------------------------- */
+
+scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *state)
+{
+    scad_geom *g = scad_arena_alloc(ev->arena, sizeof *g);
+    if (!g) {
+        scad_eval_error(ev, scad_eval_here(ev), "out of memory");
+        return NULL;
+    }
+    g->is_leaf = 1;
+    g->shape = *s;
+    g->loc = scad_eval_here(ev);
+    memcpy(g->xf, state->xf, sizeof g->xf);
+    g->mat = state->mat;
+    return g;
+}
+
+scad_geom *scad_geom_op(scad_eval *ev, csg_op op)
+{
+    scad_geom *g = scad_arena_alloc(ev->arena, offsetof(scad_geom, shape)); /* eval.h */
+    if (!g) {
+        scad_eval_error(ev, scad_eval_here(ev), "out of memory");
+        return NULL;
+    }
+    g->op = op;
+    g->loc = scad_eval_here(ev);
+    return g;
+}
+
+void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child)
+{
+    if (!parent || !child) return;
+    if (ev->dump && !child->text) { /* a bare list: its children in its place */
+        for (int i = 0; i < child->n; i++)
+            scad_geom_add(ev, parent, child->kids[i]);
+        return;
+    }
+    if (parent->n == parent->cap) {
+        int cap = parent->cap ? parent->cap * 2 : 4;
+        scad_geom **k = scad_arena_alloc(ev->arena, sizeof *k * (size_t)cap);
+        if (!k) {
+            scad_eval_error(ev, scad_eval_here(ev), "out of memory");
+            return;
+        }
+        if (parent->n) memcpy(k, parent->kids, sizeof *k * (size_t)parent->n);
+        parent->kids = k;
+        parent->cap = cap;
+    }
+    parent->kids[parent->n++] = child;
+}
+
+/* Collects the children of one node; combined by `finish`. */
+typedef struct gather {
+    scad_geom **v;
+    int n, cap;
+} gather;
+
+static void gather_add(scad_eval *ev, gather *g, scad_geom *x)
+{
+    if (!x) return;
+    if (ev->dump && !x->text) {
+        for (int i = 0; i < x->n; i++)
+            gather_add(ev, g, x->kids[i]);
+        return;
+    }
+    if (g->n == g->cap) {
+        int cap = g->cap ? g->cap * 2 : 8;
+        scad_geom **v = realloc(g->v, sizeof *v * (size_t)cap);
+        if (!v) {
+            scad_eval_error(ev, scad_eval_here(ev), "out of memory");
+            return;
+        }
+        g->v = v;
+        g->cap = cap;
+    }
+    g->v[g->n++] = x;
+}
+
+/* Empty children are skipped (as OpenSCAD's CSG tree drops them); a single
+ * child stands for itself.  In dump mode the result is a bare list of all
+ * of them (NULL when none). */
+static scad_geom *finish(scad_eval *ev, gather *g, csg_op op)
+{
+    scad_geom *r = NULL;
+    if (ev->dump) {
+        if (g->n > 0) r = scad_geom_op(ev, op);
+        for (int i = 0; r && i < g->n; i++)
+            scad_geom_add(ev, r, g->v[i]);
+    } else if (g->n == 1) {
+        r = g->v[0];
+    } else if (g->n > 1) {
+        r = scad_geom_op(ev, op);
+        for (int i = 0; i < g->n; i++)
+            scad_geom_add(ev, r, g->v[i]);
+    }
+    free(g->v);
+    g->v = NULL;
+    g->n = g->cap = 0;
+    return r;
+}
+
+static void list_add(scad_eval *ev, scad_geom ***v, int *n, int *cap, scad_geom *g)
+{
+    if (*n == *cap) {
+        int c = *cap ? *cap * 2 : 4;
+        scad_geom **nv = realloc(*v, sizeof *nv * (size_t)c);
+        if (!nv) {
+            scad_eval_error(ev, scad_eval_here(ev), "out of memory");
+            return;
+        }
+        *v = nv;
+        *cap = c;
+    }
+    (*v)[(*n)++] = g;
+}
+
+/* ---- statements ----------------------------------------------------------------- */
+
+static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state);
+
+void scad_run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s)
+{
+    for (int i = 0; i < s->nassigns && !ev->aborted; i++) {
+        if (ev->nframes == 0) ev->at = s->assigns[i].loc;
+        scad_env_set(env, s->assigns[i].name, scad_eval_expr(ev, env, s->assigns[i].value));
+    }
+}
+
+/* Instantiates the statements of s (all of them, or those picked) in env. */
+static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s, const scad_state *state,
+                      gather *out, const int *pick, int npick)
+{
+    int n = pick ? npick : s->nstmts;
+    for (int i = 0; i < n && !ev->aborted; i++) {
+        const scad_stmt *st = s->stmts[pick ? pick[i] : i];
+        if (ev->nframes == 0) ev->at = st->loc;
+        gather_add(ev, out, instantiate(ev, env, st, state));
+    }
+}
+
+/* A child scope: a fresh environment below env for its assignments. */
+static scad_geom *child_scope(scad_eval *ev, scad_env *env, scad_env *dyn, const scad_scope *s,
+                              const scad_state *state, csg_op op, const int *pick, int npick)
+{
+    if (!s || ev->aborted) return NULL;
+    scad_env *ce = scad_env_new(ev, env, dyn, s);
+    if (!ce) return NULL;
+    gather g = {0};
+    scad_run_assignments(ev, ce, s);
+    run_stmts(ev, ce, s, state, &g, pick, npick);
+    scad_env_free(ce);
+    return finish(ev, &g, op);
+}
+
+scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state, csg_op op)
+{
+    return child_scope(ev, env, env, st->children, state, op, NULL, 0);
+}
+
+/* OpenSCAD's Expression::isLiteral: constants, and vectors and ranges of
+ * constants. */
+static int is_literal(const scad_expr *e)
+{
+    switch (e->kind) {
+    case EX_NUMBER:
+    case EX_STRING:
+    case EX_BOOL:
+    case EX_UNDEF:
+        return 1;
+    case EX_VECTOR:
+        for (int i = 0; i < e->n; i++)
+            if (!is_literal(e->list[i])) return 0;
+        return 1;
+    case EX_RANGE:
+        return is_literal(e->a[0]) && (!e->a[1] || is_literal(e->a[1])) && is_literal(e->a[2]);
+    default:
+        return 0;
+    }
+}
+
+static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_moddef *m, scad_env *def_env, const scad_state *state)
+{
+    scad_argv argv;
+    scad_env *me = scad_env_new(ev, def_env, env, m->body);
+    if (!me) return NULL;
+    scad_bind_defaults(ev, me, def_env, &m->params);
+    if (scad_args_bind(ev, env, &st->args, &argv, 1, &m->params, m->params.n, st->loc)) {
+        scad_env_free(me);
+        return NULL;
+    }
+    if (scad_call_enter(ev, st->loc, "module", m->name)) {
+        scad_argv_free(&argv);
+        scad_env_free(me);
+        return NULL;
+    }
+    scad_geom *r = NULL;
+    me->is_module = 1;
+    me->children = st->children;
+    me->children_env = env;
+    scad_bind_given(me, &argv);
+    scad_env_set(me, ev->sym_children, scad_num(st->children ? st->children->nstmts : 0));
+    if (ev->module_depth == ev->module_names_cap) {
+        int cap = ev->module_names_cap ? ev->module_names_cap * 2 : 64;
+        const char **nn = realloc(ev->module_names, sizeof *nn * (size_t)cap);
+        if (nn) {
+            ev->module_names = nn;
+            ev->module_names_cap = cap;
+        }
+    }
+    if (ev->module_depth < ev->module_names_cap) ev->module_names[ev->module_depth] = m->name;
+    ev->module_depth++;
+    scad_env_set(me, ev->sym_parent_modules, scad_num(ev->module_depth));
+    for (int i = 0; i < m->body->nassigns; i++) {
+        const scad_assign *as = &m->body->assigns[i];
+        if (!is_literal(as->value)) continue;
+        for (int k = 0; k < m->params.n; k++)
+            if (m->params.v[k].name == as->name)
+                scad_diag_warning(ev->d, as->loc,
+                                  "Module %s: Parameter %s is overwritten with a literal", m->name,
+                                  as->name);
+    }
+    gather g = {0};
+    scad_run_assignments(ev, me, m->body);
+    run_stmts(ev, me, m->body, state, &g, NULL, 0);
+    r = finish(ev, &g, CSG_OP_UNION);
+    if (ev->dump) r = scad_dump_node(ev, "group()", r);
+    scad_env_free(me);
+    ev->module_depth--;
+    scad_call_leave(ev);
+    scad_argv_free(&argv);
+    return r;
+}
+
+/* A number as C's (int) conversion gives it on x86-64, where OpenSCAD
+ * 2021.01 was built: NaN and out-of-range values become INT_MIN (here
+ * without the undefined behaviour of converting them). */
+static int x86_int(double k)
+{
+    return isnan(k) || k >= 2147483648.0 || k < -2147483648.0 ? INT_MIN : (int)k;
+}
+
+/* children(k)'s index check, with OpenSCAD's two warnings (no location). */
+static int children_index_bad(scad_eval *ev, int k, int n)
+{
+    char line[128];
+    if (k < 0)
+        snprintf(line, sizeof line, "WARNING: Negative children index (%d) not allowed", k);
+    else if (k >= n)
+        snprintf(line, sizeof line, "WARNING: Children index (%d) out of bounds (%d children)", k,
+                 n);
+    else
+        return 0;
+    scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
+    return 1;
+}
+
+static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                              const scad_state *state)
+{
+    scad_env *m = env;
+    while (m && !m->is_module)
+        m = m->parent;
+    if (!m) return NULL;
+    int n = m->children ? m->children->nstmts : 0;
+    /* instantiating the caller's children is a call of their scope, and
+     * counts as one more step, as a user module's body does */
+    if (scad_eval_step(ev, st->loc)) return NULL;
+    if (a->n == 0) {
+        scad_geom *r =
+            n ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, NULL, 0)
+              : NULL;
+        return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+    }
+    scad_value sel = scad_argv_get(a, "index", 0);
+    scad_vlist idx = {0};
+    if (sel.kind == SV_NUM) {
+        scad_vlist_push(ev, &idx, scad_value_ref(sel), st->loc);
+    } else if (sel.kind == SV_VEC || sel.kind == SV_RANGE) {
+        if (scad_iter_values(ev, sel, st->loc, &idx) < 0) {
+            scad_vlist_free(&idx);
+            return NULL;
+        }
+    } else {
+        scad_diag_warning(
+            ev->d, st->loc,
+            "Bad parameter type (%s) for children, only accept: empty, number, vector, range.",
+            scad_value_type_name(sel));
+        return NULL;
+    }
+    if (ev->dump && sel.kind != SV_NUM) {
+        /* OpenSCAD evaluates each index on its own, into one group */
+        gather g = {0};
+        for (int i = 0; i < idx.n && !ev->aborted; i++) {
+            if (idx.v[i].kind != SV_NUM) continue;
+            int one = x86_int(idx.v[i].u.num);
+            if (children_index_bad(ev, one, n)) continue;
+            gather_add(
+                ev, &g,
+                child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, &one, 1));
+        }
+        scad_vlist_free(&idx);
+        return scad_dump_node(ev, "group()", finish(ev, &g, CSG_OP_UNION));
+    }
+    int *pick = malloc(sizeof *pick * (size_t)(idx.n ? idx.n : 1));
+    int np = 0;
+    for (int i = 0; pick && i < idx.n; i++) {
+        if (idx.v[i].kind != SV_NUM) continue;
+        int k = x86_int(idx.v[i].u.num);
+        if (children_index_bad(ev, k, n)) continue;
+        pick[np++] = k;
+    }
+    scad_geom *r =
+        np ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, pick, np)
+           : NULL;
+    free(pick);
+    scad_vlist_free(&idx);
+    return r;
+}
+
+/* for / intersection_for: nested loops over the arguments, evaluated once
+ * in the caller's environment (as OpenSCAD does). */
+static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a, int k,
+                     scad_env *cur, const scad_state *state, gather *out)
+{
+    if (ev->aborted) return;
+    if (k == a->n) {
+        gather_add(ev, out, child_scope(ev, cur, cur, st->children, state, CSG_OP_UNION, NULL, 0));
+        return;
+    }
+    scad_vlist items = {0};
+    if (scad_iter_values(ev, a->v[k], a->locs[k], &items) > 0) {
+        for (int i = 0; i < items.n && !ev->aborted; i++) {
+            scad_env *ie = scad_env_new(ev, cur, cur, NULL);
+            if (!ie) break;
+            if (a->names[k]) scad_env_set(ie, a->names[k], scad_value_ref(items.v[i]));
+            for_loop(ev, env, st, a, k + 1, ie, state, out);
+            scad_env_free(ie);
+        }
+    }
+    scad_vlist_free(&items);
+}
+
+/* Stands for OpenSCAD's builtin modules that have no geometry here (yet):
+ * their children are still evaluated, for what they echo, and dropped. */
+static scad_geom *m_dump_only(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
+                              const scad_state *state)
+{
+    if (!strcmp(st->name, "polyhedron") && !scad_argv_given(a, "faces", 1) &&
+        scad_argv_get(a, "triangles", -1).kind != SV_UNDEF)
+        scad_diag_line(ev->d, SCAD_MSG_WARNING,
+                       "DEPRECATED: polyhedron(triangles=[]) will be removed in future releases. "
+                       "Use polyhedron(faces=[]) instead.");
+    scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    return NULL;
+}
+
+static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                    const scad_state *state)
+{
+    const char *name = st->name;
+    if (strcmp(name, "if") == 0) {
+        scad_value c = scad_eval_expr(ev, env, st->cond);
+        int t = scad_value_truthy(c);
+        scad_value_drop(c);
+        scad_geom *r = child_scope(ev, env, env, t ? st->children : st->else_children, state,
+                                   CSG_OP_UNION, NULL, 0);
+        if (ev->dump && (t || st->else_children)) r = scad_dump_node(ev, "group()", r);
+        return r;
+    }
+    scad_env *def_env;
+    int fresh;
+    const scad_moddef *m = scad_find_module(ev, env, name, &def_env, &fresh);
+    if (m) {
+        scad_geom *r = call_module(ev, env, st, m, def_env, state);
+        if (fresh) scad_env_free(def_env);
+        return r;
+    }
+
+    if (strcmp(name, "let") == 0) {
+        scad_env *le = scad_env_new(ev, env, env, NULL);
+        if (!le) return NULL;
+        scad_assign_seq(ev, le, &st->args);
+        scad_geom *r = child_scope(ev, le, le, st->children, state, CSG_OP_UNION, NULL, 0);
+        scad_env_free(le);
+        return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+    }
+    if (strcmp(name, "assert") == 0) {
+        if (scad_check_assert(ev, env, &st->args, st->loc)) return NULL;
+        scad_geom *r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+        return ev->dump && r ? scad_dump_node(ev, "group()", r) : r;
+    }
+    int control = !strcmp(name, "for") || !strcmp(name, "intersection_for") ||
+                  !strcmp(name, "echo") || !strcmp(name, "children");
+    /* the control modules need no table search (children() runs often) */
+    scad_builtin_mod bm = control ? NULL : scad_builtin_module(name);
+    if (!bm && !control && scad_dump_is_builtin(name)) bm = m_dump_only;
+    if (!bm && !control) {
+        scad_diag_warning(ev->d, st->loc, "Ignoring unknown module '%s'", name);
+        return NULL;
+    }
+    scad_argv a;
+    int in_order = control || !strcmp(name, "assert") || !strcmp(name, "let");
+    if (scad_args_bind(ev, env, &st->args, &a, !in_order, NULL, 0, st->loc)) return NULL;
+    scad_geom *r = NULL;
+    /* $-arguments of a builtin are seen by its children (dynamic scope) */
+    scad_env *dollar = NULL;
+    for (int i = 0; i < a.n; i++) {
+        if (!a.names[i] || a.names[i][0] != '$') continue;
+        if (!dollar && !(dollar = scad_env_new(ev, env, env, NULL))) break;
+        scad_env_set(dollar, a.names[i], scad_value_ref(a.v[i]));
+    }
+    if (dollar) env = dollar;
+    if (ev->aborted) {
+        /* nothing */
+    } else if (!strcmp(name, "for") || !strcmp(name, "intersection_for")) {
+        gather g = {0};
+        for_loop(ev, env, st, &a, 0, env, state, &g);
+        r = finish(ev, &g, name[0] == 'f' ? CSG_OP_UNION : CSG_OP_INTERSECTION);
+        if (ev->dump) r = scad_dump_node(ev, name[0] == 'f' ? "group()" : "intersection()", r);
+    } else if (!strcmp(name, "echo")) {
+        scad_echo_line(ev, &a);
+        r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+        if (ev->dump && r) r = scad_dump_node(ev, "group()", r);
+    } else if (!strcmp(name, "children")) {
+        r = do_children(ev, env, st, &a, state);
+    } else if (ev->dump) {
+        r = scad_dump_builtin(ev, env, st, &a);
+    } else {
+        r = bm(ev, env, st, &a, state);
+    }
+    scad_argv_free(&a);
+    scad_env_free(dollar);
+    return r;
+}
+
+static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                     const scad_state *state);
+
+static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                              const scad_state *state)
+{
+    if (st->disable || ev->aborted || scad_eval_step(ev, st->loc)) return NULL;
+    int pushed = scad_frame_push(ev, st->name, st->loc);
+    scad_geom *g = instantiate_framed(ev, env, st, state);
+    scad_frame_pop(ev, pushed);
+    return g;
+}
+
+static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                     const scad_state *state)
+{
+    if (ev->dump && (st->highlight || st->background) && !st->root) {
+        scad_geom *g = instantiate_plain(ev, env, st, state);
+        if (g && g->text) {
+            size_t n = strlen(g->text);
+            char *t = scad_arena_alloc(ev->arena, n + 3);
+            if (!t) return g;
+            size_t k = 0;
+            if (st->background) t[k++] = '%';
+            if (st->highlight) t[k++] = '#';
+            memcpy(t + k, g->text, n + 1);
+            g->text = t;
+        }
+        return g;
+    }
+    if (st->root) {
+        scad_state fresh;
+        memcpy(fresh.xf, csg_affine_identity, sizeof fresh.xf);
+        memset(&fresh.mat, 0, sizeof fresh.mat);
+        scad_geom *g = instantiate_plain(ev, env, st, &fresh);
+        if (!ev->has_root) {
+            ev->root = g;
+            ev->has_root = 1;
+        }
+        return NULL;
+    }
+    scad_geom *g = instantiate_plain(ev, env, st, state);
+    if (g && st->background) {
+        list_add(ev, &ev->backgrounds, &ev->nbackgrounds, &ev->capbackgrounds, g);
+        return NULL;
+    }
+    if (g && st->highlight) list_add(ev, &ev->highlights, &ev->nhighlights, &ev->caphighlights, g);
+    return g;
+}
+
+/* The file: its scope in env, top-level objects as an implicit union. */
+scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *s)
+{
+    scad_state st;
+    memcpy(st.xf, csg_affine_identity, sizeof st.xf);
+    memset(&st.mat, 0, sizeof st.mat);
+    gather g = {0};
+    scad_run_assignments(ev, env, s);
+    run_stmts(ev, env, s, &st, &g, NULL, 0);
+    return finish(ev, &g, CSG_OP_UNION);
+}
