@@ -52,7 +52,8 @@ DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenme
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
 	clang libclang-rt-dev
 
-LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/scad/*.c src/render/*.c src/mesh/*.c \
+LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
+	src/render/*.c src/mesh/*.c \
 	src/io/*.c)
 IO_SRC   = $(filter-out src/io/image.cpp,$(wildcard src/io/*.cpp))
 CLI_SRC  = $(wildcard src/cli/*.c)

@@ -14,7 +14,7 @@
 
 #include "../src/intervals/intervals.h"
 #include "../src/io/io.h"
-#include "../src/scad/hull3d.h"
+#include "../src/geom/hull3d.h"
 #include "../src/scad/scad.h"
 
 #define PI 3.14159265358979323846
@@ -224,7 +224,7 @@ static double farthest_outside(const iv_shape *s, const double (*P)[3], int n)
     return worst;
 }
 
-/* Random points (in a ball, on a sphere): scad_hull3d has the vertices
+/* Random points (in a ball, on a sphere): geom_hull3d has the vertices
  * polytope.c's brute-force hull (every point against every face) finds, on
  * a subset of 1500, and every point of a set of 100,000 inside its planes,
  * its vertices the extreme points along random directions. */
@@ -243,7 +243,7 @@ Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
             P[i][2] = 10 * len * z;
         }
         iv_shape h, ref;
-        cr_assert_eq(scad_hull3d(&h, (const double(*)[3])P, SUB), 0, "seed %llu",
+        cr_assert_eq(geom_hull3d(&h, (const double(*)[3])P, SUB), 0, "seed %llu",
                      (unsigned long long)seed);
         cr_assert_eq(iv_shape_hull(&ref, (const double(*)[3])P, SUB), 0);
         int na, nb;
@@ -261,7 +261,7 @@ Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
         iv_shape_release(&ref);
 
         int n = kind ? 20000 : N; /* sphere points are all vertices */
-        cr_assert_eq(scad_hull3d(&h, (const double(*)[3])P, n), 0);
+        cr_assert_eq(geom_hull3d(&h, (const double(*)[3])P, n), 0);
         double out = farthest_outside(&h, (const double(*)[3])P, kind ? 2000 : n);
         /* within the tolerance: 1e-11 of the coordinates */
         cr_expect(out <= 1e-9, "seed %llu: a point %g outside", (unsigned long long)seed, out);
@@ -296,16 +296,16 @@ Test(hull3d, grid_is_its_box_and_bad_input_fails, .init = setup, .fini = teardow
                 n++;
             }
     iv_shape s;
-    cr_assert_eq(scad_hull3d(&s, (const double(*)[3])P, n), 0);
+    cr_assert_eq(geom_hull3d(&s, (const double(*)[3])P, n), 0);
     double box[6] = {-1, -1, 0, 1, 0, 3};
     cr_expect_eq(check_shape(&s, in_box, box, 4, 400, 13), 0);
     cr_expect(farthest_outside(&s, (const double(*)[3])P, n) <= 1e-12);
     iv_shape_release(&s);
     double F[5][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 5, 0}};
-    cr_expect_eq(scad_hull3d(&s, (const double(*)[3])F, 5), SCAD_HULL_FLAT);
-    cr_expect_eq(scad_hull3d(&s, (const double(*)[3])F, 3), SCAD_HULL_FLAT);
+    cr_expect_eq(geom_hull3d(&s, (const double(*)[3])F, 5), GEOM_HULL_FLAT);
+    cr_expect_eq(geom_hull3d(&s, (const double(*)[3])F, 3), GEOM_HULL_FLAT);
     F[4][2] = NAN;
-    cr_expect_eq(scad_hull3d(&s, (const double(*)[3])F, 5), SCAD_HULL_BAD_INPUT);
+    cr_expect_eq(geom_hull3d(&s, (const double(*)[3])F, 5), GEOM_HULL_BAD_INPUT);
 }
 
 /* Rounding's worst cases: corners of 0.1 cubes around a cylinder, each
@@ -334,7 +334,7 @@ Test(hull3d, near_duplicate_and_near_coplanar_points, .init = setup, .fini = tea
                 }
             }
             iv_shape h;
-            cr_assert_eq(scad_hull3d(&h, (const double(*)[3])P, N), 0, "kind %d seed %llu", kind,
+            cr_assert_eq(geom_hull3d(&h, (const double(*)[3])P, N), 0, "kind %d seed %llu", kind,
                          (unsigned long long)seed);
             double out = farthest_outside(&h, (const double(*)[3])P, N), size = kind ? 1 : 10;
             cr_expect(out <= 1e-7 * size, "kind %d seed %llu: a point %g outside", kind,

@@ -18,6 +18,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "angles.h"
+
 /* ---- arena -------------------------------------------------------------- */
 
 /* A bump allocator made of chunks.  Memory handed out stays valid until

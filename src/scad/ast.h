@@ -49,6 +49,9 @@ scad_names *scad_names_new(scad_arena *a);
 /* The interned copy of s[0..n) (made on first use); NULL when out of
  * memory. */
 const char *scad_names_intern(scad_names *t, const char *s, size_t n);
+/* FNV-1a of s[0..n): the hash every interned name carries (short
+ * identifiers, few collisions, no table to build). */
+uint32_t scad_names_hash(const char *s, size_t n);
 /* The interned copy of the NUL-terminated s, or NULL when no such name was
  * ever interned (so no definition or variable can have it). */
 const char *scad_names_find(const scad_names *t, const char *s);

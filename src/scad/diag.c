@@ -63,8 +63,8 @@ static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
     vsnprintf(msg, sizeof msg, fmt, ap);
-    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg,
-             shown_file(d, loc.file), loc.line);
+    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, shown_file(d, loc.file),
+             loc.line);
     scad_diag_line(d, SCAD_MSG_WARNING, line);
 }
 

@@ -428,11 +428,11 @@ static double unwind(double start, double stop, double turn)
 
 static double cos_deg(double a)
 {
-    return scad_cos_degrees(a);
+    return iv_cos_degrees(a);
 }
 static double sin_deg(double a)
 {
-    return scad_sin_degrees(a);
+    return iv_sin_degrees(a);
 }
 
 /* The entity in r->mode, finished by a code 0.  SHORT: it lacks a point

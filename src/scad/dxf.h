@@ -66,20 +66,4 @@ enum { SCAD_DXF_MAX_SEGMENTS = 1000000 };
  * 0), or -1 when out of memory. */
 int scad_dxf_outlines(const scad_dxf *d, double (**pts)[2], int **start, int *npaths);
 
-/* dxf_dim(file, name, layer, origin, scale) and dxf_cross(file, layer,
- * origin, scale) (builtin_dxf.c), for the table of builtin_math.c. */
-scad_value scad_builtin_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name);
-scad_value scad_builtin_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc,
-                                  const char *name);
-
-/* import()'s origin as OpenSCAD 2021.01 reads it: a list of two finite
- * numbers into o (else o is left as is, with its warning, worded as
- * there).  Returns 1 when it was one. */
-int scad_dxf_origin(scad_eval *ev, scad_value v, scad_loc loc, double o[2]);
-
-/* import() of a .dxf file (builtin_import.c calls it): the region of the
- * layer as a 2D leaf, NULL when empty. */
-scad_geom *scad_dxf_import(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state, const char *path);
-
 #endif

@@ -395,18 +395,6 @@ int scad_argv_given(const scad_argv *a, const char *name, int pos)
     return 0;
 }
 
-void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *const *known)
-{
-    for (int i = 0; i < a->n; i++) {
-        if (!a->names[i] || a->names[i][0] == '$') continue;
-        int ok = 0;
-        for (const char *const *k = known; *k; k++)
-            if (strcmp(*k, a->names[i]) == 0) ok = 1;
-        if (!ok)
-            scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", a->names[i]);
-    }
-}
-
 void scad_bind_defaults(scad_eval *ev, scad_env *target, scad_env *def_env, const scad_args *params)
 {
     for (int i = 0; i < params->n; i++) {

@@ -91,8 +91,13 @@ struct scad_env {
 typedef struct scad_eval {
     scad_diag *d;
     scad_names *names; /* the parse's; names set from C are interned here */
-    const char *sym_children, *sym_parent_modules; /* interned "$children" … */
-    scad_arena *arena;                             /* geometry */
+    /* interned names the evaluator compares with: "$children",
+     * "$parent_modules", and the control modules that are no keywords */
+    const char *sym_children, *sym_parent_modules, *sym_children_module, *sym_intersection_for;
+    /* the interned parameters of each builtin module (registry.h), made
+     * on first use: scad_registry_module_count() of them */
+    scad_args *builtin_params;
+    scad_arena *arena; /* geometry */
     int depth, max_depth;
     int max_list, max_string;  /* value size limits (scad_options) */
     long steps, max_steps;     /* work done and its limit (scad_options.max_steps) */
@@ -253,28 +258,23 @@ void scad_eval_free_captured(scad_eval *ev);
 /* Values in a range, OpenSCAD's count (UINT32_MAX for endless ones). */
 double scad_range_steps(const scad_range *r);
 /* sin/cos in degrees, exact at multiples of 30 and 45 degrees. */
-double scad_sin_degrees(double x);
-double scad_cos_degrees(double x);
 
 /* ---- builtins --------------------------------------------------------------- */
-
-/* A builtin function; returns an owned value.  Arguments are borrowed. */
-typedef scad_value (*scad_builtin_fn)(scad_eval *ev, const scad_argv *a, scad_loc loc,
-                                      const char *name);
-/* The builtin function called name, or NULL. */
-scad_builtin_fn scad_builtin_function(const char *name);
-
-/* A builtin module: evaluates its children as it needs (through
- * scad_eval_children) and returns the geometry (NULL: nothing). */
-typedef scad_geom *(*scad_builtin_mod)(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                                       const scad_argv *a, const scad_state *state);
-scad_builtin_mod scad_builtin_module(const char *name);
 
 /* Instantiate st's children in a fresh scope below env with the given state;
  * returns them as one node (union of several, NULL if none). op selects how
  * several children combine. */
 scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state, csg_op op);
+
+/* Keep one reference to s's data until the end of the evaluation (in
+ * ev->owned).  Returns 0, or -1 when out of memory (then s's data is
+ * released). */
+int scad_geom_keep(scad_eval *ev, iv_shape *s);
+/* Drop the evaluation's own references to the shape data made while it ran
+ * (the csg nodes made from the geometry hold theirs).  Call once, after the
+ * trees are converted. */
+void scad_geometry_release(scad_eval *ev);
 
 /* Geometry in the eval arena. */
 scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *state);
@@ -286,34 +286,16 @@ void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child);
 scad_value scad_argv_get(const scad_argv *a, const char *name, int pos);
 /* 1 when the argument is present (positional or named). */
 int scad_argv_given(const scad_argv *a, const char *name, int pos);
-/* Warn "variable x not specified as parameter" for names not in the list
- * (NULL-terminated); $-names are accepted. */
-void scad_check_arg_names(scad_eval *ev, const scad_argv *a, scad_loc loc,
-                          const char *const *known);
 
-/* ---- dump mode (dump.c) ------------------------------------------------------ */
+/* ---- dump mode ----------------------------------------------------------------- */
 
 /* A dump node with a copy of text as its header and the children of list
  * (a bare list, a node, or NULL) spliced in. */
 scad_geom *scad_dump_node(scad_eval *ev, const char *text, scad_geom *list);
-/* The dump node of a builtin geometry module (primitives, transforms,
- * colour, CSG operations, extrusions, import …) with its children
- * evaluated; NULL when name is not one of OpenSCAD's builtin modules. */
-scad_geom *scad_dump_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a);
-/* 1 when name is a builtin module scad_dump_builtin knows. */
-int scad_dump_is_builtin(const char *name);
 /* The tree as OpenSCAD's .csg text into b (each top-level node unindented).
  * Returns NULL, or when b ran out of memory (b->oom) the node whose text
  * it could not take, borrowed from the tree. */
 const scad_geom *scad_dump_write(scad_buf *b, const scad_geom *list);
-/* The world_from_object matrix of translate/rotate/scale/mirror/multmatrix
- * (builtin_modules.c): 1 when name is one of them. */
-int scad_transform_matrix(scad_eval *ev, const scad_stmt *st, const scad_argv *a, csg_affine m);
-
-/* Web colour by lower-case name; returns 1 and fills rgba (0..1) or 0. */
-int scad_color_by_name(const char *name, float rgba[4]);
-/* "#rgb", "#rgba", "#rrggbb" or "#rrggbbaa"; returns 1 and fills rgba, or 0. */
-int scad_color_by_hex(const char *s, float rgba[4]);
 
 /* A number from a value: 1 when v is a finite-or-not number. */
 static inline int scad_to_num(scad_value v, double *out)

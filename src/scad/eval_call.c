@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "eval.h"
+#include "registry.h"
 
 enum { MAX_TAIL_CALLS = 1000000 };
 
@@ -282,11 +283,11 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
                 if (fresh) scad_env_free(def_env);
                 return r;
             }
-            scad_builtin_fn b = scad_builtin_function(callee->str);
+            const scad_function_def *b = scad_registry_function(callee->str);
             if (b) {
                 scad_argv argv;
                 if (scad_args_eval(ev, env, &e->args, &argv)) return scad_undef();
-                scad_value r = b(ev, &argv, e->loc, callee->str);
+                scad_value r = b->fn(ev, &argv, e->loc, callee->str);
                 scad_argv_free(&argv);
                 return r;
             }

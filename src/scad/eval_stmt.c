@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "eval.h"
+#include "registry.h"
 
 /* ---- geometry ----------------------------------------------------------------- */
 
@@ -66,6 +67,31 @@ void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child)
         parent->cap = cap;
     }
     parent->kids[parent->n++] = child;
+}
+
+int scad_geom_keep(scad_eval *ev, iv_shape *s)
+{
+    if (ev->nowned == ev->capowned) {
+        int cap = ev->capowned ? 2 * ev->capowned : 16;
+        iv_shape *v = realloc(ev->owned, (size_t)cap * sizeof *v);
+        if (!v) {
+            iv_shape_release(s);
+            return -1;
+        }
+        ev->owned = v;
+        ev->capowned = cap;
+    }
+    ev->owned[ev->nowned++] = *s;
+    return 0;
+}
+
+void scad_geometry_release(scad_eval *ev)
+{
+    for (int i = 0; i < ev->nowned; i++)
+        iv_shape_release(&ev->owned[i]);
+    free(ev->owned);
+    ev->owned = NULL;
+    ev->nowned = ev->capowned = 0;
 }
 
 /* Collects the children of one node; combined by `finish`. */
@@ -362,25 +388,95 @@ static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const sc
     scad_vlist_free(&items);
 }
 
-/* Stands for OpenSCAD's builtin modules that have no geometry here (yet):
- * their children are still evaluated, for what they echo, and dropped. */
-static scad_geom *m_dump_only(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                              const scad_state *state)
+/* The interned parameters of builtin module d (registry index id), made on
+ * its first call in this evaluation; NULL when out of memory. */
+static const scad_args *builtin_params(scad_eval *ev, const scad_module_def *d, int id)
 {
-    if (!strcmp(st->name, "polyhedron") && !scad_argv_given(a, "faces", 1) &&
-        scad_argv_get(a, "triangles", -1).kind != SV_UNDEF)
-        scad_diag_line(ev->d, SCAD_MSG_WARNING,
-                       "DEPRECATED: polyhedron(triangles=[]) will be removed in future releases. "
-                       "Use polyhedron(faces=[]) instead.");
-    scad_eval_children(ev, env, st, state, CSG_OP_UNION);
-    return NULL;
+    scad_args *p = &ev->builtin_params[id];
+    if (p->v || !d->params[0]) return p;
+    int n = 0;
+    while (d->params[n])
+        n++;
+    scad_arg *v = scad_arena_alloc(ev->arena, sizeof *v * (size_t)n);
+    if (!v) return NULL;
+    for (int i = 0; i < n; i++) {
+        v[i].name = scad_names_intern(ev->names, d->params[i], strlen(d->params[i]));
+        if (!v[i].name) return NULL;
+    }
+    p->v = v;
+    p->n = n;
+    return p;
+}
+
+/* A .csg node for the call: the entry's header and, when it lists them,
+ * its children (evaluated in the node's own frame). */
+static scad_geom *print_builtin(scad_call *c, const void *args)
+{
+    scad_eval *ev = c->ev;
+    scad_buf b = {0};
+    int kids = 1;
+    if (c->def->print)
+        kids = c->def->print(c, args, &b);
+    else
+        scad_buf_printf(&b, "%s()", c->def->name);
+    scad_geom *list = NULL;
+    if (kids) {
+        scad_state fresh;
+        memcpy(fresh.xf, csg_affine_identity, sizeof fresh.xf);
+        memset(&fresh.mat, 0, sizeof fresh.mat);
+        list = scad_eval_children(ev, c->env, c->st, &fresh, CSG_OP_UNION);
+    }
+    scad_geom *g = b.oom ? NULL : scad_dump_node(ev, scad_buf_str(&b), list);
+    if (b.oom) scad_eval_error(ev, c->st->loc, "out of memory");
+    scad_buf_free(&b);
+    return g;
+}
+
+/* A builtin module: its arguments bound to the entry's parameters by
+ * OpenSCAD's rule, read once by the entry, then printed (dump mode) or
+ * built.  Modules that take no arguments (union, group …) evaluate none,
+ * as OpenSCAD's CSG modules ignore theirs. */
+static scad_geom *call_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                               const scad_state *state, const scad_module_def *d, int id)
+{
+    scad_call c = {ev, env, st, state, d, NULL, {{0}}};
+    scad_argv a = {NULL, NULL, NULL, 0};
+    scad_env *dollar = NULL;
+    if (d->npositional >= 0) {
+        const scad_args *params = builtin_params(ev, d, id);
+        if (!params) {
+            scad_eval_error(ev, st->loc, "out of memory");
+            return NULL;
+        }
+        if (scad_args_bind(ev, env, &st->args, &a, 1, params, d->npositional, st->loc)) return NULL;
+        for (int k = 0; k < a.n; k++)
+            for (int i = 0; i < params->n; i++)
+                if (params->v[i].name == a.names[k]) c.arg[i] = a.v[k];
+        /* $-arguments of a builtin are seen by its children (dynamic scope) */
+        for (int i = 0; i < a.n; i++) {
+            if (!a.names[i] || a.names[i][0] != '$') continue;
+            if (!dollar && !(dollar = scad_env_new(ev, env, env, NULL))) break;
+            scad_env_set(dollar, a.names[i], scad_value_ref(a.v[i]));
+        }
+        if (dollar) c.env = dollar;
+    }
+    c.argv = &a;
+    _Alignas(16) unsigned char args[SCAD_MAX_ARGS];
+    memset(args, 0, d->size);
+    scad_geom *r = NULL;
+    if (d->read && !ev->aborted) d->read(&c, args);
+    if (!ev->aborted) r = ev->dump ? print_builtin(&c, args) : d->build(&c, args);
+    scad_argv_free(&a);
+    scad_env_free(dollar);
+    return r;
 }
 
 static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                     const scad_state *state)
 {
     const char *name = st->name;
-    if (strcmp(name, "if") == 0) {
+    int keyword = scad_name_keyword(name);
+    if (keyword == TK_IF) {
         scad_value c = scad_eval_expr(ev, env, st->cond);
         int t = scad_value_truthy(c);
         scad_value_drop(c);
@@ -398,7 +494,7 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         return r;
     }
 
-    if (strcmp(name, "let") == 0) {
+    if (keyword == TK_LET) {
         scad_env *le = scad_env_new(ev, env, env, NULL);
         if (!le) return NULL;
         scad_assign_seq(ev, le, &st->args);
@@ -406,25 +502,24 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_env_free(le);
         return ev->dump ? scad_dump_node(ev, "group()", r) : r;
     }
-    if (strcmp(name, "assert") == 0) {
+    if (keyword == TK_ASSERT) {
         if (scad_check_assert(ev, env, &st->args, st->loc)) return NULL;
         scad_geom *r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
         return ev->dump && r ? scad_dump_node(ev, "group()", r) : r;
     }
-    int control = !strcmp(name, "for") || !strcmp(name, "intersection_for") ||
-                  !strcmp(name, "echo") || !strcmp(name, "children");
-    /* the control modules need no table search (children() runs often) */
-    scad_builtin_mod bm = control ? NULL : scad_builtin_module(name);
-    if (!bm && !control && scad_dump_is_builtin(name)) bm = m_dump_only;
-    if (!bm && !control) {
+    int is_for = keyword == TK_FOR, is_ifor = name == ev->sym_intersection_for;
+    int is_children = name == ev->sym_children_module;
+    if (!is_for && !is_ifor && !is_children && keyword != TK_ECHO) {
+        int id;
+        const scad_module_def *d = scad_registry_module(name, &id);
+        if (d) return call_builtin(ev, env, st, state, d, id);
         scad_diag_warning(ev->d, st->loc, "Ignoring unknown module '%s'", name);
         return NULL;
     }
     scad_argv a;
-    int in_order = control || !strcmp(name, "assert") || !strcmp(name, "let");
-    if (scad_args_bind(ev, env, &st->args, &a, !in_order, NULL, 0, st->loc)) return NULL;
+    if (scad_args_eval(ev, env, &st->args, &a)) return NULL;
     scad_geom *r = NULL;
-    /* $-arguments of a builtin are seen by its children (dynamic scope) */
+    /* $-arguments of a control module are seen by its children */
     scad_env *dollar = NULL;
     for (int i = 0; i < a.n; i++) {
         if (!a.names[i] || a.names[i][0] != '$') continue;
@@ -434,21 +529,17 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
     if (dollar) env = dollar;
     if (ev->aborted) {
         /* nothing */
-    } else if (!strcmp(name, "for") || !strcmp(name, "intersection_for")) {
+    } else if (is_for || is_ifor) {
         gather g = {0};
         for_loop(ev, env, st, &a, 0, env, state, &g);
-        r = finish(ev, &g, name[0] == 'f' ? CSG_OP_UNION : CSG_OP_INTERSECTION);
-        if (ev->dump) r = scad_dump_node(ev, name[0] == 'f' ? "group()" : "intersection()", r);
-    } else if (!strcmp(name, "echo")) {
+        r = finish(ev, &g, is_for ? CSG_OP_UNION : CSG_OP_INTERSECTION);
+        if (ev->dump) r = scad_dump_node(ev, is_for ? "group()" : "intersection()", r);
+    } else if (keyword == TK_ECHO) {
         scad_echo_line(ev, &a);
         r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
         if (ev->dump && r) r = scad_dump_node(ev, "group()", r);
-    } else if (!strcmp(name, "children")) {
-        r = do_children(ev, env, st, &a, state);
-    } else if (ev->dump) {
-        r = scad_dump_builtin(ev, env, st, &a);
     } else {
-        r = bm(ev, env, st, &a, state);
+        r = do_children(ev, env, st, &a, state);
     }
     scad_argv_free(&a);
     scad_env_free(dollar);

@@ -23,8 +23,7 @@ struct scad_names {
     uint32_t cap, n;   /* cap a power of two */
 };
 
-/* FNV-1a: short identifiers, few collisions, no table to build. */
-static uint32_t hash_of(const char *s, size_t n)
+uint32_t scad_names_hash(const char *s, size_t n)
 {
     uint32_t h = 2166136261u;
     for (size_t i = 0; i < n; i++)
@@ -92,7 +91,7 @@ static uint32_t find_slot(const scad_names *t, const char *s, size_t n, uint32_t
 
 const char *scad_names_intern(scad_names *t, const char *s, size_t n)
 {
-    uint32_t h = hash_of(s, n);
+    uint32_t h = scad_names_hash(s, n);
     uint32_t k = find_slot(t, s, n, h);
     if (t->slot[k]) return t->slot[k];
     if (n > UINT32_MAX) return NULL;
@@ -115,6 +114,6 @@ const char *scad_names_intern(scad_names *t, const char *s, size_t n)
 const char *scad_names_find(const scad_names *t, const char *s)
 {
     size_t n = strlen(s);
-    const char *x = t->slot[find_slot(t, s, n, hash_of(s, n))];
+    const char *x = t->slot[find_slot(t, s, n, scad_names_hash(s, n))];
     return x;
 }

@@ -18,8 +18,8 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include "builtin_geometry.h"
 #include "eval.h"
+#include "registry.h"
 
 enum { DEFAULT_MAX_RECURSION = 10000 };
 #define DEFAULT_MAX_STEPS 10000000L
@@ -194,7 +194,12 @@ static void run_job(job *j)
     }
     ev.sym_children = scad_names_intern(ev.names, "$children", 9);
     ev.sym_parent_modules = scad_names_intern(ev.names, "$parent_modules", 15);
-    if (!ev.sym_children || !ev.sym_parent_modules) {
+    ev.sym_children_module = scad_names_intern(ev.names, "children", 8);
+    ev.sym_intersection_for = scad_names_intern(ev.names, "intersection_for", 16);
+    ev.builtin_params = scad_arena_alloc(ev.arena, sizeof *ev.builtin_params *
+                                                       (size_t)scad_registry_module_count());
+    if (!ev.sym_children || !ev.sym_parent_modules || !ev.sym_children_module ||
+        !ev.sym_intersection_for || !ev.builtin_params) {
         scad_diag_error(j->d, ev.at, "out of memory");
         scad_arena_free(ev.arena);
         return;

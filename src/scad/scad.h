@@ -50,12 +50,12 @@ typedef enum scad_join { SCAD_JOIN_ROUND, SCAD_JOIN_MITER, SCAD_JOIN_SQUARE } sc
  * never NULL; "" where the user gave none, except the defaults noted). */
 typedef struct scad_text_params {
     const char *text;
-    double size;      /* default 10 */
-    const char *font; /* "": Liberation Sans */
-    const char *halign, *valign; /* default "left", "baseline" */
-    double spacing;   /* default 1 */
+    double size;                               /* default 10 */
+    const char *font;                          /* "": Liberation Sans */
+    const char *halign, *valign;               /* default "left", "baseline" */
+    double spacing;                            /* default 1 */
     const char *direction, *language, *script; /* language default "en" */
-    int segments;     /* points per Bézier curve */
+    int segments;                              /* points per Bézier curve */
 } scad_text_params;
 
 typedef struct scad_services {
@@ -89,8 +89,8 @@ typedef struct scad_services {
     /* A closed triangle mesh of the solid tree root (taken: the service
      * frees it, whatever happens), sampled at grid spacing h (model units;
      * <= 0: the service picks one); arrays as read_mesh returns them. */
-    int (*mesh_tree)(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t,
-                     int *nt, char *err, size_t errlen);
+    int (*mesh_tree)(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t, int *nt,
+                     char *err, size_t errlen);
     /* text(): the glyph outlines of p, as OpenSCAD 2021.01 lays them out. */
     int (*text)(void *ud, const scad_text_params *p, scad_paths *out, char *err, size_t errlen);
 } scad_services;
@@ -164,8 +164,7 @@ enum { SCAD_VP_R = 1, SCAD_VP_T = 2, SCAD_VP_D = 4, SCAD_VP_F = 8 };
 int scad_eval_file(const char *path, const scad_options *opt, scad_result *out);
 
 /* The same for source text in memory; `name` is used in messages. */
-int scad_eval_string(const char *name, const char *src, const scad_options *opt,
-                     scad_result *out);
+int scad_eval_string(const char *name, const char *src, const scad_options *opt, scad_result *out);
 
 void scad_result_free(scad_result *r);
 

@@ -1,12 +1,12 @@
 /*
- * builtin_math.c — OpenSCAD's builtin functions (math, vectors, strings,
+ * math.c — OpenSCAD's builtin functions (math, vectors, strings,
  * type tests, rands) with its warnings for wrong argument counts and types.
  *
  * Each builtin reads borrowed arguments and returns an owned value; a wrong
  * type gives undef and "WARNING: f() parameter could not be converted", as
  * OpenSCAD 2021.01 does.  Trigonometry is in degrees and exact at multiples
- * of 30 and 45 degrees where OpenSCAD's sin_degrees/cos_degrees are.
- * The name table is sorted, searched by bsearch.
+ * of 30 and 45 degrees where OpenSCAD's sin_degrees/cos_degrees are
+ * (src/intervals/angles.c).  registry.c finds them by name.
  */
 #include <limits.h>
 #include <math.h>
@@ -14,15 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "dxf.h"
-#include "eval.h"
-
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-#ifndef M_SQRT1_2
-#define M_SQRT1_2 0.70710678118654752440
-#endif
+#include "builtins.h"
 
 static void conv_warning(scad_eval *ev, scad_loc loc, const char *name)
 {
@@ -52,68 +44,6 @@ static int nums(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *nam
 }
 
 /* Degrees, exact at the angles where the answer is exact. */
-/* Beyond 2^52 turns a degree has no meaning left; OpenSCAD answers NaN. */
-#define TRIG_HUGE (4503599627370496.0 * 360.0)
-
-static double sin_deg(double x)
-{
-    if (!(fabs(x) < TRIG_HUGE)) return NAN;
-    x = fmod(x, 360.0);
-    if (x < 0) x += 360.0;
-    int neg = x >= 180.0;
-    if (neg) x -= 180.0;
-    if (x > 90.0) x = 180.0 - x;
-    double r;
-    if (x == 0)
-        r = 0;
-    else if (x == 30.0)
-        r = 0.5;
-    else if (x == 45.0)
-        r = M_SQRT1_2;
-    else if (x == 60.0)
-        r = sqrt(3.0) / 2;
-    else if (x == 90.0)
-        r = 1;
-    else if (x < 45.0)
-        r = sin(x * M_PI / 180.0);
-    else
-        r = cos((90.0 - x) * M_PI / 180.0);
-    return neg ? -r : r;
-}
-
-static double cos_deg(double x)
-{
-    if (!(fabs(x) < TRIG_HUGE)) return NAN;
-    x = fmod(x, 360.0);
-    if (x < 0) x += 360.0;
-    return sin_deg(x + 90.0 > 360.0 ? x - 270.0 : x + 90.0);
-}
-
-/* Exact at multiples of 45 degrees; 90 (mod 360) is +inf and 270 -inf, as
- * OpenSCAD's tan_degrees gives them. */
-static double tan_deg(double x)
-{
-    if (!isfinite(x)) return NAN;
-    double r = fmod(x, 360.0);
-    if (r < 0) r += 360.0;
-    if (r == 90.0) return INFINITY;
-    if (r == 270.0) return -INFINITY;
-    r = fmod(r, 180.0);
-    if (r == 0) return 0;
-    if (r == 45.0) return 1;
-    if (r == 135.0) return -1;
-    return tan(r * M_PI / 180.0);
-}
-
-double scad_sin_degrees(double x)
-{
-    return sin_deg(x);
-}
-double scad_cos_degrees(double x)
-{
-    return cos_deg(x);
-}
-
 static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     double x;
@@ -121,18 +51,18 @@ static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     switch (name[0]) {
     case 'a':
         if (!strcmp(name, "abs")) return scad_num(fabs(x));
-        if (!strcmp(name, "asin")) return scad_num(asin(x) * 180.0 / M_PI);
-        if (!strcmp(name, "acos")) return scad_num(acos(x) * 180.0 / M_PI);
-        return scad_num(atan(x) * 180.0 / M_PI);
+        if (!strcmp(name, "asin")) return scad_num(asin(x) * 180.0 / IV_PI);
+        if (!strcmp(name, "acos")) return scad_num(acos(x) * 180.0 / IV_PI);
+        return scad_num(atan(x) * 180.0 / IV_PI);
     case 's':
-        if (!strcmp(name, "sin")) return scad_num(sin_deg(x));
+        if (!strcmp(name, "sin")) return scad_num(iv_sin_degrees(x));
         if (!strcmp(name, "sqrt")) return scad_num(sqrt(x));
         return scad_num(x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0); /* sign */
     case 'c':
-        if (!strcmp(name, "cos")) return scad_num(cos_deg(x));
+        if (!strcmp(name, "cos")) return scad_num(iv_cos_degrees(x));
         return scad_num(ceil(x));
     case 't':
-        return scad_num(tan_deg(x));
+        return scad_num(iv_tan_degrees(x));
     case 'f':
         return scad_num(floor(x));
     case 'r':
@@ -149,7 +79,7 @@ static scad_value f_atan2(scad_eval *ev, const scad_argv *a, scad_loc loc, const
 {
     double x[2];
     if (!nums(ev, a, loc, name, 2, x)) return scad_undef();
-    return scad_num(atan2(x[0], x[1]) * 180.0 / M_PI);
+    return scad_num(atan2(x[0], x[1]) * 180.0 / IV_PI);
 }
 
 static scad_value f_pow(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
@@ -663,8 +593,7 @@ static scad_value f_is(scad_eval *ev, const scad_argv *a, scad_loc loc, const ch
 
 /* parent_module(n): the name of the n-th user module up the instantiation
  * stack (1, the default, is the caller of the current one). */
-static scad_value f_parent_module(scad_eval *ev, const scad_argv *a, scad_loc loc,
-                                  const char *name)
+static scad_value f_parent_module(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     (void)name;
     double d = 1;
@@ -704,62 +633,44 @@ static scad_value f_version(scad_eval *ev, const scad_argv *a, scad_loc loc, con
     return r;
 }
 
-typedef struct entry {
-    const char *name;
-    scad_builtin_fn fn;
-} entry;
-
-static const entry table[] = {
-    {"abs", f_unary},
-    {"acos", f_unary},
-    {"asin", f_unary},
-    {"atan", f_unary},
-    {"atan2", f_atan2},
-    {"ceil", f_unary},
-    {"chr", f_chr},
-    {"concat", f_concat},
-    {"cos", f_unary},
-    {"cross", f_cross},
-    {"dxf_cross", scad_builtin_dxf_cross},
-    {"dxf_dim", scad_builtin_dxf_dim},
-    {"exp", f_unary},
-    {"floor", f_unary},
-    {"is_bool", f_is},
-    {"is_function", f_is},
-    {"is_list", f_is},
-    {"is_num", f_is},
-    {"is_string", f_is},
-    {"is_undef", f_is},
-    {"len", f_len},
-    {"ln", f_unary},
-    {"log", f_log},
-    {"lookup", f_lookup},
-    {"max", f_minmax},
-    {"min", f_minmax},
-    {"norm", f_norm},
-    {"ord", f_ord},
-    {"parent_module", f_parent_module},
-    {"pow", f_pow},
-    {"rands", f_rands},
-    {"round", f_unary},
-    {"search", f_search},
-    {"sign", f_unary},
-    {"sin", f_unary},
-    {"sqrt", f_unary},
-    {"str", f_str},
-    {"tan", f_unary},
-    {"version", f_version},
-    {"version_num", f_version},
+const scad_function_def scad_math_functions[] = {
+    {"abs", "x", f_unary},
+    {"acos", "x", f_unary},
+    {"asin", "x", f_unary},
+    {"atan", "x", f_unary},
+    {"atan2", "y, x", f_atan2},
+    {"ceil", "x", f_unary},
+    {"chr", "code, …", f_chr},
+    {"concat", "list, …", f_concat},
+    {"cos", "degrees", f_unary},
+    {"cross", "a, b", f_cross},
+    {"exp", "x", f_unary},
+    {"floor", "x", f_unary},
+    {"is_bool", "v", f_is},
+    {"is_function", "v", f_is},
+    {"is_list", "v", f_is},
+    {"is_num", "v", f_is},
+    {"is_string", "v", f_is},
+    {"is_undef", "v", f_is},
+    {"len", "list or string", f_len},
+    {"ln", "x", f_unary},
+    {"log", "[base,] x", f_log},
+    {"lookup", "key, table", f_lookup},
+    {"max", "values or list", f_minmax},
+    {"min", "values or list", f_minmax},
+    {"norm", "vector", f_norm},
+    {"ord", "string", f_ord},
+    {"parent_module", "[n]", f_parent_module},
+    {"pow", "base, exponent", f_pow},
+    {"rands", "min, max, count[, seed]", f_rands},
+    {"round", "x", f_unary},
+    {"search", "match, in[, num_returns[, index_col]]", f_search},
+    {"sign", "x", f_unary},
+    {"sin", "degrees", f_unary},
+    {"sqrt", "x", f_unary},
+    {"str", "value, …", f_str},
+    {"tan", "degrees", f_unary},
+    {"version", "", f_version},
+    {"version_num", "", f_version},
+    {NULL, NULL, NULL},
 };
-
-static int by_name(const void *k, const void *e)
-{
-    return strcmp((const char *)k, *(const char *const *)e);
-}
-
-scad_builtin_fn scad_builtin_function(const char *name)
-{
-    const void *hit =
-        bsearch(name, table, sizeof table / sizeof table[0], sizeof table[0], by_name);
-    return hit ? ((const entry *)hit)->fn : NULL;
-}

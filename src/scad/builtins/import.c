@@ -1,5 +1,5 @@
 /*
- * builtin_import.c — import() and surface(): geometry read from files, as
+ * import.c — import() and surface(): geometry read from files, as
  * closed triangle meshes (iv_shape_mesh); a .dxf drawing is a 2D region
  * (dxf.c reads it, builtin_dxf.c builds the leaf).
  *
@@ -15,8 +15,7 @@
  * centre (at the mean of the corner heights), four side walls down to a flat
  * bottom at z = min(0, lowest height - 1), the bottom one polygon.
  */
-#include "builtin_geometry.h"
-#include "dxf.h"
+#include "builtins.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -25,18 +24,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-
-/* The file name as OpenSCAD resolves it: relative to the folder of the
- * calling file unless absolute.  Into out (freed by the caller). */
-static void resolve(const scad_stmt *st, const char *name, scad_buf *out)
-{
-    const char *from = st->loc.file ? st->loc.file : "";
-    if (name[0] != '/') {
-        const char *slash = strrchr(from, '/');
-        if (slash) scad_buf_put(out, from, (size_t)(slash - from + 1));
-    }
-    scad_buf_puts(out, name);
-}
 
 /* The extension of path, lower-cased, into ext (at most n bytes). */
 static void extension(const char *path, char *ext, size_t n)
@@ -64,31 +51,85 @@ static int readable(const char *path)
 
 /* ---- import ------------------------------------------------------------------- */
 
-scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                              const scad_state *state)
+enum {
+    IM_FILE,
+    IM_LAYER,
+    IM_CONVEXITY,
+    IM_ORIGIN,
+    IM_SCALE,
+    IM_WIDTH,
+    IM_HEIGHT,
+    IM_FILENAME,
+    IM_LAYERNAME,
+    IM_CENTER,
+    IM_DPI,
+    IM_ID
+};
+
+typedef struct import_args {
+    scad_file_arg file;
+    double scale;
+    int convexity;
+    scad_facet_params f;
+} import_args;
+
+static void import_read(scad_call *c, void *out)
 {
-    static const char *const known[] = {"file",  "layer",  "convexity", "origin",    "scale",
-                                        "width", "height", "filename",  "layername", "center",
-                                        "dpi",   "id",     NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    scad_value f = scad_argv_get(a, "file", 0);
-    if (f.kind != SV_STR) f = scad_argv_get(a, "filename", -1);
-    const char *name = f.kind == SV_STR ? f.u.str->s : "";
+    import_args *p = out;
+    /* sic: 2021.01's import() names linear_extrude in its origin warning */
+    scad_file_read(c, IM_FILE, IM_LAYER, IM_ORIGIN, IM_FILENAME, IM_LAYERNAME, "linear_extrude",
+                   &p->file);
+    p->scale = 1;
+    scad_arg_num(c->arg[IM_SCALE], &p->scale);
+    if (p->scale <= 0) p->scale = 1;
+    p->convexity = scad_arg_int(c->arg[IM_CONVEXITY], 1);
+    if (p->convexity <= 0) p->convexity = 1;
+    p->f = scad_facets_read(c);
+}
+
+static int import_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const import_args *p = args;
+    long long mtime = 0;
+    scad_buf_puts(b, "import(");
+    if (p->file.name)
+        scad_file_print(c, &p->file, b, &mtime);
+    else
+        scad_buf_puts(b, "file = \"\", layer = \"\", origin = [0, 0]");
+    scad_buf_puts(b, ", scale = ");
+    scad_print_g(b, p->scale);
+    scad_buf_printf(b, ", convexity = %d", p->convexity);
+    scad_print_facets(b, p->f, 1);
+    scad_buf_printf(b, ", timestamp = %lld)", mtime);
+    return 0;
+}
+
+static scad_geom *import_build(scad_call *c, const void *args)
+{
+    const import_args *p = args;
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    const char *name = p->file.name ? p->file.name : "";
     char ext[16];
     extension(name, ext, sizeof ext);
     int mesh =
         !strcmp(ext, "stl") || !strcmp(ext, "off") || !strcmp(ext, "obj") || !strcmp(ext, "ply");
-    double origin[2] = {0, 0};
-    scad_dxf_origin(ev, scad_argv_get(a, "origin", 3), st->loc, origin);
     if (!strcmp(ext, "dxf")) {
-        scad_buf path = {0};
-        resolve(st, name, &path);
+        scad_buf path = {0}, layer = {0};
+        scad_file_path(c, name, &path);
+        if (p->file.layer.kind == SV_STR)
+            scad_buf_puts(&layer, p->file.layer.u.str->s);
+        else if (p->file.layer.kind != SV_UNDEF)
+            scad_value_format(&layer, p->file.layer, 0);
         scad_geom *g = NULL;
-        if (path.oom)
+        if (path.oom || layer.oom)
             scad_eval_error(ev, st->loc, "out of memory");
         else
-            g = scad_dxf_import(ev, env, st, a, state, scad_buf_str(&path));
+            g = scad_dxf_import(c, scad_buf_str(&path), scad_buf_str(&layer), p->file.origin,
+                                p->scale, p->f);
         scad_buf_free(&path);
+        scad_buf_free(&layer);
         return g;
     }
     if (!strcmp(ext, "svg") || !strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
@@ -107,7 +148,7 @@ scad_geom *scad_module_import(scad_eval *ev, scad_env *env, const scad_stmt *st,
         return NULL;
     }
     scad_buf path = {0};
-    resolve(st, name, &path);
+    scad_file_path(c, name, &path);
     float *v = NULL;
     int32_t *t = NULL;
     int nv = 0, nt = 0;
@@ -417,17 +458,49 @@ static int surface_mesh(const heightmap *m, int center, iv_shape *out)
     return rc < 0 ? -1 : 0;
 }
 
-scad_geom *scad_module_surface(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                               const scad_argv *a, const scad_state *state)
+enum { SF_FILE, SF_CENTER, SF_CONVEXITY, SF_INVERT };
+
+typedef struct surface_args {
+    const char *file; /* borrowed; "" when none */
+    int center, invert;
+} surface_args;
+
+static void surface_read(scad_call *c, void *out)
 {
-    (void)env;
-    static const char *const known[] = {"file", "center", "invert", "convexity", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    scad_value fv = scad_argv_get(a, "file", 0);
-    scad_value cv = scad_argv_get(a, "center", 1), iv = scad_argv_get(a, "invert", -1);
-    int center = cv.kind == SV_BOOL && cv.u.b, invert = iv.kind == SV_BOOL && iv.u.b;
+    surface_args *p = out;
+    scad_value f = c->arg[SF_FILE];
+    p->file = f.kind == SV_STR ? f.u.str->s : "";
+    p->center = scad_arg_bool(c->arg[SF_CENTER], 0);
+    p->invert = scad_arg_bool(c->arg[SF_INVERT], 0);
+}
+
+static int surface_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const surface_args *p = args;
+    long long mtime = 0;
     scad_buf path = {0};
-    resolve(st, fv.kind == SV_STR ? fv.u.str->s : "", &path);
+    if (c->arg[SF_FILE].kind == SV_STR)
+        scad_print_path(c->ev, c->st->loc.file ? c->st->loc.file : "", p->file, &path, &mtime);
+    scad_buf_puts(b, "surface(file = ");
+    scad_print_quoted(b, scad_buf_str(&path), strlen(scad_buf_str(&path)));
+    scad_buf_free(&path);
+    scad_buf_puts(b, ", center = ");
+    scad_print_bool(b, p->center);
+    scad_buf_puts(b, ", invert = ");
+    scad_print_bool(b, p->invert);
+    scad_buf_printf(b, ", timestamp = %lld)", mtime);
+    return 0;
+}
+
+static scad_geom *surface_build(scad_call *c, const void *args)
+{
+    const surface_args *sa = args;
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    int center = sa->center, invert = sa->invert;
+    scad_buf path = {0};
+    scad_file_path(c, sa->file, &path);
     if (path.oom) {
         scad_eval_error(ev, st->loc, "out of memory");
         return NULL;
@@ -461,3 +534,22 @@ scad_geom *scad_module_surface(scad_eval *ev, scad_env *env, const scad_stmt *st
     free(m.z);
     return g;
 }
+
+static const scad_module_def import = {"import",
+                                       {"file", "layer", "convexity", "origin", "scale", "width",
+                                        "height", "filename", "layername", "center", "dpi", "id"},
+                                       5,
+                                       sizeof(import_args),
+                                       import_read,
+                                       import_print,
+                                       import_build};
+
+static const scad_module_def surface = {"surface",
+                                        {"file", "center", "convexity", "invert"},
+                                        3,
+                                        sizeof(surface_args),
+                                        surface_read,
+                                        surface_print,
+                                        surface_build};
+
+const scad_module_def *const scad_import_modules[] = {&import, &surface, NULL};

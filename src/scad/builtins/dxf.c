@@ -1,5 +1,5 @@
 /*
- * builtin_dxf.c — what the language does with DXF drawings (read by
+ * dxf.c — what the language does with DXF drawings (read by
  * dxf.c): import() of a .dxf as a 2D region leaf, and the functions
  * dxf_dim() and dxf_cross() of OpenSCAD 2021.01, with its arguments,
  * defaults and warnings.
@@ -15,15 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "builtin_geometry.h"
-#include "dxf.h"
-
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-/* The preview slab of a 2D leaf (as builtin_geometry.c's SLAB). */
-#define SLAB 0.5
+#include "../dxf.h"
+#include "builtins.h"
 
 typedef struct sink {
     scad_eval *ev;
@@ -73,20 +66,6 @@ static int vec2(scad_value v, double o[2])
     o[0] = v.u.vec->v[0].u.num;
     o[1] = v.u.vec->v[1].u.num;
     return 1;
-}
-
-int scad_dxf_origin(scad_eval *ev, scad_value v, scad_loc loc, double o[2])
-{
-    int ok = vec2(v, o) && isfinite(o[0]) && isfinite(o[1]);
-    if (v.kind != SV_UNDEF && !ok) {
-        scad_buf b = {0};
-        scad_value_format(&b, v, 1);
-        /* sic: 2021.01's import() names linear_extrude here */
-        scad_diag_warning(ev->d, loc, "linear_extrude(..., origin=%s) could not be converted",
-                          scad_buf_str(&b));
-        scad_buf_free(&b);
-    }
-    return ok;
 }
 
 /* ---- dxf_dim and dxf_cross ----------------------------------------------------- */
@@ -165,10 +144,10 @@ static int read_for(scad_eval *ev, scad_loc loc, dxf_args *d, scad_dxf *dxf)
 
 static double atan2_degrees(double y, double x)
 {
-    return atan2(y, x) * 180.0 / M_PI;
+    return atan2(y, x) * 180.0 / IV_PI;
 }
 
-scad_value scad_builtin_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
+static scad_value f_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
 {
     (void)fname;
     dxf_args d;
@@ -189,7 +168,7 @@ scad_value scad_builtin_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc,
         double x = c[4][0] - c[3][0], y = c[4][1] - c[3][1];
         switch (m->type & 7) {
         case 0: /* rotated, horizontal or vertical */
-            r = scad_num(fabs(x * scad_cos_degrees(m->angle) + y * scad_sin_degrees(m->angle)));
+            r = scad_num(fabs(x * iv_cos_degrees(m->angle) + y * iv_sin_degrees(m->angle)));
             break;
         case 1: /* aligned */
             r = scad_num(sqrt(x * x + y * y));
@@ -223,8 +202,7 @@ scad_value scad_builtin_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc,
     return r;
 }
 
-scad_value scad_builtin_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc,
-                                  const char *fname)
+static scad_value f_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
 {
     (void)fname;
     dxf_args d;
@@ -269,39 +247,15 @@ scad_value scad_builtin_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc lo
 
 /* ---- import() ------------------------------------------------------------------ */
 
-static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name,
-                      scad_loc loc, double dflt)
+scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,
+                           const double origin[2], double scale, scad_facet_params f)
 {
-    scad_value v = scad_argv_get(a, name, -1);
-    if (v.kind == SV_NUM) return v.u.num;
-    int found;
-    v = scad_env_lookup_cstr(ev, env, name, loc, 1, &found);
-    return v.kind == SV_NUM ? v.u.num : dflt;
-}
-
-scad_geom *scad_dxf_import(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
-                           const scad_state *state, const char *path)
-{
-    scad_value lv = scad_argv_get(a, "layer", 1);
-    if (lv.kind == SV_UNDEF) lv = scad_argv_get(a, "layername", -1);
-    scad_buf layer = {0};
-    if (lv.kind != SV_UNDEF) to_string(lv, &layer);
-    double origin[2] = {0, 0};
-    vec2(scad_argv_get(a, "origin", 3), origin); /* warned by the caller */
-    scad_value sv = scad_argv_get(a, "scale", 4);
-    double scale = sv.kind == SV_NUM ? sv.u.num : 0;
-    if (scale <= 0) scale = 1;
-    scad_dxf_params p = {scad_buf_str(&layer),
-                         origin[0],
-                         origin[1],
-                         scale,
-                         special(ev, env, a, "$fn", st->loc, 0),
-                         special(ev, env, a, "$fa", st->loc, 12),
-                         special(ev, env, a, "$fs", st->loc, 2)};
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    scad_dxf_params p = {layer, origin[0], origin[1], scale, f.fn, f.fa, f.fs};
     sink s = {ev, st->loc};
     scad_dxf dxf;
     int rc = scad_dxf_read(path, &p, on_message, &s, &dxf);
-    scad_buf_free(&layer);
     if (rc != 0) {
         scad_eval_error(ev, st->loc, "out of memory");
         return NULL;
@@ -317,9 +271,9 @@ scad_geom *scad_dxf_import(scad_eval *ev, scad_env *env, const scad_stmt *st, co
             scad_eval_error(ev, st->loc, "out of memory");
         } else {
             iv_shape sh;
-            iv_shape_prism(&sh, reg, -SLAB, SLAB);
+            iv_shape_prism(&sh, reg, -SCAD_SLAB, SCAD_SLAB);
             iv_region_release(reg); /* the shape holds it */
-            g = scad_geometry_leaf(ev, &sh, state);
+            g = scad_geometry_leaf(ev, &sh, c->state);
         }
     }
     free(pts);
@@ -327,3 +281,9 @@ scad_geom *scad_dxf_import(scad_eval *ev, scad_env *env, const scad_stmt *st, co
     scad_dxf_free(&dxf);
     return g;
 }
+
+const scad_function_def scad_dxf_functions[] = {
+    {"dxf_cross", "file, layer, origin, scale", f_dxf_cross},
+    {"dxf_dim", "file, name, layer, origin, scale", f_dxf_dim},
+    {NULL, NULL, NULL},
+};

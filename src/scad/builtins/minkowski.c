@@ -9,8 +9,8 @@
  * 3D children: the sum distributes over union, (A ∪ B) ⊕ C = (A ⊕ C) ∪
  * (B ⊕ C), and the sum of two convex sets is the convex hull of the sums of
  * their points.  So each child is read as a union of convex parts — cubes,
- * hull() results, extrusions of convex polygons and discs, and OpenSCAD-faceted spheres and cylinders (polytopes),
- * smooth spheres and cylinders tessellated OpenSCAD's way with the call's
+ * hull() results, extrusions of convex polygons and discs, and OpenSCAD-faceted spheres and
+ * cylinders (polytopes), smooth spheres and cylinders tessellated OpenSCAD's way with the call's
  * $fn/$fa/$fs but at least SMOOTH_FRAGMENTS around (a smooth leaf no longer
  * knows its own $fn), and closed polyhedra whose every vertex is a vertex of their
  * hull (taken as convex) — and the result is the union of the hulls of the
@@ -20,8 +20,8 @@
  * decomposed: the call reports an error at its location and builds nothing.
  * The number of part combinations is capped (MAX_PARTS).
  */
-#include "geom2d.h"
-#include "hull3d.h"
+#include "builtins.h"
+#include "../../geom/hull3d.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -103,7 +103,7 @@ static void circle(const mctx *c, part *q, const double xf[12], double r, double
     }
     for (int j = 0; j < n; j++) {
         double a = 360.0 * j / n;
-        put(c, q, xf, r * scad_cos_degrees(a), r * scad_sin_degrees(a), z);
+        put(c, q, xf, r * iv_cos_degrees(a), r * iv_sin_degrees(a), z);
     }
 }
 
@@ -118,7 +118,7 @@ static int fragments(const mctx *c, double r)
 static int mesh_is_convex(const double (*V)[3], int n)
 {
     iv_shape h;
-    if (scad_hull3d(&h, V, n) != 0) return 0;
+    if (geom_hull3d(&h, V, n) != 0) return 0;
     int m;
     iv_polytope_vertices(&h, &m);
     iv_shape_release(&h);
@@ -157,7 +157,8 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
         if (!(q = parts_new(c, P, 8))) return;
         for (int i = 0; i < 8; i++)
             put(c, q, g->xf, (i & 1) ? s->u.box.hi[0] : s->u.box.lo[0],
-                (i & 2) ? s->u.box.hi[1] : s->u.box.lo[1], (i & 4) ? s->u.box.hi[2] : s->u.box.lo[2]);
+                (i & 2) ? s->u.box.hi[1] : s->u.box.lo[1],
+                (i & 4) ? s->u.box.hi[2] : s->u.box.lo[2]);
         return;
     case IV_SHAPE_SPHERE: {
         double r = s->u.sphere.r;
@@ -167,10 +168,10 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
         if (!(q = parts_new(c, P, n * rings))) return;
         for (int i = 0; i < rings; i++) {
             double phi = 180.0 * (i + 0.5) / rings;
-            double rr = r * scad_sin_degrees(phi), z = r * scad_cos_degrees(phi);
+            double rr = r * iv_sin_degrees(phi), z = r * iv_cos_degrees(phi);
             for (int j = 0; j < n; j++) {
                 double a = 360.0 * j / n;
-                put(c, q, g->xf, rr * scad_cos_degrees(a), rr * scad_sin_degrees(a), z);
+                put(c, q, g->xf, rr * iv_cos_degrees(a), rr * iv_sin_degrees(a), z);
             }
         }
         return;
@@ -247,7 +248,7 @@ static int hull_of_sums(const part *a, const part *b, iv_shape *out)
         for (int j = 0; j < b->n; j++, k++)
             for (int d = 0; d < 3; d++)
                 S[k][d] = a->p[i][d] + b->p[j][d];
-    int rc = scad_hull3d(out, (const double(*)[3])S, (int)n);
+    int rc = geom_hull3d(out, (const double(*)[3])S, (int)n);
     free(S);
     return rc;
 }
@@ -295,7 +296,7 @@ static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
         scad_geom *one = NULL;
         for (int i = 0; i < acc.n; i++) {
             iv_shape h;
-            if (scad_hull3d(&h, (const double(*)[3])acc.v[i].p, acc.v[i].n) != 0) continue;
+            if (geom_hull3d(&h, (const double(*)[3])acc.v[i].p, acc.v[i].n) != 0) continue;
             if (scad_geom_keep(ev, &h) != 0) continue;
             one = scad_geom_leaf(ev, &h, state);
             if (u) scad_geom_add(ev, u, one);
@@ -311,8 +312,9 @@ static scad_geom *sum_2d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
 {
     const scad_services *s = ev->services;
     if (!s->paths_minkowski || !s->paths_clip) {
-        scad_diag_error(ev->d, st->loc, "minkowski() of 2D shapes is not available here "
-                                        "(no polygon service)");
+        scad_diag_error(ev->d, st->loc,
+                        "minkowski() of 2D shapes is not available here "
+                        "(no polygon service)");
         return NULL;
     }
     scad_paths acc;
@@ -338,26 +340,51 @@ static scad_geom *sum_2d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
     return g;
 }
 
-scad_geom *scad_module_minkowski(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                                 const scad_argv *a, const scad_state *state)
+typedef struct minkowski_args {
+    int convexity;
+    scad_facet_params f;
+} minkowski_args;
+
+static void minkowski_read(scad_call *c, void *out)
 {
-    static const char *const known[] = {"convexity", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    minkowski_args *p = out;
+    p->convexity = scad_arg_int(c->arg[0], 0);
+    p->f = scad_facets_read(c);
+}
+
+static int minkowski_print(scad_call *c, const void *args, scad_buf *b)
+{
+    (void)c;
+    scad_buf_printf(b, "minkowski(convexity = %d)", ((const minkowski_args *)args)->convexity);
+    return 1;
+}
+
+static scad_geom *minkowski_build(scad_call *c, const void *args)
+{
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
     if (!kids) return NULL;
     /* Several child statements come back as one union whose operands are
      * the children; a single statement is one operand, whatever it is. */
     scad_geom **ops = &kids;
     int nops = 1;
-    if (st->children && st->children->nstmts > 1 && !kids->is_leaf &&
-        kids->op == CSG_OP_UNION && kids->n > 1) {
+    if (st->children && st->children->nstmts > 1 && !kids->is_leaf && kids->op == CSG_OP_UNION &&
+        kids->n > 1) {
         ops = kids->kids;
         nops = kids->n;
     }
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
-    scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
+    scad_facet_params f = ((const minkowski_args *)args)->f;
     if (scad_geom_dims(kids) == 1) return sum_2d(ev, ops, nops, st, state, inv, f);
-    mctx c = {ev, st->loc, inv, f, NULL, 0};
-    return sum_3d(ev, ops, nops, st, state, &c);
+    mctx m = {ev, st->loc, inv, f, NULL, 0};
+    return sum_3d(ev, ops, nops, st, state, &m);
 }
+
+static const scad_module_def minkowski = {
+    "minkowski",     {"convexity"},  1, sizeof(minkowski_args), minkowski_read,
+    minkowski_print, minkowski_build};
+
+const scad_module_def *const scad_minkowski_modules[] = {&minkowski, NULL};

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "eval.h"
+#include "builtins.h"
 
 typedef struct named {
     const char *name;

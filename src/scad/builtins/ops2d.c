@@ -27,7 +27,7 @@
  * is that of the mesh, within about 1/256 of the size of the true
  * silhouette.
  */
-#include "geom2d.h"
+#include "builtins.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -36,22 +36,57 @@
 
 /* ---- offset ---------------------------------------------------------------------- */
 
-scad_geom *scad_module_offset(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                              const scad_argv *a, const scad_state *state)
+enum { OFFSET_R, OFFSET_DELTA, OFFSET_CHAMFER };
+
+typedef struct offset_args {
+    double delta;
+    int round, chamfer;
+    scad_facet_params f;
+} offset_args;
+
+/* OffsetModule's reading: r wins over delta; a value that is not a finite
+ * number leaves the default, r = 1. */
+static void offset_read(scad_call *c, void *out)
 {
-    static const char *const known[] = {"r", "delta", "chamfer", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
-    double delta = 1, x;
-    int join = SCAD_JOIN_ROUND;
-    if (scad_to_num(scad_argv_get(a, "r", 0), &x)) {
-        delta = x;
-    } else if (scad_to_num(scad_argv_get(a, "delta", -1), &x)) {
-        delta = x;
-        scad_value c = scad_argv_get(a, "chamfer", -1);
-        join = c.kind == SV_BOOL && c.u.b ? SCAD_JOIN_SQUARE : SCAD_JOIN_MITER;
+    offset_args *p = out;
+    double x;
+    p->delta = 1;
+    p->round = 1;
+    if (scad_arg_num(c->arg[OFFSET_R], &x)) {
+        if (isfinite(x)) p->delta = x;
+    } else if (scad_arg_num(c->arg[OFFSET_DELTA], &x)) {
+        if (isfinite(x)) p->delta = x;
+        p->round = 0;
+        p->chamfer = scad_value_truthy(c->arg[OFFSET_CHAMFER]);
     }
-    if (!kids || !isfinite(delta)) return NULL;
+    p->f = scad_facets_read(c);
+}
+
+static int offset_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const offset_args *p = args;
+    (void)c;
+    scad_buf_puts(b, p->round ? "offset(r = " : "offset(delta = ");
+    scad_print_g(b, p->delta);
+    if (!p->round) {
+        scad_buf_puts(b, ", chamfer = ");
+        scad_print_bool(b, p->chamfer);
+    }
+    scad_print_facets(b, p->f, 1);
+    scad_buf_puts(b, ")");
+    return 1;
+}
+
+static scad_geom *offset_build(scad_call *c, const void *args)
+{
+    const offset_args *p = args;
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
+    double delta = p->delta;
+    int join = p->round ? SCAD_JOIN_ROUND : p->chamfer ? SCAD_JOIN_SQUARE : SCAD_JOIN_MITER;
+    if (!kids) return NULL;
     const scad_services *s = ev->services;
     if (!s->paths_offset || !s->paths_clip) {
         scad_diag_error(ev->d, st->loc, "offset() is not available here (no polygon service)");
@@ -59,12 +94,12 @@ scad_geom *scad_module_offset(scad_eval *ev, scad_env *env, const scad_stmt *st,
     }
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
-    scad_facet_params f = scad_facets_lookup(ev, env, a, st->loc);
+    scad_facet_params f = p->f;
     scad_paths in;
     if (scad_flatten_2d(ev, kids, inv, f, st->loc, "offset", &in) != 0) return NULL;
     if (in.npaths == 0) return NULL;
     double n = scad_fragments(fabs(delta), f);
-    double tol = fabs(delta) * (1 - scad_cos_degrees(180 / n));
+    double tol = fabs(delta) * (1 - iv_cos_degrees(180 / n));
     scad_paths out = {NULL, NULL, 0};
     char err[256];
     scad_geom *g = NULL;
@@ -76,6 +111,10 @@ scad_geom *scad_module_offset(scad_eval *ev, scad_env *env, const scad_stmt *st,
     scad_paths_free(&out);
     return g;
 }
+
+static const scad_module_def offset = {
+    "offset",    {"r", "delta", "chamfer"}, 1, sizeof(offset_args), offset_read, offset_print,
+    offset_build};
 
 /* ---- projection ------------------------------------------------------------------ */
 
@@ -262,7 +301,8 @@ static int shadow(scad_eval *ev, csg_node *root, pathbuf *b, char *err, size_t e
                 for (int e = 0; e < 3; e++) {
                     const float *u = p[e], *w = p[(e + 1) % 3];
                     if ((u[1] <= y && w[1] >= y) || (u[1] >= y && w[1] <= y)) {
-                        double x = u[1] == w[1] ? u[0] : u[0] + (y - u[1]) / (w[1] - u[1]) * (w[0] - u[0]);
+                        double x =
+                            u[1] == w[1] ? u[0] : u[0] + (y - u[1]) / (w[1] - u[1]) * (w[0] - u[0]);
                         double xx = u[1] == w[1] ? w[0] : x;
                         x0 = fmin(x0, fmin(x, xx));
                         x1 = fmax(x1, fmax(x, xx));
@@ -321,15 +361,35 @@ static int section(csg_node *root, pathbuf *b, char *err, size_t errlen)
     return rc;
 }
 
-scad_geom *scad_module_projection(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                                  const scad_argv *a, const scad_state *state)
+typedef struct projection_args {
+    int cut, convexity;
+} projection_args;
+
+static void projection_read(scad_call *c, void *out)
 {
-    static const char *const known[] = {"cut", "convexity", NULL};
-    scad_check_arg_names(ev, a, st->loc, known);
-    scad_geom *kids = scad_eval_children(ev, env, st, state, CSG_OP_UNION);
+    projection_args *p = out;
+    p->cut = scad_arg_bool(c->arg[0], 0);
+    p->convexity = scad_arg_int(c->arg[1], 0);
+}
+
+static int projection_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const projection_args *p = args;
+    (void)c;
+    scad_buf_puts(b, "projection(cut = ");
+    scad_print_bool(b, p->cut);
+    scad_buf_printf(b, ", convexity = %d)", p->convexity);
+    return 1;
+}
+
+static scad_geom *projection_build(scad_call *c, const void *args)
+{
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
     if (!kids || !(scad_geom_dims(kids) & 2)) return NULL;
-    scad_value c = scad_argv_get(a, "cut", 0);
-    int cut = c.kind == SV_BOOL && c.u.b;
+    int cut = ((const projection_args *)args)->cut;
     const scad_services *s = ev->services;
     if (!s->paths_clip || (!cut && !s->mesh_tree)) {
         scad_diag_error(ev->d, st->loc,
@@ -363,3 +423,9 @@ scad_geom *scad_module_projection(scad_eval *ev, scad_env *env, const scad_stmt 
     scad_paths_free(&b.p);
     return g;
 }
+
+static const scad_module_def projection = {
+    "projection",     {"cut", "convexity"}, 1, sizeof(projection_args), projection_read,
+    projection_print, projection_build};
+
+const scad_module_def *const scad_ops2d_modules[] = {&offset, &projection, NULL};

@@ -15,19 +15,15 @@
  * Invariant: a leaf with none of them set keeps all optical fields 0, the
  * renderer's OpenSCAD look.
  */
-#include "material.h"
+#include "builtins.h"
 
 #include <math.h>
 
-/* The number a $rs_ variable holds (a bool counts as 0 or 1), looked up in
- * the leaf's own arguments and then the dynamic scope; 0 when unset. */
-static int lookup(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name, double *out)
+/* The number a $rs_ variable holds (a bool counts as 0 or 1) where the
+ * call sees it (its own $-arguments are in its scope); 0 when unset. */
+static int lookup(scad_call *c, const char *name, double *out)
 {
-    scad_value v = scad_undef();
-    if (a && scad_argv_given(a, name, -1)) v = scad_argv_get(a, name, -1);
-    int found = 0;
-    if (v.kind == SV_UNDEF && env)
-        v = scad_env_lookup_cstr(ev, env, name, scad_eval_here(ev), 1, &found);
+    scad_value v = scad_env_lookup_cstr(c->ev, c->env, name, c->st->loc, 1, NULL);
     if (v.kind == SV_BOOL) {
         *out = v.u.b ? 1 : 0;
         return 1;
@@ -77,14 +73,13 @@ static void light_shape(const iv_shape *s, const csg_affine xf, float light[4])
     light[3] = (float)(isfinite(r * scale) ? r * scale : 0);
 }
 
-void scad_material_apply(scad_eval *ev, scad_env *env, const scad_argv *a, const iv_shape *s,
-                         const csg_affine xf, csg_material *m)
+void scad_material_apply(scad_call *c, const iv_shape *s, const csg_affine xf, csg_material *m)
 {
     double x;
-    if (lookup(ev, env, a, "$rs_reflect", &x)) m->reflect = clampf(x, 0, 1);
-    if (lookup(ev, env, a, "$rs_absorb", &x)) m->absorb = clampf(x, 0, 1e6);
-    if (lookup(ev, env, a, "$rs_ior", &x)) m->ior = x > 1 ? clampf(x, 1, 10) : 0;
-    if (lookup(ev, env, a, "$rs_light", &x) && x > 0) {
+    if (lookup(c, "$rs_reflect", &x)) m->reflect = clampf(x, 0, 1);
+    if (lookup(c, "$rs_absorb", &x)) m->absorb = clampf(x, 0, 1e6);
+    if (lookup(c, "$rs_ior", &x)) m->ior = x > 1 ? clampf(x, 1, 10) : 0;
+    if (lookup(c, "$rs_light", &x) && x > 0) {
         m->emit = clampf(x, 0, 1e6);
         light_shape(s, xf, m->light);
     }

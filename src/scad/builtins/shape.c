@@ -1,93 +1,86 @@
 /*
- * geom2d.c — the shared part of the 2D operations (geom2d.h): fragment
- * counts, flattening a 2D csg subtree into one polygon set, and a polygon
- * set back into a region leaf.
+ * shape.c — what the geometry modules share: leaves placed by the call's
+ * state (with the $rs_ optics), OpenSCAD's circles as polygons, 2D leaves in
+ * the preview slab, and for the 2D operations (offset, projection,
+ * minkowski, text) flattening a 2D subtree into one polygon set and a
+ * polygon set back into region leaves.
  *
  * A flattened set is always normalised by the paths_clip service (no
  * overlaps, outlines counter-clockwise, holes clockwise), so the offset and
  * Minkowski services, which read paths as they wind, see what OpenSCAD's
  * Clipper sees.  A region leaf takes the set under the even-odd rule, which
- * agrees with nonzero on a normalised set.  The fragment rule repeats
- * builtin_geometry.c's (OpenSCAD's get_fragments_from_r).
+ * agrees with nonzero on a normalised set.
  */
-#include "geom2d.h"
+#include "builtins.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
-#define GRID_FINE 0.00000095367431640625 /* OpenSCAD's smallest radius */
-#define SLAB 0.5     /* half the thickness of a previewed 2D object */
 #define SMOOTH_DISC 256 /* points of a smooth circle made into a polygon */
 
-static double special(scad_eval *ev, scad_env *env, const scad_argv *a, const char *name,
-                      scad_loc loc, double dflt)
+scad_geom *scad_geometry_leaf(scad_eval *ev, iv_shape *s, const scad_state *state)
 {
-    double x;
-    if (scad_to_num(scad_argv_get(a, name, -1), &x)) return x;
-    int found;
-    if (scad_to_num(scad_env_lookup_cstr(ev, env, name, loc, 1, &found), &x)) return x;
-    return dflt;
+    if (scad_geom_keep(ev, s) != 0) return NULL;
+    return scad_geom_leaf(ev, s, state);
 }
 
-scad_facet_params scad_facets_lookup(scad_eval *ev, scad_env *env, const scad_argv *a,
-                                     scad_loc loc)
+scad_geom *scad_leaf_at(scad_eval *ev, const iv_shape *s, const scad_state *state,
+                        const csg_affine local)
 {
-    scad_facet_params f = {special(ev, env, a, "$fn", loc, 0), special(ev, env, a, "$fa", loc, 12),
-                           special(ev, env, a, "$fs", loc, 2)};
-    return f;
+    scad_state st = *state;
+    if (local) csg_affine_mul(state->xf, local, st.xf);
+    return scad_geom_leaf(ev, s, &st);
 }
 
-int scad_fragments(double r, scad_facet_params f)
+scad_geom *scad_optics_leaf(scad_call *c, const iv_shape *s, const csg_affine local)
 {
-    if (!(r >= GRID_FINE)) return 3;
-    if (f.fn > 0) return f.fn >= 3 ? (f.fn > 100000 ? 100000 : (int)f.fn) : 3;
-    double fa = f.fa < 0.01 ? 0.01 : f.fa, fs = f.fs < 0.01 ? 0.01 : f.fs;
-    double n = ceil(fmax(fmin(360.0 / fa, r * 2 * PI / fs), 5));
-    return n > 100000 ? 100000 : (int)n;
+    scad_state st = *c->state;
+    if (local) csg_affine_mul(c->state->xf, local, st.xf);
+    scad_material_apply(c, s, st.xf, &st.mat);
+    return scad_geom_leaf(c->ev, s, &st);
 }
 
-/* AUTO draws OpenSCAD's facets where the user asked for coarse ones: the
- * fragment count for radius r is at most 16 and comes from settings the
- * user changed ($fn set, or $fa/$fs off their defaults 12 and 2) — a
- * cylinder($fn = 6) nut, a sphere under $fa = 30.  OpenSCAD's defaults
- * alone stay smooth, even for a small sphere they would cut into 10. */
-int scad_facets_shown(const scad_eval *ev, scad_facet_params f, double r)
+scad_geom *scad_with_optics(scad_call *c, scad_geom *g)
 {
-    if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
-    if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
-    int chosen = f.fn > 0 || f.fa != 12 || f.fs != 2;
-    return chosen && scad_fragments(r, f) <= 16;
+    if (g && g->is_leaf) scad_material_apply(c, &g->shape, g->xf, &g->mat);
+    return g;
 }
 
-int scad_geom_keep(scad_eval *ev, iv_shape *s)
+scad_geom *scad_region_leaf(scad_eval *ev, iv_region *g, const scad_state *state)
 {
-    if (ev->nowned == ev->capowned) {
-        int cap = ev->capowned ? 2 * ev->capowned : 16;
-        iv_shape *v = realloc(ev->owned, (size_t)cap * sizeof *v);
-        if (!v) {
-            iv_shape_release(s);
-            return -1;
-        }
-        ev->owned = v;
-        ev->capowned = cap;
-    }
-    ev->owned[ev->nowned++] = *s;
-    return 0;
+    if (!g) return NULL;
+    iv_shape s;
+    iv_shape_prism(&s, g, -SCAD_SLAB, SCAD_SLAB);
+    iv_region_release(g); /* the shape holds it now */
+    if (scad_geom_keep(ev, &s) != 0) return NULL;
+    return scad_leaf_at(ev, &s, state, NULL);
+}
+
+void scad_circle_point(double r, int i, int n, double out[2])
+{
+    double a = 360.0 * i / n;
+    out[0] = r * iv_cos_degrees(a);
+    out[1] = r * iv_sin_degrees(a);
+}
+
+iv_region *scad_circle_region(double r, int n)
+{
+    double(*P)[2] = malloc((size_t)n * sizeof *P);
+    if (!P) return NULL;
+    for (int i = 0; i < n; i++)
+        scad_circle_point(r, i, n, P[i]);
+    int st[2] = {0, n};
+    iv_region *g = iv_region_new((const double(*)[2])P, st, 1);
+    free(P);
+    return g;
 }
 
 /* One region leaf over paths [start[0], start[n]) of pts (copied). */
 static scad_geom *region_leaf(scad_eval *ev, const double (*pts)[2], const int *start, int n,
                               const scad_state *state)
 {
-    iv_region *g = iv_region_new(pts, start, n);
-    if (!g) return NULL;
-    iv_shape s;
-    iv_shape_prism(&s, g, -SLAB, SLAB);
-    iv_region_release(g); /* the shape holds it now */
-    if (scad_geom_keep(ev, &s) != 0) return NULL;
-    return scad_geom_leaf(ev, &s, state);
+    return scad_region_leaf(ev, iv_region_new(pts, start, n), state);
 }
 
 typedef struct xspan {
@@ -187,8 +180,8 @@ int scad_geom_dims(const scad_geom *g)
 
 int scad_geom_is_flat(const scad_geom *g)
 {
-    return g->is_leaf && g->shape.kind == IV_SHAPE_PRISM && g->shape.u.prism.z0 == -SLAB &&
-           g->shape.u.prism.z1 == SLAB;
+    return g->is_leaf && g->shape.kind == IV_SHAPE_PRISM && g->shape.u.prism.z0 == -SCAD_SLAB &&
+           g->shape.u.prism.z1 == SCAD_SLAB;
 }
 
 /* ---- flattening ------------------------------------------------------------------ */
@@ -223,8 +216,8 @@ static int leaf_paths(flat *c, const scad_geom *g, scad_paths *out)
         if (!C) return -1;
         for (int i = 0; i < n; i++) {
             double a = 360.0 * i / n;
-            C[i][0] = r * scad_cos_degrees(a);
-            C[i][1] = r * scad_sin_degrees(a);
+            C[i][0] = r * iv_cos_degrees(a);
+            C[i][1] = r * iv_sin_degrees(a);
         }
         P = (const double(*)[2])C;
         circle_start[0] = 0;
@@ -251,8 +244,7 @@ static int leaf_paths(flat *c, const scad_geom *g, scad_paths *out)
 
 static void fail(flat *c, const char *msg)
 {
-    if (!c->failed)
-        scad_diag_error(c->ev->d, c->loc, "%s(): %s", c->who, msg);
+    if (!c->failed) scad_diag_error(c->ev->d, c->loc, "%s(): %s", c->who, msg);
     c->failed = 1;
 }
 

@@ -172,16 +172,16 @@ static int outside_add(hull *h, int f, int p, double dist)
 }
 
 /* Make the first tetrahedron, as polytope.c does (iv_hull_tetrahedron).
- * Returns 0, SCAD_HULL_FLAT or SCAD_HULL_NO_MEMORY. */
+ * Returns 0, GEOM_HULL_FLAT or GEOM_HULL_NO_MEMORY. */
 static int tetrahedron(hull *h, int ids[4])
 {
     const double(*P)[3] = h->P;
     int t[4][3];
-    if (iv_hull_tetrahedron(P, h->n, h->eps, ids, t) != 0) return SCAD_HULL_FLAT;
+    if (iv_hull_tetrahedron(P, h->n, h->eps, ids, t) != 0) return GEOM_HULL_FLAT;
     for (int k = 0; k < 4; k++) {
         double nn[3], dd;
-        if (vec3_plane(P, t[k][0], t[k][1], t[k][2], nn, &dd)) return SCAD_HULL_FLAT;
-        if (face_new(h, t[k][0], t[k][1], t[k][2], nn, dd) < 0) return SCAD_HULL_NO_MEMORY;
+        if (vec3_plane(P, t[k][0], t[k][1], t[k][2], nn, &dd)) return GEOM_HULL_FLAT;
+        if (face_new(h, t[k][0], t[k][1], t[k][2], nn, dd) < 0) return GEOM_HULL_NO_MEMORY;
     }
     /* neighbours: the face holding each edge reversed */
     for (int f = 0; f < 4; f++)
@@ -329,7 +329,7 @@ static int drop_eye(hull *h, int f)
         p = nextp;
     }
     if (F->head >= 0) {
-        if (GROW(h->work, h->capwork, h->nwork + 1)) return SCAD_HULL_NO_MEMORY;
+        if (GROW(h->work, h->capwork, h->nwork + 1)) return GEOM_HULL_NO_MEMORY;
         h->work[h->nwork++] = f;
     }
     return 0;
@@ -337,7 +337,7 @@ static int drop_eye(hull *h, int f)
 
 /* One step: the farthest point of face f's outside set becomes a vertex.
  * Returns 0; 1 when the horizon is not one simple loop or a new face would
- * have no area (nothing changed); SCAD_HULL_NO_MEMORY. */
+ * have no area (nothing changed); GEOM_HULL_NO_MEMORY. */
 static int add_point(hull *h, int f)
 {
     int eye = h->F[f].far;
@@ -345,7 +345,7 @@ static int add_point(hull *h, int f)
     const double *pe = h->P[eye];
     int stamp = ++h->stamp;
     h->nvis = 0;
-    if (GROW(h->vis, h->capvis, 1)) return SCAD_HULL_NO_MEMORY;
+    if (GROW(h->vis, h->capvis, 1)) return GEOM_HULL_NO_MEMORY;
     h->vis[h->nvis++] = f;
     h->F[f].mark = stamp;
     h->F[f].seen = 1;
@@ -359,7 +359,7 @@ static int add_point(hull *h, int f)
                 Q->mark = stamp;
                 Q->seen = dot3(Q->n, pe) - Q->d > h->eps;
                 if (!Q->seen) continue;
-                if (GROW(h->vis, h->capvis, h->nvis + 1)) return SCAD_HULL_NO_MEMORY;
+                if (GROW(h->vis, h->capvis, h->nvis + 1)) return GEOM_HULL_NO_MEMORY;
                 h->vis[h->nvis++] = h->F[g].nb[j];
             }
         }
@@ -367,7 +367,7 @@ static int add_point(hull *h, int f)
         for (int i = 0; i < h->nvis; i++)
             for (int j = 0; j < 3; j++) {
                 if (h->F[h->F[h->vis[i]].nb[j]].seen) continue;
-                if (GROW(h->hor, h->caphor, h->nhor + 1)) return SCAD_HULL_NO_MEMORY;
+                if (GROW(h->hor, h->caphor, h->nhor + 1)) return GEOM_HULL_NO_MEMORY;
                 h->hor[h->nhor][0] = h->vis[i];
                 h->hor[h->nhor][1] = j;
                 h->nhor++;
@@ -385,7 +385,7 @@ static int add_point(hull *h, int f)
                 dot3(nn, h->centre) - dd < -h->eps)
                 continue;
             if (h->F[q].seen) continue; /* already added for another edge */
-            if (GROW(h->vis, h->capvis, h->nvis + 1)) return SCAD_HULL_NO_MEMORY;
+            if (GROW(h->vis, h->capvis, h->nvis + 1)) return GEOM_HULL_NO_MEMORY;
             h->F[q].seen = 1;
             h->vis[h->nvis++] = q;
             grown = 1;
@@ -422,7 +422,7 @@ static int add_point(hull *h, int f)
             h->start[h->F[h->hor[i][0]].v[h->hor[i][1]]] = -1;
         return 1;
     }
-    if (GROW(h->fresh, h->capfresh, h->nhor)) return SCAD_HULL_NO_MEMORY;
+    if (GROW(h->fresh, h->capfresh, h->nhor)) return GEOM_HULL_NO_MEMORY;
     /* the cone: face i on horizon edge i */
     for (int i = 0; i < h->nhor; i++) {
         int g = h->hor[i][0], j = h->hor[i][1];
@@ -430,7 +430,7 @@ static int add_point(hull *h, int f)
         double nn[3], dd = 0;
         vec3_plane(h->P, a, b, eye, nn, &dd); /* has area: checked with the horizon above */
         int nf = face_new(h, a, b, eye, nn, dd);
-        if (nf < 0) return SCAD_HULL_NO_MEMORY;
+        if (nf < 0) return GEOM_HULL_NO_MEMORY;
         h->fresh[i] = nf;
         h->F[nf].nb[0] = other;
         for (int k = 0; k < 3; k++) /* other's edge b → a */
@@ -459,13 +459,13 @@ static int add_point(hull *h, int f)
             if (h->vmark[v] == stamp) continue;
             h->vmark[v] = stamp;
             grid_remove(h, v);
-            if (place(h, v)) return SCAD_HULL_NO_MEMORY;
+            if (place(h, v)) return GEOM_HULL_NO_MEMORY;
         }
         int p = h->F[g].head;
         h->F[g].head = -1;
         while (p >= 0) {
             int nextp = h->next[p];
-            if (p != eye && place(h, p)) return SCAD_HULL_NO_MEMORY;
+            if (p != eye && place(h, p)) return GEOM_HULL_NO_MEMORY;
             p = nextp;
         }
         face_kill(h, g);
@@ -504,10 +504,10 @@ static int in_play(const hull *h, int **idx)
  * the unjittered points: a plane is then raised to its own vertices). */
 static int finish(hull *h, const double (*P)[3], const double (*V)[3], iv_shape *s)
 {
-    if (h->nalive > MAX_FACES) return SCAD_HULL_TOO_MANY;
+    if (h->nalive > MAX_FACES) return GEOM_HULL_TOO_MANY;
     double(*pl)[4] = malloc((size_t)h->nalive * sizeof *pl);
     char *used = calloc((size_t)h->n, 1);
-    int rc = SCAD_HULL_NO_MEMORY;
+    int rc = GEOM_HULL_NO_MEMORY;
     double(*vv)[3] = NULL;
     if (!pl || !used) goto done;
     /* A face whose plane has a neighbour's far corner well above it was
@@ -547,7 +547,7 @@ static int finish(hull *h, const double (*P)[3], const double (*V)[3], iv_shape 
         if (used[i]) memcpy(vv[nv++], V[i], sizeof *vv);
     rc = iv_shape_polytope(s, (const double(*)[4])pl, np, (const double(*)[3])vv, nv) == 0
              ? 0
-             : SCAD_HULL_NO_MEMORY;
+             : GEOM_HULL_NO_MEMORY;
 done:
     free(pl);
     free(used);
@@ -556,7 +556,7 @@ done:
 }
 
 /* Quickhull of the n points P with tolerance eps, vertices taken from V.
- * Returns 0 (the polytope in *s), a SCAD_HULL_ code, or 1 when a step
+ * Returns 0 (the polytope in *s), a GEOM_HULL_ code, or 1 when a step
  * failed: then *idx (malloc'ed) holds the *nidx points still in play. */
 static int quickhull(const double (*P)[3], const double (*V)[3], int n, double eps, iv_shape *s,
                      int **idx, int *nidx)
@@ -576,7 +576,7 @@ static int quickhull(const double (*P)[3], const double (*V)[3], int n, double e
         h.gcap *= 2;
     h.ghead = malloc(h.gcap * sizeof *h.ghead);
     h.gnext = malloc((size_t)n * sizeof *h.gnext);
-    int rc = SCAD_HULL_NO_MEMORY;
+    int rc = GEOM_HULL_NO_MEMORY;
     if (!h.next || !h.start || !h.vmark || !h.ghead || !h.gnext) goto done;
     for (size_t i = 0; i < h.gcap; i++)
         h.ghead[i] = -1;
@@ -586,7 +586,7 @@ static int quickhull(const double (*P)[3], const double (*V)[3], int n, double e
     if ((rc = tetrahedron(&h, ids)) != 0) goto done;
     for (int k = 0; k < 4; k++)
         grid_add(&h, ids[k]);
-    rc = SCAD_HULL_NO_MEMORY;
+    rc = GEOM_HULL_NO_MEMORY;
     for (int i = 0; i < n; i++) {
         if (i == ids[0] || i == ids[1] || i == ids[2] || i == ids[3]) continue;
         for (int f = 0; f < 4; f++) {
@@ -607,12 +607,12 @@ static int quickhull(const double (*P)[3], const double (*V)[3], int n, double e
         /* far past a polytope's faces: the points still to come lie
          * closer to the hull than those so far and seldom take faces
          * away, so this will not come back under the limit */
-        if (h.nalive > GIVE_UP_FACES) rc = SCAD_HULL_TOO_MANY;
+        if (h.nalive > GIVE_UP_FACES) rc = GEOM_HULL_TOO_MANY;
     }
     if (rc == 0)
         rc = finish(&h, P, V, s);
     else if (rc == 1 && (*nidx = in_play(&h, idx)) < 0)
-        rc = SCAD_HULL_NO_MEMORY;
+        rc = GEOM_HULL_NO_MEMORY;
 done:
     free(h.F);
     free(h.next);
@@ -628,11 +628,11 @@ done:
     return rc;
 }
 
-int scad_hull3d(iv_shape *s, const double (*P)[3], int n)
+int geom_hull3d(iv_shape *s, const double (*P)[3], int n)
 {
-    if (n < 4) return SCAD_HULL_FLAT;
+    if (n < 4) return GEOM_HULL_FLAT;
     double eps; /* polytope.c's tolerance: the same solid */
-    if (iv_hull_eps(P, n, &eps) != 0) return SCAD_HULL_BAD_INPUT;
+    if (iv_hull_eps(P, n, &eps) != 0) return GEOM_HULL_BAD_INPUT;
     int *idx = NULL, m = 0, *sub = NULL, ms = 0;
     int rc = quickhull(P, P, n, eps, s, &idx, &m);
     /* A failed step (rounding in nearly coplanar input): again over the
@@ -643,7 +643,7 @@ int scad_hull3d(iv_shape *s, const double (*P)[3], int n)
     for (int attempt = 1; rc == 1 && attempt <= 3; attempt++) {
         double(*V)[3] = malloc((size_t)m * sizeof *V);
         double(*J)[3] = malloc((size_t)m * sizeof *J);
-        rc = SCAD_HULL_NO_MEMORY;
+        rc = GEOM_HULL_NO_MEMORY;
         if (V && J) {
             double amp = eps * pow(10, attempt);
             for (int i = 0; i < m; i++)
@@ -667,11 +667,11 @@ int scad_hull3d(iv_shape *s, const double (*P)[3], int n)
     }
     if (rc == 1) { /* give up: polytope.c's O(n · faces) hull of what is left */
         double(*V)[3] = malloc((size_t)m * sizeof *V);
-        rc = SCAD_HULL_NO_MEMORY;
+        rc = GEOM_HULL_NO_MEMORY;
         if (V) {
             for (int i = 0; i < m; i++)
                 memcpy(V[i], P[idx[i]], sizeof *V);
-            rc = iv_shape_hull(s, (const double(*)[3])V, m) == 0 ? 0 : SCAD_HULL_FLAT;
+            rc = iv_shape_hull(s, (const double(*)[3])V, m) == 0 ? 0 : GEOM_HULL_FLAT;
             free(V);
         }
     }

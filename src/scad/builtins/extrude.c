@@ -1,0 +1,485 @@
+/*
+ * extrude.c — linear_extrude() and rotate_extrude().
+ *
+ * Both are point maps from 3D to the plane — p is in linear_extrude(h) of
+ * S when its shadow is in S and 0 <= z <= h; p is in rotate_extrude of S
+ * when (|p_xy|, p_z) is — and a preimage commutes with union, intersection
+ * and difference.  So an extrusion keeps its children's CSG tree and only
+ * replaces each 2D leaf by the extrusion of that leaf: the prism's z range
+ * for a straight linear_extrude, a revolve of the leaf's region (with the
+ * leaf's own 2D transform baked in) for rotate_extrude.  With a twist or a
+ * scale each 2D leaf becomes OpenSCAD's own polyhedron (src/geom/extrude.c)
+ * and the booleans above the leaves stay exact CSG.  3D children are
+ * ignored, as OpenSCAD ignores them.  Reading a drawing from file= (the
+ * deprecated form) is printed in .csg but builds nothing.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../geom/extrude.h"
+#include "builtins.h"
+
+/* The leaf's 2D transform in the extrusion's frame: local_from_world ∘
+ * leaf.xf with its z row and column dropped (OpenSCAD extrudes the
+ * shadow). */
+static void leaf_2d(const csg_affine local_from_world, const csg_affine leaf_xf, csg_affine out)
+{
+    csg_affine t;
+    csg_affine_mul(local_from_world, leaf_xf, t);
+    csg_affine r = {t[0], t[1], 0, t[3], t[4], t[5], 0, t[7], 0, 0, 1, 0};
+    memcpy(out, r, sizeof r);
+}
+
+/* A node that is the empty set. */
+static void make_empty(scad_geom *g)
+{
+    g->is_leaf = 0;
+    g->op = CSG_OP_UNION;
+    g->n = 0;
+}
+
+static void linear_tree(scad_geom *g, const csg_affine local_from_world,
+                        const csg_affine world_from_local, double z0, double z1)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            linear_tree(g->kids[i], local_from_world, world_from_local, z0, z1);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) { /* a 3D child: OpenSCAD ignores it */
+        make_empty(g);
+        return;
+    }
+    csg_affine t;
+    leaf_2d(local_from_world, g->xf, t);
+    csg_affine_mul(world_from_local, t, g->xf);
+    g->shape.u.prism.z0 = z0;
+    g->shape.u.prism.z1 = z1;
+}
+
+/* The region of a 2D leaf in the extrusion's frame (a new reference), x
+ * multiplied by sign; a disc becomes the polygon of disc_n points.  NULL
+ * when out of memory. */
+static iv_region *shadow_region(const double *local_from_world, const scad_geom *g, int disc_n,
+                                double sign)
+{
+    csg_affine t;
+    leaf_2d(local_from_world, g->xf, t);
+    const iv_region *src = g->shape.u.prism.g;
+    iv_region *tmp = NULL;
+    if (!src) {
+        tmp = scad_circle_region(g->shape.u.prism.r, disc_n);
+        if (!tmp) return NULL;
+        src = tmp;
+    }
+    int n, np;
+    const double(*P)[2] = iv_region_points(src, &n);
+    const int *ps = iv_region_paths(src, &np);
+    double(*Q)[2] = malloc((size_t)n * sizeof *Q);
+    iv_region *out = NULL;
+    if (Q) {
+        for (int i = 0; i < n; i++) {
+            Q[i][0] = sign * (t[0] * P[i][0] + t[1] * P[i][1] + t[3]);
+            Q[i][1] = t[4] * P[i][0] + t[5] * P[i][1] + t[7];
+        }
+        out = iv_region_new((const double(*)[2])Q, ps, np);
+        free(Q);
+    }
+    if (tmp) iv_region_release(tmp);
+    return out;
+}
+
+/* OpenSCAD's fragment count for a disc leaf: the one m_circle recorded, or
+ * (a disc made elsewhere) the count the enclosing module's facets give. */
+static int disc_fragments(const scad_geom *g, scad_facet_params f)
+{
+    return g->cap >= 3 ? g->cap : scad_fragments(g->shape.u.prism.r, f);
+}
+
+typedef struct twist_ctx {
+    scad_eval *ev;
+    scad_loc loc;
+    const double *local_from_world;
+    const double *world_from_local;
+    geom_extrusion e;
+    scad_facet_params f;
+    double max_r2, max_d2; /* the scan's results */
+} twist_ctx;
+
+/* The largest squared radius of the shadow's vertices, and the largest
+ * squared distance a vertex moves between bottom and top scale — what
+ * OpenSCAD sizes its default slices by.  The shadow is bounded as in
+ * revolve_scan: a difference by its first operand. */
+static void twist_scan(twist_ctx *c, const scad_geom *g)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
+        for (int i = 0; i < n; i++)
+            twist_scan(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) return;
+    iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
+    if (!r) return;
+    int n;
+    const double(*P)[2] = iv_region_points(r, &n);
+    for (int i = 0; i < n; i++) {
+        double x = P[i][0], y = P[i][1];
+        double dx = x - x * c->e.scale[0], dy = y - y * c->e.scale[1];
+        c->max_r2 = fmax(c->max_r2, x * x + y * y);
+        c->max_d2 = fmax(c->max_d2, dx * dx + dy * dy);
+    }
+    iv_region_release(r);
+}
+
+static void twist_tree(twist_ctx *c, scad_geom *g)
+{
+    if (!g || c->ev->aborted) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            twist_tree(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) { /* a 3D child: OpenSCAD ignores it */
+        make_empty(g);
+        return;
+    }
+    iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
+    iv_shape s;
+    int n = 0, rc = -1;
+    if (r) iv_region_points(r, &n);
+    /* each vertex of the mesh is a step of work: a 100,000-gon at 25,000
+     * slices would be 2.5·10^9 */
+    if (r && !scad_eval_steps(c->ev, (long)n * (c->e.slices + 1), c->loc, "linear_extrude")) {
+        rc = geom_extrusion_mesh(&c->e, r, &s);
+        if (rc != 0)
+            scad_diag_error(c->ev->d, c->loc,
+                            "linear_extrude(): no mesh of %d points at %d slices (out of "
+                            "memory); nothing is drawn",
+                            n, c->e.slices);
+    }
+    if (r) iv_region_release(r);
+    if (rc != 0 || scad_geom_keep(c->ev, &s) != 0) {
+        make_empty(g);
+        return;
+    }
+    g->shape = s;
+    memcpy(g->xf, c->world_from_local, sizeof(csg_affine));
+}
+
+/* ---- linear_extrude ------------------------------------------------------------ */
+
+enum {
+    LX_FILE,
+    LX_LAYER,
+    LX_HEIGHT,
+    LX_ORIGIN,
+    LX_SCALE,
+    LX_CENTER,
+    LX_TWIST,
+    LX_SLICES,
+    LX_CONVEXITY
+};
+
+typedef struct linear_args {
+    scad_file_arg file;
+    double height, twist, scale[2], slices;
+    int center, convexity;
+    scad_facet_params f;
+} linear_args;
+
+static void linear_read(scad_call *c, void *out)
+{
+    linear_args *p = out;
+    scad_file_read(c, LX_FILE, LX_LAYER, LX_ORIGIN, -1, -1, "linear_extrude", &p->file);
+    p->height = 100;
+    /* OpenSCAD takes a first unnamed number for the height when none is
+     * named; bound by position, it went to file */
+    if (!scad_arg_num(c->arg[LX_HEIGHT], &p->height) && c->st->args.n > 0 && !c->st->args.v[0].name)
+        scad_arg_num(c->arg[LX_FILE], &p->height);
+    if (!isfinite(p->height)) p->height = 100;
+    if (p->height <= 0) p->height = 0;
+    p->center = scad_arg_bool(c->arg[LX_CENTER], 0);
+    p->convexity = scad_arg_int(c->arg[LX_CONVEXITY], 0);
+    if (p->convexity <= 0) p->convexity = 1;
+    double x;
+    p->scale[0] = p->scale[1] = 1;
+    if (scad_arg_num(c->arg[LX_SCALE], &x)) {
+        p->scale[0] = p->scale[1] = x;
+    } else {
+        double s[2];
+        if (scad_arg_vec(c->arg[LX_SCALE], 2, s)) p->scale[0] = s[0], p->scale[1] = s[1];
+    }
+    for (int k = 0; k < 2; k++)
+        if (p->scale[k] < 0) p->scale[k] = 0;
+    p->twist = 0;
+    if (scad_arg_num(c->arg[LX_TWIST], &x) && isfinite(x)) p->twist = x;
+    p->slices = 0;
+    scad_arg_num(c->arg[LX_SLICES], &p->slices);
+    p->f = scad_facets_read(c);
+}
+
+static int linear_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const linear_args *p = args;
+    int nslices = isfinite(p->slices) ? (int)p->slices : 0;
+    int children = 1;
+    scad_buf_puts(b, "linear_extrude(");
+    if (p->file.name) {
+        long long mtime;
+        scad_file_print(c, &p->file, b, &mtime);
+        scad_buf_printf(b, ", timestamp = %lld, ", mtime);
+        children = 0;
+    }
+    scad_buf_puts(b, "height = ");
+    scad_print_g(b, p->height);
+    scad_buf_puts(b, ", center = ");
+    scad_print_bool(b, p->center);
+    scad_buf_printf(b, ", convexity = %d", p->convexity);
+    if (p->twist != 0) {
+        scad_buf_puts(b, ", twist = ");
+        scad_print_g(b, p->twist);
+    }
+    if (nslices > 0) scad_buf_printf(b, ", slices = %d", nslices);
+    scad_buf_puts(b, ", scale = [");
+    scad_print_g(b, p->scale[0]);
+    scad_buf_puts(b, ", ");
+    scad_print_g(b, p->scale[1]);
+    scad_buf_puts(b, "]");
+    if (nslices <= 0) scad_print_facets(b, p->f, 1);
+    scad_buf_puts(b, ")");
+    return children;
+}
+
+static scad_geom *linear_build(scad_call *c, const void *args)
+{
+    const linear_args *p = args;
+    scad_eval *ev = c->ev;
+    double h = p->height;
+    if (!(h > 0)) return NULL;
+    twist_ctx t = {.ev = ev,
+                   .loc = c->st->loc,
+                   .world_from_local = c->state->xf,
+                   .e = {.h1 = p->center ? -h / 2 : 0,
+                         .h2 = p->center ? h / 2 : h,
+                         .twist = p->twist,
+                         .scale = {p->scale[0], p->scale[1]}},
+                   .f = p->f};
+    for (int k = 0; k < 2; k++) /* NaN: no top; infinite: none */
+        if (!(t.e.scale[k] >= 0) || !isfinite(t.e.scale[k]))
+            t.e.scale[k] = t.e.scale[k] > 0 ? 1 : 0;
+    if (isfinite(p->slices) && p->slices >= 1)
+        t.e.slices = p->slices > 100000 ? 100000 : (int)p->slices;
+    scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
+    if (t.e.twist == 0 && t.e.scale[0] == 1 && t.e.scale[1] == 1) {
+        /* straight: the exact prism (more slices change nothing) */
+        linear_tree(kids, inv, c->state->xf, t.e.h1, t.e.h2);
+        return kids;
+    }
+    t.local_from_world = inv;
+    twist_scan(&t, kids);
+    if (t.e.slices == 0)
+        t.e.slices = geom_extrusion_slices(&t.e, t.max_r2, t.max_d2, t.f.fn, t.f.fa, t.f.fs);
+    twist_tree(&t, kids);
+    return kids;
+}
+
+static const scad_module_def linear_extrude = {
+    "linear_extrude",
+    {"file", "layer", "height", "origin", "scale", "center", "twist", "slices", "convexity"},
+    8,
+    sizeof(linear_args),
+    linear_read,
+    linear_print,
+    linear_build};
+
+/* ---- rotate_extrude ------------------------------------------------------------- */
+
+typedef struct revolve_ctx {
+    scad_eval *ev;
+    const double *local_from_world;
+    const double *world_place; /* world_from_local ∘ the flips */
+    double xmin, xmax;
+    double angle;
+    double sign; /* -1: the profile is on the negative side, mirrored */
+    int disc_fragments_smooth;
+    scad_facet_params f;
+} revolve_ctx;
+
+/* The region of a 2D leaf in the extrusion's frame (a new reference), with
+ * x multiplied by sign; NULL when out of memory. */
+static iv_region *leaf_region(const revolve_ctx *c, const scad_geom *g, double sign)
+{
+    int n = scad_facets_shown(c->ev, c->f, g->shape.u.prism.r)
+                ? scad_fragments(g->shape.u.prism.r, c->f)
+                : c->disc_fragments_smooth;
+    return shadow_region(c->local_from_world, g, n, sign);
+}
+
+/* The x range of the subtree's 2D shape, bounded by its operations: a
+ * difference by its first operand, an intersection by the overlap of its
+ * operands' ranges (so a circle cut to x >= 0 counts as x >= 0).  Empty:
+ * lo > hi. */
+static void revolve_scan(revolve_ctx *c, const scad_geom *g, double *lo, double *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    if (!g) return;
+    if (!g->is_leaf) {
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
+        for (int i = 0; i < n; i++) {
+            double a, b;
+            revolve_scan(c, g->kids[i], &a, &b);
+            if (g->op == CSG_OP_INTERSECTION) {
+                if (i == 0) {
+                    *lo = a;
+                    *hi = b;
+                } else {
+                    *lo = fmax(*lo, a);
+                    *hi = fmin(*hi, b);
+                }
+            } else {
+                *lo = fmin(*lo, a);
+                *hi = fmax(*hi, b);
+            }
+        }
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) return;
+    iv_region *r = leaf_region(c, g, 1);
+    if (!r) return;
+    int n;
+    const double(*P)[2] = iv_region_points(r, &n);
+    for (int i = 0; i < n; i++) {
+        *lo = fmin(*lo, P[i][0]);
+        *hi = fmax(*hi, P[i][0]);
+    }
+    iv_region_release(r);
+}
+
+static void revolve_tree(revolve_ctx *c, scad_geom *g)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            revolve_tree(c, g->kids[i]);
+        return;
+    }
+    if (g->shape.kind != IV_SHAPE_PRISM) {
+        make_empty(g);
+        return;
+    }
+    iv_region *r = leaf_region(c, g, c->sign);
+    if (!r) {
+        make_empty(g);
+        return;
+    }
+    iv_shape s;
+    iv_shape_revolve(&s, r, c->angle);
+    iv_region_release(r);
+    if (scad_geom_keep(c->ev, &s) != 0) {
+        make_empty(g);
+        return;
+    }
+    g->shape = s;
+    memcpy(g->xf, c->world_place, sizeof(csg_affine));
+}
+
+enum { RX_FILE, RX_LAYER, RX_ORIGIN, RX_SCALE, RX_ANGLE, RX_CONVEXITY };
+
+typedef struct rotate_args {
+    scad_file_arg file;
+    double scale, angle;
+    int convexity;
+    scad_facet_params f;
+} rotate_args;
+
+static void rotate_read(scad_call *c, void *out)
+{
+    rotate_args *p = out;
+    scad_file_read(c, RX_FILE, RX_LAYER, RX_ORIGIN, -1, -1, NULL, &p->file);
+    p->scale = 1;
+    scad_arg_num(c->arg[RX_SCALE], &p->scale);
+    p->angle = 360;
+    scad_arg_num(c->arg[RX_ANGLE], &p->angle);
+    if (!isfinite(p->angle) || p->angle <= -360 || p->angle > 360) p->angle = 360;
+    p->convexity = scad_arg_int(c->arg[RX_CONVEXITY], 0);
+    if (p->convexity <= 0) p->convexity = 2;
+    p->f = scad_facets_read(c);
+}
+
+static int rotate_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const rotate_args *p = args;
+    int children = 1;
+    scad_buf_puts(b, "rotate_extrude(");
+    if (p->file.name) {
+        long long mtime;
+        scad_file_print(c, &p->file, b, &mtime);
+        scad_buf_puts(b, ", scale = ");
+        scad_print_g(b, p->scale);
+        scad_buf_printf(b, ", timestamp = %lld, ", mtime);
+        children = 0;
+    }
+    scad_buf_puts(b, "angle = ");
+    scad_print_g(b, p->angle);
+    scad_buf_printf(b, ", convexity = %d", p->convexity);
+    scad_print_facets(b, p->f, 1);
+    scad_buf_puts(b, ")");
+    return children;
+}
+
+static scad_geom *rotate_build(scad_call *c, const void *args)
+{
+    const rotate_args *p = args;
+    scad_eval *ev = c->ev;
+    double angle = p->angle;
+    if (angle == 0) return NULL;
+    scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
+    revolve_ctx r = {ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, p->f};
+    revolve_scan(&r, kids, &r.xmin, &r.xmax);
+    if (!(r.xmin <= r.xmax)) return NULL;
+    if (r.xmin < 0 && r.xmax > 0) {
+        scad_diag_warning(ev->d, c->st->loc,
+                          "all points for rotate_extrude() must have the same X coordinate sign "
+                          "(range is %.2f -> %.2f)",
+                          r.xmin, r.xmax);
+        return NULL;
+    }
+    /* A profile on the negative side is the mirrored profile turned by
+     * 180°; a negative angle sweeps clockwise: the mirror image in y. */
+    csg_affine place = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    if (r.xmax <= 0 && r.xmin < 0) {
+        r.sign = -1;
+        place[0] = place[5] = -1;
+    }
+    if (angle < 0) {
+        place[1] = -place[1];
+        place[5] = -place[5];
+    }
+    csg_affine world;
+    csg_affine_mul(c->state->xf, place, world);
+    r.world_place = world;
+    revolve_tree(&r, kids);
+    return kids;
+}
+
+static const scad_module_def rotate_extrude = {
+    "rotate_extrude",
+    {"file", "layer", "origin", "scale", "angle", "convexity"},
+    4,
+    sizeof(rotate_args),
+    rotate_read,
+    rotate_print,
+    rotate_build};
+
+const scad_module_def *const scad_extrude_modules[] = {&linear_extrude, &rotate_extrude, NULL};

@@ -1,0 +1,338 @@
+/*
+ * hull.c — hull() and resize(), which both measure their children by the
+ * points of OpenSCAD's tessellation of each leaf: hull() takes the convex
+ * hull of those points (3D, or 2D when every leaf is flat), resize() their
+ * bounding box.
+ */
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../geom/hull2d.h"
+#include "../../geom/hull3d.h"
+#include "builtins.h"
+
+typedef struct pts {
+    double (*p)[3];
+    int n, cap;
+    int any3d, any2d;
+    scad_eval *ev; /* each point a round leaf makes is a step of work, */
+    scad_loc loc;  /* counted here */
+    const char *who;
+} pts;
+
+/* Room for n more points of a round leaf: 0, or -1 past the step limit
+ * (reported; a $fn of 10^9 would make 5·10^9). */
+static int pts_steps(pts *P, long n)
+{
+    return scad_eval_steps(P->ev, n, P->loc, P->who);
+}
+
+static void pts_add(pts *P, const double local_from_world[12], const double xf[12], double x,
+                    double y, double z)
+{
+    if (P->n == P->cap) {
+        if (P->cap > INT_MAX / 2 / (int)sizeof *P->p) return;
+        int cap = P->cap ? 2 * P->cap : 256;
+        double(*v)[3] = realloc(P->p, (size_t)cap * sizeof *v);
+        if (!v) return;
+        P->p = v;
+        P->cap = cap;
+    }
+    double o[3] = {x, y, z}, w[3];
+    csg_affine_point(xf, o, w);
+    csg_affine_point(local_from_world, w, P->p[P->n++]);
+}
+
+/* The points whose hull is the leaf's solid as OpenSCAD tessellates it. */
+static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_facet_params f)
+{
+    if (!g || P->ev->aborted) return;
+    if (!g->is_leaf) {
+        /* The hull of a difference is at most the hull of its first
+         * operand; of an intersection, at most the hull of all. */
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
+        for (int i = 0; i < n; i++)
+            hull_points(P, g->kids[i], lfw, f);
+        return;
+    }
+    const iv_shape *s = &g->shape;
+    switch (s->kind) {
+    case IV_SHAPE_BOX:
+        P->any3d = 1;
+        for (int i = 0; i < 8; i++)
+            pts_add(P, lfw, g->xf, (i & 1) ? s->u.box.hi[0] : s->u.box.lo[0],
+                    (i & 2) ? s->u.box.hi[1] : s->u.box.lo[1],
+                    (i & 4) ? s->u.box.hi[2] : s->u.box.lo[2]);
+        return;
+    case IV_SHAPE_SPHERE: {
+        P->any3d = 1;
+        double r = s->u.sphere.r;
+        int n = scad_fragments(r, f), rings = (n + 1) / 2;
+        if (pts_steps(P, (long)n * rings)) return;
+        for (int i = 0; i < rings; i++) {
+            double phi = 180.0 * (i + 0.5) / rings;
+            for (int j = 0; j < n; j++) {
+                double c[2];
+                scad_circle_point(r * iv_sin_degrees(phi), j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], r * iv_cos_degrees(phi));
+            }
+        }
+        return;
+    }
+    case IV_SHAPE_CONE: {
+        P->any3d = 1;
+        int n = scad_fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
+        if (pts_steps(P, 2L * n)) return;
+        for (int k = 0; k < 2; k++)
+            for (int j = 0; j < n; j++) {
+                double c[2];
+                scad_circle_point(k ? s->u.cone.r2 : s->u.cone.r1, j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], k ? s->u.cone.h : 0);
+            }
+        return;
+    }
+    case IV_SHAPE_POLYTOPE:
+    case IV_SHAPE_MESH: {
+        P->any3d = 1;
+        int n;
+        const double(*V)[3] =
+            s->kind == IV_SHAPE_MESH ? iv_mesh_vertices(s, &n) : iv_polytope_vertices(s, &n);
+        for (int i = 0; i < n; i++)
+            pts_add(P, lfw, g->xf, V[i][0], V[i][1], V[i][2]);
+        return;
+    }
+    case IV_SHAPE_PRISM: {
+        P->any2d = 1;
+        if (!s->u.prism.g) {
+            int n = scad_fragments(s->u.prism.r, f);
+            if (pts_steps(P, n)) return;
+            for (int j = 0; j < n; j++) {
+                double c[2];
+                scad_circle_point(s->u.prism.r, j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], 0);
+            }
+        } else {
+            int n;
+            const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
+            for (int i = 0; i < n; i++)
+                pts_add(P, lfw, g->xf, V[i][0], V[i][1], 0);
+        }
+        return;
+    }
+    default:
+        P->any3d = 1; /* a revolve: its bounds' corners, an over-estimate */
+        double lo[3], hi[3];
+        if (iv_shape_bounds(s, lo, hi) != 0) return;
+        for (int i = 0; i < 8; i++)
+            pts_add(P, lfw, g->xf, (i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1],
+                    (i & 4) ? hi[2] : lo[2]);
+        return;
+    }
+}
+
+typedef struct hull_args {
+    scad_facet_params f;
+} hull_args;
+
+static void hull_read(scad_call *c, void *out)
+{
+    ((hull_args *)out)->f = scad_facets_read(c);
+}
+
+static scad_geom *hull_build(scad_call *c, const void *args)
+{
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
+    if (!kids) return NULL;
+    csg_affine inv;
+    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
+    pts P = {.ev = ev, .loc = st->loc, .who = "hull"};
+    hull_points(&P, kids, inv, ((const hull_args *)args)->f);
+    scad_geom *g = NULL;
+    if (ev->aborted) P.n = 0;
+    if (P.any3d && P.n >= 4) {
+        iv_shape s;
+        int rc = geom_hull3d(&s, (const double(*)[3])P.p, P.n);
+        if (rc == 0 && scad_geom_keep(ev, &s) == 0) g = scad_leaf_at(ev, &s, state, NULL);
+        if (rc == GEOM_HULL_TOO_MANY)
+            scad_diag_error(ev->d, st->loc,
+                            "hull() of %d points has more than 65536 faces, more than a "
+                            "polytope holds; nothing is drawn",
+                            P.n);
+    } else if (!P.any3d && P.n >= 3) {
+        double(*H)[2] = malloc((size_t)(P.n + 1) * sizeof *H);
+        if (H) {
+            int k = geom_hull2d(P.p, P.n, H);
+            int ps[2] = {0, k};
+            if (k >= 3)
+                g = scad_region_leaf(ev, iv_region_new((const double(*)[2])H, ps, 1), state);
+            free(H);
+        }
+    }
+    free(P.p);
+    return scad_with_optics(c, g);
+}
+
+static int hull_print(scad_call *c, const void *args, scad_buf *b)
+{
+    (void)c, (void)args;
+    scad_buf_puts(b, "hull()");
+    return 1;
+}
+
+static const scad_module_def hull = {"hull",    {NULL},     0,         sizeof(hull_args),
+                                     hull_read, hull_print, hull_build};
+
+/* ---- resize ------------------------------------------------------------------------ */
+
+/* The bounding box of the subtree as OpenSCAD's geometry has it: each leaf
+ * by the points of its OpenSCAD tessellation (hull_points), a difference by
+ * its first operand, an intersection by the overlap of its operands' boxes
+ * (exact for the usual cases; an upper bound where a solid trims another).
+ * Returns 0, or -1 when empty. */
+static int tree_box(scad_eval *ev, scad_loc loc, const scad_geom *g, scad_facet_params f,
+                    double lo[3], double hi[3], int *any3d)
+{
+    if (!g || ev->aborted) return -1;
+    if (!g->is_leaf) {
+        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n, have = 0;
+        for (int i = 0; i < n; i++) {
+            double a[3], b[3];
+            if (tree_box(ev, loc, g->kids[i], f, a, b, any3d) != 0) {
+                if (g->op == CSG_OP_INTERSECTION) return -1;
+                continue;
+            }
+            for (int k = 0; k < 3; k++) {
+                int meet = g->op == CSG_OP_INTERSECTION && have;
+                lo[k] = !have ? a[k] : meet ? fmax(lo[k], a[k]) : fmin(lo[k], a[k]);
+                hi[k] = !have ? b[k] : meet ? fmin(hi[k], b[k]) : fmax(hi[k], b[k]);
+            }
+            have = 1;
+        }
+        if (!have) return -1;
+        for (int k = 0; k < 3; k++)
+            if (lo[k] > hi[k]) return -1;
+        return 0;
+    }
+    pts P = {.ev = ev, .loc = loc, .who = "resize"};
+    hull_points(&P, g, csg_affine_identity, f);
+    if (ev->aborted) P.n = 0;
+    *any3d |= P.any3d;
+    for (int i = 0; i < P.n; i++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = i ? fmin(lo[k], P.p[i][k]) : P.p[i][k];
+            hi[k] = i ? fmax(hi[k], P.p[i][k]) : P.p[i][k];
+        }
+    int n = P.n;
+    free(P.p);
+    return n > 0 ? 0 : -1;
+}
+
+static void place_tree(scad_geom *g, const csg_affine m)
+{
+    if (!g) return;
+    if (!g->is_leaf) {
+        for (int i = 0; i < g->n; i++)
+            place_tree(g->kids[i], m);
+        return;
+    }
+    csg_affine_mul(m, g->xf, g->xf);
+}
+
+/* resize(newsize, auto): OpenSCAD's CGAL_Nef_polyhedron::resize (and its 2D
+ * twin) — scale about the origin so that the box of the children's
+ * geometry gets the new size on each axis where it is non-zero; an axis
+ * with newsize 0 keeps its size, or with auto takes the scale of the
+ * largest newsize.  2D children have two axes (their slab keeps its
+ * thickness). */
+enum { RESIZE_NEWSIZE, RESIZE_AUTO, RESIZE_CONVEXITY };
+
+typedef struct resize_args {
+    double newsize[3];
+    int autosize[3], convexity;
+    scad_facet_params f;
+} resize_args;
+
+static void resize_read(scad_call *c, void *out)
+{
+    resize_args *p = out;
+    scad_value nv = c->arg[RESIZE_NEWSIZE], av = c->arg[RESIZE_AUTO];
+    if (nv.kind == SV_VEC)
+        for (int i = 0; i < 3 && i < nv.u.vec->n; i++)
+            scad_arg_num(nv.u.vec->v[i], &p->newsize[i]);
+    if (av.kind == SV_BOOL) {
+        p->autosize[0] = p->autosize[1] = p->autosize[2] = av.u.b;
+    } else if (av.kind == SV_VEC) {
+        for (int i = 0; i < 3 && i < av.u.vec->n; i++)
+            p->autosize[i] = scad_value_truthy(av.u.vec->v[i]);
+    }
+    p->convexity = scad_arg_int(c->arg[RESIZE_CONVEXITY], 0);
+    p->f = scad_facets_read(c);
+}
+
+static int resize_print(scad_call *c, const void *args, scad_buf *b)
+{
+    const resize_args *p = args;
+    (void)c;
+    scad_buf_puts(b, "resize(newsize = [");
+    for (int i = 0; i < 3; i++) {
+        if (i) scad_buf_puts(b, ",");
+        scad_print_g(b, p->newsize[i]);
+    }
+    scad_buf_printf(b, "], auto = [%d,%d,%d], convexity = %d)", p->autosize[0], p->autosize[1],
+                    p->autosize[2], p->convexity);
+    return 1;
+}
+
+static scad_geom *resize_build(scad_call *c, const void *args)
+{
+    const resize_args *p = args;
+    scad_eval *ev = c->ev;
+    const scad_stmt *st = c->st;
+    const scad_state *state = c->state;
+    double ns[3];
+    const int *aut = p->autosize;
+    for (int i = 0; i < 3; i++)
+        ns[i] = isfinite(p->newsize[i]) ? p->newsize[i] : 0;
+    /* the children in the resize's own frame, placed at the end */
+    scad_state local = *state;
+    memcpy(local.xf, csg_affine_identity, sizeof local.xf);
+    scad_geom *kids = scad_eval_children(ev, c->env, st, &local, CSG_OP_UNION);
+    if (!kids) return NULL;
+    double lo[3], hi[3];
+    int any3d = 0;
+    double scale[3] = {1, 1, 1};
+    if (tree_box(ev, st->loc, kids, p->f, lo, hi, &any3d) == 0) {
+        int dim = any3d ? 3 : 2, imax = 0;
+        for (int i = 0; i < dim; i++) {
+            if (ns[i] == 0) continue;
+            if (hi[i] - lo[i] == 0) {
+                scad_diag_warning(ev->d, st->loc,
+                                  "Resize in direction normal to flat object is not implemented");
+                dim = 0;
+                scale[0] = scale[1] = scale[2] = 1;
+                break;
+            }
+            scale[i] = ns[i] / (hi[i] - lo[i]);
+            if (ns[i] > ns[imax]) imax = i;
+        }
+        double autoscale = ns[imax] != 0 && dim > 0 ? ns[imax] / (hi[imax] - lo[imax]) : 1;
+        for (int i = 0; i < dim; i++)
+            if (aut[i] && ns[i] == 0) scale[i] = autoscale;
+    }
+    csg_affine s = {scale[0], 0, 0, 0, 0, scale[1], 0, 0, 0, 0, scale[2], 0}, m;
+    csg_affine_mul(state->xf, s, m);
+    place_tree(kids, m);
+    return kids;
+}
+
+static const scad_module_def resize = {"resize",    {"newsize", "auto", "convexity"},
+                                       3,           sizeof(resize_args),
+                                       resize_read, resize_print,
+                                       resize_build};
+
+const scad_module_def *const scad_hull_modules[] = {&hull, &resize, NULL};
