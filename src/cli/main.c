@@ -319,25 +319,20 @@ int main(int argc, char **argv)
         .message = on_message,
         .ud = &msgs,
     };
-    if (csg_out) { /* OpenSCAD's evaluated tree; messages go to stderr */
+    if (csg_out || echo_out) {
+        /* OpenSCAD's evaluated tree, no geometry: as openscad, the .echo
+         * holds what the evaluation says (what came before an error and
+         * the error itself; the exit status still says the model failed),
+         * and the .csg the tree, its messages on stderr. */
         char *text;
         size_t len;
-        if (scad_dump_csg_file(o.input, &so, &text, &len) != 0) return EXIT_MODEL;
-        int rc = atomic_file_write(o.output, text, len, err, sizeof err);
-        free(text);
-        if (rc != 0) {
-            cli_print_error(&o, err);
-            return EXIT_MODEL;
-        }
-        return 0;
-    }
-    scad_result res;
-    int failed = scad_eval_file(o.input, &so, &res) != 0;
-    if (echo_out) {
-        /* As openscad, the .echo holds what came before an error and the
-         * error itself; the exit status still says the model failed. */
-        if (!failed) scad_result_free(&res);
-        int rc = atomic_file_write(o.output, msgs.buf ? msgs.buf : "", msgs.len, err, sizeof err);
+        int failed = scad_dump_csg_file(o.input, &so, &text, &len) != 0;
+        int rc = 0;
+        if (echo_out)
+            rc = atomic_file_write(o.output, msgs.buf ? msgs.buf : "", msgs.len, err, sizeof err);
+        else if (!failed)
+            rc = atomic_file_write(o.output, text, len, err, sizeof err);
+        if (!failed) free(text);
         free(msgs.buf);
         if (rc != 0) {
             cli_print_error(&o, err);
@@ -345,6 +340,8 @@ int main(int argc, char **argv)
         }
         return failed ? EXIT_MODEL : 0;
     }
+    scad_result res;
+    int failed = scad_eval_file(o.input, &so, &res) != 0;
     if (failed) {
         free(msgs.buf);
         return EXIT_MODEL;

@@ -156,7 +156,7 @@ static void twist_tree(twist_ctx *c, scad_geom *g)
     if (r && !scad_eval_steps(c->ev, (long)n * (c->e.slices + 1), c->loc, "linear_extrude")) {
         rc = geom_extrusion_mesh(&c->e, r, &s);
         if (rc != 0)
-            scad_diag_error(c->ev->d, c->loc,
+            scad_eval_error(c->ev, c->loc,
                             "linear_extrude(): no mesh of %d points at %d slices (out of "
                             "memory); nothing is drawn",
                             n, c->e.slices);

@@ -159,7 +159,7 @@ static scad_geom *hull_build(scad_call *c, const void *args)
         int rc = geom_hull3d(&s, (const double(*)[3])P.p, P.n);
         if (rc == 0 && scad_geom_keep(ev, &s) == 0) g = scad_leaf_at(ev, &s, state, NULL);
         if (rc == GEOM_HULL_TOO_MANY)
-            scad_diag_error(ev->d, st->loc,
+            scad_eval_error(ev, st->loc,
                             "hull() of %d points has more than 65536 faces, more than a "
                             "polytope holds; nothing is drawn",
                             P.n);

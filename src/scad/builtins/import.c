@@ -144,7 +144,7 @@ static scad_geom *import_build(scad_call *c, const void *args)
         return NULL;
     }
     if (!ev->services->read_mesh) {
-        scad_diag_error(ev->d, st->loc, "import() is not available here");
+        scad_eval_error(ev, st->loc, "import() is not available here");
         return NULL;
     }
     scad_buf path = {0};
@@ -313,7 +313,7 @@ static int read_png(scad_eval *ev, const scad_stmt *st, const char *path, int in
     float *px = NULL;
     char err[512];
     if (!ev->services->read_image) {
-        scad_diag_error(ev->d, st->loc, "surface() of an image is not available here");
+        scad_eval_error(ev, st->loc, "surface() of an image is not available here");
         return 1;
     }
     err[0] = 0;

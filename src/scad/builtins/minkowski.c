@@ -285,12 +285,12 @@ static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
     if (ev->aborted) {
         /* the step limit, reported */
     } else if (c->why) {
-        scad_diag_error(ev->d, st->loc,
+        scad_eval_error(ev, st->loc,
                         "minkowski() of %s is not supported: each child must be a convex shape "
                         "or a union of convex shapes; nothing is drawn",
                         c->why);
     } else if (c->oom) {
-        scad_diag_error(ev->d, st->loc, "minkowski(): out of memory");
+        scad_eval_error(ev, st->loc, "minkowski(): out of memory");
     } else {
         u = acc.n > 1 ? scad_geom_op(ev, CSG_OP_UNION) : NULL;
         scad_geom *one = NULL;
@@ -312,7 +312,7 @@ static scad_geom *sum_2d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
 {
     const scad_services *s = ev->services;
     if (!s->paths_minkowski || !s->paths_clip) {
-        scad_diag_error(ev->d, st->loc,
+        scad_eval_error(ev, st->loc,
                         "minkowski() of 2D shapes is not available here "
                         "(no polygon service)");
         return NULL;
@@ -330,7 +330,7 @@ static scad_geom *sum_2d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
         scad_paths_free(&b);
         scad_paths_free(&acc);
         if (rc != 0) {
-            scad_diag_error(ev->d, st->loc, "minkowski(): %s", err);
+            scad_eval_error(ev, st->loc, "minkowski(): %s", err);
             return NULL;
         }
         acc = r;

@@ -89,7 +89,7 @@ static scad_geom *offset_build(scad_call *c, const void *args)
     if (!kids) return NULL;
     const scad_services *s = ev->services;
     if (!s->paths_offset || !s->paths_clip) {
-        scad_diag_error(ev->d, st->loc, "offset() is not available here (no polygon service)");
+        scad_eval_error(ev, st->loc, "offset() is not available here (no polygon service)");
         return NULL;
     }
     csg_affine inv;
@@ -104,7 +104,7 @@ static scad_geom *offset_build(scad_call *c, const void *args)
     char err[256];
     scad_geom *g = NULL;
     if (s->paths_offset(s->ud, &in, delta, join, 1000000.0, tol, &out, err, sizeof err) != 0)
-        scad_diag_error(ev->d, st->loc, "offset(): %s", err);
+        scad_eval_error(ev, st->loc, "offset(): %s", err);
     else
         g = scad_region_geom(ev, &out, state);
     scad_paths_free(&in);
@@ -392,7 +392,7 @@ static scad_geom *projection_build(scad_call *c, const void *args)
     int cut = ((const projection_args *)args)->cut;
     const scad_services *s = ev->services;
     if (!s->paths_clip || (!cut && !s->mesh_tree)) {
-        scad_diag_error(ev->d, st->loc,
+        scad_eval_error(ev, st->loc,
                         "projection() is not available here (no meshing or polygon service)");
         return NULL;
     }
@@ -402,7 +402,7 @@ static scad_geom *projection_build(scad_call *c, const void *args)
     csg_node *root = local_tree(kids, inv, &oom);
     if (oom) {
         csg_node_free(root);
-        scad_diag_error(ev->d, st->loc, "projection(): out of memory");
+        scad_eval_error(ev, st->loc, "projection(): out of memory");
         return NULL;
     }
     pathbuf b;
@@ -411,11 +411,11 @@ static scad_geom *projection_build(scad_call *c, const void *args)
     int rc = cut ? section(root, &b, err, sizeof err) : shadow(ev, root, &b, err, sizeof err);
     scad_geom *g = NULL;
     if (rc != 0 || b.oom) {
-        scad_diag_error(ev->d, st->loc, "projection(): %s", err);
+        scad_eval_error(ev, st->loc, "projection(): %s", err);
     } else if (b.p.npaths > 0) {
         scad_paths none = {NULL, NULL, 0}, out = {NULL, NULL, 0};
         if (s->paths_clip(s->ud, CSG_OP_UNION, &b.p, 0, &none, 0, &out, err, sizeof err) != 0)
-            scad_diag_error(ev->d, st->loc, "projection(): %s", err);
+            scad_eval_error(ev, st->loc, "projection(): %s", err);
         else
             g = scad_region_geom(ev, &out, state);
         scad_paths_free(&out);

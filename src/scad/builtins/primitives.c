@@ -126,7 +126,7 @@ static scad_geom *hull_leaf(scad_call *c, const double (*P)[3], int n, const csg
      * vertices has 2V - 4 triangles: too many is known at once */
     int rc = 2L * n - 4 > 65536 ? GEOM_HULL_TOO_MANY : geom_hull3d(&s, P, n);
     if (rc == GEOM_HULL_TOO_MANY)
-        scad_diag_error(ev->d, c->st->loc,
+        scad_eval_error(ev, c->st->loc,
                         "%s() of %d points has more than 65536 faces, more than a polytope "
                         "holds; nothing is drawn",
                         c->def->name, n);

@@ -244,7 +244,7 @@ static int leaf_paths(flat *c, const scad_geom *g, scad_paths *out)
 
 static void fail(flat *c, const char *msg)
 {
-    if (!c->failed) scad_diag_error(c->ev->d, c->loc, "%s(): %s", c->who, msg);
+    if (!c->failed) scad_eval_error(c->ev, c->loc, "%s(): %s", c->who, msg);
     c->failed = 1;
 }
 

@@ -176,13 +176,13 @@ static scad_geom *text_build(scad_call *c, const void *args)
     if (!*p.text || !isfinite(p.size) || !isfinite(p.spacing)) return NULL;
     const scad_services *s = ev->services;
     if (!s->text) {
-        scad_diag_error(ev->d, c->st->loc, "text() is not available here (no font service)");
+        scad_eval_error(ev, c->st->loc, "text() is not available here (no font service)");
         return NULL;
     }
     scad_paths out = {NULL, NULL, 0};
     char err[256];
     if (s->text(s->ud, &p, &out, err, sizeof err) != 0) {
-        scad_diag_error(ev->d, c->st->loc, "text(): %s", err);
+        scad_eval_error(ev, c->st->loc, "text(): %s", err);
         return NULL;
     }
     scad_geom *g = scad_region_geom(ev, &out, c->state);
