@@ -9,7 +9,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "../src/intervals/bvh_split.h"
 #include "../src/intervals/intervals.h"
 
 /* ---- helpers ------------------------------------------------------------ */

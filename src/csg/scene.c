@@ -20,7 +20,6 @@
  * would hit.
  */
 #include "csg_internal.h"
-#include "../intervals/bvh_split.h"
 
 #include <math.h>
 #include <stdio.h>

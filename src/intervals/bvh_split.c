@@ -10,11 +10,12 @@
  * 2007).  A box needs only contain its piece: a ray that meets a triangle
  * meets at least one of its references' boxes, and maybe more.
  */
-#include "bvh_split.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "intervals.h"
 
 enum { BINS = 16 };
 

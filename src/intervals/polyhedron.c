@@ -37,7 +37,6 @@
  * passes nearest the point.
  */
 #include "shape_kinds.h"
-#include "bvh_split.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -64,12 +63,12 @@ struct iv_mesh {
     double volume;
 };
 
-void mesh_retain(iv_mesh *m)
+void iv_mesh_retain(iv_mesh *m)
 {
     atomic_fetch_add(&m->refs, 1);
 }
 
-void mesh_release(iv_mesh *m)
+void iv_mesh_release(iv_mesh *m)
 {
     if (atomic_fetch_sub(&m->refs, 1) != 1) return;
     free(m->v);
@@ -413,7 +412,7 @@ done:
     free(first);
     if (rc < 0) {
         m->refs = 1;
-        mesh_release(m);
+        iv_mesh_release(m);
     }
     return rc;
 }
@@ -437,12 +436,12 @@ double iv_mesh_volume(const iv_shape *s)
     return s->kind == IV_SHAPE_MESH ? s->u.mesh.m->volume : 0;
 }
 
-int mesh_max_spans(const iv_mesh *m)
+int iv_mesh_max_spans(const iv_mesh *m)
 {
     return m->nt / 2 + 1;
 }
 
-int mesh_bounds(const iv_mesh *m, double lo[3], double hi[3])
+int iv_mesh_bounds(const iv_mesh *m, double lo[3], double hi[3])
 {
     for (int k = 0; k < 3; k++) {
         if (!(m->lo[k] <= m->hi[k])) return -1;
@@ -510,8 +509,8 @@ static long sort_hits(iv_bound *hit, long nh, int dedup)
     return w;
 }
 
-int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32_t prim,
-                   iv_list *out)
+int iv_mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32_t prim,
+                      iv_list *out)
 {
     int kz = 0;
     for (int k = 1; k < 3; k++)
@@ -652,7 +651,7 @@ int mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32
     return ns;
 }
 
-void mesh_normal(const iv_mesh *m, const double p[3], int part, double n[3])
+void iv_mesh_normal(const iv_mesh *m, const double p[3], int part, double n[3])
 {
     int best = -1;
     double bd = INFINITY;

@@ -34,12 +34,12 @@ struct iv_polytope {
     double lo[3], hi[3];
 };
 
-void polytope_retain(iv_polytope *p)
+void iv_polytope_retain(iv_polytope *p)
 {
     atomic_fetch_add(&p->refs, 1);
 }
 
-void polytope_release(iv_polytope *p)
+void iv_polytope_release(iv_polytope *p)
 {
     if (atomic_fetch_sub(&p->refs, 1) != 1) return;
     free(p->pl);
@@ -102,8 +102,8 @@ const double (*iv_polytope_planes(const iv_shape *s, int *n))[4]
     return (const double(*)[4])s->u.polytope.p->pl;
 }
 
-int polytope_intersect(const iv_polytope *p, const double o[3], const double d[3], int32_t prim,
-                       iv_list *out)
+int iv_polytope_intersect(const iv_polytope *p, const double o[3], const double d[3], int32_t prim,
+                          iv_list *out)
 {
     double t0 = -INFINITY, t1 = INFINITY;
     int p0 = 0, p1 = 0;
@@ -135,7 +135,7 @@ int polytope_intersect(const iv_polytope *p, const double o[3], const double d[3
     return 1;
 }
 
-void polytope_normal(const iv_polytope *p, int part, double n[3])
+void iv_polytope_normal(const iv_polytope *p, int part, double n[3])
 {
     int i = part >= 0 && part < p->n ? part : 0;
     n[0] = p->pl[i][0];
@@ -143,7 +143,7 @@ void polytope_normal(const iv_polytope *p, int part, double n[3])
     n[2] = p->pl[i][2];
 }
 
-int polytope_bounds(const iv_polytope *p, double lo[3], double hi[3])
+int iv_polytope_bounds(const iv_polytope *p, double lo[3], double hi[3])
 {
     for (int k = 0; k < 3; k++) {
         if (!(p->lo[k] < p->hi[k])) return -1;

@@ -42,13 +42,13 @@ void iv_region_release(iv_region *g)
     free(g);
 }
 
-int region_next(const iv_region *g, int e)
+int iv_region_next(const iv_region *g, int e)
 {
-    int p = region_path_of(g, e);
+    int p = iv_region_path_of(g, e);
     return e + 1 < g->start[p + 1] ? e + 1 : g->start[p];
 }
 
-int region_path_of(const iv_region *g, int e)
+int iv_region_path_of(const iv_region *g, int e)
 {
     int lo = 0, hi = g->npaths - 1;
     while (lo < hi) {
@@ -172,12 +172,12 @@ void iv_shape_prism(iv_shape *s, iv_region *g, double z0, double z1)
     s->u.prism.z1 = z1;
 }
 
-int prism_max_spans(const iv_shape *s)
+int iv_prism_max_spans(const iv_shape *s)
 {
     return s->u.prism.g ? s->u.prism.g->npts / 2 + 1 : 1;
 }
 
-int prism_bounds(const iv_shape *s, double lo[3], double hi[3])
+int iv_prism_bounds(const iv_shape *s, double lo[3], double hi[3])
 {
     const iv_region *g = s->u.prism.g;
     double z0 = s->u.prism.z0, z1 = s->u.prism.z1;
@@ -207,8 +207,8 @@ static int emit(iv_list *out, int at, double t0, int p0, double t1, int p1, int3
     return 1;
 }
 
-int prism_intersect(const iv_shape *s, const double o[3], const double d[3], int32_t prim,
-                    iv_list *out)
+int iv_prism_intersect(const iv_shape *s, const double o[3], const double d[3], int32_t prim,
+                       iv_list *out)
 {
     const double z0 = s->u.prism.z0, z1 = s->u.prism.z1;
     double s0 = -INFINITY, s1 = INFINITY;
@@ -316,7 +316,7 @@ int prism_intersect(const iv_shape *s, const double o[3], const double d[3], int
     return ns;
 }
 
-void prism_normal(const iv_shape *s, const double p[3], int part, double n[3])
+void iv_prism_normal(const iv_shape *s, const double p[3], int part, double n[3])
 {
     n[0] = n[1] = n[2] = 0;
     if (part == IV_PART_PRISM_BOTTOM) {
@@ -341,7 +341,7 @@ void prism_normal(const iv_shape *s, const double p[3], int part, double n[3])
     int best = -1;
     double bd = INFINITY;
     for (int e = (part - IV_PART_PRISM_EDGE) & 0xffff; e < g->npts; e += 65536) {
-        const double *a = g->pt[e], *b = g->pt[region_next(g, e)];
+        const double *a = g->pt[e], *b = g->pt[iv_region_next(g, e)];
         double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
         double u = l2 > 0 ? ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / l2 : 0;
         u = u < 0 ? 0 : u > 1 ? 1 : u;
@@ -356,7 +356,7 @@ void prism_normal(const iv_shape *s, const double p[3], int part, double n[3])
         n[2] = 1;
         return;
     }
-    const double *a = g->pt[best], *b = g->pt[region_next(g, best)];
+    const double *a = g->pt[best], *b = g->pt[iv_region_next(g, best)];
     double ex = b[0] - a[0], ey = b[1] - a[1], l = sqrt(ex * ex + ey * ey);
     if (l > 0) {
         /* region on the left: outward is the right-hand normal */

@@ -32,12 +32,12 @@ void iv_shape_revolve(iv_shape *s, iv_region *g, double angle)
     s->u.revolve.angle = angle;
 }
 
-int revolve_max_spans(const iv_shape *s)
+int iv_revolve_max_spans(const iv_shape *s)
 {
     return s->u.revolve.g->npts + 2;
 }
 
-int revolve_bounds(const iv_shape *s, double lo[3], double hi[3])
+int iv_revolve_bounds(const iv_shape *s, double lo[3], double hi[3])
 {
     const iv_region *g = s->u.revolve.g;
     double r = fmax(fabs(g->lo[0]), fabs(g->hi[0]));
@@ -63,8 +63,8 @@ static int inside(const iv_shape *s, const double o[3], const double d[3], doubl
     return in_sweep(s->u.revolve.angle, x, y) && iv_region_contains(s->u.revolve.g, hypot(x, y), z);
 }
 
-int revolve_intersect(const iv_shape *s, const double o[3], const double d[3], int32_t prim,
-                      iv_list *out)
+int iv_revolve_intersect(const iv_shape *s, const double o[3], const double d[3], int32_t prim,
+                         iv_list *out)
 {
     const iv_region *g = s->u.revolve.g;
     const double angle = s->u.revolve.angle;
@@ -84,7 +84,7 @@ int revolve_intersect(const iv_shape *s, const double o[3], const double d[3], i
         }                                                                                          \
     } while (0)
     for (int e = 0; e < g->npts; e++) {
-        const double *a = g->pt[e], *b = g->pt[region_next(g, e)];
+        const double *a = g->pt[e], *b = g->pt[iv_region_next(g, e)];
         int part = e % IV_PART_REVOLVE_START;
         if (a[1] == b[1]) {
             if (d[2] != 0) ADD((a[1] - o[2]) / d[2], part);
@@ -152,7 +152,7 @@ int revolve_intersect(const iv_shape *s, const double o[3], const double d[3], i
     return ns;
 }
 
-void revolve_normal(const iv_shape *s, const double p[3], int part, double n[3])
+void iv_revolve_normal(const iv_shape *s, const double p[3], int part, double n[3])
 {
     const iv_region *g = s->u.revolve.g;
     n[0] = n[1] = n[2] = 0;
@@ -170,7 +170,7 @@ void revolve_normal(const iv_shape *s, const double p[3], int part, double n[3])
     int best = -1;
     double bd = INFINITY;
     for (int e = part; e < g->npts; e += IV_PART_REVOLVE_START) {
-        const double *a = g->pt[e], *b = g->pt[region_next(g, e)];
+        const double *a = g->pt[e], *b = g->pt[iv_region_next(g, e)];
         double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
         double u = l2 > 0 ? ((rho - a[0]) * ex + (p[2] - a[1]) * ey) / l2 : 0;
         u = u < 0 ? 0 : u > 1 ? 1 : u;
@@ -185,7 +185,7 @@ void revolve_normal(const iv_shape *s, const double p[3], int part, double n[3])
         n[2] = 1;
         return;
     }
-    const double *a = g->pt[best], *b = g->pt[region_next(g, best)];
+    const double *a = g->pt[best], *b = g->pt[iv_region_next(g, best)];
     double ex = b[0] - a[0], ey = b[1] - a[1], l = hypot(ex, ey);
     if (!(l > 0)) {
         n[2] = 1;

@@ -260,13 +260,13 @@ int iv_shape_intersect(const iv_shape *s, const double o[3], const double d[3], 
     case IV_SHAPE_CONE:
         return cone(s->u.cone.r1, s->u.cone.r2, s->u.cone.h, o, d, prim, out);
     case IV_SHAPE_POLYTOPE:
-        return polytope_intersect(s->u.polytope.p, o, d, prim, out);
+        return iv_polytope_intersect(s->u.polytope.p, o, d, prim, out);
     case IV_SHAPE_MESH:
-        return mesh_intersect(s->u.mesh.m, o, d, prim, out);
+        return iv_mesh_intersect(s->u.mesh.m, o, d, prim, out);
     case IV_SHAPE_PRISM:
-        return prism_intersect(s, o, d, prim, out);
+        return iv_prism_intersect(s, o, d, prim, out);
     case IV_SHAPE_REVOLVE:
-        return revolve_intersect(s, o, d, prim, out);
+        return iv_revolve_intersect(s, o, d, prim, out);
     }
     return 0;
 }
@@ -275,11 +275,11 @@ int iv_shape_max_spans(const iv_shape *s)
 {
     switch (s->kind) {
     case IV_SHAPE_MESH:
-        return mesh_max_spans(s->u.mesh.m);
+        return iv_mesh_max_spans(s->u.mesh.m);
     case IV_SHAPE_PRISM:
-        return prism_max_spans(s);
+        return iv_prism_max_spans(s);
     case IV_SHAPE_REVOLVE:
-        return revolve_max_spans(s);
+        return iv_revolve_max_spans(s);
     default:
         return 1;
     }
@@ -289,10 +289,10 @@ void iv_shape_retain(const iv_shape *s)
 {
     switch (s->kind) {
     case IV_SHAPE_POLYTOPE:
-        polytope_retain(s->u.polytope.p);
+        iv_polytope_retain(s->u.polytope.p);
         return;
     case IV_SHAPE_MESH:
-        mesh_retain(s->u.mesh.m);
+        iv_mesh_retain(s->u.mesh.m);
         return;
     case IV_SHAPE_PRISM:
         iv_region_retain(s->u.prism.g);
@@ -309,11 +309,11 @@ void iv_shape_release(iv_shape *s)
 {
     switch (s->kind) {
     case IV_SHAPE_POLYTOPE:
-        polytope_release(s->u.polytope.p);
+        iv_polytope_release(s->u.polytope.p);
         s->u.polytope.p = NULL;
         return;
     case IV_SHAPE_MESH:
-        mesh_release(s->u.mesh.m);
+        iv_mesh_release(s->u.mesh.m);
         s->u.mesh.m = NULL;
         return;
     case IV_SHAPE_PRISM:
@@ -394,16 +394,16 @@ void iv_shape_normal(const iv_shape *s, const double p[3], int part, double n[3]
         return;
     }
     case IV_SHAPE_POLYTOPE:
-        polytope_normal(s->u.polytope.p, part, n);
+        iv_polytope_normal(s->u.polytope.p, part, n);
         return;
     case IV_SHAPE_MESH:
-        mesh_normal(s->u.mesh.m, p, part, n);
+        iv_mesh_normal(s->u.mesh.m, p, part, n);
         return;
     case IV_SHAPE_PRISM:
-        prism_normal(s, p, part, n);
+        iv_prism_normal(s, p, part, n);
         return;
     case IV_SHAPE_REVOLVE:
-        revolve_normal(s, p, part, n);
+        iv_revolve_normal(s, p, part, n);
         return;
     }
     n[0] = n[1] = 0;
@@ -461,13 +461,13 @@ int iv_shape_bounds(const iv_shape *s, double lo[3], double hi[3])
         return 0;
     }
     case IV_SHAPE_POLYTOPE:
-        return polytope_bounds(s->u.polytope.p, lo, hi);
+        return iv_polytope_bounds(s->u.polytope.p, lo, hi);
     case IV_SHAPE_MESH:
-        return mesh_bounds(s->u.mesh.m, lo, hi);
+        return iv_mesh_bounds(s->u.mesh.m, lo, hi);
     case IV_SHAPE_PRISM:
-        return prism_bounds(s, lo, hi);
+        return iv_prism_bounds(s, lo, hi);
     case IV_SHAPE_REVOLVE:
-        return revolve_bounds(s, lo, hi);
+        return iv_revolve_bounds(s, lo, hi);
     }
     return -1;
 }

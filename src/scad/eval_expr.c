@@ -17,17 +17,6 @@ enum { MAX_LOOP_ELEMENTS = 1000000 };
 
 /* ---- operators ---------------------------------------------------------------- */
 
-static const char *op_name(int op)
-{
-    static const char *two[] = {"<=", ">=", "==", "!=", "&&", "||"};
-    static char one[8][2];
-    if (op >= TK_LE && op <= TK_OR) return two[op - TK_LE];
-    char *s = one[op & 7];
-    s[0] = (char)op;
-    s[1] = 0;
-    return s;
-}
-
 static int is_num_vec(scad_value v)
 {
     if (v.kind != SV_VEC) return 0;
@@ -178,6 +167,7 @@ static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value
 static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_value b)
 {
     int op = e->op, defined = 1;
+    char one[2];
     scad_value r;
     switch (op) {
     case TK_EQ:
@@ -207,7 +197,7 @@ static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_v
     }
     if (!defined)
         scad_diag_warning(ev->d, e->loc, "undefined operation (%s %s %s)", scad_value_type_name(a),
-                          op_name(op), scad_value_type_name(b));
+                          scad_op_text(op, one), scad_value_type_name(b));
     return r;
 }
 

@@ -373,9 +373,8 @@ static void format_params(scad_buf *b, const scad_args *a)
     }
 }
 
-static const char *op_text(int op)
+const char *scad_op_text(int op, char buf[2])
 {
-    static char one[2];
     switch (op) {
     case TK_LE:
         return "<=";
@@ -390,13 +389,15 @@ static const char *op_text(int op)
     case TK_OR:
         return "||";
     default:
-        one[0] = (char)op;
-        return one;
+        buf[0] = (char)op;
+        buf[1] = 0;
+        return buf;
     }
 }
 
 void scad_expr_format(scad_buf *b, const scad_expr *e)
 {
+    char one[2];
     switch (e->kind) {
     case EX_NUMBER:
         put_number(b, e->num);
@@ -435,13 +436,13 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         scad_buf_puts(b, "]");
         break;
     case EX_UNARY:
-        scad_buf_puts(b, op_text(e->op));
+        scad_buf_puts(b, scad_op_text(e->op, one));
         scad_expr_format(b, e->a[0]);
         break;
     case EX_BINARY:
         scad_buf_puts(b, "(");
         scad_expr_format(b, e->a[0]);
-        scad_buf_printf(b, " %s ", op_text(e->op));
+        scad_buf_printf(b, " %s ", scad_op_text(e->op, one));
         scad_expr_format(b, e->a[1]);
         scad_buf_puts(b, ")");
         break;

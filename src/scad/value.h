@@ -136,6 +136,9 @@ void scad_format_number(double d, char *buf);
 /* v as echo() and str() print it; quote_strings: strings in quotes (echo,
  * and any string inside a vector). */
 void scad_value_format(scad_buf *b, scad_value v, int quote_strings);
+/* An operator's text: "<=" for TK_LE, "+" for '+' (written into buf, which
+ * must hold 2 bytes, when one character). */
+const char *scad_op_text(int op, char buf[2]);
 /* An expression as OpenSCAD prints function literals: "(x * 2)". */
 void scad_expr_format(scad_buf *b, const scad_expr *e);
 
