@@ -53,6 +53,7 @@ DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenme
 	clang libclang-rt-dev
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
+	src/rayscad/*.c \
 	src/render/*.c src/mesh/*.c \
 	src/io/*.c)
 IO_SRC   = $(filter-out src/io/image.cpp,$(wildcard src/io/*.cpp))
@@ -62,8 +63,6 @@ TOOL_SRC = $(wildcard tests/tools/*.c)
 
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(IO_SRC:%.cpp=$(BUILD)/obj/%.o)
 CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
-# the command's parts that tests and tools use too (its services, writers)
-CLI_LIB_OBJ = $(filter-out $(BUILD)/obj/src/cli/main.o,$(CLI_OBJ))
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
@@ -120,11 +119,11 @@ $(BUILD)/librayscad.a: $(LIB_OBJ)
 $(BUILD)/rayscad: $(CLI_OBJ) $(BUILD)/librayscad.a
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(CLI_LIB_OBJ) $(BUILD)/librayscad.a
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(BUILD)/librayscad.a
 	@mkdir -p $(dir $@)
 	$(CXX) $(SANFLAGS) -o $@ $^ -lcriterion $(LDLIBS)
 
-$(BUILD)/tools/%: $(BUILD)/obj/tests/tools/%.o $(CLI_LIB_OBJ) $(BUILD)/librayscad.a
+$(BUILD)/tools/%: $(BUILD)/obj/tests/tools/%.o $(BUILD)/librayscad.a
 	@mkdir -p $(dir $@)
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
 

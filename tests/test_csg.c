@@ -16,7 +16,6 @@
 
 /* ---- helpers ------------------------------------------------------------ */
 
-
 static csg_material mat(float id)
 {
     csg_material m = {.rgba = {id, 0, 0, 1}, .has_color = 1};

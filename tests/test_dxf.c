@@ -10,11 +10,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "../src/intervals/intervals.h"
-#include "../src/scad/dxf.h"
+#include "../src/geom/dxf.h"
 #include "../src/scad/scad.h"
+#include "services.h"
 
 #define PI 3.14159265358979323846
 
@@ -60,17 +62,36 @@ static void on_msg(void *ud, scad_msg_kind kind, const char *line)
     snprintf(m->text + n, sizeof m->text - n, "%s\n", line);
 }
 
-static void on_dxf_msg(void *ud, scad_msg_kind kind, const char *text)
+static void on_dxf_msg(void *ud, int kind, const char *text)
 {
-    on_msg(ud, kind, text);
+    on_msg(ud, kind == GEOM_DXF_NOTE ? RAYSCAD_MSG_NOTE : RAYSCAD_MSG_WARNING, text);
+}
+
+/* geom_dxf_read of the file at path (its bytes read here), named abs and
+ * rel in messages. */
+static int read_named(const char *path, const char *abs, const char *rel, const geom_dxf_params *p,
+                      msgs *m, geom_dxf *d)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert(f, "%s", path);
+    static char text[1 << 20];
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = 0;
+    return geom_dxf_read(text, n, abs, rel, p, on_dxf_msg, m, d);
+}
+
+static int read_path(const char *path, const geom_dxf_params *p, msgs *m, geom_dxf *d)
+{
+    return read_named(path, path, path, p, m, d);
 }
 
 /* Σ shoelace area of the toPolygon2d outlines (all one way round here). */
-static double outline_area(const scad_dxf *d)
+static double outline_area(const geom_dxf *d)
 {
     double(*p)[2];
     int *start, n;
-    cr_assert_eq(scad_dxf_outlines(d, &p, &start, &n), 0);
+    cr_assert_eq(geom_dxf_outlines(d, &p, &start, &n), 0);
     double a = 0;
     for (int i = 0; i < n; i++) {
         double s = 0;
@@ -96,37 +117,37 @@ Test(dxf_read, square_and_circle_areas, .init = setup, .fini = teardown)
     char path[256];
     write_file("a.dxf", square_dxf, path, sizeof path);
     msgs m = {""};
-    scad_dxf d;
-    scad_dxf_params sq = {"sq", 0, 0, 1, 0, 12, 2};
-    cr_assert_eq(scad_dxf_read(path, &sq, on_dxf_msg, &m, &d), 0);
+    geom_dxf d;
+    geom_dxf_params sq = {"sq", 0, 0, 1, 0, 12, 2};
+    cr_assert_eq(read_path(path, &sq, &m, &d), 0);
     cr_expect_eq(d.npaths, 1);
     cr_expect(d.closed[0]);
     cr_expect(fabs(outline_area(&d) - 100) < 1e-12, "%g", outline_area(&d));
-    scad_dxf_free(&d);
+    geom_dxf_free(&d);
     /* origin moves, scale scales: 2.5² × 100 */
-    scad_dxf_params sq2 = {"sq", 4, -1, 2.5, 0, 12, 2};
-    cr_assert_eq(scad_dxf_read(path, &sq2, on_dxf_msg, &m, &d), 0);
+    geom_dxf_params sq2 = {"sq", 4, -1, 2.5, 0, 12, 2};
+    cr_assert_eq(read_path(path, &sq2, &m, &d), 0);
     cr_expect(fabs(outline_area(&d) - 625) < 1e-9);
     cr_expect(fabs(d.pts[0][0] + 10) < 1e-12 && fabs(d.pts[0][1] - 2.5) < 1e-12);
-    scad_dxf_free(&d);
+    geom_dxf_free(&d);
     /* r = 5 at $fa = 12, $fs = 2: 16 fragments; $fn = 36: 36.  The n-gon's
      * area is n/2 r² sin(2π/n); the points snap to 0.001 */
     int fn[2] = {0, 36}, want[2] = {16, 36};
     for (int i = 0; i < 2; i++) {
-        scad_dxf_params c = {"round", 0, 0, 1, fn[i], 12, 2};
-        cr_assert_eq(scad_dxf_read(path, &c, on_dxf_msg, &m, &d), 0);
+        geom_dxf_params c = {"round", 0, 0, 1, fn[i], 12, 2};
+        cr_assert_eq(read_path(path, &c, &m, &d), 0);
         cr_expect_eq(d.npaths, 1);
         cr_expect_eq(d.path_start[1], want[i] + 1);
         double exact = want[i] / 2.0 * 25 * sin(2 * PI / want[i]);
         cr_expect(fabs(outline_area(&d) - exact) < 0.01, "%d: %g vs %g", want[i], outline_area(&d),
                   exact);
-        scad_dxf_free(&d);
+        geom_dxf_free(&d);
     }
     /* all layers: both outlines */
-    scad_dxf_params all = {NULL, 0, 0, 1, 0, 12, 2};
-    cr_assert_eq(scad_dxf_read(path, &all, on_dxf_msg, &m, &d), 0);
+    geom_dxf_params all = {NULL, 0, 0, 1, 0, 12, 2};
+    cr_assert_eq(read_path(path, &all, &m, &d), 0);
     cr_expect_eq(d.npaths, 2);
-    scad_dxf_free(&d);
+    geom_dxf_free(&d);
     cr_expect_str_empty(m.text);
 }
 
@@ -152,6 +173,7 @@ static csg_scene *scene_of(const char *src, msgs *m)
 {
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     o.message = on_msg;
     o.ud = m;
     scad_result r;
@@ -191,6 +213,7 @@ static void echo_of(const char *src, msgs *m)
 {
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     o.message = on_msg;
     o.ud = m;
     scad_result r;
@@ -259,9 +282,11 @@ Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teard
                path, sizeof path);
     cr_assert_eq(chdir(dir), 0);
     msgs m = {""};
-    scad_dxf d;
-    scad_dxf_params p = {"0", 0, 0, 1, 0, 12, 2};
-    cr_assert_eq(scad_dxf_read("bad.dxf", &p, on_dxf_msg, &m, &d), 0);
+    geom_dxf d;
+    geom_dxf_params p = {"0", 0, 0, 1, 0, 12, 2};
+    char abs[300];
+    snprintf(abs, sizeof abs, "%s/bad.dxf", dir); /* as the language names it */
+    cr_assert_eq(read_named("bad.dxf", abs, "bad.dxf", &p, &m, &d), 0);
     snprintf(want, sizeof want,
              "Illegal value 'abc'in `%s/bad.dxf'\n"
              "Not enough input values for ENDSEC. in '%s/bad.dxf'\n"
@@ -274,7 +299,7 @@ Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teard
     cr_expect_eq(d.npaths, 1);
     cr_expect(!d.closed[0]);
     cr_expect_eq(d.path_start[1], 3);
-    scad_dxf_free(&d);
+    geom_dxf_free(&d);
     cr_assert_eq(chdir("/"), 0);
 }
 
@@ -300,24 +325,32 @@ Test(dxf_read, hostile_files_end, .init = setup, .fini = teardown)
                "0\nENDSEC\n0\nEOF\n\x01\xff garbage\n",
                path, sizeof path);
     msgs m = {""};
-    scad_dxf d;
-    scad_dxf_params p = {NULL, 0, 0, 1, 1e9, 12, 2};
-    cr_assert_eq(scad_dxf_read(path, &p, on_dxf_msg, &m, &d), 0);
-    cr_expect(d.npts <= 2 * SCAD_DXF_MAX_SEGMENTS);
+    geom_dxf d;
+    geom_dxf_params p = {NULL, 0, 0, 1, 1e9, 12, 2};
+    cr_assert_eq(read_path(path, &p, &m, &d), 0);
+    cr_expect(d.npts <= 2 * GEOM_DXF_MAX_SEGMENTS);
     cr_expect(strstr(m.text, "more than 1000000 segments"), "%s", m.text);
     cr_expect(strstr(m.text, "Not enough input values for INSERT."), "%s", m.text);
-    scad_dxf_free(&d);
-    /* a directory and a missing file: warnings, empty drawings */
-    m.text[0] = 0;
-    cr_assert_eq(scad_dxf_read(dir, &p, on_dxf_msg, &m, &d), 0);
-    cr_expect_eq(d.npaths, 0);
-    scad_dxf_free(&d);
+    geom_dxf_free(&d);
+}
+
+/* Files the language cannot read (a folder, a missing file) are OpenSCAD's
+ * warning and an empty drawing; the file services decide, not the reader. */
+Test(dxf_import, unreadable_files_warn, .init = setup, .fini = teardown)
+{
+    char path[256];
     write_file("gone.dxf", "", path, sizeof path);
     remove(path);
-    cr_assert_eq(scad_dxf_read(path, &p, on_dxf_msg, &m, &d), 0);
-    cr_expect_eq(d.npaths, 0);
-    scad_dxf_free(&d);
-    char want[512];
-    snprintf(want, sizeof want, "Illegal ID '' in `%s'\nCan't open DXF file '%s'.\n", dir, path);
+    char folder[300];
+    snprintf(folder, sizeof folder, "%s/folder.dxf", dir);
+    cr_assert_eq(mkdir(folder, 0700), 0);
+    msgs m = {""};
+    char src[700];
+    snprintf(src, sizeof src, "import(\"%s\");\nimport(\"%s\");\n", path, folder);
+    echo_of(src, &m);
+    char want[1024];
+    snprintf(want, sizeof want,
+             "WARNING: Can't open DXF file '%s'.\nWARNING: Can't open DXF file '%s'.\n", path,
+             folder);
     cr_expect_str_eq(m.text, want);
 }

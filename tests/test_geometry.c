@@ -16,6 +16,7 @@
 #include "../src/io/io.h"
 #include "../src/geom/hull3d.h"
 #include "../src/scad/scad.h"
+#include "services.h"
 
 #define PI 3.14159265358979323846
 
@@ -544,7 +545,6 @@ Test(revolve, triangle_profile_full_and_partial, .init = setup, .fini = teardown
 
 /* The real services of the command (the OFF header rewrite included):
  * tests link the command's parts other than main. */
-#include "../src/cli/services.h"
 
 typedef struct msgs {
     char text[4096];
@@ -565,7 +565,7 @@ static csg_scene *scene_of(const char *src, msgs *m)
     memset(&o, 0, sizeof o);
     o.message = on_msg;
     o.ud = m;
-    o.services = cli_services();
+    o.services = test_services();
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad", src, &o, &r), 0, "%s", m->text);
     csg_node *root = r.model;
@@ -770,7 +770,7 @@ Test(import, missing_and_unsupported_files_warn, .init = setup, .fini = teardown
     memset(&o, 0, sizeof o);
     o.message = on_msg;
     o.ud = &m;
-    o.services = cli_services();
+    o.services = test_services();
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad",
                                   "import(\"nowhere.stl\");\nimport(\"a.svg\");\n"

@@ -16,8 +16,8 @@
 #include "../src/io/polygon.h"
 #include "../src/io/text.h"
 #include "../src/mesh/mesh.h"
-#include "../src/cli/services.h"
 #include "../src/scad/scad.h"
+#include "services.h"
 
 #define PI 3.14159265358979323846
 
@@ -38,7 +38,7 @@ static csg_scene *scene_of(const char *src)
 {
     msgs[0] = 0;
     scad_options o = {0};
-    o.services = cli_services();
+    o.services = test_services();
     o.message = on_msg;
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad", src, &o, &r), 0, "%s\n%s", src, msgs);
@@ -292,7 +292,7 @@ Test(minkowski, of_a_difference_is_an_error)
 {
     msgs[0] = 0;
     scad_options o = {0};
-    o.services = cli_services();
+    o.services = test_services();
     o.message = on_msg;
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad",
@@ -300,8 +300,8 @@ Test(minkowski, of_a_difference_is_an_error)
                                   "  sphere(1); }",
                                   &o, &r),
                  -1);
-    cr_assert(strstr(msgs, "t.scad:2:1: error: minkowski() of a difference is not supported"),
-              "%s", msgs);
+    cr_assert(strstr(msgs, "t.scad:2:1: error: minkowski() of a difference is not supported"), "%s",
+              msgs);
     cr_assert_null(r.model);
 }
 
@@ -342,7 +342,10 @@ Test(text, empty_and_spaces_draw_nothing)
 Test(text, without_a_service_is_an_error)
 {
     msgs[0] = 0;
+    scad_services no_text = *test_services();
+    no_text.text = NULL;
     scad_options o = {0};
+    o.services = &no_text;
     o.message = on_msg;
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad", "text(\"A\");", &o, &r), -1);

@@ -83,7 +83,7 @@ static csg_scene *scene1(csg_node *model)
 /* Top view, orthographic: +x right, +y up, looking down -z; a W×W image
  * spans 2·50·tan(11.25°) world units (OpenSCAD's scale at dist 50). */
 static const render_view top = {
-    .kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
+    .kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
 enum { W = 41 };
 
 static render_options opts(void)
@@ -221,7 +221,7 @@ static csg_scene *scene_of_source(const char *src)
 static float *render_source(const char *src, const render_options *o)
 {
     csg_scene *s = scene_of_source(src);
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 60, 0, 30, 80}};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 60, 0, 30, 80}};
     render_camera cam;
     cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, o->width, o->height, &cam), 0);
     float *px = malloc((size_t)o->width * (size_t)o->height * 4 * sizeof *px);
@@ -528,7 +528,7 @@ Test(light_determinism, stochastic_features_identical_for_any_thread_count)
     const double lo[3] = {-15, -15, -3}, hi[3] = {15, 15, -2};
     csg_node *u = op(CSG_OP_UNION, box_m(lo, hi, NULL, &shiny), sphere(0, 0, 3, 5, glass));
     csg_scene *s = scene1(op(CSG_OP_UNION, u, box(6, 6, -2, 10, 10, 6, NULL)));
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 25, 90}};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 25, 90}};
     render_camera cam;
     cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, 64, 48, &cam), 0);
     render_options o = {.width = 64,
@@ -587,7 +587,7 @@ Test(light_options, bad_light_options_fail_with_message)
     cr_expect_eq(render_image(s, &cam, &o, px, err, sizeof err), -1);
     cr_expect(strstr(err, "light options") != NULL, "%s", err);
     o.xray = 0;
-    o.nlights = RENDER_MAX_LIGHTS + 1;
+    o.nlights = RAYSCAD_MAX_LIGHTS + 1;
     cr_expect_eq(render_image(s, &cam, &o, px, err, sizeof err), -1);
     free(px);
     csg_scene_free(s);

@@ -208,13 +208,11 @@ static const char *check_manifold(const mesh *m)
                 cur = (size_t)(nx - l);
                 steps++;
             } while (cur != q && steps <= end - q);
-            if (!msg && steps != end - q)
-                msg = "a vertex has more than one fan (pinched)";
+            if (!msg && steps != end - q) msg = "a vertex has more than one fan (pinched)";
             q = end;
         }
         for (int v = 0; v < nv && !msg; v++)
-            if (!used[v])
-                msg = "an unused vertex";
+            if (!used[v]) msg = "an unused vertex";
         free(used);
         free(l);
     }
@@ -622,9 +620,10 @@ static csg_node *random_leaf(void)
     }
     n = sqrt(n);
     double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
-    csg_affine m = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), urand(-2, 2),
-                    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), urand(-2, 2),
-                    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), urand(-2, 2)};
+    csg_affine m = {
+        1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),     urand(-2, 2),
+        2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),     urand(-2, 2),
+        2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y), urand(-2, 2)};
     iv_shape s;
     memset(&s, 0, sizeof s);
     int kind = (int)urand(0, 3);
@@ -641,8 +640,7 @@ static csg_node *random_leaf(void)
         s.kind = IV_SHAPE_CONE;
         s.u.cone.r1 = urand(0, 2);
         s.u.cone.r2 = urand(0, 2);
-        if (s.u.cone.r1 + s.u.cone.r2 < 0.2)
-            s.u.cone.r1 = 0.5;
+        if (s.u.cone.r1 + s.u.cone.r2 < 0.2) s.u.cone.r1 = 0.5;
         s.u.cone.h = urand(0.3, 4);
     }
     return csg_node_shape(&s, m, &plain);
@@ -650,8 +648,7 @@ static csg_node *random_leaf(void)
 
 static csg_node *random_tree(int depth)
 {
-    if (depth == 0 || urand(0, 1) < 0.3)
-        return random_leaf();
+    if (depth == 0 || urand(0, 1) < 0.3) return random_leaf();
     static const csg_op ops[3] = {CSG_OP_UNION, CSG_OP_DIFFERENCE, CSG_OP_INTERSECTION};
     csg_node *n = csg_node_op(ops[(int)urand(0, 3)]);
     int kids = 2 + (int)urand(0, 2);
@@ -750,8 +747,7 @@ Test(mesh_io, write_read_round_trip)
         float *v = NULL;
         int32_t *t = NULL;
         int nv = 0, nt = 0;
-        cr_assert(io_mesh_read(path, &v, &nv, &t, &nt, err, sizeof err) == 0, "%s: %s", path,
-                  err);
+        cr_assert(io_mesh_read(path, &v, &nv, &t, &nt, err, sizeof err) == 0, "%s: %s", path, err);
         cr_assert_eq(nv, mesh_vertex_count(m), "%s: %d vertices back, wrote %d", path, nv,
                      mesh_vertex_count(m));
         cr_assert_eq(nt, mesh_triangle_count(m), "%s: triangles", path);

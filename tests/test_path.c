@@ -96,7 +96,8 @@ enum { W = 41 };
 
 static render_camera top_camera(void)
 {
-    const render_view top = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
+    const render_view top = {
+        .kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
     render_camera cam;
     cr_assert_eq(render_camera_resolve(&top, NULL, NULL, 0, W, W, &cam), 0);
     return cam;
@@ -126,7 +127,7 @@ Test(path_converges, integrating_sphere_le_over_one_minus_rho)
     cr_assert_eq(csg_node_add(shell, sphere(R + 1, &m)), 0);
     cr_assert_eq(csg_node_add(shell, sphere(R, &m)), 0);
     csg_scene *s = scene_of(&shell, 1);
-    const render_view v = {.kind = RENDER_CAMERA_EYE, .v = {0, 0, 0, 10, 3, 2}};
+    const render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {0, 0, 0, 10, 3, 2}};
     render_options o = opts(8, 8, 256);
     o.bounces = 64;
     render_camera cam;

@@ -166,7 +166,7 @@ static const char facets[] =
 Test(pov_export, primitives_default_view)
 {
     if (!have_povray()) cr_skip_test("povray not installed");
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     double iou = compare(primitives, 0, &v, &v, 200, 160);
     cr_expect_geq(iou, 0.99, "IoU %.5f", iou);
 }
@@ -174,7 +174,7 @@ Test(pov_export, primitives_default_view)
 Test(pov_export, revolves_transparency_modifiers_gimbal)
 {
     if (!have_povray()) cr_skip_test("povray not installed");
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {10, 5, 3, 60, 0, 30, 120}};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {10, 5, 3, 60, 0, 30, 120}};
     double iou = compare(revolves, 0, &v, &v, 160, 200);
     cr_expect_geq(iou, 0.99, "IoU %.5f", iou);
 }
@@ -182,15 +182,15 @@ Test(pov_export, revolves_transparency_modifiers_gimbal)
 Test(pov_export, facets_orthographic)
 {
     if (!have_povray()) cr_skip_test("povray not installed");
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT, .ortho = 1};
-    double iou = compare(facets, SCAD_FACETS_OPENSCAD, &v, &v, 200, 150);
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT, .ortho = 1};
+    double iou = compare(facets, RAYSCAD_FACETS_OPENSCAD, &v, &v, 200, 150);
     cr_expect_geq(iou, 0.99, "IoU %.5f", iou);
 }
 
 Test(pov_export, eye_camera)
 {
     if (!have_povray()) cr_skip_test("povray not installed");
-    render_view v = {.kind = RENDER_CAMERA_EYE, .v = {80, -60, 50, 0, 0, 0}};
+    render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {80, -60, 50, 0, 0, 0}};
     double iou = compare(primitives, 0, &v, &v, 160, 120);
     cr_expect_geq(iou, 0.99, "IoU %.5f", iou);
 }
@@ -198,8 +198,8 @@ Test(pov_export, eye_camera)
 Test(pov_export, turned_camera_fails)
 {
     if (!have_povray()) cr_skip_test("povray not installed");
-    render_view a = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 25, 120}};
-    render_view b = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 28, 120}};
+    render_view a = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 25, 120}};
+    render_view b = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 55, 0, 28, 120}};
     double iou = compare(primitives, 0, &a, &b, 200, 160);
     cr_expect_lt(iou, 0.99, "a 3° turn still gives IoU %.5f", iou);
 }

@@ -160,7 +160,7 @@ static mask_stats compare_box(const char *args, const render_view *v, int W, int
 Test(render_camera, gimbal_ortho_top_view_matches_openscad)
 {
     REQUIRE_OPENSCAD();
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
     double lo[3] = {-5, -5, -5}, hi[3] = {5, 5, 5};
     mask_stats st = compare_box("--imgsize=300,300 --camera=0,0,0,0,0,0,50 --projection=o", &v, 300,
                                 300, lo, hi);
@@ -176,7 +176,7 @@ Test(render_camera, gimbal_ortho_top_view_matches_openscad)
 Test(render_camera, default_view_matches_openscad)
 {
     REQUIRE_OPENSCAD();
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     double lo[3] = {0, 0, 0}, hi[3] = {10, 20, 5};
     mask_stats st = compare_box("--imgsize=320,240", &v, 320, 240, lo, hi);
     cr_expect(st.ref_count > 1000, "OpenSCAD's image shows %d object px", st.ref_count);
@@ -188,7 +188,7 @@ Test(render_camera, default_view_matches_openscad)
 Test(render_camera, eye_centre_view_matches_openscad)
 {
     REQUIRE_OPENSCAD();
-    render_view v = {.kind = RENDER_CAMERA_EYE, .v = {30, -40, 25, 2, 3, 1}};
+    render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {30, -40, 25, 2, 3, 1}};
     double lo[3] = {-3, -2, -1}, hi[3] = {7, 6, 4};
     mask_stats st = compare_box("--imgsize=300,300 --camera=30,-40,25,2,3,1", &v, 300, 300, lo, hi);
     cr_expect(st.ref_count > 1000, "OpenSCAD's image shows %d object px", st.ref_count);
@@ -200,7 +200,7 @@ Test(render_camera, eye_centre_view_matches_openscad)
 Test(render_camera, eye_straight_down_matches_openscad)
 {
     REQUIRE_OPENSCAD();
-    render_view v = {.kind = RENDER_CAMERA_EYE, .v = {0, 0, 60, 0, 0, 0}, .ortho = 1};
+    render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {0, 0, 60, 0, 0, 0}, .ortho = 1};
     double lo[3] = {-4, -2, 0}, hi[3] = {8, 6, 3};
     mask_stats st =
         compare_box("--imgsize=200,200 --camera=0,0,60,0,0,0 --projection=o", &v, 200, 200, lo, hi);
@@ -213,7 +213,7 @@ Test(render_camera, eye_straight_down_matches_openscad)
 Test(render_camera, gimbal_perspective_wide_image_matches_openscad)
 {
     REQUIRE_OPENSCAD();
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {3, 2, 1, 63.3, 10, 31.7, 80}};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {3, 2, 1, 63.3, 10, 31.7, 80}};
     double lo[3] = {-6, -3, -2}, hi[3] = {9, 8, 5};
     mask_stats st =
         compare_box("--imgsize=320,200 --camera=3,2,1,63.3,10,31.7,80", &v, 320, 200, lo, hi);
@@ -227,7 +227,7 @@ Test(render_camera, viewall_alone_keeps_the_centre)
 {
     REQUIRE_OPENSCAD();
     render_view v = {
-        .kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 70, 0, 300, 10}, .viewall = 1, .ortho = 1};
+        .kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 70, 0, 300, 10}, .viewall = 1, .ortho = 1};
     double lo[3] = {2, 3, 0}, hi[3] = {12, 9, 4};
     mask_stats st = compare_box("--imgsize=240,240 --camera=0,0,0,70,0,300,10 --viewall "
                                 "--projection=o",
@@ -241,7 +241,7 @@ Test(render_camera, viewall_alone_keeps_the_centre)
 Test(render_camera, viewall_autocenter_explicit_camera)
 {
     REQUIRE_OPENSCAD();
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL,
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL,
                      .v = {50, 50, 50, 20, 0, 140, 10},
                      .viewall = 1,
                      .autocenter = 1};
@@ -259,7 +259,7 @@ Test(render_camera, viewall_autocenter_explicit_camera)
  * from (rx 55, rz 25) at (|diag|/2) / sin 11.25°. */
 Test(render_camera, default_view_closed_form)
 {
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     double lo[3] = {0, 0, 0}, hi[3] = {10, 20, 5};
     render_camera c;
     cr_assert_eq(render_camera_resolve(&v, lo, hi, 1, 100, 100, &c), 0);
@@ -284,9 +284,9 @@ Test(render_camera, default_view_closed_form)
 Test(render_camera, degenerate_and_empty)
 {
     render_camera c;
-    render_view eye = {.kind = RENDER_CAMERA_EYE, .v = {1, 2, 3, 1, 2, 3}};
+    render_view eye = {.kind = RAYSCAD_CAMERA_EYE, .v = {1, 2, 3, 1, 2, 3}};
     cr_expect_eq(render_camera_resolve(&eye, NULL, NULL, 0, 10, 10, &c), -1);
-    render_view def = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view def = {.kind = RAYSCAD_CAMERA_DEFAULT};
     double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     cr_expect_eq(render_camera_resolve(&def, lo, hi, 0, 10, 10, &c), 0);
     for (int i = 0; i < 3; i++)
@@ -296,7 +296,7 @@ Test(render_camera, degenerate_and_empty)
 /* Pixel centres at +0.5: the centre ray of an odd image is the forward axis. */
 Test(render_camera, centre_pixel_is_forward)
 {
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {1, 2, 3, 40, 20, 10, 30}};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {1, 2, 3, 40, 20, 10, 30}};
     render_camera c;
     cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, 101, 51, &c), 0);
     double o[3], d[3];
@@ -318,7 +318,7 @@ Test(render_camera, cover_rectangle_holds_every_ray_that_meets_the_box)
     rng_seed(7);
     int W = 48, H = 32, stated = 0, outside = 0, tight = 0;
     for (int trial = 0; trial < 150; trial++) {
-        render_view v = {.kind = RENDER_CAMERA_GIMBAL,
+        render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL,
                          .v = {rng_uniform(-5, 5), rng_uniform(-5, 5), rng_uniform(-5, 5),
                                rng_uniform(0, 360), rng_uniform(0, 360), rng_uniform(0, 360),
                                rng_uniform(20, 80)},
@@ -516,7 +516,7 @@ static float *render_or_die(const csg_scene *s, const render_camera *cam, render
 }
 
 static const render_view top_ortho = {
-    .kind = RENDER_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
+    .kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 0, 0, 0, 50}, .ortho = 1};
 
 /* ---- lighting ---------------------------------------------------------------- */
 
@@ -605,14 +605,14 @@ static void compare_colours(const char *scad, const char *args, csg_node *model,
  * lighting in the gimbal-rotated world (see shade.c). */
 Test(render_image, default_view_colours_match_openscad)
 {
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     compare_colours("cube([10,20,5]);\n", "--imgsize=200,160", box_node(0, 0, 0, 10, 20, 5, NULL),
                     &v, 200, 160, "Cornfield");
 }
 
 Test(render_image, tilted_view_colours_match_openscad)
 {
-    render_view v = {.kind = RENDER_CAMERA_GIMBAL, .v = {3, 2, 1, 63.3, 10, 31.7, 60}};
+    render_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {3, 2, 1, 63.3, 10, 31.7, 60}};
     compare_colours("translate([-6,-3,-2]) cube([15,11,7]);\n",
                     "--imgsize=200,200 --camera=3,2,1,63.3,10,31.7,60 --colorscheme=Sunset",
                     box_node(-6, -3, -2, 9, 8, 5, NULL), &v, 200, 200, "Sunset");
@@ -625,7 +625,7 @@ Test(render_image, pocket_colours_match_openscad)
     csg_node *d = csg_node_op(CSG_OP_DIFFERENCE);
     cr_assert_eq(csg_node_add(d, box_node(0, 0, 0, 10, 10, 10, NULL)), 0);
     cr_assert_eq(csg_node_add(d, box_node(2, 2, 5, 8, 8, 15, NULL)), 0);
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     compare_colours("difference() { cube(10); translate([2,2,5]) cube([6,6,10]); }\n",
                     "--imgsize=240,200", d, &v, 240, 200, "Cornfield");
 }
@@ -728,7 +728,7 @@ Test(render_image, identical_for_any_thread_count)
     csg_scene *s = busy_scene();
     double lo[3], hi[3];
     cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     render_camera cam;
     cr_assert_eq(render_camera_resolve(&v, lo, hi, 1, 97, 61, &cam), 0);
     render_options o = {.width = 97, .height = 61, .samples = 2, .threads = 1};
@@ -770,7 +770,7 @@ static void on_progress(void *ud, double done)
 Test(render_image, progress_from_calling_thread)
 {
     csg_scene *s = busy_scene();
-    render_view v = {.kind = RENDER_CAMERA_DEFAULT};
+    render_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
     double lo[3], hi[3];
     cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
     render_camera cam;

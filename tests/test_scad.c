@@ -16,6 +16,7 @@
 
 #include "../src/scad/ast.h"
 #include "../src/scad/scad.h"
+#include "services.h"
 #include "support.h"
 
 /* ---- collecting messages ------------------------------------------------- */
@@ -44,7 +45,7 @@ static void lines_free(lines *l)
 /* Messages are split at newlines, as they appear in an .echo file. */
 static void collect(void *ud, scad_msg_kind kind, const char *line)
 {
-    if (kind == SCAD_MSG_NOTE) return; /* rayscad's own, never in openscad's .echo */
+    if (kind == RAYSCAD_MSG_NOTE) return; /* rayscad's own, never in openscad's .echo */
     lines *l = ud;
     const char *p = line;
     for (;;) {
@@ -82,6 +83,7 @@ static int eval_src(const char *src, lines *msgs, scad_result *r, int max_rec)
 {
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     o.message = collect;
     o.ud = msgs;
     o.max_recursion = max_rec;
@@ -143,6 +145,7 @@ Test(scad_lang, matches_openscad_echo_files, .timeout = 600)
         cr_assert_eq(run_openscad(path, &want), 0, "openscad failed on %s", path);
         scad_options o;
         memset(&o, 0, sizeof o);
+        o.services = test_services();
         o.message = collect;
         o.ud = &got;
         /* the evaluation that writes .echo: the tree, no geometry */
@@ -583,6 +586,7 @@ Test(scad_options, defines_override_top_level)
     const char *defs[] = {"a=5", "b=\"x\""};
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     lines m = {0};
     o.message = collect;
     o.ud = &m;
@@ -599,6 +603,7 @@ Test(scad_result, file_settings_and_camera_variables)
 {
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     scad_result r;
     cr_assert_eq(scad_eval_string("t.scad",
                                   "$rs_aperture = 2.5; $rs_shadows = true; $rs_label = \"x\";\n"
@@ -637,6 +642,7 @@ Test(scad_limits, list_and_string_sizes)
         lines got = {0};
         scad_options o;
         memset(&o, 0, sizeof o);
+        o.services = test_services();
         o.message = collect;
         o.ud = &got;
         o.max_list = 1000;
@@ -656,6 +662,7 @@ static int eval_steps(const char *src, lines *m, long max_steps)
 {
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     o.message = collect;
     o.ud = m;
     o.max_steps = max_steps;
@@ -763,9 +770,10 @@ Test(scad_limits, round_points_and_minkowski_sums_are_steps)
     /* and so does a sphere built with OpenSCAD's facets */
     scad_options o;
     memset(&o, 0, sizeof o);
+    o.services = test_services();
     o.message = collect;
     o.ud = &m;
-    o.facets = SCAD_FACETS_OPENSCAD;
+    o.facets = RAYSCAD_FACETS_OPENSCAD;
     scad_result r;
     cr_expect_eq(scad_eval_string("t.scad", "sphere(1, $fn = 1e9);", &o, &r), -1);
     cr_expect(has_line(&m, "t.scad:1:1: error: evaluation took more than 10000000 steps (sphere)"));

@@ -7,7 +7,7 @@
  * Thin walls: a contour on a grid of spacing h cannot keep a wall (or a gap)
  * thinner than h — both faces may fall between two rows of nodes, and the
  * wall vanishes or gets holes.  The command says so instead of writing such
- * a mesh silently: mesh_dexels_thin finds, along the rays, parallel
+ * a mesh silently: rayscad_sampling_thin finds, along the rays, parallel
  * opposite faces closer than h (the chord between them is short across the
  * faces, and their normals are nearly opposite, which tells a wall from a
  * ray grazing a curved surface), and the warning names the thinnest and
@@ -17,16 +17,14 @@
  * cannot tell a lost wall from quadrature error.
  */
 #include "mesh_output.h"
-
-#include "../io/io.h"
-#include "../mesh/mesh.h"
+#include "memory.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 
 int cli_mesh_output_is_mesh(const char *path)
 {
-    return io_mesh_format_supported(path);
+    return rayscad_mesh_format_supported(path);
 }
 
 static void print_vec(const char *fmt, const double v[3])
@@ -34,8 +32,8 @@ static void print_vec(const char *fmt, const double v[3])
     printf(fmt, v[0], v[1], v[2]);
 }
 
-static void print_measure(const cli_options *o, const mesh_measure *m, double h, const mesh *msh,
-                          double mesh_volume)
+static void print_measure(const cli_options *o, const rayscad_measurement *m, double h,
+                          const rayscad_mesh *msh, double mesh_volume)
 {
     int empty = !(m->lo[0] <= m->hi[0]);
     double lo[3], hi[3];
@@ -52,7 +50,7 @@ static void print_measure(const cli_options *o, const mesh_measure *m, double h,
                empty ? "true" : "false", h, m->crossings);
         if (msh)
             printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g}",
-                   mesh_vertex_count(msh), mesh_triangle_count(msh), mesh_volume);
+                   rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
         printf("\n}\n");
         return;
     }
@@ -68,11 +66,11 @@ static void print_measure(const cli_options *o, const mesh_measure *m, double h,
     print_vec("centre of mass: [%.10g, %.10g, %.10g]\n", m->centroid);
     printf("grid spacing:   %.10g\n", h);
     if (msh)
-        printf("mesh:           %d vertices, %d triangles, volume %.10g\n", mesh_vertex_count(msh),
-               mesh_triangle_count(msh), mesh_volume);
+        printf("mesh:           %d vertices, %d triangles, volume %.10g\n",
+               rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
 }
 
-static void warn_thin(const mesh_thin *t, double h)
+static void warn_thin(const rayscad_thin *t, double h)
 {
     if (t->walls)
         fprintf(stderr,
@@ -89,89 +87,83 @@ static void warn_thin(const mesh_thin *t, double h)
 }
 
 /* Decimate (when asked) and write; 0 or 1 (printed). */
-static int write_mesh_file(const cli_options *o, const mesh *msh)
+static int write_mesh_file(const cli_options *o, const rayscad_mesh *msh)
 {
     char err[512];
-    const float *v = mesh_vertices(msh);
-    const int32_t *t = mesh_triangles(msh);
-    int nv = mesh_vertex_count(msh), nt = mesh_triangle_count(msh);
-    float *dv = NULL;
-    int32_t *dt = NULL;
+    rayscad_mesh *dec = NULL;
     if (o->decimate >= 0) {
-        if (io_mesh_decimate(v, nv, t, nt, o->decimate, &dv, &nv, &dt, &nt, err, sizeof err) != 0) {
+        if (rayscad_mesh_decimate(msh, o->decimate, &dec, err, sizeof err) != RAYSCAD_OK) {
             cli_print_error(o, err);
             return 1;
         }
-        v = dv;
-        t = dt;
+        msh = dec;
     }
-    int rc = io_mesh_write(o->output, v, nv, t, nt, o->ascii, err, sizeof err);
-    free(dv);
-    free(dt);
-    if (rc != 0) {
+    rayscad_status rc = rayscad_mesh_write(msh, o->output, o->ascii, err, sizeof err);
+    rayscad_mesh_free(dec);
+    if (rc != RAYSCAD_OK) {
         cli_print_error(o, err);
         return 1;
     }
     return 0;
 }
 
-int cli_mesh_output(const cli_options *o, const csg_scene *scene, int write_mesh)
+int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_mesh)
 {
-    mesh_options mo;
-    mesh_options_default(&mo);
+    rayscad_mesh_options mo;
+    rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
     mo.threads = o->threads;
-    mo.root = 0;
+    mo.root = RAYSCAD_ROOT_MODEL;
     mo.max_cells = o->max_mesh_cells;
     mo.max_intervals = o->max_intervals;
     char err[512];
-    mesh_dexels *d;
-    int rc = mesh_dexels_new(scene, &mo, &d, err, sizeof err);
-    if (rc == MESH_ERR_CELLS) {
+    rayscad_sampling *d;
+    rayscad_status rc = rayscad_sampling_new(scene, &mo, &d, err, sizeof err);
+    if (rc == RAYSCAD_ERROR_CELLS) {
         fprintf(stderr, "rayscad: error: %s (--max-mesh-cells; a larger --mesh-size needs fewer)\n",
                 err);
         return 1;
     }
-    if (rc == MESH_ERR_INTERVALS) {
+    if (rc == RAYSCAD_ERROR_INTERVALS) {
         fprintf(stderr, "rayscad: error: %s (--max-intervals)\n", err);
         return 1;
     }
-    if (rc != 0) {
+    if (rc != RAYSCAD_OK) {
         cli_print_error(o, err);
         return 1;
     }
     double h, org[3];
     int n[3];
-    mesh_dexels_grid(d, &h, org, n);
-    mesh_measure m;
-    mesh_dexels_measure(d, &m);
-    mesh *msh = NULL;
+    rayscad_sampling_grid(d, &h, org, n);
+    rayscad_measurement m;
+    rayscad_sampling_measure(d, &m);
+    rayscad_mesh *msh = NULL;
     double mesh_volume = 0;
     if (write_mesh) {
-        mesh_thin thin;
-        mesh_dexels_thin(d, h, &thin);
-        rc = mesh_dexels_contour(d, &mo, &msh, err, sizeof err);
-        mesh_dexels_free(d);
+        rayscad_thin thin;
+        rayscad_sampling_thin(d, h, &thin);
+        rc = rayscad_sampling_mesh(d, &mo, &msh, err, sizeof err);
+        rayscad_sampling_free(d);
         d = NULL;
-        if (rc != 0) {
+        if (rc != RAYSCAD_OK) {
             cli_print_error(o, err);
             return 1;
         }
         warn_thin(&thin, h);
-        if (mesh_triangle_count(msh) == 0) {
+        if (rayscad_mesh_triangle_count(msh) == 0) {
             fprintf(stderr, "rayscad: error: %s: the model is empty; there is no mesh to write\n",
                     o->output);
-            mesh_free(msh);
+            rayscad_mesh_free(msh);
             return 1;
         }
-        mesh_volume = mesh_signed_volume(msh);
+        mesh_volume = rayscad_mesh_volume(msh);
         if (write_mesh_file(o, msh) != 0) {
-            mesh_free(msh);
+            rayscad_mesh_free(msh);
             return 1;
         }
     }
-    mesh_dexels_free(d);
+    rayscad_sampling_free(d);
     if (o->measure) print_measure(o, &m, h, msh, mesh_volume);
-    mesh_free(msh);
+    rayscad_mesh_free(msh);
     return 0;
 }

@@ -1,15 +1,13 @@
 /*
  * mesh_output.h — the command's mesh outputs (.stl .off .obj .ply) and
  * --measure: root 0 of a scene (the model, its top-level objects unioned)
- * sampled by the tri-dexel rays of src/mesh, contoured, optionally
- * decimated, and written through OpenMesh (src/io).
+ * sampled by the library's tri-dexel rays, contoured, optionally
+ * decimated, and written through OpenMesh.
  */
 #ifndef RAYSCAD_CLI_MESH_OUTPUT_H
 #define RAYSCAD_CLI_MESH_OUTPUT_H
 
 #include "options.h"
-
-#include "../csg/csg.h"
 
 /* 1 when path's extension names a mesh format (.stl .off .obj .ply). */
 int cli_mesh_output_is_mesh(const char *path);
@@ -21,6 +19,6 @@ int cli_mesh_output_is_mesh(const char *path);
  * resolve) go to stderr.  Returns the exit status: 0, or 1 when the model
  * cannot be meshed or the file cannot be written (a message on stderr; the
  * output is then left untouched). */
-int cli_mesh_output(const cli_options *o, const csg_scene *scene, int write_mesh);
+int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_mesh);
 
 #endif

@@ -7,16 +7,12 @@
  */
 #include "options.h"
 
-#include "../io/io.h"
-#include "../scad/scad.h"
-
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 const char cli_usage[] =
@@ -171,7 +167,8 @@ static int optional_value(const char *a, const char *name, const char **value)
 
 /* The light-model flags.  Returns 1 when argv[*i] was one (consumed), 0
  * when it is not, -1 with a message in err for a bad value. */
-static int parse_optics(int argc, char **argv, int *i, render_options *p, char *err, size_t errlen)
+static int parse_optics(int argc, char **argv, int *i, rayscad_render_options *p, char *err,
+                        size_t errlen)
 {
     const char *a = argv[*i], *val = NULL;
     double x;
@@ -217,14 +214,14 @@ static int parse_optics(int argc, char **argv, int *i, render_options *p, char *
     if ((r = flag_value(argc, argv, i, "--light", &val)) != 0) {
         double v[5] = {0, 0, 0, 0, 1};
         int n = r > 0 ? parse_numbers(val, v, 5) : -1;
-        if (n < 3 || v[3] < 0 || !(v[4] > 0) || p->nlights == RENDER_MAX_LIGHTS) {
+        if (n < 3 || v[3] < 0 || !(v[4] > 0) || p->nlights == RAYSCAD_MAX_LIGHTS) {
             snprintf(err, errlen,
                      "--light expects x,y,z[,radius[,intensity]] (radius >= 0, intensity > 0, "
                      "at most %d lights), got '%s'",
-                     RENDER_MAX_LIGHTS, r > 0 ? val : "");
+                     RAYSCAD_MAX_LIGHTS, r > 0 ? val : "");
             return -1;
         }
-        render_light *L = &p->lights[p->nlights++];
+        rayscad_light *L = &p->lights[p->nlights++];
         for (int k = 0; k < 3; k++)
             L->pos[k] = v[k];
         L->radius = v[3];
@@ -272,9 +269,9 @@ static int parse_optics(int argc, char **argv, int *i, render_options *p, char *
     return 0;
 }
 
-void cli_options_apply_optics(const cli_options *o, render_options *ro)
+void cli_options_apply_optics(const cli_options *o, rayscad_render_options *ro)
 {
-    const render_options *p = &o->optics;
+    const rayscad_render_options *p = &o->optics;
     ro->shadows = p->shadows;
     memcpy(ro->lights, p->lights, sizeof ro->lights);
     ro->nlights = p->nlights;
@@ -296,15 +293,28 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
     o->height = 512;
     o->samples = 1;
     o->colorscheme = "Cornfield";
-    o->view.kind = RENDER_CAMERA_DEFAULT;
+    o->view.kind = RAYSCAD_CAMERA_DEFAULT;
     o->decimate = -1;
 
-    static const char *const valued[] = {"-o",         "-D",        "--camera",  "--imgsize",
-                                         "--projection", "--colorscheme", "--samples", "--threads",
-                                         "--facets", "--mesh-size", "--decimate",
-                                         "--max-recursion", "--max-steps", "--max-list",
-                                         "--max-string", "--max-pixels", "--max-intervals",
-                                         "--max-mesh-cells", "--max-memory"};
+    static const char *const valued[] = {"-o",
+                                         "-D",
+                                         "--camera",
+                                         "--imgsize",
+                                         "--projection",
+                                         "--colorscheme",
+                                         "--samples",
+                                         "--threads",
+                                         "--facets",
+                                         "--mesh-size",
+                                         "--decimate",
+                                         "--max-recursion",
+                                         "--max-steps",
+                                         "--max-list",
+                                         "--max-string",
+                                         "--max-pixels",
+                                         "--max-intervals",
+                                         "--max-mesh-cells",
+                                         "--max-memory"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = NULL;
@@ -379,7 +389,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                          val);
                 return -1;
             }
-            o->view.kind = n == 7 ? RENDER_CAMERA_GIMBAL : RENDER_CAMERA_EYE;
+            o->view.kind = n == 7 ? RAYSCAD_CAMERA_GIMBAL : RAYSCAD_CAMERA_EYE;
         } else if (strcmp(flag, "--imgsize") == 0) {
             /* Any size an int holds; main refuses what --max-pixels does not
              * allow, as a limit rather than as a usage error. */
@@ -392,16 +402,21 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             o->width = (int)wh[0];
             o->height = (int)wh[1];
         } else if (strcmp(flag, "--projection") == 0) {
-            if (val[0] == 'o' || val[0] == 'O') o->view.ortho = 1;
-            else if (val[0] == 'p' || val[0] == 'P') o->view.ortho = 0;
+            if (val[0] == 'o' || val[0] == 'O')
+                o->view.ortho = 1;
+            else if (val[0] == 'p' || val[0] == 'P')
+                o->view.ortho = 0;
             else {
                 snprintf(err, errlen, "--projection expects p or o, got '%s'", val);
                 return -1;
             }
         } else if (strcmp(flag, "--facets") == 0) {
-            if (strcmp(val, "auto") == 0) o->facets = SCAD_FACETS_AUTO;
-            else if (strcmp(val, "smooth") == 0) o->facets = SCAD_FACETS_SMOOTH;
-            else if (strcmp(val, "openscad") == 0) o->facets = SCAD_FACETS_OPENSCAD;
+            if (strcmp(val, "auto") == 0)
+                o->facets = RAYSCAD_FACETS_AUTO;
+            else if (strcmp(val, "smooth") == 0)
+                o->facets = RAYSCAD_FACETS_SMOOTH;
+            else if (strcmp(val, "openscad") == 0)
+                o->facets = RAYSCAD_FACETS_OPENSCAD;
             else {
                 snprintf(err, errlen, "--facets expects auto, smooth or openscad, got '%s'", val);
                 return -1;
@@ -439,9 +454,12 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             static const struct {
                 const char *name;
                 double hi;
-            } limits[] = {{"--max-recursion", 2147483647.0}, {"--max-steps", 1e15},
-                          {"--max-list", 2147483647.0},      {"--max-string", 2147483647.0},
-                          {"--max-pixels", 1e15},            {"--max-intervals", 1 << 28},
+            } limits[] = {{"--max-recursion", 2147483647.0},
+                          {"--max-steps", 1e15},
+                          {"--max-list", 2147483647.0},
+                          {"--max-string", 2147483647.0},
+                          {"--max-pixels", 1e15},
+                          {"--max-intervals", 1 << 28},
                           {"--max-mesh-cells", 1e15}};
             size_t k = 0;
             while (strcmp(limits[k].name, flag) != 0)
@@ -477,8 +495,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             }
         } else if (strcmp(flag, "--threads") == 0) {
             if (parse_int(val, 0, 1024, &o->threads) != 0) {
-                snprintf(err, errlen, "--threads expects a whole number in 0..1024, got '%s'",
-                         val);
+                snprintf(err, errlen, "--threads expects a whole number in 0..1024, got '%s'", val);
                 return -1;
             }
         }
@@ -493,97 +510,4 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         return -1;
     }
     return 0;
-}
-
-/* ---- limits that depend on the machine ----------------------------------- */
-
-/* The cgroup v2 memory.max of this process, or 0 when there is none (no
- * cgroup v2, "max", unreadable).  A container's limit is the memory there
- * is, whatever the host has. */
-static unsigned long long cgroup_memory_max(void)
-{
-    FILE *f = fopen("/sys/fs/cgroup/memory.max", "r");
-    if (!f) return 0;
-    unsigned long long v = 0;
-    if (fscanf(f, "%llu", &v) != 1) v = 0;
-    fclose(f);
-    return v;
-}
-
-unsigned long long cli_default_max_memory(const cli_options *o)
-{
-    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    unsigned long long ram = pages > 0 && page > 0 ? (unsigned long long)pages * page : 0;
-    unsigned long long cg = cgroup_memory_max();
-    if (cg && (!ram || cg < ram)) ram = cg;
-    if (!ram) ram = 4ULL << 30; /* unknown: a small machine's worth */
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    unsigned long long workers = cores > 0 ? (unsigned long long)cores : 1;
-    if (o->threads > 0 && (unsigned long long)o->threads > workers) workers = o->threads;
-    /* A thread's default stack is RLIMIT_STACK's size (glibc), 8 MiB
-     * unless set otherwise. */
-    struct rlimit rl;
-    unsigned long long stack = 8ULL << 20;
-    if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur > 0)
-        stack = rl.rlim_cur;
-    return ram / 4 * 3 + (1ULL << 30) + 2 * workers * stack;
-}
-
-void cli_format_size(unsigned long long bytes, char *buf, size_t len)
-{
-    static const char units[] = "TGMK";
-    for (int i = 0; i < 4; i++) {
-        unsigned long long u = 1ULL << (10 * (4 - i));
-        if (bytes >= u && bytes % u == 0) {
-            snprintf(buf, len, "%llu%c", bytes / u, units[i]);
-            return;
-        }
-    }
-    for (int i = 0; i < 4; i++) {
-        unsigned long long u = 1ULL << (10 * (4 - i));
-        if (bytes >= u) {
-            snprintf(buf, len, "%.1f%c", (double)bytes / (double)u, units[i]);
-            return;
-        }
-    }
-    snprintf(buf, len, "%llu", bytes);
-}
-
-const char *cli_memory_note(const cli_options *o, const char *msg, char *buf, size_t len)
-{
-    if (!o->max_memory_enforced || !strstr(msg, "out of memory")) return "";
-    char size[32];
-    cli_format_size(o->max_memory, size, sizeof size);
-    if (o->max_memory_enforced == 2)
-        snprintf(buf, len, " (more than the data limit rayscad was started under, %s)", size);
-    else
-        snprintf(buf, len, " (more than --max-memory %s)", size);
-    return buf;
-}
-
-void cli_print_error(const cli_options *o, const char *msg)
-{
-    char note[96];
-    fprintf(stderr, "rayscad: error: %s%s\n", msg, cli_memory_note(o, msg, note, sizeof note));
-}
-
-int cli_data_limit_lift(struct rlimit *was)
-{
-    if (getrlimit(RLIMIT_DATA, was) != 0 || was->rlim_cur == was->rlim_max) return 0;
-    struct rlimit open = *was;
-    open.rlim_cur = was->rlim_max;
-    return setrlimit(RLIMIT_DATA, &open) == 0;
-}
-
-void cli_data_limit_restore(int lifted, const struct rlimit *was)
-{
-    if (lifted) setrlimit(RLIMIT_DATA, was);
-}
-
-void cli_load_image_adapter(void)
-{
-    struct rlimit was;
-    int lifted = cli_data_limit_lift(&was);
-    (void)io_image_load(NULL, 0); /* a failure shows again at the write */
-    cli_data_limit_restore(lifted, &was);
 }

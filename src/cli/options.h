@@ -5,9 +5,7 @@
 #ifndef RAYSCAD_CLI_OPTIONS_H
 #define RAYSCAD_CLI_OPTIONS_H
 
-#include "../render/render.h"
-
-#include <sys/resource.h>
+#include "../../include/rayscad.h"
 
 enum { CLI_MAX_DEFINES = 256 };
 
@@ -16,13 +14,13 @@ typedef struct cli_options {
     const char *output;
     const char *defines[CLI_MAX_DEFINES];
     int define_count;
-    render_view view;
+    rayscad_view view;
     int width, height;
     const char *colorscheme;
     int samples;
     int threads;
     int help, version;
-    int facets; /* a scad_facets: --facets=auto|smooth|openscad */
+    rayscad_facets facets; /* --facets=auto|smooth|openscad */
     /* Evaluation limits (0: the library's default): --max-recursion,
      * --max-steps, --max-list, --max-string. */
     int max_recursion, max_list, max_string;
@@ -40,8 +38,8 @@ typedef struct cli_options {
                                 max_memory is that one; 0: none */
     /* The opt-in light model (--shadows, --light, --bounces, --refract,
      * --aperture, --focus, --xray, --absorb, --light-samples, --seed): only
-     * the fields of render_options below `ud` are set. */
-    render_options optics;
+     * the fields of rayscad_render_options below `ud` are set. */
+    rayscad_render_options optics;
     /* Meshes and measurement (mesh_output.h). */
     double mesh_size; /* --mesh-size: grid spacing > 0; 0 = derived from the model */
     double decimate;  /* --decimate TOL >= 0; < 0 when not asked for */
@@ -58,47 +56,12 @@ typedef struct cli_options {
 enum { CLI_MAX_IMAGE_SIDE = 65536 };
 
 /* Copy the light-model fields of o->optics into *ro (leaving the rest). */
-void cli_options_apply_optics(const cli_options *o, render_options *ro);
+void cli_options_apply_optics(const cli_options *o, rayscad_render_options *ro);
 
 /* Parse argv into *o.  -o may be left out when --measure is given (then
  * o->output is NULL).  Returns 0, or -1 with a message in err (a usage
  * error: the caller prints it and exits 2). */
 int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen);
-
-/* The default of --max-memory: 3/4 of the machine's memory (or of the
- * cgroup's memory.max, when that is lower), plus what the process reserves
- * for stacks whatever the model — the evaluator's 1 GiB thread stack and
- * two stacks per core or --threads worker (ours and OpenImageIO's pool) —
- * since the limit counts those reservations too (main.c says why). */
-unsigned long long cli_default_max_memory(const cli_options *o);
-
-/* bytes as --max-memory reads it back: "300M", "2G", "1536K"; one decimal
- * when not a whole number of K, M or G ("17.6G"). */
-void cli_format_size(unsigned long long bytes, char *buf, size_t len);
-
-/* Print "rayscad: error: MSG" on stderr.  Every library words a failed
- * allocation as "out of memory"; while main's data limit is in force such
- * a message ends with which limit it was: "… (more than --max-memory 2G)". */
-void cli_print_error(const cli_options *o, const char *msg);
-
-/* The same note for a message printed some other way (the evaluator's
- * file:line:col lines): " (more than --max-memory 2G)" in buf, or "". */
-const char *cli_memory_note(const cli_options *o, const char *msg, char *buf, size_t len);
-
-/* Load the image adapter (OpenImageIO, src/io/image_loader.c) unless it is
- * loaded already, with the process's data limit lifted for the while: the
- * static initialisers of its 260 libraries do not survive a failed
- * allocation (measured: std::bad_alloc and std::system_error thrown out of
- * them, and null dereferences, with limits from 50 to 95 MiB), so the load
- * must not meet --max-memory, whatever the model holds at that moment.
- * Call it before the adapter would be loaded under the limit. */
-void cli_load_image_adapter(void);
-
-/* Lift the soft data limit (--max-memory) to the hard one around work the
- * limit must not see: returns 1 when it was lifted, keeping the old limit
- * in *was for cli_data_limit_restore, which puts it back. */
-int cli_data_limit_lift(struct rlimit *was);
-void cli_data_limit_restore(int lifted, const struct rlimit *was);
 
 /* The --help text. */
 extern const char cli_usage[];

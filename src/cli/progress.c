@@ -26,7 +26,8 @@ void progress_update(void *ud, double done)
     enum { WIDTH = 40 };
     char bar[WIDTH + 1];
     int fill = pct * WIDTH / 100;
-    for (int i = 0; i < WIDTH; i++) bar[i] = i < fill ? '#' : '.';
+    for (int i = 0; i < WIDTH; i++)
+        bar[i] = i < fill ? '#' : '.';
     bar[WIDTH] = '\0';
     fprintf(stderr, "\r%s [%s] %3d%%", p->label, bar, pct);
     fflush(stderr);

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <string.h>
 
-/* A boolean arrives as 0 or 1 (scad_result), so only $rs_shadows is one;
+/* A boolean arrives as 0 or 1 (rayscad_model_setting), so only $rs_shadows is one;
  * the others take numbers, in the same ranges as their flags. */
 typedef struct setting {
     const char *name;
@@ -17,16 +17,16 @@ typedef struct setting {
 } setting;
 
 static const setting known[] = {
-    {"$rs_shadows", 0, 1, 1},      {"$rs_light_samples", 1, 16, 1}, {"$rs_bounces", 1, 64, 1},
-    {"$rs_refract", 1, 10, 0},     {"$rs_aperture", 0, 1e9, 0},     {"$rs_focus", 0, 1e9, 0},
-    {"$rs_xray", 1e-9, 1, 0},      {"$rs_thickness", 1e-9, 1e9, 0}, {"$rs_samples", 1, 16, 1},
+    {"$rs_shadows", 0, 1, 1},          {"$rs_light_samples", 1, 16, 1}, {"$rs_bounces", 1, 64, 1},
+    {"$rs_refract", 1, 10, 0},         {"$rs_aperture", 0, 1e9, 0},     {"$rs_focus", 0, 1e9, 0},
+    {"$rs_xray", 1e-9, 1, 0},          {"$rs_thickness", 1e-9, 1e9, 0}, {"$rs_samples", 1, 16, 1},
     {"$rs_path_trace", 1, 1000000, 1},
 };
 
 /* The option a setting fills, and whether the command line left it unset. */
 static double *slot(cli_options *o, const char *name, double *tmp, int *unset)
 {
-    render_options *p = &o->optics;
+    rayscad_render_options *p = &o->optics;
     if (!strcmp(name, "$rs_aperture")) return *unset = p->aperture == 0, &p->aperture;
     if (!strcmp(name, "$rs_focus")) return *unset = p->focus == 0, &p->focus;
     if (!strcmp(name, "$rs_xray")) return *unset = p->xray == 0, &p->xray;
@@ -40,19 +40,19 @@ static double *slot(cli_options *o, const char *name, double *tmp, int *unset)
     return tmp; /* an int option: copied back by the caller */
 }
 
-void cli_settings_apply(cli_options *o, const scad_result *r, FILE *warn)
+void cli_settings_apply(cli_options *o, const rayscad_model *m, FILE *warn)
 {
-    for (int i = 0; i < r->nsettings; i++) {
-        const struct scad_setting *s = &r->settings[i];
+    for (int i = 0; i < rayscad_model_setting_count(m); i++) {
+        double v;
+        const char *name = rayscad_model_setting(m, i, &v);
         const setting *k = NULL;
         for (size_t j = 0; j < sizeof known / sizeof known[0]; j++)
-            if (!strcmp(known[j].name, s->name)) k = &known[j];
+            if (!strcmp(known[j].name, name)) k = &known[j];
         if (!k) continue;
-        double v = s->value;
         if (!(v >= k->lo && v <= k->hi) || (k->integer && v != floor(v))) {
             if (warn)
-                fprintf(warn, "rayscad: warning: %s = %g is outside %g..%g%s; ignored\n",
-                        k->name, s->value, k->lo, k->hi, k->integer ? " (whole numbers)" : "");
+                fprintf(warn, "rayscad: warning: %s = %g is outside %g..%g%s; ignored\n", k->name,
+                        v, k->lo, k->hi, k->integer ? " (whole numbers)" : "");
             continue;
         }
         double tmp = 0;

@@ -8,7 +8,6 @@
 
 #include <stdio.h>
 
-#include "../scad/scad.h"
 #include "options.h"
 
 /* Apply the file's settings to o: each known $rs_ name sets its option when
@@ -25,6 +24,6 @@
  *   $rs_thickness (> 0 mm)   --absorb
  *   $rs_samples (1-16)       --samples
  *   $rs_path_trace (1-1e6)   --path-trace=N */
-void cli_settings_apply(cli_options *o, const scad_result *r, FILE *warn);
+void cli_settings_apply(cli_options *o, const rayscad_model *m, FILE *warn);
 
 #endif

@@ -244,7 +244,7 @@ static int cast_family(const csg_scene *s, int root, mesh_dexels *d, int a, int 
     if (too_long) {
         snprintf(err, errlen, "a ray's interval list holds more than %d intervals",
                  max_intervals > 0 ? max_intervals : IV_LIST_LIMIT_DEFAULT);
-        rc = MESH_ERR_INTERVALS;
+        rc = RAYSCAD_ERROR_INTERVALS;
         goto done;
     }
     if (failed) {
@@ -355,7 +355,7 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
                  "a grid of %.0f x %.0f x %.0f cells (spacing %g) is %.0f cells, more than %lld",
                  cells[0], cells[1], cells[2], h, total, max_cells);
         free(d);
-        return MESH_ERR_CELLS;
+        return RAYSCAD_ERROR_CELLS;
     }
     for (int a = 0; a < 3; a++) {
         if (!(cells[a] <= MAX_CELLS)) {

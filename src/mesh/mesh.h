@@ -21,29 +21,15 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "../../include/rayscad.h"
 #include "../csg/csg.h"
 
-typedef struct mesh_options {
-    /* Grid spacing in model units.  <= 0: the longest side of the root's
-     * bounding box / cells_per_side. */
-    double h;
-    /* Used when h <= 0; <= 0 means 128. */
-    int cells_per_side;
-    /* Worker threads for ray casting; <= 0: one per online CPU. */
-    int threads;
-    /* Which root of the scene (0 = the model). */
-    int root;
-    /* Dihedral angle in degrees above which the normals met in a cell or on
-     * a cell face count as a sharp feature (a QEF vertex is placed on it).
-     * <= 0 means 30. */
-    double feature_angle_deg;
-    /* The most cells the grid may have, nx·ny·nz; <= 0 means
-     * MESH_MAX_CELLS_DEFAULT. */
-    long long max_cells;
-    /* Spans one interval list may hold along a ray (the workers'
-     * iv_arena_set_list_limit); <= 0 means IV_LIST_LIMIT_DEFAULT. */
-    int max_intervals;
-} mesh_options;
+/* Options, measurements and thin features are the public plain-data types
+ * of rayscad.h (rayscad_mesh_options: grid spacing h or cells_per_side,
+ * threads, root, feature angle, max_cells, max_intervals). */
+typedef rayscad_mesh_options mesh_options;
+typedef rayscad_measurement mesh_measure;
+typedef rayscad_thin mesh_thin;
 
 /* 2^32 cells: a cube of about 1625 cells a side, 12.7 times finer than the
  * default 128 — minutes of contouring and a mesh of gigabytes, so a grid
@@ -54,12 +40,10 @@ typedef struct mesh_options {
 /* Fill o with the defaults (h derived from the model, all CPUs, root 0). */
 void mesh_options_default(mesh_options *o);
 
-/* What the fallible calls below return besides 0 and -1, so that a caller
- * can name the limit that was hit (the message says it in words). */
-enum {
-    MESH_ERR_INTERVALS = -2, /* a ray's interval list passed o->max_intervals */
-    MESH_ERR_CELLS = -3      /* the grid has more than o->max_cells cells */
-};
+/* The fallible calls below return 0, RAYSCAD_ERROR, or (so that a caller
+ * can name the limit that was hit; the message says it in words)
+ * RAYSCAD_ERROR_INTERVALS (a ray's interval list passed o->max_intervals)
+ * or RAYSCAD_ERROR_CELLS (the grid has more than o->max_cells cells). */
 
 /* ---- sampling ----------------------------------------------------------- */
 
@@ -72,8 +56,8 @@ typedef struct mesh_dexels mesh_dexels;
  * root index out of range, gives an empty sampling (volume 0, empty mesh).
  * The result does not depend on the number of threads.  Returns 0 and the sampling in
  * *out (owned by the caller, free with mesh_dexels_free), or with a message
- * in err (errlen bytes) MESH_ERR_CELLS (checked before anything is cast or
- * allocated for the grid), MESH_ERR_INTERVALS, or -1: unbounded root (a
+ * in err (errlen bytes) RAYSCAD_ERROR_CELLS (checked before anything is cast or
+ * allocated for the grid), RAYSCAD_ERROR_INTERVALS, or -1: unbounded root (a
  * halfspace left unintersected), a grid larger than 65536 cells per side or
  * 2^31 rays per family, out of memory. */
 int mesh_dexels_new(const csg_scene *s, const mesh_options *o, mesh_dexels **out, char *err,
@@ -86,25 +70,6 @@ void mesh_dexels_free(mesh_dexels *d);
 void mesh_dexels_grid(const mesh_dexels *d, double *h, double origin[3], int n[3]);
 
 /* ---- measurement -------------------------------------------------------- */
-
-typedef struct mesh_measure {
-    /* ∫ dV: each family sums its rays' total interval length × h²
-     * (a midpoint rule over the ray grid); the three estimates are averaged. */
-    double volume;
-    /* Surface area from the ray crossings (a Crofton-type estimator): a
-     * crossing on an axis-a ray stands for h²/|n_a| of surface, and
-     * weighting the three families by |n_a|/|n|₁ gives each crossing
-     * h²/|n|₁ exactly, with no division by a small |n_a|. */
-    double area;
-    /* Centre of mass (uniform density), from the first moments of the
-     * intervals, averaged like the volume.  0 when the volume is 0. */
-    double centroid[3];
-    /* Bounds of the sampled surface points (never larger than the true
-     * bounds; within O(h²) of them for smooth surfaces, exact for faces
-     * that some ray crosses).  lo > hi when empty. */
-    double lo[3], hi[3];
-    long long crossings; /* number of ray–surface crossings used */
-} mesh_measure;
 
 /* Measure a sampling.  Never fails. */
 void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *out);
@@ -123,14 +88,6 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *out);
  * than the limit, which a grid of that spacing can miss entirely (both
  * faces between two nodes) or show with holes. */
 #define MESH_THIN_COS (-0.9)
-
-typedef struct mesh_thin {
-    long long walls, gaps; /* number of such chords through solid / empty space */
-    /* The thinnest of each (model units; INFINITY when none) and the world
-     * position of its midpoint. */
-    double min_wall, min_gap;
-    double wall_at[3], gap_at[3];
-} mesh_thin;
 
 /* Find walls and gaps thinner than `thickness` (model units; the grid
  * spacing is the limit a contour can resolve).  Never fails. */

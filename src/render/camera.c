@@ -71,7 +71,7 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
     int viewall = v->viewall, autocenter = v->autocenter;
 
     switch (v->kind) {
-    case RENDER_CAMERA_GIMBAL:
+    case RAYSCAD_CAMERA_GIMBAL:
         for (int i = 0; i < 3; i++)
             trans[i] = -v->v[i];
         rot[0] = wrap(90 - v->v[3]);
@@ -79,7 +79,7 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
         rot[2] = wrap(-v->v[5]);
         dist = v->v[6];
         break;
-    case RENDER_CAMERA_EYE: {
+    case RAYSCAD_CAMERA_EYE: {
         double dir[3];
         for (int i = 0; i < 3; i++) {
             trans[i] = -v->v[3 + i];
@@ -93,7 +93,7 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
         rot[0] = -atan2(dir[2], hypot(dir[0], dir[1])) * 180 / PI;
         break;
     }
-    case RENDER_CAMERA_DEFAULT:
+    case RAYSCAD_CAMERA_DEFAULT:
     default:
         /* No --camera: resetView() (vpr 55,0,25, vpd 140) and openscad.cc
          * turns on both viewall and autocenter. */
@@ -102,17 +102,17 @@ int render_camera_resolve(const render_view *v, const double lo[3], const double
         rot[2] = wrap(-25.0);
         dist = DEFAULT_DIST;
         viewall = autocenter = 1;
-        if (v->file_vp_set & 1) { /* Camera::setVpr */
-            rot[0] = wrap(90 - v->vpr[0]);
-            rot[1] = wrap(-v->vpr[1]);
-            rot[2] = wrap(-v->vpr[2]);
+        if (v->file.set & 1) { /* Camera::setVpr */
+            rot[0] = wrap(90 - v->file.vpr[0]);
+            rot[1] = wrap(-v->file.vpr[1]);
+            rot[2] = wrap(-v->file.vpr[2]);
         }
-        if (v->file_vp_set & 2)
+        if (v->file.set & 2)
             for (int i = 0; i < 3; i++)
-                trans[i] = -v->vpt[i];
-        if (v->file_vp_set & 4) dist = v->vpd;
-        if ((v->file_vp_set & 8) && v->vpf > 0 && v->vpf < 180) fovy = v->vpf;
-        if (v->file_vp_auto_off) viewall = autocenter = 0;
+                trans[i] = -v->file.vpt[i];
+        if (v->file.set & 4) dist = v->file.vpd;
+        if ((v->file.set & 8) && v->file.vpf > 0 && v->file.vpf < 180) fovy = v->file.vpf;
+        if (v->file.auto_off) viewall = autocenter = 0;
         break;
     }
 

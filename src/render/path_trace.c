@@ -171,12 +171,12 @@ static void surface_of(const pt_job *J, const iv_bound *b, pt_surface *s)
 static int nearest(const pt_job *J, pt_worker *w, const double o[3], const double d[3], double tmin,
                    double tmax, iv_bound *hit)
 {
-    int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
+    int rc = csg_trace_first(J->scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
     if (rc <= 0) return rc;
     if (hit->prim != IV_PRIM_NONE && isfinite(hit->t)) return 1;
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0) return -1;
+    if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0) return -1;
     for (int i = 0; i < 2 * l.n; i++) {
         const iv_bound *b = (i & 1) ? &l.v[i / 2].exit : &l.v[i / 2].enter;
         if (b->prim != IV_PRIM_NONE && isfinite(b->t)) {
@@ -208,7 +208,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
 {
     double tlim = target >= 0 ? dist * (1 + 2e-6) + 8 * J->eps : dist;
     iv_bound b;
-    int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
+    int rc = csg_trace_first(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
     if (rc < 0) return -1;
     if (rc == 0) return target >= 0 ? 0 : 1;
     pt_surface s;
@@ -222,7 +222,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
     }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
+    if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
     double T = 1;
     for (int i = 0; i < l.n && T > 0; i++) {
         const iv_span *sp = &l.v[i];
@@ -435,7 +435,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             if (entering) {
                 iv_list l;
                 memset(&l, 0, sizeof l);
-                if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
+                if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
                     return -1;
                 double len = INFINITY;
                 for (int i = 0; i < l.n; i++)
@@ -589,14 +589,14 @@ static int setup(pt_job *J)
     int np = csg_scene_prim_count(S);
     J->le = calloc((size_t)np + 1, sizeof *J->le);
     J->sampled = calloc((size_t)np + 1, 1);
-    J->lights = calloc((size_t)np + RENDER_MAX_LIGHTS + 1, sizeof *J->lights);
+    J->lights = calloc((size_t)np + RAYSCAD_MAX_LIGHTS + 1, sizeof *J->lights);
     if (!J->le || !J->sampled || !J->lights) return -1;
 
     double centre[3], size = model_scale(S, centre); /* as render.c's */
     J->eps = 1e-7 * size;
     J->focus = lens_focus(opt, J->cam, centre, size);
 
-    for (int li = 0; li < opt->nlights && li < RENDER_MAX_LIGHTS; li++) {
+    for (int li = 0; li < opt->nlights && li < RAYSCAD_MAX_LIGHTS; li++) {
         const render_light *R = &opt->lights[li];
         pt_light *L = &J->lights[J->nlights++];
         L->kind = PT_POINT;
@@ -666,7 +666,7 @@ static int setup(pt_job *J)
 int render_path_trace(const csg_scene *s, const render_camera *cam, const render_options *opt,
                       float *rgba, char *err, size_t errlen)
 {
-    if (opt->path_trace < 1 || opt->nlights < 0 || opt->nlights > RENDER_MAX_LIGHTS ||
+    if (opt->path_trace < 1 || opt->nlights < 0 || opt->nlights > RAYSCAD_MAX_LIGHTS ||
         opt->bounces < 0 || !(opt->aperture >= 0) || !(opt->focus >= 0) || !(opt->absorb >= 0) ||
         !(opt->xray >= 0) || opt->xray > 1) {
         if (err && errlen)
@@ -706,7 +706,7 @@ int render_path_trace(const csg_scene *s, const render_camera *cam, const render
                  "render: a ray's interval list holds more than %d intervals",
                  opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
         msg = too_long;
-        rc = RENDER_ERR_INTERVALS;
+        rc = RAYSCAD_ERROR_INTERVALS;
     }
 done:
     free(J.le);

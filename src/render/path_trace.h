@@ -8,7 +8,7 @@
 
 #include "render.h"
 
-/* Render root RENDER_ROOT_MODEL of scene s through camera cam with a
+/* Render root RAYSCAD_ROOT_MODEL of scene s through camera cam with a
  * unidirectional path tracer, opt->path_trace samples per pixel, into rgba
  * (opt->width × opt->height × 4 floats, sRGB-encoded, alpha 1) — the same
  * layout as render_image.  The image is identical for any opt->threads.

@@ -125,7 +125,7 @@ typedef struct ctx {
 
 static int transparent_leaf(const ctx *c, int32_t prim)
 {
-    if (c->root == RENDER_ROOT_HIGHLIGHT || c->root == RENDER_ROOT_BACKGROUND) return 1;
+    if (c->root == RAYSCAD_ROOT_HIGHLIGHT || c->root == RAYSCAD_ROOT_BACKGROUND) return 1;
     const csg_material *m = csg_scene_material(c->s, prim);
     return m->has_color && m->rgba[3] < 1;
 }
@@ -147,9 +147,9 @@ static void texture(const ctx *c, int32_t prim, int subtracted)
     const render_colors *col = &c->opt->colors;
     const csg_material *m = csg_scene_material(c->s, prim);
     float rgba[4];
-    if (c->root == RENDER_ROOT_HIGHLIGHT) {
+    if (c->root == RAYSCAD_ROOT_HIGHLIGHT) {
         memcpy(rgba, col->highlight, sizeof rgba);
-    } else if (c->root == RENDER_ROOT_BACKGROUND) {
+    } else if (c->root == RAYSCAD_ROOT_BACKGROUND) {
         memcpy(rgba, col->background_modifier, sizeof rgba);
     } else if (m->has_color) {
         memcpy(rgba, m->rgba, sizeof rgba);
@@ -496,8 +496,8 @@ int render_pov_export(const csg_scene *s, const render_camera *cam, const render
         if (i < 0) continue;
         c.root = r;
         put(&w, "// root %d%s\n", r,
-            r == RENDER_ROOT_HIGHLIGHT    ? " (# highlight)"
-            : r == RENDER_ROOT_BACKGROUND ? " (% background)"
+            r == RAYSCAD_ROOT_HIGHLIGHT    ? " (# highlight)"
+            : r == RAYSCAD_ROOT_BACKGROUND ? " (% background)"
                                           : "");
         node(&c, i, 0, 0);
     }

@@ -64,7 +64,7 @@ typedef struct job {
     int lit;      /* shadow rays and the lights below */
     int keylight; /* lit by the preview's own pair, the key one shadowed */
     int jitter;   /* stratified samples jittered (stochastic features on) */
-    render_light lights[RENDER_MAX_LIGHTS];
+    render_light lights[RAYSCAD_MAX_LIGHTS];
     int nlights;
     int light_n;   /* shadow rays per light: light_n² */
     int max_depth; /* secondary rays */
@@ -111,12 +111,12 @@ static void surface_color(const job *J, int r, const iv_bound *b, float c[4])
 {
     const render_colors *cs = &J->opt->colors;
     const csg_material *m = csg_scene_material(J->scene, b->prim);
-    if (r == RENDER_ROOT_HIGHLIGHT) {
+    if (r == RAYSCAD_ROOT_HIGHLIGHT) {
         /* Renderer::setColor: HIGHLIGHT ignores the object's own colour. */
         memcpy(c, cs->highlight, sizeof cs->highlight);
     } else if (m && m->has_color) {
         memcpy(c, m->rgba, sizeof m->rgba);
-    } else if (r == RENDER_ROOT_BACKGROUND) {
+    } else if (r == RAYSCAD_ROOT_BACKGROUND) {
         memcpy(c, cs->background_modifier, sizeof cs->background_modifier);
     } else {
         memcpy(c, b->flip ? cs->back : cs->face, 3 * sizeof(float));
@@ -152,7 +152,7 @@ static int stops_light(const job *J, const iv_bound *b)
     const csg_material *m = csg_scene_material(J->scene, b->prim);
     if (m->emit > 0) return 0;
     float c[4];
-    surface_color(J, RENDER_ROOT_MODEL, b, c);
+    surface_color(J, RAYSCAD_ROOT_MODEL, b, c);
     return absorption(J, m, c[3]) == 0 && 1 - c[3] < 1.0 / 4096;
 }
 
@@ -165,7 +165,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
 {
     if (J->first_hit && !wk->full_shadow) {
         iv_bound b;
-        int rc = csg_trace_first(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
+        int rc = csg_trace_first(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
         if (rc < 0) return -1;
         if (rc == 0) return 1; /* nothing in the way: the loop below leaves T = 1 */
         if (stops_light(J, &b)) return 0;
@@ -173,7 +173,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
     }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RENDER_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
+    if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
     if (J->first_hit) wk->full_shadow = !(l.n == 0 || stops_light(J, &l.v[0].enter));
     double T = 1;
     for (int i = 0; i < l.n && T > 1.0 / 4096; i++) {
@@ -184,7 +184,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
             const csg_material *m = csg_scene_material(J->scene, b->prim);
             if (m->emit > 0) continue;
             float c[4];
-            surface_color(J, RENDER_ROOT_MODEL, b, c);
+            surface_color(J, RAYSCAD_ROOT_MODEL, b, c);
             double sigma = absorption(J, m, c[3]);
             if (sigma > 0) {
                 if (e == 0) T *= exp(-sigma * (sp->exit.t - sp->enter.t));
@@ -196,7 +196,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
         if (sp->enter.prim == IV_PRIM_NONE && sp->exit.prim != IV_PRIM_NONE) {
             const csg_material *m = csg_scene_material(J->scene, sp->exit.prim);
             float c[4];
-            surface_color(J, RENDER_ROOT_MODEL, &sp->exit, c);
+            surface_color(J, RAYSCAD_ROOT_MODEL, &sp->exit, c);
             double sigma = m->emit > 0 ? 0 : absorption(J, m, c[3]);
             if (sigma > 0) T *= exp(-sigma * (sp->exit.t - sp->enter.t));
         }
@@ -614,7 +614,7 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
 static int resolve_light_model(job *J, char *err, size_t errlen)
 {
     const render_options *opt = J->opt;
-    if (opt->nlights < 0 || opt->nlights > RENDER_MAX_LIGHTS || opt->light_samples < 0 ||
+    if (opt->nlights < 0 || opt->nlights > RAYSCAD_MAX_LIGHTS || opt->light_samples < 0 ||
         opt->light_samples > MAX_LIGHT_SAMPLES || opt->bounces < 0 || opt->aperture < 0 ||
         opt->focus < 0 || opt->xray < 0 || opt->xray > 1 || opt->absorb < 0 ||
         !isfinite(opt->aperture) || !isfinite(opt->focus) || !isfinite(opt->absorb)) {
@@ -630,7 +630,7 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
     for (int p = 0; p < csg_scene_prim_count(J->scene); p++) {
         const csg_material *m = csg_scene_material(J->scene, p);
         if (!(m->emit > 0)) continue;
-        if (J->nlights == RENDER_MAX_LIGHTS) continue;
+        if (J->nlights == RAYSCAD_MAX_LIGHTS) continue;
         render_light *L = &J->lights[J->nlights++];
         for (int i = 0; i < 3; i++)
             L->pos[i] = m->light[i];
@@ -720,7 +720,7 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
         if (err && errlen)
             snprintf(err, errlen, "render: a ray's interval list holds more than %d intervals",
                      opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
-        return RENDER_ERR_INTERVALS;
+        return RAYSCAD_ERROR_INTERVALS;
     }
     if (failed) {
         set_err(err, errlen, "render: out of memory while tracing rays");

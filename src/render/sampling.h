@@ -92,7 +92,7 @@ static inline double model_scale(const csg_scene *s, double centre[3])
     double lo[3], hi[3], size = 1;
     for (int i = 0; i < 3; i++)
         centre[i] = 0;
-    if (csg_scene_bounds(s, RENDER_ROOT_MODEL, lo, hi) != 0) return size;
+    if (csg_scene_bounds(s, RAYSCAD_ROOT_MODEL, lo, hi) != 0) return size;
     double s2 = 0;
     for (int i = 0; i < 3; i++) {
         double e = isfinite(hi[i] - lo[i]) ? hi[i] - lo[i] : 0;

@@ -88,7 +88,7 @@ typedef struct scad_diag {
     int stopped;           /* an error stopped the evaluation: later lines are dropped */
 } scad_diag;
 
-/* "file:line:col: error: <fmt>" as a SCAD_MSG_ERROR line. */
+/* "file:line:col: error: <fmt>" as a RAYSCAD_MSG_ERROR line. */
 void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* "WARNING: <fmt> in file <relative path>, line N" (OpenSCAD's wording). */
@@ -96,15 +96,15 @@ void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* "DEPRECATED: <fmt> in file <relative path>, line N", sent as a warning. */
 /* A line of OpenSCAD's own account of an error, as its echo stream holds
- * it (SCAD_MSG_TRACE): "<fmt> in file x.scad, line N". */
+ * it (RAYSCAD_MSG_TRACE): "<fmt> in file x.scad, line N". */
 void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* Record where the first syntax error was, for scad_diag_parse_failed. */
 void scad_diag_syntax(scad_diag *d, scad_loc loc);
 /* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in
- * file x, line N" and "Can't parse file 'main.scad'!" (SCAD_MSG_TRACE). */
+ * file x, line N" and "Can't parse file 'main.scad'!" (RAYSCAD_MSG_TRACE). */
 void scad_diag_parse_failed(scad_diag *d, const char *main_file);
-/* A rayscad-only warning (SCAD_MSG_NOTE): "file:line:col: warning: …",
+/* A rayscad-only warning (RAYSCAD_MSG_NOTE): "file:line:col: warning: …",
  * for what OpenSCAD accepts but rayscad does not build; not counted. */
 void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -165,9 +165,19 @@ typedef struct scad_token {
 int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, const char *src,
              scad_token **out);
 
+/* ---- files (files.c): through opt->services ---------------------------------- */
+
 /* The whole file at path as a NUL-terminated string in the arena, or NULL
- * when it cannot be read. */
-char *scad_read_file(scad_arena *a, const char *path);
+ * when it cannot be read (the reason in err). */
+char *scad_read_file(scad_arena *a, const scad_options *opt, const char *path, char *err,
+                     size_t errlen);
+/* The same as a malloc'd buffer (the caller frees it), NUL-terminated
+ * after *len bytes; a file over max bytes fails. */
+char *scad_file_read(const scad_options *opt, const char *path, size_t max, size_t *len, char *err,
+                     size_t errlen);
+/* 1 when path is a regular file that can be read; *mtime (may be NULL) gets
+ * its modification time, 0 when it is none. */
+int scad_file_stat(const scad_options *opt, const char *path, long long *mtime);
 
 /* ---- syntax tree ---------------------------------------------------------- */
 
@@ -288,10 +298,11 @@ const scad_moddef *scad_scope_module(const scad_scope *s, const char *name);
 
 /* The file a `use <name>` / `include <name>` in file `from` refers to, in
  * OpenSCAD's search order: from's own folder, then each folder of
- * $OPENSCADPATH (':'-separated), then /usr/share/openscad/libraries.
+ * opt->library_path (':'-separated; NULL: $OPENSCADPATH), then
+ * /usr/share/openscad/libraries.
  * Absolute names are taken as they are.  Returns a path in the arena, or
  * NULL when no readable file is found. */
-char *scad_find_library(scad_arena *a, const char *from, const char *name);
+char *scad_find_library(scad_arena *a, const scad_options *opt, const char *from, const char *name);
 
 /* Parse a whole file.  Returns the top-level scope (in arena a), or NULL
  * when any syntax error was reported through d (all are reported). */

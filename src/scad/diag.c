@@ -18,8 +18,8 @@ enum { LINE_MAX_BYTES = 4096 };
 void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
 {
     if (d->stopped) return;
-    if (kind == SCAD_MSG_WARNING) d->warnings++;
-    if (kind == SCAD_MSG_ERROR) d->errors++;
+    if (kind == RAYSCAD_MSG_WARNING) d->warnings++;
+    if (kind == RAYSCAD_MSG_ERROR) d->errors++;
     if (d->opt && d->opt->message) d->opt->message(d->opt->ud, kind, line);
 }
 
@@ -38,7 +38,7 @@ void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    compiler_style(d, SCAD_MSG_ERROR, "error", loc, fmt, ap);
+    compiler_style(d, RAYSCAD_MSG_ERROR, "error", loc, fmt, ap);
     va_end(ap);
 }
 
@@ -46,7 +46,7 @@ void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    compiler_style(d, SCAD_MSG_NOTE, "warning", loc, fmt, ap);
+    compiler_style(d, RAYSCAD_MSG_NOTE, "warning", loc, fmt, ap);
     va_end(ap);
 }
 
@@ -65,7 +65,7 @@ static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *
     vsnprintf(msg, sizeof msg, fmt, ap);
     snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, shown_file(d, loc.file),
              loc.line);
-    scad_diag_line(d, SCAD_MSG_WARNING, line);
+    scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
 }
 
 void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
@@ -76,7 +76,7 @@ void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     snprintf(line, sizeof line, "%s in file %s, line %d", msg, shown_file(d, loc.file), loc.line);
-    scad_diag_line(d, SCAD_MSG_TRACE, line);
+    scad_diag_line(d, RAYSCAD_MSG_TRACE, line);
 }
 
 void scad_diag_syntax(scad_diag *d, scad_loc loc)
@@ -91,11 +91,11 @@ void scad_diag_parse_failed(scad_diag *d, const char *main_file)
     if (d->first_syntax.file) {
         snprintf(line, sizeof line, "ERROR: Parser error: syntax error in file %s, line %d",
                  d->first_syntax.file, d->first_syntax.line);
-        scad_diag_line(d, SCAD_MSG_TRACE, line);
+        scad_diag_line(d, RAYSCAD_MSG_TRACE, line);
     }
     snprintf(line, sizeof line, "Can't parse file '%s'!", main_file);
-    scad_diag_line(d, SCAD_MSG_TRACE, line);
-    scad_diag_line(d, SCAD_MSG_TRACE, ""); /* openscad ends it with an empty line */
+    scad_diag_line(d, RAYSCAD_MSG_TRACE, line);
+    scad_diag_line(d, RAYSCAD_MSG_TRACE, ""); /* openscad ends it with an empty line */
 }
 
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)

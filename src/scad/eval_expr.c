@@ -376,7 +376,7 @@ void scad_echo_line(scad_eval *ev, const scad_argv *a)
         if (a->names[i]) scad_buf_printf(&b, "%s = ", a->names[i]);
         scad_value_format(&b, a->v[i], 1);
     }
-    scad_diag_line(ev->d, SCAD_MSG_ECHO, scad_buf_str(&b));
+    scad_diag_line(ev->d, RAYSCAD_MSG_ECHO, scad_buf_str(&b));
     scad_buf_free(&b);
 }
 

@@ -298,7 +298,7 @@ static int children_index_bad(scad_eval *ev, int k, int n)
                  n);
     else
         return 0;
-    scad_diag_line(ev->d, SCAD_MSG_WARNING, line);
+    scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, line);
     return 1;
 }
 

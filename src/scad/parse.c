@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "ast.h"
 
@@ -37,6 +36,7 @@ typedef struct parser {
  * name when the whole parse is done. */
 typedef struct shared {
     scad_names *names;
+    const scad_options *opt; /* the file services */
     const char **path;
     scad_scope **scope;
     int n, cap;
@@ -786,62 +786,13 @@ static int parse_into(parser *P, scad_scope *s)
 
 enum { MAX_INCLUDE_DEPTH = 64 };
 
-static char *join_path(scad_arena *a, const char *dir, size_t dl, const char *name)
-{
-    size_t nl = strlen(name);
-    int sep = dl > 0 && dir[dl - 1] != '/';
-    char *p = scad_arena_alloc(a, dl + (size_t)sep + nl + 1);
-    if (!p) return NULL;
-    memcpy(p, dir, dl);
-    if (sep) p[dl] = '/';
-    memcpy(p + dl + (size_t)sep, name, nl + 1);
-    return p;
-}
-
-/* 1 when path is a regular file that reads: a folder opens on Linux but does
- * not read, and a device (/dev/zero, /dev/stdin) may never end. */
-static int readable(const char *path)
-{
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    char c;
-    size_t got = fread(&c, 1, 1, f);
-    int ok = !ferror(f);
-    (void)got;
-    fclose(f);
-    return ok;
-}
-
-char *scad_find_library(scad_arena *a, const char *from, const char *name)
-{
-    if (name[0] == '/') return readable(name) ? scad_arena_strndup(a, name, strlen(name)) : NULL;
-    const char *slash = strrchr(from, '/');
-    char *p = join_path(a, from, slash ? (size_t)(slash - from + 1) : 0, name);
-    if (p && readable(p)) return p;
-    const char *env = getenv("OPENSCADPATH");
-    while (env && *env) {
-        const char *end = strchr(env, ':');
-        size_t n = end ? (size_t)(end - env) : strlen(env);
-        if (n > 0) {
-            p = join_path(a, env, n, name);
-            if (p && readable(p)) return p;
-        }
-        env += n + (end ? 1 : 0);
-    }
-    p = join_path(a, "/usr/share/openscad/libraries", 29, name);
-    if (p && readable(p)) return p;
-    return NULL;
-}
-
 static void use_file(parser *P, scad_scope *s, scad_token *t)
 {
-    char *path = scad_find_library(P->a, t->loc.file, t->text);
+    char *path = scad_find_library(P->a, P->shared->opt, t->loc.file, t->text);
     if (!path) {
         char line[600];
         snprintf(line, sizeof line, "WARNING: Can't open library '%.500s'.", t->text);
-        scad_diag_line(P->d, SCAD_MSG_WARNING, line);
+        scad_diag_line(P->d, RAYSCAD_MSG_WARNING, line);
         return;
     }
     shared *u = P->shared;
@@ -856,7 +807,8 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
             return;
         }
         scope = new_scope(P);
-        char *src = scope ? scad_read_file(P->a, path) : NULL;
+        char err[256];
+        char *src = scope ? scad_read_file(P->a, P->shared->opt, path, err, sizeof err) : NULL;
         if (!src) {
             P->oom = 1;
             return;
@@ -906,12 +858,13 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
         P->errors++;
         return;
     }
-    char *path = scad_find_library(P->a, t->loc.file, t->text);
-    char *src = path ? scad_read_file(P->a, path) : NULL;
+    char *path = scad_find_library(P->a, P->shared->opt, t->loc.file, t->text);
+    char err[256];
+    char *src = path ? scad_read_file(P->a, P->shared->opt, path, err, sizeof err) : NULL;
     if (!src) {
         char line[600];
         snprintf(line, sizeof line, "WARNING: Can't open include file '%.500s'.", t->text);
-        scad_diag_line(P->d, SCAD_MSG_WARNING, line);
+        scad_diag_line(P->d, RAYSCAD_MSG_WARNING, line);
         return;
     }
     scad_token *toks;
@@ -933,7 +886,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
 scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,
                        const char *src)
 {
-    shared sh = {names, NULL, NULL, 0, 0, NULL, 0, 0};
+    shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0};
     parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);

@@ -23,47 +23,8 @@
 
 enum { DEFAULT_MAX_RECURSION = 10000 };
 #define DEFAULT_MAX_STEPS 10000000L
-#define MAX_SOURCE_BYTES ((size_t)1 << 28)
 #define EVAL_STACK ((size_t)1 << 30)
 #define STACK_MARGIN ((size_t)64 << 20)
-
-char *scad_read_file(scad_arena *a, const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    size_t cap = 65536, n = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        size_t got = fread(buf + n, 1, cap - n - 1, f);
-        n += got;
-        if (got == 0) break;
-        if (n + 1 == cap) {
-            if (cap >= MAX_SOURCE_BYTES) { /* a source this long is not a model */
-                free(buf);
-                fclose(f);
-                errno = EFBIG;
-                return NULL;
-            }
-            char *nb = realloc(buf, cap * 2);
-            if (!nb) {
-                free(buf);
-                buf = NULL;
-                break;
-            }
-            buf = nb;
-            cap *= 2;
-        }
-    }
-    int err = ferror(f);
-    fclose(f);
-    if (!buf || err) {
-        free(buf);
-        return NULL;
-    }
-    char *out = scad_arena_strndup(a, buf, n);
-    free(buf);
-    return out;
-}
 
 /* ---- geometry → csg ------------------------------------------------------------ */
 
@@ -218,7 +179,7 @@ static void run_job(job *j)
     }
     scad_env *file = builtins ? scad_env_new(&ev, builtins, builtins, j->top) : NULL;
     ev.builtins = builtins;
-    ev.facets = j->opt ? j->opt->facets : SCAD_FACETS_AUTO;
+    ev.facets = j->opt ? j->opt->facets : RAYSCAD_FACETS_AUTO;
     static const scad_services no_services;
     ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
     if (file) {
@@ -247,7 +208,7 @@ static void run_job(job *j)
             r->nsettings++;
         }
         if (vp && !ev.aborted)
-            scad_diag_line(j->d, SCAD_MSG_WARNING,
+            scad_diag_line(j->d, RAYSCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");
         if (!ev.aborted && j->dump) {
             const scad_geom *failed = scad_dump_write(j->dump, ev.has_root ? ev.root : model);
@@ -400,12 +361,13 @@ static int eval_path(const char *path, const scad_options *opt, scad_result *out
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
     if (!a) return -1;
-    char *src = scad_read_file(a, path);
+    char err[512];
+    char *src = scad_read_file(a, opt, path, err, sizeof err);
     if (!src) {
         scad_diag d;
         memset(&d, 0, sizeof d);
         d.opt = opt;
-        scad_diag_error(&d, (scad_loc){path, 1, 1}, "cannot read file: %s", strerror(errno));
+        scad_diag_error(&d, (scad_loc){path, 1, 1}, "cannot read file: %s", err);
         scad_arena_free(a);
         return -1;
     }

@@ -13,20 +13,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "../../include/rayscad.h"
 #include "../csg/csg.h"
 
-typedef enum scad_msg_kind {
-    SCAD_MSG_ECHO,    /* "ECHO: …" as OpenSCAD prints it */
-    SCAD_MSG_WARNING, /* "WARNING: …" as OpenSCAD prints it */
-    SCAD_MSG_ERROR,   /* "file:line:col: error: …" */
-    SCAD_MSG_NOTE,    /* rayscad's own warning about input OpenSCAD accepts but
-                         rayscad does not fully build ("file:line:col: warning:
-                         …"): never part of OpenSCAD's .echo stream */
-    SCAD_MSG_TRACE    /* after an ERROR: the error as OpenSCAD's .echo stream
-                         has it ("ERROR: … in file x.scad, line N", "TRACE:
-                         called by 'm' in file …", "Can't parse file …") —
-                         for an .echo output, redundant on a terminal */
-} scad_msg_kind;
+/* Message kinds are the public ones (RAYSCAD_MSG_ECHO …, rayscad.h). */
+typedef rayscad_message_kind scad_msg_kind;
 
 /* What the language needs from outside src/scad — files, images, polygon
  * clipping, fonts, meshing — injected by the caller, so that src/scad
@@ -60,9 +51,15 @@ typedef struct scad_text_params {
 
 typedef struct scad_services {
     void *ud;
+    /* The files the language reads (the main file, include, use, DXF and
+     * .dat heightmaps), as rayscad_services.read_file and stat_file say:
+     * the language opens no file itself (src/scad/files.c). */
+    int (*read_file)(void *ud, const char *path, size_t max, char **data, size_t *len, char *err,
+                     size_t errlen);
+    int (*stat_file)(void *ud, const char *path, long long *mtime);
     /* import(): a triangle mesh file (stl, off, obj, ply) as 3 floats per
      * vertex and 3 indices per triangle, counter-clockwise seen from
-     * outside.  (Issue 4: import.) */
+     * outside. */
     int (*read_mesh)(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
                      char *err, size_t errlen);
     /* surface() from an image: channels floats per pixel, row-major from
@@ -114,20 +111,13 @@ typedef struct scad_options {
      * of work), so that nested loops and exponential recursion end with
      * "evaluation took more than N steps". */
     long max_steps;
-    /* How round primitives are built (a scad_facets; 0 is AUTO). */
+    /* How round primitives are built (a rayscad_facets; 0 is AUTO). */
     int facets;
+    /* Folders searched for use and include (rayscad_eval_options). */
+    const char *library_path;
     /* Outside services (may be NULL: none). */
     const scad_services *services;
 } scad_options;
-
-/* SMOOTH: spheres, cylinders and circles are exact; OPENSCAD: each is the
- * polytope or polygon OpenSCAD 2021.01 tessellates it into; AUTO: smooth,
- * unless $fn is set to at most 16, where facets are meant to show. */
-typedef enum scad_facets {
-    SCAD_FACETS_AUTO = 0,
-    SCAD_FACETS_SMOOTH,
-    SCAD_FACETS_OPENSCAD
-} scad_facets;
 
 /* What a file evaluates to.  Each tree may be NULL (nothing there). */
 typedef struct scad_result {
@@ -159,7 +149,7 @@ enum { SCAD_VP_R = 1, SCAD_VP_T = 2, SCAD_VP_D = 4, SCAD_VP_F = 8 };
 
 /* Parse and evaluate the file at path.  On success returns 0 and fills *out;
  * the caller owns the trees (csg_node_free, or hand them to csg_scene_new).
- * On failure returns -1, has sent at least one SCAD_MSG_ERROR line, and *out
+ * On failure returns -1, has sent at least one RAYSCAD_MSG_ERROR line, and *out
  * holds no trees.  Syntax errors are all reported before returning. */
 int scad_eval_file(const char *path, const scad_options *opt, scad_result *out);
 
@@ -177,7 +167,7 @@ void scad_result_free(scad_result *r);
  * builds no csg trees.  On success returns 0 and sets *text to a
  * NUL-terminated string the caller frees with free(), and *len (may be
  * NULL) to its length; on failure returns -1 with *text NULL, having sent
- * at least one SCAD_MSG_ERROR line. */
+ * at least one RAYSCAD_MSG_ERROR line. */
 int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, size_t *len);
 
 /* The same for source text in memory; `name` is used in messages and as

@@ -24,7 +24,7 @@ typedef struct seen {
 static void on_message(void *ud, scad_msg_kind kind, const char *line)
 {
     seen *s = ud;
-    if (kind != SCAD_MSG_ERROR) return;
+    if (kind != RAYSCAD_MSG_ERROR) return;
     s->errors++;
     if (!strchr(line, ':')) abort(); /* an error without its location */
 }

@@ -29,7 +29,7 @@ static int located(const char *line)
 static void on_message(void *ud, scad_msg_kind kind, const char *line)
 {
     (void)ud;
-    if (kind == SCAD_MSG_ERROR && !located(line)) abort(); /* an error without its location */
+    if (kind == RAYSCAD_MSG_ERROR && !located(line)) abort(); /* an error without its location */
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -124,7 +124,7 @@ static void render_scene(const csg_scene *s)
         }
         have = 1;
     }
-    render_view view = {.kind = RENDER_CAMERA_DEFAULT, .viewall = 1, .autocenter = 1};
+    render_view view = {.kind = RAYSCAD_CAMERA_DEFAULT, .viewall = 1, .autocenter = 1};
     render_camera cam;
     if (render_camera_resolve(&view, lo, hi, have, W, H, &cam) != 0) return;
     render_options ro = {.width = W, .height = H, .samples = 1, .threads = 1};

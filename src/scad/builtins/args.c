@@ -83,8 +83,8 @@ int scad_fragments(double r, scad_facet_params f)
  * alone stay smooth, even for a small sphere they would cut into 10. */
 int scad_facets_shown(const scad_eval *ev, scad_facet_params f, double r)
 {
-    if (ev->facets == SCAD_FACETS_OPENSCAD) return 1;
-    if (ev->facets == SCAD_FACETS_SMOOTH) return 0;
+    if (ev->facets == RAYSCAD_FACETS_OPENSCAD) return 1;
+    if (ev->facets == RAYSCAD_FACETS_SMOOTH) return 0;
     int chosen = f.fn > 0 || f.fa != 12 || f.fs != 2;
     return chosen && scad_fragments(r, f) <= 16;
 }

@@ -84,12 +84,12 @@ typedef struct scad_file_arg {
  * the alternative names import() takes, or -1).  An origin that is given
  * but not two finite numbers warns as OpenSCAD's `who` does (NULL: no
  * warning). */
-void scad_file_read(scad_call *c, int file, int layer, int origin, int alt_file, int alt_layer,
+void scad_file_arg_read(scad_call *c, int file, int layer, int origin, int alt_file, int alt_layer,
                     const char *who, scad_file_arg *out);
 /* "file = "…", layer = "…", origin = [x, y]" as OpenSCAD prints them (the
  * path relative to the main file's folder); *mtime gets the file's
  * modification time, 0 when it does not exist. */
-void scad_file_print(scad_call *c, const scad_file_arg *f, scad_buf *b, long long *mtime);
+void scad_file_arg_print(scad_call *c, const scad_file_arg *f, scad_buf *b, long long *mtime);
 /* The path OpenSCAD opens for name: relative to the calling file's folder
  * unless absolute. */
 void scad_file_path(scad_call *c, const char *name, scad_buf *out);

@@ -14,8 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
-#include "../dxf.h"
+#include "../../geom/dxf.h"
 #include "builtins.h"
 
 typedef struct sink {
@@ -23,15 +24,15 @@ typedef struct sink {
     scad_loc loc;
 } sink;
 
-static void on_message(void *ud, scad_msg_kind kind, const char *text)
+static void on_message(void *ud, int kind, const char *text)
 {
     sink *s = ud;
-    if (kind == SCAD_MSG_NOTE) {
+    if (kind == GEOM_DXF_NOTE) {
         scad_diag_note(s->ev->d, s->loc, "%s", text);
     } else {
         scad_buf b = {0};
         scad_buf_printf(&b, "WARNING: %s", text);
-        scad_diag_line(s->ev->d, SCAD_MSG_WARNING, scad_buf_str(&b));
+        scad_diag_line(s->ev->d, RAYSCAD_MSG_WARNING, scad_buf_str(&b));
         scad_buf_free(&b);
     }
 }
@@ -122,24 +123,61 @@ static void free_args(dxf_args *d)
     scad_buf_free(&d->name);
 }
 
-/* Reads the drawing for a function call; 0, or 1 after a warning (no such
- * file) or an error (out of memory). */
-static int read_for(scad_eval *ev, scad_loc loc, dxf_args *d, scad_dxf *dxf)
+/* The file's name as OpenSCAD shows it in the reader's messages: absolute
+ * (lookup_file's), and relative to the working folder
+ * (boostfs_uncomplete's). */
+static void names(const char *path, char *abs, size_t n, const char **rel)
 {
-    const char *path = scad_buf_str(&d->file);
-    FILE *fp = path[0] ? fopen(path, "r") : NULL;
-    if (!fp) {
-        scad_diag_warning(ev->d, loc, "Can't open DXF file '%s'!", scad_buf_str(&d->raw));
-        return 1;
+    char cwd[4096];
+    if (path[0] == '/' || !getcwd(cwd, sizeof cwd))
+        snprintf(abs, n, "%s", path);
+    else
+        snprintf(abs, n, "%s/%s", cwd, path);
+    *rel = path;
+    if (path[0] == '/' && getcwd(cwd, sizeof cwd)) {
+        size_t k = strlen(cwd);
+        if (!strncmp(path, cwd, k) && path[k] == '/') *rel = path + k + 1;
+    } else if (!strncmp(path, "./", 2)) {
+        *rel = path + 2;
     }
-    fclose(fp);
-    scad_dxf_params p = {scad_buf_str(&d->layer), d->origin[0], d->origin[1], d->scale, 36, 0, 0};
+}
+
+/* A DXF file is at most this long (a drawing, not a model). */
+#define MAX_DXF_BYTES ((size_t)1 << 28)
+
+/* Read and parse the drawing at path (through the file services) into
+ * *dxf.  0; 1 when the file cannot be read (*dxf empty; the caller warns,
+ * as OpenSCAD words it for the call); -1 after an out-of-memory error. */
+static int read_dxf(scad_eval *ev, scad_loc loc, const char *path, const geom_dxf_params *p,
+                    geom_dxf *dxf)
+{
+    memset(dxf, 0, sizeof *dxf);
+    char err[256];
+    size_t len;
+    char *text =
+        path[0] ? scad_file_read(ev->d->opt, path, MAX_DXF_BYTES, &len, err, sizeof err) : NULL;
+    if (!text) return 1;
+    char abs[4200];
+    const char *rel;
+    names(path, abs, sizeof abs, &rel);
     sink s = {ev, loc};
-    if (scad_dxf_read(path, &p, on_message, &s, dxf) != 0) {
+    int rc = geom_dxf_read(text, len, abs, rel, p, on_message, &s, dxf);
+    free(text);
+    if (rc != 0) {
         scad_eval_error(ev, loc, "out of memory");
-        return 1;
+        return -1;
     }
     return 0;
+}
+
+/* Reads the drawing for a function call; 0, or 1 after a warning (no such
+ * file) or an error (out of memory). */
+static int read_for(scad_eval *ev, scad_loc loc, dxf_args *d, geom_dxf *dxf)
+{
+    geom_dxf_params p = {scad_buf_str(&d->layer), d->origin[0], d->origin[1], d->scale, 36, 0, 0};
+    int rc = read_dxf(ev, loc, scad_buf_str(&d->file), &p, dxf);
+    if (rc == 1) scad_diag_warning(ev->d, loc, "Can't open DXF file '%s'!", scad_buf_str(&d->raw));
+    return rc != 0;
 }
 
 static double atan2_degrees(double y, double x)
@@ -152,7 +190,7 @@ static scad_value f_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, con
     (void)fname;
     dxf_args d;
     read_args(ev, a, loc, "dxf_dim", 1, &d);
-    scad_dxf dxf;
+    geom_dxf dxf;
     scad_value r = scad_undef();
     if (read_for(ev, loc, &d, &dxf)) {
         free_args(&d);
@@ -161,7 +199,7 @@ static scad_value f_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, con
     const char *want = scad_buf_str(&d.name);
     int found = 0;
     for (int i = 0; i < dxf.ndims && !found; i++) {
-        const scad_dxf_dim *m = &dxf.dims[i];
+        const geom_dxf_dim *m = &dxf.dims[i];
         if (want[0] && strcmp(m->name, want)) continue;
         found = 1;
         const double(*c)[2] = m->coords;
@@ -197,7 +235,7 @@ static scad_value f_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, con
     if (!found)
         scad_diag_warning(ev->d, loc, "Can't find dimension '%s' in '%s', layer '%s'!", want,
                           scad_buf_str(&d.raw), scad_buf_str(&d.layer));
-    scad_dxf_free(&dxf);
+    geom_dxf_free(&dxf);
     free_args(&d);
     return r;
 }
@@ -207,7 +245,7 @@ static scad_value f_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, c
     (void)fname;
     dxf_args d;
     read_args(ev, a, loc, "dxf_cross", 0, &d);
-    scad_dxf dxf;
+    geom_dxf dxf;
     scad_value r = scad_undef();
     if (read_for(ev, loc, &d, &dxf)) {
         free_args(&d);
@@ -240,7 +278,7 @@ static scad_value f_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, c
     if (!found)
         scad_diag_warning(ev->d, loc, "Can't find cross in '%s', layer '%s'!", scad_buf_str(&d.raw),
                           scad_buf_str(&d.layer));
-    scad_dxf_free(&dxf);
+    geom_dxf_free(&dxf);
     free_args(&d);
     return r;
 }
@@ -252,18 +290,24 @@ scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,
 {
     scad_eval *ev = c->ev;
     const scad_stmt *st = c->st;
-    scad_dxf_params p = {layer, origin[0], origin[1], scale, f.fn, f.fa, f.fs};
-    sink s = {ev, st->loc};
-    scad_dxf dxf;
-    int rc = scad_dxf_read(path, &p, on_message, &s, &dxf);
-    if (rc != 0) {
-        scad_eval_error(ev, st->loc, "out of memory");
+    geom_dxf_params p = {layer, origin[0], origin[1], scale, f.fn, f.fa, f.fs};
+    geom_dxf dxf;
+    int rc = read_dxf(ev, st->loc, path, &p, &dxf);
+    if (rc == 1) {
+        char abs[4200];
+        const char *rel;
+        names(path, abs, sizeof abs, &rel);
+        scad_buf b = {0};
+        scad_buf_printf(&b, "WARNING: Can't open DXF file '%s'.", abs);
+        scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, scad_buf_str(&b));
+        scad_buf_free(&b);
         return NULL;
     }
+    if (rc != 0) return NULL;
     double(*pts)[2];
     int *start, n;
     scad_geom *g = NULL;
-    if (scad_dxf_outlines(&dxf, &pts, &start, &n) != 0) {
+    if (geom_dxf_outlines(&dxf, &pts, &start, &n) != 0) {
         scad_eval_error(ev, st->loc, "out of memory");
     } else if (n > 0) {
         iv_region *reg = iv_region_new((const double(*)[2])pts, start, n);
@@ -278,7 +322,7 @@ scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,
     }
     free(pts);
     free(start);
-    scad_dxf_free(&dxf);
+    geom_dxf_free(&dxf);
     return g;
 }
 

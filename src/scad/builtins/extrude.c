@@ -194,7 +194,7 @@ typedef struct linear_args {
 static void linear_read(scad_call *c, void *out)
 {
     linear_args *p = out;
-    scad_file_read(c, LX_FILE, LX_LAYER, LX_ORIGIN, -1, -1, "linear_extrude", &p->file);
+    scad_file_arg_read(c, LX_FILE, LX_LAYER, LX_ORIGIN, -1, -1, "linear_extrude", &p->file);
     p->height = 100;
     /* OpenSCAD takes a first unnamed number for the height when none is
      * named; bound by position, it went to file */
@@ -230,7 +230,7 @@ static int linear_print(scad_call *c, const void *args, scad_buf *b)
     scad_buf_puts(b, "linear_extrude(");
     if (p->file.name) {
         long long mtime;
-        scad_file_print(c, &p->file, b, &mtime);
+        scad_file_arg_print(c, &p->file, b, &mtime);
         scad_buf_printf(b, ", timestamp = %lld, ", mtime);
         children = 0;
     }
@@ -403,7 +403,7 @@ typedef struct rotate_args {
 static void rotate_read(scad_call *c, void *out)
 {
     rotate_args *p = out;
-    scad_file_read(c, RX_FILE, RX_LAYER, RX_ORIGIN, -1, -1, NULL, &p->file);
+    scad_file_arg_read(c, RX_FILE, RX_LAYER, RX_ORIGIN, -1, -1, NULL, &p->file);
     p->scale = 1;
     scad_arg_num(c->arg[RX_SCALE], &p->scale);
     p->angle = 360;
@@ -421,7 +421,7 @@ static int rotate_print(scad_call *c, const void *args, scad_buf *b)
     scad_buf_puts(b, "rotate_extrude(");
     if (p->file.name) {
         long long mtime;
-        scad_file_print(c, &p->file, b, &mtime);
+        scad_file_arg_print(c, &p->file, b, &mtime);
         scad_buf_puts(b, ", scale = ");
         scad_print_g(b, p->scale);
         scad_buf_printf(b, ", timestamp = %lld, ", mtime);

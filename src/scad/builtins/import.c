@@ -23,7 +23,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 /* The extension of path, lower-cased, into ext (at most n bytes). */
 static void extension(const char *path, char *ext, size_t n)
@@ -35,18 +34,6 @@ static void extension(const char *path, char *ext, size_t n)
     for (dot++; *dot && i + 1 < n; dot++)
         ext[i++] = (char)tolower((unsigned char)*dot);
     ext[i] = 0;
-}
-
-/* 1 when path is a regular file that can be opened for reading (a device
- * such as /dev/zero would never end). */
-static int readable(const char *path)
-{
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0;
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return 0;
-    fclose(fp);
-    return 1;
 }
 
 /* ---- import ------------------------------------------------------------------- */
@@ -77,8 +64,8 @@ static void import_read(scad_call *c, void *out)
 {
     import_args *p = out;
     /* sic: 2021.01's import() names linear_extrude in its origin warning */
-    scad_file_read(c, IM_FILE, IM_LAYER, IM_ORIGIN, IM_FILENAME, IM_LAYERNAME, "linear_extrude",
-                   &p->file);
+    scad_file_arg_read(c, IM_FILE, IM_LAYER, IM_ORIGIN, IM_FILENAME, IM_LAYERNAME, "linear_extrude",
+                       &p->file);
     p->scale = 1;
     scad_arg_num(c->arg[IM_SCALE], &p->scale);
     if (p->scale <= 0) p->scale = 1;
@@ -93,7 +80,7 @@ static int import_print(scad_call *c, const void *args, scad_buf *b)
     long long mtime = 0;
     scad_buf_puts(b, "import(");
     if (p->file.name)
-        scad_file_print(c, &p->file, b, &mtime);
+        scad_file_arg_print(c, &p->file, b, &mtime);
     else
         scad_buf_puts(b, "file = \"\", layer = \"\", origin = [0, 0]");
     scad_buf_puts(b, ", scale = ");
@@ -156,7 +143,7 @@ static scad_geom *import_build(scad_call *c, const void *args)
     scad_geom *g = NULL;
     if (path.oom) {
         scad_eval_error(ev, st->loc, "out of memory");
-    } else if (!readable(scad_buf_str(&path))) {
+    } else if (!scad_file_stat(ev->d->opt, scad_buf_str(&path), NULL)) {
         scad_diag_warning(ev->d, st->loc, "Can't open import file '%s'", scad_buf_str(&path));
     } else if (ev->services->read_mesh(ev->services->ud, scad_buf_str(&path), &v, &nv, &t, &nt, err,
                                        sizeof err) != 0) {
@@ -206,6 +193,9 @@ static scad_geom *import_build(scad_call *c, const void *args)
 
 /* ---- surface ------------------------------------------------------------------- */
 
+/* A heightmap file is at most this long. */
+#define MAX_HEIGHTMAP_BYTES ((size_t)1 << 28)
+
 /* A heightmap: w × h values, row 0 at y = 0; base is the bottom's height,
  * OpenSCAD 2021.01's min(0, lowest - 1) for both kinds of file. */
 typedef struct heightmap {
@@ -219,20 +209,31 @@ typedef struct heightmap {
  * token that is not a number ends the file with a warning, keeping what was
  * read before it, as there.  Returns 0, 1 with a warning sent, or -1 (out
  * of memory). */
-static int read_dat(scad_eval *ev, const scad_stmt *st, const char *path, heightmap *m)
+static int read_dat(scad_eval *ev, const scad_stmt *st, const char *path, const char *text,
+                    size_t textlen, heightmap *m)
 {
-    FILE *fp = fopen(path, "r");
-    if (!fp) {
-        scad_diag_warning(ev->d, st->loc, "The file '%s' couldn't be opened.", path);
-        return 1;
-    }
     double *val = NULL; /* row-major as read, rows of `cap_w` */
     int *len = NULL, rows = 0, caprows = 0, cols = 0, rc = 0, bad = 0;
     double lowest = INFINITY;
     size_t capval = 0, nval = 0;
+    const char *at = text, *stop = text + textlen;
     char *line = NULL;
     size_t linecap = 0;
-    while (getline(&line, &linecap, fp) > 0) {
+    while (at < stop) {
+        const char *nl = memchr(at, '\n', (size_t)(stop - at));
+        size_t n_line = nl ? (size_t)(nl - at) + 1 : (size_t)(stop - at);
+        if (n_line + 1 > linecap) {
+            char *nb = realloc(line, n_line + 1);
+            if (!nb) {
+                rc = -1;
+                break;
+            }
+            line = nb;
+            linecap = n_line + 1;
+        }
+        memcpy(line, at, n_line);
+        line[n_line] = 0;
+        at += n_line;
         char *p = line;
         while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
             p++;
@@ -282,7 +283,6 @@ static int read_dat(scad_eval *ev, const scad_stmt *st, const char *path, height
         if (bad) break;
     }
     free(line);
-    fclose(fp);
     if (rc == 0 && rows > 0 && cols > 0) {
         m->z = calloc((size_t)rows * (size_t)cols, sizeof *m->z);
         if (!m->z) {
@@ -508,18 +508,21 @@ static scad_geom *surface_build(scad_call *c, const void *args)
     const char *p = scad_buf_str(&path);
     /* PNG by its signature, as OpenSCAD tells them apart; else text */
     static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    unsigned char head[8] = {0};
-    FILE *fp = readable(p) ? fopen(p, "rb") : NULL;
-    if (!fp) {
+    char err[256];
+    size_t len = 0;
+    char *text = scad_file_stat(ev->d->opt, p, NULL)
+                     ? scad_file_read(ev->d->opt, p, MAX_HEIGHTMAP_BYTES, &len, err, sizeof err)
+                     : NULL;
+    if (!text) {
         scad_diag_warning(ev->d, st->loc, "The file '%s' couldn't be opened.", p);
         scad_buf_free(&path);
         return NULL;
     }
-    size_t got = fread(head, 1, sizeof head, fp);
-    fclose(fp);
     heightmap m = {NULL, 0, 0, 0};
-    int rc = got == sizeof head && !memcmp(head, sig, sizeof sig) ? read_png(ev, st, p, invert, &m)
-                                                                  : read_dat(ev, st, p, &m);
+    int rc = len >= sizeof sig && !memcmp(text, sig, sizeof sig)
+                 ? read_png(ev, st, p, invert, &m)
+                 : read_dat(ev, st, p, text, len, &m);
+    free(text);
     scad_buf_free(&path);
     scad_geom *g = NULL;
     if (rc < 0) {

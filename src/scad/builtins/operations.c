@@ -266,7 +266,7 @@ static void color_read(scad_call *c, void *out)
         if (v.u.str->len >= sizeof name ||
             (!scad_color_by_name(name, rgba) && !scad_color_by_hex(name, rgba))) {
             scad_diag_warning(c->ev->d, c->st->loc, "Unable to parse color \"%s\"", name);
-            scad_diag_line(c->ev->d, SCAD_MSG_WARNING,
+            scad_diag_line(c->ev->d, RAYSCAD_MSG_WARNING,
                            "Please see https://en.wikipedia.org/wiki/Web_colors");
         }
     }

@@ -426,7 +426,7 @@ static void poly_read(scad_call *c, void *out)
     if (c->def->params[POLY_TRIANGLES] && p->second.kind == SV_UNDEF) {
         p->second = c->arg[POLY_TRIANGLES];
         if (p->second.kind != SV_UNDEF)
-            scad_diag_line(c->ev->d, SCAD_MSG_WARNING,
+            scad_diag_line(c->ev->d, RAYSCAD_MSG_WARNING,
                            "DEPRECATED: polyhedron(triangles=[]) will be removed in future "
                            "releases. Use polyhedron(faces=[]) instead.");
     }

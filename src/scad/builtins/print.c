@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "builtins.h"
@@ -104,8 +103,7 @@ void scad_print_path(scad_eval *ev, const char *from, const char *name, scad_buf
         if (slash) scad_buf_put(&full, from, (size_t)(slash - from + 1));
     }
     scad_buf_puts(&full, name);
-    struct stat sb;
-    *mtime = stat(scad_buf_str(&full), &sb) == 0 ? (long long)sb.st_mtime : 0;
+    scad_file_stat(ev->d->opt, scad_buf_str(&full), mtime);
     scad_buf base = {0};
     scad_buf_puts(&base, ev->d->base_dir && ev->d->base_dir[0] ? ev->d->base_dir : ".");
     char *t = absolute(scad_buf_str(&full));
@@ -144,8 +142,8 @@ void scad_file_path(scad_call *c, const char *name, scad_buf *out)
     scad_buf_puts(out, name);
 }
 
-void scad_file_read(scad_call *c, int file, int layer, int origin, int alt_file, int alt_layer,
-                    const char *who, scad_file_arg *out)
+void scad_file_arg_read(scad_call *c, int file, int layer, int origin, int alt_file, int alt_layer,
+                        const char *who, scad_file_arg *out)
 {
     scad_value f = c->arg[file];
     if (f.kind != SV_STR && alt_file >= 0) f = c->arg[alt_file];
@@ -166,7 +164,7 @@ void scad_file_read(scad_call *c, int file, int layer, int origin, int alt_file,
     }
 }
 
-void scad_file_print(scad_call *c, const scad_file_arg *f, scad_buf *b, long long *mtime)
+void scad_file_arg_print(scad_call *c, const scad_file_arg *f, scad_buf *b, long long *mtime)
 {
     scad_buf path = {0};
     scad_print_path(c->ev, c->st->loc.file ? c->st->loc.file : "", f->name, &path, mtime);

@@ -1,8 +1,10 @@
 /*
- * services.c — scad_services for the command: meshes and images through
- * src/io; for offset, projection, minkowski and text, polygon booleans,
- * offsets and Minkowski sums (Clipper, io/polygon.h), text outlines
- * (io/text.h) and the meshing of a csg tree (src/mesh).
+ * services.c — what the language needs from outside (scad_services), as the
+ * library provides it: files from the file system, meshes and images
+ * through src/io; for offset, projection, minkowski and text, polygon
+ * booleans, offsets and Minkowski sums (Clipper, io/polygon.h), text
+ * outlines (io/text.h) and the meshing of a csg tree (src/mesh).  A caller's
+ * rayscad_services replaces any of the file, mesh and image readers.
  *
  * OpenSCAD writes OFF files with the counts on the header line ("OFF 8 6
  * 0"), which OpenMesh 9.0's reader takes for something else and runs out of
@@ -13,45 +15,93 @@
 #include "services.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
-#include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "../io/io.h"
 #include "../io/polygon.h"
 #include "../io/text.h"
 #include "../mesh/mesh.h"
-#include "options.h"
 
-/* The whole file at path, malloc'ed, its length in *n; NULL on failure. */
-static char *slurp(const char *path, size_t *n)
+/* ---- files --------------------------------------------------------------------------- */
+
+/* An OFF file whose header needs fixing is read whole first: at most this. */
+#define MAX_MESH_BYTES ((size_t)1 << 30)
+
+/* 1 when path is a regular file that reads: a folder opens on Linux but
+ * does not read, and a device (/dev/zero, /dev/stdin) may never end.  The
+ * modification time comes with any file stat() can see. */
+static int stat_file(void *ud, const char *path, long long *mtime)
 {
+    (void)ud;
+    struct stat st;
+    if (stat(path, &st) != 0) return 0;
+    if (mtime) *mtime = (long long)st.st_mtime;
+    if (!S_ISREG(st.st_mode)) return 0;
     FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    size_t cap = 1 << 16, len = 0;
-    char *b = malloc(cap);
-    while (b) {
-        len += fread(b + len, 1, cap - len, f);
-        if (len < cap) break;
-        char *nb = realloc(b, cap * 2);
-        if (!nb) {
-            free(b);
-            b = NULL;
-            break;
-        }
-        b = nb;
-        cap *= 2;
-    }
-    if (b && ferror(f)) {
-        free(b);
-        b = NULL;
-    }
+    if (!f) return 0;
+    char c;
+    size_t got = fread(&c, 1, 1, f);
+    int ok = !ferror(f);
+    (void)got;
     fclose(f);
-    *n = len;
-    return b;
+    return ok;
 }
+
+static int read_file(void *ud, const char *path, size_t max, char **data, size_t *len, char *err,
+                     size_t errlen)
+{
+    (void)ud;
+    *data = NULL;
+    *len = 0;
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s", strerror(errno));
+        return -1;
+    }
+    size_t cap = 65536, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        size_t got = fread(buf + n, 1, cap - n - 1, f);
+        n += got;
+        if (got == 0) break;
+        if (n + 1 == cap) {
+            if (cap >= max) {
+                free(buf);
+                fclose(f);
+                snprintf(err, errlen, "%s", strerror(EFBIG));
+                return -1;
+            }
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+    }
+    int bad = ferror(f);
+    int saved = errno;
+    fclose(f);
+    if (!buf || bad) {
+        snprintf(err, errlen, "%s", buf ? strerror(saved) : "out of memory");
+        free(buf);
+        return -1;
+    }
+    buf[n] = 0;
+    *data = buf;
+    *len = n;
+    return 0;
+}
+
+/* ---- meshes and images ----------------------------------------------------------------- */
 
 /* Where the counts start when the first line of an OFF file holds its
  * keyword (OFF, COFF, NOFF, STOFF …) followed by numbers; 0 when the
@@ -82,7 +132,8 @@ static int read_mesh(void *ud, const char *path, float **v, int *nv, int32_t **t
     (void)ud;
     if (!has_off_extension(path)) return io_mesh_read(path, v, nv, t, nt, err, errlen);
     size_t n = 0;
-    char *b = slurp(path, &n);
+    char *b = NULL, msg[64];
+    if (read_file(NULL, path, MAX_MESH_BYTES, &b, &n, msg, sizeof msg) != 0) b = NULL;
     size_t split = b ? off_counts_on_header(b, n) : 0;
     if (!split) {
         free(b);
@@ -124,65 +175,11 @@ static int read_mesh(void *ud, const char *path, float **v, int *nv, int32_t **t
     return rc;
 }
 
-/* The width and height of a PNG file from its IHDR chunk: 0, or -1 when
- * path is not a readable PNG. */
-static int png_size(const char *path, unsigned long *w, unsigned long *h)
-{
-    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    unsigned char b[24];
-    FILE *f = fopen(path, "rb");
-    if (!f) return -1;
-    size_t n = fread(b, 1, sizeof b, f);
-    fclose(f);
-    if (n != sizeof b || memcmp(b, sig, 8) || memcmp(b + 12, "IHDR", 4)) return -1;
-    *w = (unsigned long)b[16] << 24 | (unsigned long)b[17] << 16 | (unsigned long)b[18] << 8 | b[19];
-    *h = (unsigned long)b[20] << 24 | (unsigned long)b[21] << 16 | (unsigned long)b[22] << 8 | b[23];
-    return 0;
-}
-
-/* The process's data memory as RLIMIT_DATA counts it (VmData), in bytes;
- * 0 when unknown. */
-static unsigned long long data_in_use(void)
-{
-    FILE *f = fopen("/proc/self/status", "r");
-    if (!f) return 0;
-    char line[256];
-    unsigned long long kb = 0;
-    while (fgets(line, sizeof line, f))
-        if (sscanf(line, "VmData: %llu kB", &kb) == 1) break;
-    fclose(f);
-    return kb * 1024;
-}
-
-/* surface() runs while --max-memory applies, and OpenImageIO does not
- * survive that: its libraries' initialisers, and the first read (its
- * plugin catalogue and thread pool: about 100 MB of VmData), throw where
- * they cannot unwind or dereference null below about 150 MiB.  So the
- * adapter is loaded with the limit lifted (cli_load_image_adapter), and a
- * PNG is read with it lifted too, but only when its pixels fit under the
- * limit beside what the process holds: twice the image as 4 floats a
- * pixel (ours and OpenImageIO's scanlines), else out of memory.  Other
- * files are read under the limit. */
 static int read_image(void *ud, const char *path, int *width, int *height, int *channels,
                       float **pixels, char *err, size_t errlen)
 {
     (void)ud;
-    cli_load_image_adapter();
-    unsigned long w, h;
-    struct rlimit was;
-    if (png_size(path, &w, &h) != 0 || getrlimit(RLIMIT_DATA, &was) != 0 ||
-        was.rlim_cur == was.rlim_max)
-        return io_image_read(path, width, height, channels, pixels, err, errlen);
-    unsigned long long need = 2ULL * w * h * 4 * sizeof(float), used = data_in_use();
-    if (!used || need > (unsigned long long)was.rlim_cur - used || used > was.rlim_cur) {
-        snprintf(err, errlen, "%s: out of memory for a %lux%lu image", path, w, h);
-        *pixels = NULL;
-        return -1;
-    }
-    int lifted = cli_data_limit_lift(&was);
-    int rc = io_image_read(path, width, height, channels, pixels, err, errlen);
-    cli_data_limit_restore(lifted, &was);
-    return rc;
+    return io_image_read(path, width, height, channels, pixels, err, errlen);
 }
 
 /* ---- 2D geometry: offset, projection, minkowski, text --------------------------
@@ -293,16 +290,61 @@ static int text_outlines(void *ud, const scad_text_params *p, scad_paths *out, c
     return 0;
 }
 
-const scad_services *cli_services(void)
+/* ---- the caller's services over the defaults ------------------------------------------ */
+
+/* ud is the caller's rayscad_services (or NULL): each member it sets
+ * replaces the library's. */
+static int read_file_via(void *ud, const char *path, size_t max, char **data, size_t *len,
+                         char *err, size_t errlen)
 {
-    static const scad_services s = {
-        .read_mesh = read_mesh,
-        .read_image = read_image,
+    const rayscad_services *p = ud;
+    if (p && p->read_file) return p->read_file(p->ud, path, max, data, len, err, errlen);
+    return read_file(NULL, path, max, data, len, err, errlen);
+}
+
+static int stat_file_via(void *ud, const char *path, long long *mtime)
+{
+    const rayscad_services *p = ud;
+    if (p && p->stat_file) return p->stat_file(p->ud, path, mtime);
+    return stat_file(NULL, path, mtime);
+}
+
+static int read_mesh_via(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
+                         char *err, size_t errlen)
+{
+    const rayscad_services *p = ud;
+    if (p && p->read_mesh) return p->read_mesh(p->ud, path, v, nv, t, nt, err, errlen);
+    return read_mesh(NULL, path, v, nv, t, nt, err, errlen);
+}
+
+static int read_image_via(void *ud, const char *path, int *width, int *height, int *channels,
+                          float **pixels, char *err, size_t errlen)
+{
+    const rayscad_services *p = ud;
+    if (p && p->read_image)
+        return p->read_image(p->ud, path, width, height, channels, pixels, err, errlen);
+    return read_image(NULL, path, width, height, channels, pixels, err, errlen);
+}
+
+void rayscad_scad_services(const rayscad_services *caller, scad_services *out)
+{
+    scad_services s = {
+        .ud = (void *)(uintptr_t)caller,
+        .read_file = read_file_via,
+        .stat_file = stat_file_via,
+        .read_mesh = read_mesh_via,
+        .read_image = read_image_via,
         .paths_clip = clip_paths,
         .paths_offset = offset_paths,
         .paths_minkowski = minkowski_paths,
         .mesh_tree = mesh_tree,
         .text = text_outlines,
     };
-    return &s;
+    *out = s;
+}
+
+int rayscad_default_read_file(const char *path, size_t max, char **data, size_t *len, char *err,
+                              size_t errlen)
+{
+    return read_file(NULL, path, max, data, len, err, errlen);
 }

@@ -20,7 +20,7 @@
  * an end no other live segment shares — then closed paths, following at
  * each end the first live segment of the cell whose end is grid-equal.
  *
- * Bounds: at most SCAD_DXF_MAX_SEGMENTS segments (the rest is dropped with
+ * Bounds: at most GEOM_DXF_MAX_SEGMENTS segments (the rest is dropped with
  * a note), coordinates beyond ±1e12 or not finite drop their segment (the
  * grid index must fit 64 bits), angles that are not finite build nothing,
  * and the joining's cell visits are capped (WORK_MAX), so a hostile file
@@ -28,6 +28,9 @@
  * left out: the region is even-odd, and no caller reads the direction.
  */
 #include "dxf.h"
+#include "dxf_grid.h"
+#include "../intervals/angles.h"
+#include "fragments.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -37,229 +40,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-#define GRID 0.001          /* OpenSCAD's GRID_COARSE */
-#define GRID_FINE 1e-6      /* radius below it: 3 fragments */
 #define COORD_MAX 1e12      /* |coordinate| / GRID must stay far inside int64 */
 #define WORK_MAX 400000000L /* cell entries visited while joining */
-
-/* ---- growable arrays ----------------------------------------------------- */
-
-typedef struct dvec {
-    double *v;
-    size_t n, cap;
-} dvec;
-
-static int grow(void **p, size_t *cap, size_t need, size_t elem)
-{
-    if (need <= *cap) return 0;
-    size_t c = *cap ? *cap : 16;
-    while (c < need) {
-        if (c > SIZE_MAX / 2 / elem) return -1;
-        c *= 2;
-    }
-    void *q = realloc(*p, c * elem);
-    if (!q) return -1;
-    *p = q;
-    *cap = c;
-    return 0;
-}
-
-static int dvec_push(dvec *a, double x)
-{
-    if (grow((void **)&a->v, &a->cap, a->n + 1, sizeof *a->v)) return -1;
-    a->v[a->n++] = x;
-    return 0;
-}
-
-/* ---- the grid ------------------------------------------------------------ */
-
-typedef struct cell {
-    int64_t ix, iy;
-    int head, tail; /* entries, in the order added; -1 when none */
-} cell;
-
-typedef struct entry {
-    int line, next;
-} entry;
-
-typedef struct grid {
-    cell *cells;
-    size_t ncells, capcells;
-    int *slots; /* open addressing: cell index + 1, 0 free */
-    size_t nslots;
-    entry *ents;
-    size_t nents, capents;
-} grid;
-
-static size_t hash2(int64_t x, int64_t y)
-{
-    uint64_t h = (uint64_t)x * 0x9E3779B97F4A7C15ull ^ ((uint64_t)y + 0x632BE59BD9B4E019ull);
-    h ^= h >> 31;
-    h *= 0xBF58476D1CE4E5B9ull;
-    h ^= h >> 29;
-    return (size_t)h;
-}
-
-static long grid_find(const grid *g, int64_t ix, int64_t iy)
-{
-    if (!g->nslots) return -1;
-    for (size_t s = hash2(ix, iy) & (g->nslots - 1);; s = (s + 1) & (g->nslots - 1)) {
-        int c = g->slots[s];
-        if (!c) return -1;
-        if (g->cells[c - 1].ix == ix && g->cells[c - 1].iy == iy) return c - 1;
-    }
-}
-
-/* The cell at (ix, iy), made when missing; -1 when out of memory. */
-static long grid_get(grid *g, int64_t ix, int64_t iy)
-{
-    long c = grid_find(g, ix, iy);
-    if (c >= 0) return c;
-    if (g->ncells >= INT_MAX - 1) return -1;
-    if (2 * (g->ncells + 1) > g->nslots) {
-        size_t n = g->nslots ? 2 * g->nslots : 1024;
-        int *s = calloc(n, sizeof *s);
-        if (!s) return -1;
-        for (size_t i = 0; i < g->ncells; i++) {
-            size_t k = hash2(g->cells[i].ix, g->cells[i].iy) & (n - 1);
-            while (s[k])
-                k = (k + 1) & (n - 1);
-            s[k] = (int)i + 1;
-        }
-        free(g->slots);
-        g->slots = s;
-        g->nslots = n;
-    }
-    if (grow((void **)&g->cells, &g->capcells, g->ncells + 1, sizeof *g->cells)) return -1;
-    size_t k = hash2(ix, iy) & (g->nslots - 1);
-    while (g->slots[k])
-        k = (k + 1) & (g->nslots - 1);
-    g->slots[k] = (int)g->ncells + 1;
-    g->cells[g->ncells] = (cell){ix, iy, -1, -1};
-    return (long)g->ncells++;
-}
-
-/* Grid2d::align: (x, y) moved onto its grid point, or onto an existing
- * neighbour's (the nearest in steps; the loop bounds follow the moving
- * ix, iy as OpenSCAD's do).  Returns the cell, -1 when out of memory. */
-static long grid_align(grid *g, double *x, double *y)
-{
-    int64_t ix = (int64_t)round(*x / GRID), iy = (int64_t)round(*y / GRID);
-    if (grid_find(g, ix, iy) < 0) {
-        int dist = 10;
-        for (int64_t jx = ix - 1; jx <= ix + 1; jx++)
-            for (int64_t jy = iy - 1; jy <= iy + 1; jy++) {
-                if (grid_find(g, jx, jy) < 0) continue;
-                int d = (int)(llabs(ix - jx) + llabs(iy - jy));
-                if (d < dist) {
-                    dist = d;
-                    ix = jx;
-                    iy = jy;
-                }
-            }
-    }
-    *x = (double)ix * GRID;
-    *y = (double)iy * GRID;
-    return grid_get(g, ix, iy);
-}
-
-static int grid_add(grid *g, long c, int line)
-{
-    if (grow((void **)&g->ents, &g->capents, g->nents + 1, sizeof *g->ents)) return -1;
-    g->ents[g->nents] = (entry){line, -1};
-    cell *p = &g->cells[c];
-    if (p->tail >= 0)
-        g->ents[p->tail].next = (int)g->nents;
-    else
-        p->head = (int)g->nents;
-    p->tail = (int)g->nents++;
-    return 0;
-}
-
-static void grid_free(grid *g)
-{
-    free(g->cells);
-    free(g->slots);
-    free(g->ents);
-}
-
-/* ---- blocks -------------------------------------------------------------- */
-
-typedef struct block {
-    char *name;
-    double (*seg)[4];
-    size_t n, cap;
-} block;
-
-typedef struct blocks {
-    block *b;
-    size_t n, cap;
-    int *slots;
-    size_t nslots;
-} blocks;
-
-static size_t hash_str(const char *s)
-{
-    uint64_t h = 1469598103934665603ull;
-    for (; *s; s++)
-        h = (h ^ (unsigned char)*s) * 1099511628211ull;
-    return (size_t)h;
-}
-
-/* The block called name, made when missing (make); NULL when absent or out
- * of memory (*oom says which). */
-static block *block_get(blocks *t, const char *name, int make, int *oom)
-{
-    if (t->nslots)
-        for (size_t s = hash_str(name) & (t->nslots - 1);; s = (s + 1) & (t->nslots - 1)) {
-            int k = t->slots[s];
-            if (!k) break;
-            if (!strcmp(t->b[k - 1].name, name)) return &t->b[k - 1];
-        }
-    if (!make) return NULL;
-    *oom = 1;
-    if (t->n >= INT_MAX - 1) return NULL;
-    if (2 * (t->n + 1) > t->nslots) {
-        size_t n = t->nslots ? 2 * t->nslots : 64;
-        int *s = calloc(n, sizeof *s);
-        if (!s) return NULL;
-        for (size_t i = 0; i < t->n; i++) {
-            size_t k = hash_str(t->b[i].name) & (n - 1);
-            while (s[k])
-                k = (k + 1) & (n - 1);
-            s[k] = (int)i + 1;
-        }
-        free(t->slots);
-        t->slots = s;
-        t->nslots = n;
-    }
-    if (grow((void **)&t->b, &t->cap, t->n + 1, sizeof *t->b)) return NULL;
-    char *copy = strdup(name);
-    if (!copy) return NULL;
-    size_t k = hash_str(name) & (t->nslots - 1);
-    while (t->slots[k])
-        k = (k + 1) & (t->nslots - 1);
-    t->slots[k] = (int)t->n + 1;
-    t->b[t->n] = (block){copy, NULL, 0, 0};
-    *oom = 0;
-    return &t->b[t->n++];
-}
-
-static void blocks_free(blocks *t)
-{
-    for (size_t i = 0; i < t->n; i++) {
-        free(t->b[i].name);
-        free(t->b[i].seg);
-    }
-    free(t->b);
-    free(t->slots);
-}
 
 /* ---- the reader's state -------------------------------------------------- */
 
@@ -274,11 +57,11 @@ typedef struct counted {
 } counted;
 
 typedef struct reader {
-    const scad_dxf_params *prm;
-    scad_dxf_message_fn msg;
+    const geom_dxf_params *prm;
+    geom_dxf_message_fn msg;
     void *ud;
     const char *abs_path, *rel_path; /* as OpenSCAD names the file */
-    scad_dxf *out;
+    geom_dxf *out;
     size_t cappts, capidx, cappaths, capdims;
     grid g;
     line *lines;
@@ -300,9 +83,8 @@ typedef struct reader {
 
 enum { OK = 0, SHORT = 1, BAD_VALUE = 2, NOMEM = -1 };
 
-static void say(reader *r, scad_msg_kind kind, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static void say(reader *r, scad_msg_kind kind, const char *fmt, ...)
+static void say(reader *r, int kind, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+static void say(reader *r, int kind, const char *fmt, ...)
 {
     if (!r->msg) return;
     char text[4096];
@@ -330,8 +112,8 @@ static int layer_ok(const reader *r)
 
 static int add_point(reader *r, double x, double y)
 {
-    scad_dxf *d = r->out;
-    if (grow((void **)&d->pts, &r->cappts, (size_t)d->npts + 1, sizeof *d->pts)) return -1;
+    geom_dxf *d = r->out;
+    if (geom_dxf_grow((void **)&d->pts, &r->cappts, (size_t)d->npts + 1, sizeof *d->pts)) return -1;
     d->pts[d->npts][0] = x;
     d->pts[d->npts][1] = y;
     return d->npts++;
@@ -353,27 +135,30 @@ static int add_line(reader *r, double x1, double y1, double x2, double y2)
         r->dropped++;
         return OK;
     }
-    if (r->segments >= SCAD_DXF_MAX_SEGMENTS) {
+    if (r->segments >= GEOM_DXF_MAX_SEGMENTS) {
         r->capped = 1;
         return OK;
     }
     r->segments++;
-    long c1 = grid_align(&r->g, &x1, &y1);
+    long c1 = geom_dxf_grid_align(&r->g, &x1, &y1);
     if (c1 < 0) return NOMEM;
-    long c2 = grid_align(&r->g, &x2, &y2);
+    long c2 = geom_dxf_grid_align(&r->g, &x2, &y2);
     if (c2 < 0) return NOMEM;
-    if (grid_add(&r->g, c1, (int)r->nlines) || grid_add(&r->g, c2, (int)r->nlines)) return NOMEM;
+    if (geom_dxf_grid_add(&r->g, c1, (int)r->nlines) ||
+        geom_dxf_grid_add(&r->g, c2, (int)r->nlines))
+        return NOMEM;
     if (r->in_entities) {
-        if (grow((void **)&r->lines, &r->caplines, r->nlines + 1, sizeof *r->lines)) return NOMEM;
+        if (geom_dxf_grow((void **)&r->lines, &r->caplines, r->nlines + 1, sizeof *r->lines))
+            return NOMEM;
         int a = add_point(r, x1, y1), b = add_point(r, x2, y2);
         if (a < 0 || b < 0) return NOMEM;
         r->lines[r->nlines++] = (line){{a, b}, 0};
     }
     if (r->in_blocks && r->current_block) {
         int oom = 0;
-        block *b = block_get(&r->blk, r->current_block, 1, &oom);
+        block *b = geom_dxf_block_get(&r->blk, r->current_block, 1, &oom);
         if (!b) return NOMEM;
-        if (grow((void **)&b->seg, &b->cap, b->n + 1, sizeof *b->seg)) return NOMEM;
+        if (geom_dxf_grow((void **)&b->seg, &b->cap, b->n + 1, sizeof *b->seg)) return NOMEM;
         b->seg[b->n][0] = x1;
         b->seg[b->n][1] = y1;
         b->seg[b->n][2] = x2;
@@ -383,15 +168,9 @@ static int add_line(reader *r, double x1, double y1, double x2, double y2)
     return OK;
 }
 
-/* Calc::get_fragments_from_r of OpenSCAD 2021.01 ($fa and $fs below 0.01
- * raised to it, the count capped at 100000, as builtin_geometry.c does). */
-static int fragments(double r, const scad_dxf_params *p)
+static int fragments(double r, const geom_dxf_params *p)
 {
-    if (r < GRID_FINE || isinf(p->fn) || isnan(p->fn)) return 3;
-    if (p->fn > 0) return p->fn >= 3 ? (p->fn > 100000 ? 100000 : (int)p->fn) : 3;
-    double fa = p->fa < 0.01 ? 0.01 : p->fa, fs = p->fs < 0.01 ? 0.01 : p->fs;
-    double n = ceil(fmax(fmin(360.0 / fa, r * 2 * M_PI / fs), 5));
-    return n > 100000 ? 100000 : (int)n;
+    return geom_fragments(r, p->fn, p->fa, p->fs);
 }
 
 /* The segment count of an arc of n fragments per turn over sweep / turn,
@@ -400,7 +179,7 @@ static long arc_count(reader *r, int n, double sweep, double turn)
 {
     double c = ceil(n * sweep / turn);
     if (!(c > 0)) return 0;
-    double left = (double)(SCAD_DXF_MAX_SEGMENTS - r->segments) + 1;
+    double left = (double)(GEOM_DXF_MAX_SEGMENTS - r->segments) + 1;
     if (c > left) {
         r->capped = 1;
         c = left;
@@ -425,15 +204,6 @@ static double unwind(double start, double stop, double turn)
         int rc_ = (e);                                                                             \
         if (rc_) return rc_;                                                                       \
     } while (0)
-
-static double cos_deg(double a)
-{
-    return iv_cos_degrees(a);
-}
-static double sin_deg(double a)
-{
-    return iv_sin_degrees(a);
-}
 
 /* The entity in r->mode, finished by a code 0.  SHORT: it lacks a point
  * (OpenSCAD's out_of_range; segments added before stay). */
@@ -463,8 +233,8 @@ static int finish_entity(reader *r)
         double cx = X(0), cy = Y(0), rad = r->radius;
         for (int i = 0; i < n; i++) {
             double a1 = (360.0 * i) / n, a2 = (360.0 * (i + 1)) / n;
-            TRY(add_line(r, cos_deg(a1) * rad + cx, sin_deg(a1) * rad + cy, cos_deg(a2) * rad + cx,
-                         sin_deg(a2) * rad + cy));
+            TRY(add_line(r, iv_cos_degrees(a1) * rad + cx, iv_sin_degrees(a1) * rad + cy,
+                         iv_cos_degrees(a2) * rad + cx, iv_sin_degrees(a2) * rad + cy));
         }
     } else if (!strcmp(m, "ARC")) {
         if (!HAVE(0)) return SHORT;
@@ -477,12 +247,12 @@ static int finish_entity(reader *r)
         for (long i = 0; i < n; i++) {
             double a1 = r->arc_start + angle * (double)i / (double)n;
             double a2 = r->arc_start + angle * (double)(i + 1) / (double)n;
-            TRY(add_line(r, cos_deg(a1) * rad + cx, sin_deg(a1) * rad + cy, cos_deg(a2) * rad + cx,
-                         sin_deg(a2) * rad + cy));
+            TRY(add_line(r, iv_cos_degrees(a1) * rad + cx, iv_sin_degrees(a1) * rad + cy,
+                         iv_cos_degrees(a2) * rad + cx, iv_sin_degrees(a2) * rad + cy));
         }
     } else if (!strcmp(m, "ELLIPSE")) {
         if (!isfinite(r->ell_start) || !isfinite(r->ell_stop)) return HAVE(1) ? OK : SHORT;
-        double stop = unwind(r->ell_start, r->ell_stop, 2 * M_PI);
+        double stop = unwind(r->ell_start, r->ell_stop, 2 * IV_PI);
         if (!HAVE(1)) return SHORT;
         double cx = X(0), cy = Y(0), ex = X(1), ey = Y(1);
         double r_major = sqrt(ex * ex + ey * ey);
@@ -490,11 +260,11 @@ static int finish_entity(reader *r)
         if (cosval > 1.0) cosval = 1.0;
         if (cosval < -1.0) cosval = -1.0;
         double rot = acos(cosval);
-        if (ey < 0.0) rot = 2 * M_PI - rot;
+        if (ey < 0.0) rot = 2 * IV_PI - rot;
         /* the ratio was read into radius, and scaled with it (as there) */
         double r_minor = r_major * r->radius;
         double sweep = stop - r->ell_start;
-        long n = arc_count(r, fragments(r_major, r->prm), sweep, 2 * M_PI);
+        long n = arc_count(r, fragments(r_major, r->prm), sweep, 2 * IV_PI);
         double px = 0, py = 0;
         for (long i = 0; i <= n; i++) {
             double a = r->ell_start + sweep * (double)i / (double)n;
@@ -509,7 +279,7 @@ static int finish_entity(reader *r)
         /* the scales were read into the ellipse slots, the rotation into
          * the arc's start angle */
         int oom = 0;
-        block *b = block_get(&r->blk, r->iddata ? r->iddata : "", 0, &oom);
+        block *b = geom_dxf_block_get(&r->blk, r->iddata ? r->iddata : "", 0, &oom);
         size_t n = b ? b->n : 0;
         size_t bi = b ? (size_t)(b - r->blk.b) : 0;
         for (size_t i = 0; i < n; i++) {
@@ -519,17 +289,17 @@ static int finish_entity(reader *r)
             double lx1 = s[0] * r->ell_start, ly1 = s[1] * r->ell_stop;
             double lx2 = s[2] * r->ell_start, ly2 = s[3] * r->ell_stop;
             double sc = r->prm->scale;
-            double px1 = (cos_deg(a) * lx1 - sin_deg(a) * ly1) * sc + X(0);
-            double py1 = (sin_deg(a) * lx1 + cos_deg(a) * ly1) * sc + Y(0);
-            double px2 = (cos_deg(a) * lx2 - sin_deg(a) * ly2) * sc + X(0);
-            double py2 = (sin_deg(a) * lx2 + cos_deg(a) * ly2) * sc + Y(0);
+            double px1 = (iv_cos_degrees(a) * lx1 - iv_sin_degrees(a) * ly1) * sc + X(0);
+            double py1 = (iv_sin_degrees(a) * lx1 + iv_cos_degrees(a) * ly1) * sc + Y(0);
+            double px2 = (iv_cos_degrees(a) * lx2 - iv_sin_degrees(a) * ly2) * sc + X(0);
+            double py2 = (iv_sin_degrees(a) * lx2 + iv_cos_degrees(a) * ly2) * sc + Y(0);
             TRY(add_line(r, px1, py1, px2, py2));
         }
     } else if (!strcmp(m, "DIMENSION") && layer_ok(r)) {
-        scad_dxf *d = r->out;
-        if (grow((void **)&d->dims, &r->capdims, (size_t)d->ndims + 1, sizeof *d->dims))
+        geom_dxf *d = r->out;
+        if (geom_dxf_grow((void **)&d->dims, &r->capdims, (size_t)d->ndims + 1, sizeof *d->dims))
             return NOMEM;
-        scad_dxf_dim *dm = &d->dims[d->ndims];
+        geom_dxf_dim *dm = &d->dims[d->ndims];
         memset(dm, 0, sizeof *dm);
         dm->type = r->dimtype;
         memcpy(dm->coords, r->coords, sizeof dm->coords);
@@ -549,7 +319,8 @@ static int finish_entity(reader *r)
         while (i < r->nunsupported && strcmp(r->unsupported[i].name, m))
             i++;
         if (i == r->nunsupported) {
-            if (grow((void **)&r->unsupported, &r->capunsupported, i + 1, sizeof *r->unsupported))
+            if (geom_dxf_grow((void **)&r->unsupported, &r->capunsupported, i + 1,
+                              sizeof *r->unsupported))
                 return NOMEM;
             r->unsupported[i].name = strdup(m);
             if (!r->unsupported[i].name) return NOMEM;
@@ -603,7 +374,7 @@ static int parse_double(const char *s, double *out)
 /* One (code, value) pair. */
 static int group(reader *r, int id, const char *data)
 {
-    const scad_dxf_params *p = r->prm;
+    const geom_dxf_params *p = r->prm;
     double v;
     if (id >= 10 && id <= 16) {
         if (!parse_double(data, &v)) return BAD_VALUE;
@@ -637,7 +408,7 @@ static int group(reader *r, int id, const char *data)
     case 21:
         if (!parse_double(data, &v)) return BAD_VALUE;
         if (!r->in_blocks) v = (v - (id < 20 ? p->xorigin : p->yorigin)) * p->scale;
-        return dvec_push(id < 20 ? &r->xv : &r->yv, v) ? NOMEM : OK;
+        return geom_dxf_dvec_push(id < 20 ? &r->xv : &r->yv, v) ? NOMEM : OK;
     case 40:
         if (!parse_double(data, &v)) return BAD_VALUE;
         r->radius = r->in_blocks ? v : v * p->scale;
@@ -672,8 +443,9 @@ static char *trim(char *s)
 
 static int path_begin(reader *r, int closed)
 {
-    scad_dxf *d = r->out;
-    if (grow((void **)&d->path_start, &r->cappaths, (size_t)d->npaths + 2, sizeof *d->path_start))
+    geom_dxf *d = r->out;
+    if (geom_dxf_grow((void **)&d->path_start, &r->cappaths, (size_t)d->npaths + 2,
+                      sizeof *d->path_start))
         return -1;
     unsigned char *c = realloc(d->closed, (size_t)d->npaths + 1);
     if (!c) return -1;
@@ -686,9 +458,10 @@ static int path_begin(reader *r, int closed)
 
 static int path_add(reader *r, int point)
 {
-    scad_dxf *d = r->out;
+    geom_dxf *d = r->out;
     size_t n = (size_t)d->path_start[d->npaths];
-    if (n >= INT_MAX - 1 || grow((void **)&d->idx, &r->capidx, n + 1, sizeof *d->idx)) return -1;
+    if (n >= INT_MAX - 1 || geom_dxf_grow((void **)&d->idx, &r->capidx, n + 1, sizeof *d->idx))
+        return -1;
     d->idx[n] = point;
     d->path_start[d->npaths]++;
     return 0;
@@ -704,7 +477,7 @@ static int dead(const reader *r, int k)
 static long cell_of(reader *r, int pt)
 {
     double x = r->out->pts[pt][0], y = r->out->pts[pt][1];
-    long c = grid_align(&r->g, &x, &y);
+    long c = geom_dxf_grid_align(&r->g, &x, &y);
     if (c < 0) return -1;
     cell *p = &r->g.cells[c];
     while (p->head >= 0 && dead(r, r->g.ents[p->head].line))
@@ -782,7 +555,7 @@ static int join(reader *r)
         if (path_begin(r, 1) || walk(r, (int)lo, 0, &enabled, &work)) return -1;
     }
     if (work > WORK_MAX)
-        say(r, SCAD_MSG_NOTE,
+        say(r, GEOM_DXF_NOTE,
             "DXF file '%s': joining its segments took more than %ld steps; %zu segments are "
             "left out",
             r->abs_path, WORK_MAX, enabled);
@@ -791,7 +564,7 @@ static int join(reader *r)
 
 /* ---- the whole file ------------------------------------------------------ */
 
-void scad_dxf_free(scad_dxf *d)
+void geom_dxf_free(geom_dxf *d)
 {
     free(d->pts);
     free(d->idx);
@@ -803,32 +576,37 @@ void scad_dxf_free(scad_dxf *d)
     memset(d, 0, sizeof *d);
 }
 
-/* The file's name as OpenSCAD shows it: absolute (lookup_file's), and
- * relative to the working folder (boostfs_uncomplete's, for the
- * unsupported-entity warning). */
-static void names(const char *path, char *abs, size_t n, const char **rel)
+/* The lines of the file's text, as getline reads a stream: a line ends
+ * after its '\n' or at the end, and eof is set by the read that reaches
+ * the end without one (as feof after getline). */
+typedef struct lines {
+    const char *p, *end;
+    int eof;
+    char *buf;
+    size_t cap;
+} lines;
+
+static char *next_line(lines *L)
 {
-    char cwd[4096];
-    if (path[0] == '/' || !getcwd(cwd, sizeof cwd))
-        snprintf(abs, n, "%s", path);
-    else
-        snprintf(abs, n, "%s/%s", cwd, path);
-    *rel = path;
-    if (path[0] == '/' && getcwd(cwd, sizeof cwd)) {
-        size_t k = strlen(cwd);
-        if (!strncmp(path, cwd, k) && path[k] == '/') *rel = path + k + 1;
-    } else if (!strncmp(path, "./", 2)) {
-        *rel = path + 2;
+    size_t n = 0;
+    if (L->p >= L->end) {
+        L->eof = 1;
+    } else {
+        const char *nl = memchr(L->p, '\n', (size_t)(L->end - L->p));
+        n = nl ? (size_t)(nl - L->p) + 1 : (size_t)(L->end - L->p);
+        if (!nl) L->eof = 1;
     }
+    if (geom_dxf_grow((void **)&L->buf, &L->cap, n + 1, 1) != 0) return NULL;
+    memcpy(L->buf, L->p, n);
+    L->buf[n] = 0;
+    L->p += n;
+    return L->buf;
 }
 
-int scad_dxf_read(const char *path, const scad_dxf_params *p, scad_dxf_message_fn msg, void *ud,
-                  scad_dxf *out)
+int geom_dxf_read(const char *text, size_t len, const char *abs, const char *rel,
+                  const geom_dxf_params *p, geom_dxf_message_fn msg, void *ud, geom_dxf *out)
 {
     memset(out, 0, sizeof *out);
-    char abs[4200];
-    const char *rel;
-    names(path, abs, sizeof abs, &rel);
     reader r;
     memset(&r, 0, sizeof r);
     r.prm = p;
@@ -837,22 +615,21 @@ int scad_dxf_read(const char *path, const scad_dxf_params *p, scad_dxf_message_f
     r.abs_path = abs;
     r.rel_path = rel;
     r.out = out;
-    FILE *fp = fopen(path, "r");
-    if (!fp) {
-        say(&r, SCAD_MSG_WARNING, "Can't open DXF file '%s'.", abs);
-        return 0;
-    }
     out->path_start = malloc(sizeof *out->path_start);
     int rc = out->path_start ? 0 : -1;
     if (out->path_start) {
         out->path_start[0] = 0;
         r.cappaths = 1;
     }
-    char *l1 = NULL, *l2 = NULL;
-    size_t c1 = 0, c2 = 0;
-    while (rc == 0 && !feof(fp)) {
-        if (getline(&l1, &c1, fp) < 0 && (l1 || (l1 = malloc(1)))) l1[0] = 0;
-        if (getline(&l2, &c2, fp) < 0 && (l2 || (l2 = malloc(1)))) l2[0] = 0;
+    lines L1 = {text, text + len, 0, NULL, 0};
+    lines L2 = {NULL, NULL, 0, NULL, 0};
+    while (rc == 0 && !L1.eof) {
+        char *l1 = next_line(&L1);
+        L2.p = L1.p;
+        L2.end = L1.end;
+        char *l2 = next_line(&L2);
+        L1.p = L2.p;
+        L1.eof |= L2.eof;
         if (!l1 || !l2) {
             rc = -1;
             break;
@@ -860,40 +637,39 @@ int scad_dxf_read(const char *path, const scad_dxf_params *p, scad_dxf_message_f
         char *id_str = trim(l1), *data = trim(l2);
         int id;
         if (!parse_int(id_str, &id)) {
-            if (!feof(fp)) say(&r, SCAD_MSG_WARNING, "Illegal ID '%s' in `%s'", id_str, abs);
+            if (!L1.eof) say(&r, GEOM_DXF_WARNING, "Illegal ID '%s' in `%s'", id_str, abs);
             break;
         }
         int g = group(&r, id, data);
         if (g == NOMEM)
             rc = -1;
         else if (g == BAD_VALUE)
-            say(&r, SCAD_MSG_WARNING, "Illegal value '%s'in `%s'", data, abs);
+            say(&r, GEOM_DXF_WARNING, "Illegal value '%s'in `%s'", data, abs);
         else if (g == SHORT)
-            say(&r, SCAD_MSG_WARNING, "Not enough input values for %s. in '%s'", data, abs);
+            say(&r, GEOM_DXF_WARNING, "Not enough input values for %s. in '%s'", data, abs);
     }
-    free(l1);
-    free(l2);
-    fclose(fp);
+    free(L1.buf);
+    free(L2.buf);
     /* libstdc++'s unordered_map lists a few keys newest first */
     for (size_t i = r.nunsupported; rc == 0 && i-- > 0;) {
         if (!p->layer || !*p->layer)
-            say(&r, SCAD_MSG_WARNING, "Unsupported DXF Entity '%s' (%lx) in \"%s\".",
+            say(&r, GEOM_DXF_WARNING, "Unsupported DXF Entity '%s' (%lx) in \"%s\".",
                 r.unsupported[i].name, (unsigned long)r.unsupported[i].n, r.rel_path);
         else
-            say(&r, SCAD_MSG_WARNING, "Unsupported DXF Entity '%s' (%lx) in layer '%s' of %s",
+            say(&r, GEOM_DXF_WARNING, "Unsupported DXF Entity '%s' (%lx) in layer '%s' of %s",
                 r.unsupported[i].name, (unsigned long)r.unsupported[i].n, p->layer, r.rel_path);
     }
     if (rc == 0 && r.dropped)
-        say(&r, SCAD_MSG_NOTE,
+        say(&r, GEOM_DXF_NOTE,
             "DXF file '%s': %ld segments with coordinates not finite or beyond 1e12 are left out",
             abs, r.dropped);
     if (rc == 0 && r.capped)
-        say(&r, SCAD_MSG_NOTE, "DXF file '%s' has more than %d segments; the rest is left out", abs,
-            SCAD_DXF_MAX_SEGMENTS);
+        say(&r, GEOM_DXF_NOTE, "DXF file '%s' has more than %d segments; the rest is left out", abs,
+            GEOM_DXF_MAX_SEGMENTS);
     if (rc == 0) rc = join(&r);
-    grid_free(&r.g);
+    geom_dxf_grid_free(&r.g);
     free(r.lines);
-    blocks_free(&r.blk);
+    geom_dxf_blocks_free(&r.blk);
     free(r.current_block);
     free(r.mode);
     free(r.layer);
@@ -904,11 +680,11 @@ int scad_dxf_read(const char *path, const scad_dxf_params *p, scad_dxf_message_f
     for (size_t i = 0; i < r.nunsupported; i++)
         free(r.unsupported[i].name);
     free(r.unsupported);
-    if (rc) scad_dxf_free(out);
+    if (rc) geom_dxf_free(out);
     return rc;
 }
 
-int scad_dxf_outlines(const scad_dxf *d, double (**pts)[2], int **start, int *npaths)
+int geom_dxf_outlines(const geom_dxf *d, double (**pts)[2], int **start, int *npaths)
 {
     *pts = NULL;
     *npaths = 0;

@@ -1,0 +1,150 @@
+/*
+ * mesh.c — sampling a scene by the three ray families, measuring and
+ * contouring it (src/mesh), and decimating and writing meshes (src/io's
+ * OpenMesh adapter).
+ */
+#include <stdlib.h>
+
+#include "../io/io.h"
+#include "rayscad_internal.h"
+
+void rayscad_mesh_options_default(rayscad_mesh_options *o)
+{
+    mesh_options_default(o);
+}
+
+rayscad_status rayscad_sampling_new(const rayscad_scene *s, const rayscad_mesh_options *o,
+                                    rayscad_sampling **out, char *err, size_t errlen)
+{
+    char local[1];
+    if (!err) err = local, errlen = sizeof local;
+    *out = NULL;
+    rayscad_sampling *d = calloc(1, sizeof *d);
+    if (!d) {
+        rayscad_say(err, errlen, "out of memory");
+        return RAYSCAD_ERROR_MEMORY;
+    }
+    int rc = mesh_dexels_new(s->s, o, &d->d, err, errlen);
+    if (rc != 0) {
+        free(d);
+        return rc == RAYSCAD_ERROR_CELLS || rc == RAYSCAD_ERROR_INTERVALS ? (rayscad_status)rc
+                                                                          : RAYSCAD_ERROR;
+    }
+    *out = d;
+    return RAYSCAD_OK;
+}
+
+void rayscad_sampling_free(rayscad_sampling *d)
+{
+    if (!d) return;
+    mesh_dexels_free(d->d);
+    free(d);
+}
+
+void rayscad_sampling_grid(const rayscad_sampling *d, double *h, double origin[3], int n[3])
+{
+    mesh_dexels_grid(d->d, h, origin, n);
+}
+
+void rayscad_sampling_measure(const rayscad_sampling *d, rayscad_measurement *out)
+{
+    mesh_dexels_measure(d->d, out);
+}
+
+void rayscad_sampling_thin(const rayscad_sampling *d, double thickness, rayscad_thin *out)
+{
+    mesh_dexels_thin(d->d, thickness, out);
+}
+
+/* A handle around m (taken); NULL (m freed) when out of memory. */
+static rayscad_mesh *wrap(mesh *m)
+{
+    rayscad_mesh *r = m ? malloc(sizeof *r) : NULL;
+    if (!r) {
+        mesh_free(m);
+        return NULL;
+    }
+    r->m = m;
+    return r;
+}
+
+rayscad_status rayscad_sampling_mesh(const rayscad_sampling *d, const rayscad_mesh_options *o,
+                                     rayscad_mesh **out, char *err, size_t errlen)
+{
+    char local[1];
+    if (!err) err = local, errlen = sizeof local;
+    mesh *m;
+    if (mesh_dexels_contour(d->d, o, &m, err, errlen) != 0) return RAYSCAD_ERROR;
+    *out = wrap(m);
+    if (*out) return RAYSCAD_OK;
+    rayscad_say(err, errlen, "out of memory");
+    return RAYSCAD_ERROR_MEMORY;
+}
+
+void rayscad_mesh_free(rayscad_mesh *m)
+{
+    if (!m) return;
+    mesh_free(m->m);
+    free(m);
+}
+
+int rayscad_mesh_vertex_count(const rayscad_mesh *m)
+{
+    return mesh_vertex_count(m->m);
+}
+
+int rayscad_mesh_triangle_count(const rayscad_mesh *m)
+{
+    return mesh_triangle_count(m->m);
+}
+
+const float *rayscad_mesh_vertices(const rayscad_mesh *m)
+{
+    return mesh_vertices(m->m);
+}
+
+const int32_t *rayscad_mesh_triangles(const rayscad_mesh *m)
+{
+    return mesh_triangles(m->m);
+}
+
+double rayscad_mesh_volume(const rayscad_mesh *m)
+{
+    return mesh_signed_volume(m->m);
+}
+
+rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_mesh **out,
+                                     char *err, size_t errlen)
+{
+    char local[1];
+    if (!err) err = local, errlen = sizeof local;
+    *out = NULL;
+    float *v;
+    int32_t *t;
+    int nv, nt;
+    if (io_mesh_decimate(mesh_vertices(m->m), mesh_vertex_count(m->m), mesh_triangles(m->m),
+                         mesh_triangle_count(m->m), tol, &v, &nv, &t, &nt, err, errlen) != 0)
+        return RAYSCAD_ERROR;
+    *out = wrap(mesh_new_from_arrays(v, nv, t, nt));
+    free(v);
+    free(t);
+    if (*out) return RAYSCAD_OK;
+    rayscad_say(err, errlen, "out of memory");
+    return RAYSCAD_ERROR_MEMORY;
+}
+
+int rayscad_mesh_format_supported(const char *path)
+{
+    return io_mesh_format_supported(path);
+}
+
+rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int ascii, char *err,
+                                  size_t errlen)
+{
+    char local[1];
+    if (!err) err = local, errlen = sizeof local;
+    return io_mesh_write(path, mesh_vertices(m->m), mesh_vertex_count(m->m), mesh_triangles(m->m),
+                         mesh_triangle_count(m->m), ascii, err, errlen) == 0
+               ? RAYSCAD_OK
+               : RAYSCAD_ERROR;
+}

@@ -1,0 +1,113 @@
+/*
+ * model.c — rayscad_model: a .scad file evaluated by src/scad with the
+ * library's services, and the .csg text of the same evaluation rule without
+ * geometry.  The public options become scad_options here, once.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "rayscad_internal.h"
+#include "services.h"
+
+/* The scad_options of o (may be NULL), with services (filled here) as its
+ * services. */
+static void scad_options_of(const rayscad_eval_options *o, scad_services *services,
+                            scad_options *so)
+{
+    memset(so, 0, sizeof *so);
+    rayscad_scad_services(o ? o->services : NULL, services);
+    so->services = services;
+    if (!o) return;
+    so->defines = o->defines;
+    so->define_count = o->define_count;
+    so->message = o->message;
+    so->ud = o->message_ud;
+    so->max_recursion = o->max_recursion;
+    so->max_steps = o->max_steps;
+    so->max_list = o->max_list;
+    so->max_string = o->max_string;
+    so->facets = (int)o->facets;
+    so->library_path = o->library_path;
+}
+
+static rayscad_status load(const char *name, const char *src, const rayscad_eval_options *o,
+                           rayscad_model **out)
+{
+    *out = NULL;
+    rayscad_model *m = calloc(1, sizeof *m);
+    if (!m) return RAYSCAD_ERROR_MEMORY;
+    scad_services services;
+    scad_options so;
+    scad_options_of(o, &services, &so);
+    int rc = src ? scad_eval_string(name, src, &so, &m->r) : scad_eval_file(name, &so, &m->r);
+    if (rc != 0) {
+        free(m);
+        return RAYSCAD_ERROR;
+    }
+    *out = m;
+    return RAYSCAD_OK;
+}
+
+rayscad_status rayscad_model_load(const char *path, const rayscad_eval_options *o,
+                                  rayscad_model **out)
+{
+    return load(path, NULL, o, out);
+}
+
+rayscad_status rayscad_model_load_string(const char *name, const char *src,
+                                         const rayscad_eval_options *o, rayscad_model **out)
+{
+    return load(name ? name : "<string>", src ? src : "", o, out);
+}
+
+void rayscad_model_free(rayscad_model *m)
+{
+    if (!m) return;
+    scad_result_free(&m->r);
+    free(m);
+}
+
+void rayscad_model_file_view(const rayscad_model *m, rayscad_file_view *out)
+{
+    out->set = m->r.vp_set;
+    out->auto_off = m->r.vp_auto_off;
+    memcpy(out->vpr, m->r.vpr, sizeof out->vpr);
+    memcpy(out->vpt, m->r.vpt, sizeof out->vpt);
+    out->vpd = m->r.vpd;
+    out->vpf = m->r.vpf;
+}
+
+int rayscad_model_setting_count(const rayscad_model *m)
+{
+    return m->r.nsettings;
+}
+
+const char *rayscad_model_setting(const rayscad_model *m, int i, double *value)
+{
+    if (i < 0 || i >= m->r.nsettings) return NULL;
+    if (value) *value = m->r.settings[i].value;
+    return m->r.settings[i].name;
+}
+
+static rayscad_status csg_text(const char *name, const char *src, const rayscad_eval_options *o,
+                               char **text, size_t *len)
+{
+    scad_services services;
+    scad_options so;
+    scad_options_of(o, &services, &so);
+    int rc = src ? scad_dump_csg_string(name, src, &so, text, len)
+                 : scad_dump_csg_file(name, &so, text, len);
+    return rc == 0 ? RAYSCAD_OK : RAYSCAD_ERROR;
+}
+
+rayscad_status rayscad_csg_text(const char *path, const rayscad_eval_options *o, char **text,
+                                size_t *len)
+{
+    return csg_text(path, NULL, o, text, len);
+}
+
+rayscad_status rayscad_csg_text_string(const char *name, const char *src,
+                                       const rayscad_eval_options *o, char **text, size_t *len)
+{
+    return csg_text(name ? name : "<string>", src ? src : "", o, text, len);
+}
