@@ -41,6 +41,51 @@ printf 'echo("hi", 1 + 2);\nfoo();\n' >echo.scad
 run --help
 check "help exits 0" test "$rc" -eq 0
 check "help prints usage" grep -q "usage: rayscad" out.txt
+
+# The man page (docs/rayscad.1) and the command agree on the flags: every
+# flag --help prints, and every flag the parser names (a string literal
+# that is a whole flag in src/cli/options.c: -h and -v are not in --help),
+# has an entry of its own under OPTIONS (the tag line after a .TP); every
+# --flag the page names anywhere is one the parser accepts, asked of the
+# command itself (its "unknown option" error).  Flags are read from the
+# page's source with troff's \- and font escapes undone.
+flags_py=$(
+    cat <<'PY'
+import re, subprocess, sys
+rayscad, page, source = sys.argv[1:4]
+LONG = r"--[a-z][a-z0-9]*(?:-[a-z0-9]+)*(?:-\*)?"  # "--max-*" names a family, no flag
+SHORT = r"(?<![A-Za-z0-9-])-[A-Za-z](?![A-Za-z0-9-])"
+def flags(text):
+    longs = {f for f in re.findall(LONG, text) if not f.endswith("*")}
+    return longs | set(re.findall(SHORT, text))
+def troff_text(src):
+    src = re.sub(r"\\f(?:\(..|\[[^]]*\]|.)", "", src)  # \fB, \fI, \fR, \fP, \f(CW
+    return src.replace("\\-", "-").replace("\\c", "").replace("\\&", "")
+source_text = troff_text(open(page, encoding="utf-8").read())
+documented = flags(source_text)
+options = re.search(r"^\.SH OPTIONS\n(.*?)^\.SH ", source_text, re.M | re.S)
+entries = flags("\n".join(re.findall(r"^\.TP\n(.*)", options.group(1), re.M))) if options else set()
+usage = subprocess.run([rayscad, "--help"], capture_output=True, text=True).stdout
+literals = re.findall(r'"(-[A-Za-z]|--[a-z][a-z0-9]*(?:-[a-z0-9]+)*)"', open(source).read())
+if sys.argv[4] == "documented":
+    missing = sorted(flags(usage) - entries) + sorted(set(literals) - flags(usage) - entries)
+    for f in missing:
+        print(f"  {f} has no entry under OPTIONS in docs/rayscad.1", file=sys.stderr)
+    sys.exit(1 if missing or not literals else 0)
+bad = []
+for f in sorted(f for f in documented if f.startswith("--")):
+    r = subprocess.run([rayscad, f], stdin=subprocess.DEVNULL, capture_output=True, text=True)
+    if "unknown option" in r.stderr:
+        bad.append(f)
+for f in bad:
+    print(f"  {f} in docs/rayscad.1 is not a flag rayscad accepts", file=sys.stderr)
+sys.exit(1 if bad or not documented else 0)
+PY
+)
+check "the man page lists every flag of --help and of the parser" \
+    "$py" -c "$flags_py" "$rayscad" "$root/docs/rayscad.1" "$root/src/cli/options.c" documented
+check "every flag the man page names is accepted by the parser" \
+    "$py" -c "$flags_py" "$rayscad" "$root/docs/rayscad.1" "$root/src/cli/options.c" accepted
 run --version
 check "version exits 0" test "$rc" -eq 0
 run ok.scad
