@@ -37,8 +37,12 @@ ifeq ($(SAN),1)
 SANFLAGS = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 endif
 
-CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) -MMD -MP
-CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) -MMD -MP \
+# No build path in what is built (debug information names files from here),
+# so an installed binary or library says nothing of the tree it came from.
+PREFIX_MAP = -ffile-prefix-map=$(CURDIR)=.
+
+CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP
+CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP \
 	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
 	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
@@ -50,7 +54,7 @@ LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenmesh-dev \
 	libcriterion-dev pkg-config g++ make \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
-	clang libclang-rt-dev
+	clang libclang-rt-dev man-db
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
 	src/rayscad/*.c \
@@ -63,14 +67,20 @@ TOOL_SRC = $(wildcard tests/tools/*.c)
 
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(IO_SRC:%.cpp=$(BUILD)/obj/%.o)
 CLI_OBJ  = $(CLI_SRC:%.c=$(BUILD)/obj/%.o)
+VERSION  = $(shell sed -n 's/^\#define RAYSCAD_VERSION_STRING "\(.*\)"/\1/p' include/rayscad.h)
+MAJOR    = $(firstword $(subst ., ,$(VERSION)))
+SO_NAME  = librayscad.so.$(VERSION)
+LIB_PIC  = $(LIB_SRC:%.c=$(BUILD)/pic/%.o) $(IO_SRC:%.cpp=$(BUILD)/pic/%.o)
+IMAGE_SO = $(BUILD)/rayscad-image.so
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
 .PHONY: all deps demo test unit cli compare conformance meshcheck asan clean format bench fuzz hostile \
-	valgrind
+	valgrind install uninstall installcheck
 .DEFAULT_GOAL := all
 
-all: $(BUILD)/rayscad $(TESTS) $(TOOLS)
+all: $(BUILD)/rayscad $(BUILD)/$(SO_NAME) $(TESTS) $(TOOLS) $(BUILD)/tests/$(notdir $(IMAGE_SO)) \
+	$(BUILD)/tools/$(notdir $(IMAGE_SO))
 
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -81,9 +91,17 @@ $(BUILD)/obj/%.o: %.cpp
 	$(CXX) $(CXXFLAGS) -c $< -o $@
 
 # The OpenImageIO adapter: image.cpp and the temp-file helpers as a shared
-# object, embedded in the binary and dlopened only when an image is read or
-# written (src/io/image_loader.c says why).
-IMAGE_SO = $(BUILD)/rayscad-image.so
+# object of their own, found beside the program or library (or in
+# lib/rayscad/ when installed) and dlopened only when an image is read or
+# written (src/io/image_loader.c says why).  The test programs and tools
+# live one folder down, and find it through a link there.
+$(BUILD)/tests/$(notdir $(IMAGE_SO)) $(BUILD)/tools/$(notdir $(IMAGE_SO)): $(IMAGE_SO)
+	@mkdir -p $(dir $@)
+	ln -sf ../$(notdir $(IMAGE_SO)) $@
+
+$(BUILD)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC -c $< -o $@
 
 $(BUILD)/pic/%.o: %.cpp
 	@mkdir -p $(dir $@)
@@ -106,15 +124,33 @@ $(IMAGE_DEPS): $(IMAGE_SO)
 	(ldd $< 2>/dev/null || true) | awk '$$2 == "=>" && $$3 ~ /^\/[^"\\]*$$/ {print $$3}' \
 		| tac > $@.tmp && mv $@.tmp $@
 
-$(BUILD)/obj/src/io/image_loader.o: src/io/image_loader.c $(IMAGE_SO) $(IMAGE_DEPS)
+$(BUILD)/obj/src/io/image_loader.o: src/io/image_loader.c $(IMAGE_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -DRAYSCAD_IMAGE_SO='"$(abspath $(IMAGE_SO))"' \
-		$(IMAGE_DEPS_FLAG) -c $< -o $@
+	$(CC) $(CFLAGS) $(IMAGE_DEPS_FLAG) -c $< -o $@
+
+$(BUILD)/pic/src/io/image_loader.o: src/io/image_loader.c $(IMAGE_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC $(IMAGE_DEPS_FLAG) -c $< -o $@
 
 $(BUILD)/librayscad.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
 	rm -f $@
 	ar rcs $@ $^
+
+# The shared library exports include/rayscad.h's functions and nothing
+# else (the version script lists them, taken from the header); its soname
+# carries the major version.
+
+$(BUILD)/exports.map: include/rayscad.h
+	@mkdir -p $(dir $@)
+	(echo '{ global:'; sed -n 's/^.*[ *]\(rayscad_[a-z_]*\)(.*/    \1;/p' $< | sort -u; \
+		echo 'local: *; };') > $@
+
+$(BUILD)/$(SO_NAME): $(LIB_PIC) $(BUILD)/exports.map
+	$(CXX) $(SANFLAGS) -shared -Wl,-soname,librayscad.so.$(MAJOR) \
+		-Wl,--version-script=$(BUILD)/exports.map -o $@ $(LIB_PIC) $(LDLIBS)
+	ln -sf $(SO_NAME) $(BUILD)/librayscad.so.$(MAJOR)
+	ln -sf $(SO_NAME) $(BUILD)/librayscad.so
 
 $(BUILD)/rayscad: $(CLI_OBJ) $(BUILD)/librayscad.a
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
@@ -126,6 +162,51 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(BUILD)/librayscad.a
 $(BUILD)/tools/%: $(BUILD)/obj/tests/tools/%.o $(BUILD)/librayscad.a
 	@mkdir -p $(dir $@)
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
+
+# ---- installation ----------------------------------------------------------------
+# make install [PREFIX=/usr/local] [DESTDIR=…]: the command, the static and
+# shared library, the header, pkg-config's rayscad.pc, the image adapter in
+# lib/rayscad/ (found from the program or the library, wherever PREFIX is)
+# and the man page.  make uninstall takes them away again.
+PREFIX ?= /usr/local
+BINDIR  = $(PREFIX)/bin
+LIBDIR  = $(PREFIX)/lib
+INCDIR  = $(PREFIX)/include
+MANDIR  = $(PREFIX)/share/man/man1
+PCDIR   = $(LIBDIR)/pkgconfig
+
+$(BUILD)/rayscad.pc: Makefile include/rayscad.h
+	@mkdir -p $(dir $@)
+	printf '%s\n' 'prefix=$(PREFIX)' 'exec_prefix=$${prefix}' 'libdir=$${exec_prefix}/lib' \
+		'includedir=$${prefix}/include' '' 'Name: rayscad' \
+		'Description: OpenSCAD files rendered, meshed and measured by ray casting with interval lists' \
+		'Version: $(VERSION)' 'Cflags: -I$${includedir}' 'Libs: -L$${libdir} -lrayscad' \
+		'Libs.private: $(strip $(LDLIBS)) -lstdc++' > $@
+
+install: $(BUILD)/rayscad $(BUILD)/$(SO_NAME) $(BUILD)/librayscad.a $(IMAGE_SO) $(BUILD)/rayscad.pc
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/rayscad $(DESTDIR)$(INCDIR) \
+		$(DESTDIR)$(MANDIR) $(DESTDIR)$(PCDIR)
+	install -m 755 $(BUILD)/rayscad $(DESTDIR)$(BINDIR)/rayscad
+	install -m 755 $(BUILD)/$(SO_NAME) $(DESTDIR)$(LIBDIR)/$(SO_NAME)
+	ln -sf $(SO_NAME) $(DESTDIR)$(LIBDIR)/librayscad.so.$(MAJOR)
+	ln -sf $(SO_NAME) $(DESTDIR)$(LIBDIR)/librayscad.so
+	install -m 644 $(BUILD)/librayscad.a $(DESTDIR)$(LIBDIR)/librayscad.a
+	install -m 755 $(IMAGE_SO) $(DESTDIR)$(LIBDIR)/rayscad/$(notdir $(IMAGE_SO))
+	install -m 644 include/rayscad.h $(DESTDIR)$(INCDIR)/rayscad.h
+	install -m 644 docs/rayscad.1 $(DESTDIR)$(MANDIR)/rayscad.1
+	install -m 644 $(BUILD)/rayscad.pc $(DESTDIR)$(PCDIR)/rayscad.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/rayscad $(DESTDIR)$(LIBDIR)/$(SO_NAME) \
+		$(DESTDIR)$(LIBDIR)/librayscad.so.$(MAJOR) $(DESTDIR)$(LIBDIR)/librayscad.so \
+		$(DESTDIR)$(LIBDIR)/librayscad.a $(DESTDIR)$(LIBDIR)/rayscad/$(notdir $(IMAGE_SO)) \
+		$(DESTDIR)$(INCDIR)/rayscad.h $(DESTDIR)$(MANDIR)/rayscad.1 $(DESTDIR)$(PCDIR)/rayscad.pc
+	-rmdir $(DESTDIR)$(LIBDIR)/rayscad 2>/dev/null
+
+# An installation into a scratch DESTDIR, used as a stranger would use it
+# (tests/install_test.sh).
+installcheck: all
+	tests/install_test.sh $(BUILD)
 
 deps:
 	@missing=""; for p in $(DEBS); do \
@@ -182,6 +263,7 @@ test: deps
 	$(MAKE) meshcheck
 	$(MAKE) compare
 	$(MAKE) hostile
+	$(MAKE) installcheck
 
 asan: deps
 	$(MAKE) BUILD=build-asan SAN=1 OPT="-O1 -g" all

@@ -5,11 +5,13 @@
  * OpenImageIO 2.4 as Debian builds it needs about 260 shared libraries
  * (OpenCV, FFmpeg, DCMTK, OpenVDB, …), and relocating them costs the dynamic
  * loader about 0.3 s of CPU — more than most renders take.  So rayscad does
- * not link it: the adapter is a shared object of its own, embedded in the
- * binary at build time (the .incbin below, RAYSCAD_IMAGE_SO naming the file),
- * copied into a memfd and dlopened from there on first use, so the binary
- * stays one self-contained file.  Meshes, --measure, .echo, .csg and .pov
- * never load it.
+ * not link it: the adapter is a shared object of its own, rayscad-image.so,
+ * dlopened on first use.  It is found from where the code that loads it
+ * lives (dladdr: librayscad.so, or the program it is linked into): beside
+ * it (the build tree), in rayscad/ below it (an installed lib/) or in
+ * ../lib/rayscad/ (an installed bin/), so an installation works from any
+ * prefix and no build path is built in.  Meshes, --measure, .echo, .csg and
+ * .pov never load it.
  *
  * Most of that time is symbol lookup: a dlopen relocates every library it
  * brings in against one search list, the adapter's breadth-first dependency
@@ -31,28 +33,20 @@
  * Invariant: the load runs once (pthread_once); afterwards `fn` and
  * `load_err` never change, so every thread reads them freely.
  */
-#define _GNU_SOURCE /* memfd_create */
+#define _GNU_SOURCE /* dladdr */
 #include "io.h"
 
 #include <dlfcn.h>
 #include <errno.h>
 #include <pthread.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/mman.h>
+#include <stdint.h>
 #include <unistd.h>
 
-#ifdef RAYSCAD_IMAGE_SO
-__asm__(".section .rodata\n"
-        ".balign 64\n"
-        "rayscad_image_so:\n"
-        ".incbin \"" RAYSCAD_IMAGE_SO "\"\n"
-        "rayscad_image_so_end:\n"
-        ".previous\n");
-extern const unsigned char rayscad_image_so[], rayscad_image_so_end[];
-#endif
 #ifdef RAYSCAD_IMAGE_DEPS
 __asm__(".section .rodata\n"
         "rayscad_image_deps:\n"
@@ -61,6 +55,9 @@ __asm__(".section .rodata\n"
         ".previous\n");
 extern const char rayscad_image_deps[];
 #endif
+
+/* The adapter's file name. */
+#define ADAPTER "rayscad-image.so"
 
 typedef int (*write_fn)(const char *, int, int, int, const float *, char *, size_t);
 typedef int (*read_fn)(const char *, int *, int *, int *, float **, char *, size_t);
@@ -72,7 +69,7 @@ static struct {
     read_fn read;
     supported_fn supported;
 } fn;
-static char load_err[256]; /* empty when the adapter loaded */
+static char load_err[2048]; /* empty when the adapter loaded */
 
 /* Open the adapter's libraries leaves first, one path per line of the
  * embedded list, ignoring failures (see the top of the file).  The handles
@@ -94,39 +91,57 @@ static void preload(void)
 #endif
 }
 
-/* dlopen the embedded adapter; fills fn or load_err.  Runs once. */
+/* The folder of the object this code is linked into (librayscad.so, or
+ * the program), with its '/', into dir; 0, or -1 when unknown.  The
+ * program's own name may be relative to a folder it has since left, so its
+ * path comes from /proc/self/exe. */
+static int own_folder(char *dir, size_t n)
+{
+    Dl_info info;
+    char path[4096];
+    if (dladdr((void *)(uintptr_t)own_folder, &info) && info.dli_fname &&
+        info.dli_fname[0] == '/') {
+        snprintf(path, sizeof path, "%s", info.dli_fname);
+    } else {
+        ssize_t k = readlink("/proc/self/exe", path, sizeof path - 1);
+        if (k <= 0) return -1;
+        path[k] = 0;
+    }
+    char *slash = strrchr(path, '/');
+    if (!slash || (size_t)(slash - path + 2) > n) return -1;
+    slash[1] = 0;
+    snprintf(dir, n, "%s", path);
+    return 0;
+}
+
+/* dlopen the adapter; fills fn or load_err.  Runs once. */
 static void load(void)
 {
-#ifdef RAYSCAD_IMAGE_SO
-    preload();
-    const unsigned char *p = rayscad_image_so;
-    size_t left = (size_t)(rayscad_image_so_end - rayscad_image_so);
-    int fd = memfd_create("rayscad-image.so", MFD_CLOEXEC);
-    if (fd < 0) {
-        snprintf(load_err, sizeof load_err, "cannot load the image adapter: memfd_create: %s",
-                 strerror(errno));
+    static const char *const below[] = {"", "rayscad/", "../lib/rayscad/"};
+    char dir[4096], path[4200];
+    void *h = NULL;
+    if (own_folder(dir, sizeof dir) != 0) {
+        snprintf(load_err, sizeof load_err,
+                 "cannot load the image adapter: cannot tell where rayscad is installed");
         return;
     }
-    while (left > 0) {
-        ssize_t w = write(fd, p, left);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) {
-            snprintf(load_err, sizeof load_err, "cannot load the image adapter: write: %s",
-                     strerror(errno));
-            close(fd);
+    preload();
+    for (size_t i = 0; i < sizeof below / sizeof below[0] && !h; i++) {
+        snprintf(path, sizeof path, "%s%s" ADAPTER, dir, below[i]);
+        if (access(path, R_OK) != 0) continue;
+        h = dlopen(path, RTLD_LAZY | RTLD_LOCAL);
+        if (!h) {
+            const char *e = dlerror();
+            snprintf(load_err, sizeof load_err, "cannot load the image adapter %.1000s: %.1000s",
+                     path, e ? e : "dlopen failed");
             return;
         }
-        p += w;
-        left -= (size_t)w;
     }
-    char path[64];
-    snprintf(path, sizeof path, "/proc/self/fd/%d", fd);
-    void *h = dlopen(path, RTLD_LAZY | RTLD_LOCAL);
-    close(fd); /* the mapping keeps what dlopen needs */
     if (!h) {
-        const char *e = dlerror();
-        snprintf(load_err, sizeof load_err, "cannot load the image adapter: %s",
-                 e ? e : "dlopen failed");
+        snprintf(load_err, sizeof load_err,
+                 "cannot load the image adapter: no " ADAPTER " in %.600s, %.600srayscad/ or "
+                 "%.600s../lib/rayscad/",
+                 dir, dir, dir);
         return;
     }
     /* POSIX allows converting dlsym's object pointer to a function pointer;
@@ -140,9 +155,6 @@ static void load(void)
     memcpy(&fn.write, &w, sizeof w);
     memcpy(&fn.read, &r, sizeof r);
     memcpy(&fn.supported, &s, sizeof s);
-#else
-    snprintf(load_err, sizeof load_err, "this build has no image adapter (OpenImageIO)");
-#endif
 }
 
 /* Load the adapter unless done already.  Returns 0, or -1 with the reason
