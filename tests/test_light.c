@@ -5,11 +5,14 @@
  * the missing inner face of a union, order independence through the
  * language (every permutation of a file's objects, bit for bit), shadows
  * from the key light and a point light through opaque and transparent
- * occluders, a mirror that shows what the reflection law says, and
- * Beer–Lambert absorption over a slab's thickness.
+ * occluders, a mirror that shows what the reflection law says,
+ * Beer–Lambert absorption over a slab's thickness, and secondary rays that
+ * start just off a sphere on the side they leave to (its equation says
+ * which).
  */
 #include "../src/csg/csg.h"
 #include "../src/render/render.h"
+#include "../src/render/surface.h"
 #include "../src/scad/scad.h"
 
 #include <criterion/criterion.h>
@@ -424,6 +427,134 @@ Test(light_mirror, rs_reflect_through_the_language)
                                    "    plate($rs_reflect = 1);\n"
                                    "color(\"red\") translate([-30,-3,-3]) cube([10,6,6]);\n");
     mirror_checks(s);
+    csg_scene_free(s);
+}
+
+/* ---- secondary rays ---------------------------------------------------------- */
+
+/* Where o + t·d (d unit) meets the sphere of centre c and radius r, by the
+ * quadratic: t0 <= t1, or 0 when it misses. */
+static int sphere_ts(const double c[3], double r, const double o[3], const double d[3], double *t0,
+                     double *t1)
+{
+    double oc[3] = {o[0] - c[0], o[1] - c[1], o[2] - c[2]};
+    double b = dot3(oc, d), disc = b * b - (dot3(oc, oc) - r * r);
+    if (disc < 0) return 0;
+    *t0 = -b - sqrt(disc);
+    *t1 = -b + sqrt(disc);
+    return 1;
+}
+
+static double dist3(const double a[3], const double b[3])
+{
+    double v[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    return sqrt(dot3(v, v));
+}
+
+/* Direction k of n spread evenly over the unit sphere (a Fibonacci
+ * lattice: the same directions every run, no seed). */
+static void lattice_dir(int k, int n, double u[3])
+{
+    double z = 1 - (2 * k + 1.0) / n, s = sqrt(1 - z * z), phi = k * 2.39996322972865332;
+    u[0] = s * cos(phi);
+    u[1] = s * sin(phi);
+    u[2] = z;
+}
+
+/* A ray spawned from hit h of the sphere (c, r) along dir: its origin lies
+ * within eps of h's point, off the surface by `side`·eps (+1 outside, -1
+ * inside: `radial` = 1 for a step along the normal, else the cosine of the
+ * step to it) by the sphere's own equation, and the scene agrees: traced
+ * from there, a ray that leaves meets nothing and one that goes in starts
+ * inside (a clip at t = 0) and leaves where the quadratic says. */
+static void expect_spawn(const csg_scene *s, iv_arena *a, const render_hit *h, const double dir[3],
+                         render_spawn rule, double eps, const double c[3], double r, int side,
+                         double radial, int k)
+{
+    double o[3];
+    render_ray_spawn(h, dir, rule, eps, o);
+    double step = dist3(o, h->p), off = dist3(o, c) - r;
+    cr_expect(fabs(step - eps) <= 1e-6 * eps, "ray %d: origin %.3g from the hit, not eps %.3g", k,
+              step, eps);
+    cr_expect(side * off > 0 && fabs(fabs(off) - radial * eps) <= 1e-3 * eps,
+              "ray %d: origin %.3g off the surface, expected %s%.3g", k, off, side > 0 ? "+" : "-",
+              radial * eps);
+    iv_list l;
+    memset(&l, 0, sizeof l);
+    cr_assert_eq(csg_trace(s, RAYSCAD_ROOT_MODEL, o, dir, 0, INFINITY, a, &l), 0);
+    if (side > 0) {
+        cr_expect_eq(l.n, 0, "ray %d: leaves the sphere but meets it again at t = %g", k,
+                     l.n ? l.v[0].enter.t : 0);
+    } else {
+        double t0, t1, dl = sqrt(dot3(dir, dir)), du[3] = {dir[0] / dl, dir[1] / dl, dir[2] / dl};
+        cr_assert(sphere_ts(c, r, o, du, &t0, &t1));
+        cr_expect(l.n == 1 && l.v[0].enter.prim == IV_PRIM_NONE && l.v[0].enter.t == 0 &&
+                      fabs(l.v[0].exit.t * dl - t1) <= 1e-9 * r,
+                  "ray %d: does not start inside the sphere and leave at t = %g", k, t1);
+    }
+    iv_arena_reset(a);
+}
+
+/* render_ray_spawn on a sphere, against its equation: 256 rays from all
+ * around enter it, and at the entry the mirror ray and a light ray leave
+ * outward, the refracted ray and one going straight on (the path tracer's
+ * pass) start inside; at the exit, with the path tracer's facing, the
+ * internally reflected ray stays inside and a straight one is outside. */
+Test(light_spawn, origin_is_eps_off_the_surface_on_the_side_the_ray_takes)
+{
+    const double c[3] = {1, -2, 3}, r = 10, eta = 1 / 1.5;
+    csg_scene *s = scene1(sphere(c[0], c[1], c[2], r, NULL));
+    iv_arena *a = iv_arena_new(0);
+    cr_assert_not_null(a);
+    const double eps = render_ray_offset(2 * r * sqrt(3.0)); /* model_scale's size */
+    enum { N = 256 };
+    for (int k = 0; k < N; k++) {
+        double u[3], v[3], o[3], d[3];
+        lattice_dir(k, N, u);
+        lattice_dir((37 * k + 11) % N, N, v);
+        for (int i = 0; i < 3; i++) {
+            o[i] = c[i] + 25 * u[i];
+            d[i] = c[i] + 0.9 * r * v[i] - o[i]; /* through a point inside */
+        }
+        double dl = sqrt(dot3(d, d)), t0, t1;
+        for (int i = 0; i < 3; i++)
+            d[i] /= dl;
+        cr_assert(sphere_ts(c, r, o, d, &t0, &t1));
+
+        iv_bound b;
+        cr_assert_eq(csg_trace_first(s, RAYSCAD_ROOT_MODEL, o, d, 0, INFINITY, a, &b), 1);
+        cr_expect(fabs(b.t - t0) <= 1e-9 * r, "ray %d: entry at %.12g, expected %.12g", k, b.t, t0);
+        render_hit h;
+        render_surface_hit(s, &b, b.t, o, d, RENDER_GRAZE_ENTERS, &h);
+        iv_arena_reset(a);
+        cr_expect(h.entering, "ray %d: the entry is not an entry", k);
+        double cosi = -dot3(d, h.nf); /* the step along d, to the normal */
+
+        double rd[3], td[3];
+        render_reflect_dir(d, h.nf, rd);
+        expect_spawn(s, a, &h, rd, RENDER_SPAWN_SIDE, eps, c, r, +1, 1, k);
+        expect_spawn(s, a, &h, h.nf, RENDER_SPAWN_SIDE, eps, c, r, +1, 1, k);
+        cr_assert(render_refract_dir(d, h.nf, eta, td) >= 0);
+        expect_spawn(s, a, &h, td, RENDER_SPAWN_SIDE, eps, c, r, -1, 1, k);
+        expect_spawn(s, a, &h, d, RENDER_SPAWN_AHEAD, eps, c, r, -1, cosi, k);
+
+        /* on along the refracted ray to the exit, seen as the path tracer sees it */
+        double oi[3];
+        render_ray_spawn(&h, td, RENDER_SPAWN_SIDE, eps, oi);
+        iv_list l;
+        memset(&l, 0, sizeof l);
+        cr_assert_eq(csg_trace(s, RAYSCAD_ROOT_MODEL, oi, td, 0, INFINITY, a, &l), 0);
+        cr_assert_eq(l.n, 1);
+        iv_bound out = l.v[0].exit;
+        render_hit x;
+        render_surface_hit(s, &out, out.t, oi, td, RENDER_GRAZE_LEAVES, &x);
+        iv_arena_reset(a);
+        cr_expect(!x.entering, "ray %d: the exit is not an exit", k);
+        render_reflect_dir(td, x.nf, rd);
+        expect_spawn(s, a, &x, rd, RENDER_SPAWN_SIDE, eps, c, r, -1, 1, k);
+        expect_spawn(s, a, &x, td, RENDER_SPAWN_AHEAD, eps, c, r, +1, -dot3(td, x.nf), k);
+    }
+    iv_arena_free(a);
     csg_scene_free(s);
 }
 

@@ -51,6 +51,7 @@
  */
 #include "path_trace.h"
 #include "sampling.h"
+#include "surface.h"
 #include "tiles.h"
 
 #include <math.h>
@@ -62,8 +63,6 @@
 enum { TILE = 32, DEFAULT_DEPTH = 8, RR_AFTER = 3, MAX_PASS = 64 };
 
 #define PI 3.14159265358979323846
-/* Opacity past which a surface stops shadow rays and camera rays (render.c). */
-#define OPAQUE (1.0 - 1.0 / 4096)
 /* The most radiance one sample of a caustic path may carry: display white.
  * A pixel of N samples is off by at most what its clipped samples lost. */
 #define CAUSTIC_MAX 1.0
@@ -103,11 +102,15 @@ typedef struct pt_job {
     char *sampled; /* per primitive: an emitter next-event estimation samples */
     double bg[3];  /* background, linear */
     int max_depth;
-    double eps; /* offset of secondary ray origins */
+    double eps; /* offset of secondary ray origins (render_ray_offset) */
     double focus;
 } pt_job;
 
 /* ---- random numbers: splitmix64 over a counter, per pixel --------------- */
+
+/* xored into the pixels' seeds ("PT"): keeps these streams apart from
+ * render.c's */
+#define PT_STREAM 0x5054000000000000ULL
 
 typedef struct pt_worker {
     iv_arena *a;
@@ -136,30 +139,16 @@ typedef struct pt_surface {
     double ior;   /* > 1: a dielectric, else 0 */
 } pt_surface;
 
-/* The colour render.c gives boundary b of the model root (its material, or
- * the scheme's face / back colour), then the optics that go with it. */
+/* Boundary b of the model root as render.c sees it (surface.h), with its
+ * colour decoded to linear. */
 static void surface_of(const pt_job *J, const iv_bound *b, pt_surface *s)
 {
-    const render_options *opt = J->opt;
-    const csg_material *m = csg_scene_material(J->scene, b->prim);
     float c[4];
-    if (m->has_color) {
-        memcpy(c, m->rgba, sizeof c);
-    } else {
-        memcpy(c, b->flip ? opt->colors.back : opt->colors.face, 3 * sizeof(float));
-        c[3] = 1;
-    }
-    s->m = m;
+    s->alpha = render_surface_color(J->scene, J->opt, RAYSCAD_ROOT_MODEL, b, c, &s->m);
     for (int i = 0; i < 3; i++)
         s->rgb[i] = srgb_to_linear(c[i]);
-    s->alpha = c[3] > 1 ? 1 : c[3];
-    if (opt->xray > 0 && s->alpha > opt->xray) s->alpha = opt->xray;
-    /* As render.c's absorption(): $rs_absorb wins; in absorption mode a
-     * transparent colour's alpha is the opacity of opt->absorb units. */
-    s->sigma = m->absorb > 0                                     ? m->absorb
-               : opt->absorb > 0 && s->alpha > 0 && s->alpha < 1 ? -log1p(-s->alpha) / opt->absorb
-                                                                 : 0;
-    s->ior = m->ior > 1 ? m->ior : opt->ior > 1 && s->alpha < 1 ? opt->ior : 0;
+    s->sigma = render_surface_absorption(J->opt, s->m, s->alpha);
+    s->ior = render_surface_ior(J->opt, s->m, s->alpha);
 }
 
 /* ---- tracing ------------------------------------------------------------------ */
@@ -218,7 +207,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
             return 1;
         }
         surface_of(J, &b, &s);
-        if (s.ior > 1 || (s.sigma == 0 && s.alpha >= OPAQUE)) return 0;
+        if (s.ior > 1 || render_surface_opaque(J->opt, s.m, s.alpha)) return 0;
     }
     iv_list l;
     memset(&l, 0, sizeof l);
@@ -233,7 +222,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
         if (s.sigma > 0 && s.ior <= 1) {
             double t0 = sp->enter.t > 0 ? sp->enter.t : 0,
                    t1 = sp->exit.t < tlim ? sp->exit.t : tlim;
-            if (t1 > t0) T *= exp(-s.sigma * (t1 - t0));
+            if (t1 > t0) T *= render_span_transmittance(s.sigma, t1 - t0);
         }
         for (int e = 0; e < 2; e++) {
             const iv_bound *bb = e ? &sp->exit : &sp->enter;
@@ -244,11 +233,11 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
             }
             surface_of(J, bb, &s);
             if (s.ior > 1) return 0;
-            if (s.sigma == 0) T *= 1 - s.alpha;
+            T *= render_surface_transmittance(s.alpha, s.sigma);
         }
     }
     if (target >= 0) return 0;
-    return T < 1.0 / 4096 ? 0 : T;
+    return T < RENDER_DARK ? 0 : T;
 }
 
 /* ---- lights -------------------------------------------------------------------- */
@@ -296,16 +285,16 @@ static void sample_emitter(const pt_light *L, rng *g, double y[3], double *pdf)
     *pdf = 1 / (L->area * L->det * sqrt(dot3(nw, nw)));
 }
 
-/* Irradiance / π at p (normal nf, toward the side the light must be on)
- * from one sample of every light, per channel: a Lambertian surface of
+/* Irradiance / π at hit h (its normal nf toward the side the light must be
+ * on) from one sample of every light, per channel: a Lambertian surface of
  * linear albedo ρ there sends ρ × this.  Returns -1 when out of memory. */
-static int direct(const pt_job *J, pt_worker *w, const double p[3], const double nf[3], double E[3])
+static int direct(const pt_job *J, pt_worker *w, const render_hit *h, double E[3])
 {
-    double o[3];
-    for (int i = 0; i < 3; i++) {
-        o[i] = p[i] + J->eps * nf[i];
+    const double *p = h->p, *nf = h->nf;
+    double o[3]; /* every light sample leaves on the side nf faces */
+    render_ray_spawn(h, nf, RENDER_SPAWN_SIDE, J->eps, o);
+    for (int i = 0; i < 3; i++)
         E[i] = 0;
-    }
     for (int li = 0; li < J->nlights; li++) {
         const pt_light *L = &J->lights[li];
         double q[3], dir[3], pdf = 1, nt[3];
@@ -396,20 +385,18 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
                 out[i] += beta[i] * J->bg[i] * (specular ? 1 : SKY);
             return 0;
         }
-        double n[3], p[3], nf[3];
-        csg_scene_normal(J->scene, &b, o, d, n);
-        for (int i = 0; i < 3; i++)
-            p[i] = o[i] + b.t * d[i];
-        int entering = dot3(n, d) < 0;
-        for (int i = 0; i < 3; i++)
-            nf[i] = entering ? n[i] : -n[i];
+        render_hit h;
+        render_surface_hit(J->scene, &b, b.t, o, d, RENDER_GRAZE_LEAVES, &h);
+        int entering = h.entering;
         pt_surface s;
         surface_of(J, &b, &s);
 
         /* A ray that leaves an absorbing solid ran inside it from its origin. */
-        if (!entering && s.sigma > 0)
+        if (!entering && s.sigma > 0) {
+            double tr = render_span_transmittance(s.sigma, b.t - tmin);
             for (int i = 0; i < 3; i++)
-                beta[i] *= exp(-s.sigma * (b.t - tmin));
+                beta[i] *= tr;
+        }
         if (s.m->emit > 0 && entering && (specular || !J->sampled[b.prim])) {
             double c[3], m = 0;
             for (int i = 0; i < 3; i++) {
@@ -440,10 +427,10 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
                 double len = INFINITY;
                 for (int i = 0; i < l.n; i++)
                     if (l.v[i].enter.t == b.t) len = l.v[i].exit.t - b.t;
-                surface = isfinite(len) ? -expm1(-s.sigma * len) : 1;
+                surface = render_span_opacity(s.sigma, len);
                 if (u >= surface && isfinite(len)) {
                     for (int i = 0; i < 3; i++)
-                        p[i] += len * d[i];
+                        h.p[i] += len * d[i];
                     entering = 0; /* leave from the exit, beyond it */
                 }
             }
@@ -454,25 +441,18 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             /* a smooth dielectric: reflect with Schlick's Fresnel, refract
              * otherwise; total internal reflection always reflects */
             if (++bounces >= J->max_depth) return 0;
-            double eta = entering ? 1 / s.ior : s.ior, ci = -dot3(nf, d);
-            double k = 1 - eta * eta * (1 - ci * ci), r0 = (1 - s.ior) / (1 + s.ior);
+            double eta = entering ? 1 / s.ior : s.ior, ci = -dot3(h.nf, d);
+            double r0 = (1 - s.ior) / (1 + s.ior), nd[3];
             r0 *= r0;
-            double cosv = entering ? ci : sqrt(fmax(k, 0)); /* the cosine in the thinner medium */
-            double F = k < 0 ? 1 : r0 + (1 - r0) * pow(1 - cosv, 5);
-            double nd[3];
+            double ct = render_refract_dir(d, h.nf, eta, nd);
+            double cosv = entering ? ci : ct; /* the cosine in the thinner medium */
+            double F = ct < 0 ? 1 : r0 + (1 - r0) * pow(1 - cosv, 5);
             if (rng_next(&w->g) < F) {
-                for (int i = 0; i < 3; i++)
-                    nd[i] = d[i] + 2 * ci * nf[i];
-            } else {
-                for (int i = 0; i < 3; i++)
-                    nd[i] = eta * d[i] + (eta * ci - sqrt(k)) * nf[i];
+                render_reflect_dir(d, h.nf, nd);
+                normalize3(nd);
             }
-            normalize3(nd);
-            double side = dot3(nd, nf) >= 0 ? 1 : -1;
-            for (int i = 0; i < 3; i++) {
-                o[i] = p[i] + side * J->eps * nf[i];
-                d[i] = nd[i];
-            }
+            render_ray_spawn(&h, nd, RENDER_SPAWN_SIDE, J->eps, o);
+            memcpy(d, nd, sizeof nd);
             caustic |= !specular;
             specular = 1;
             tmin = 0;
@@ -482,8 +462,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
         if (pass) {
             /* straight through, not a bounce */
             if (++passes > MAX_PASS) return 0;
-            for (int i = 0; i < 3; i++)
-                o[i] = p[i] + J->eps * d[i];
+            render_ray_spawn(&h, d, RENDER_SPAWN_AHEAD, J->eps, o);
             tmin = 0;
             tmax = INFINITY;
             continue;
@@ -491,25 +470,21 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
 
         if (rng_next(&w->g) < s.m->reflect) {
             if (++bounces >= J->max_depth) return 0;
-            double dn = dot3(d, nf);
-            for (int i = 0; i < 3; i++) {
-                d[i] -= 2 * dn * nf[i];
-                o[i] = p[i] + J->eps * nf[i];
-            }
+            render_reflect_dir(d, h.nf, d);
             normalize3(d);
+            render_ray_spawn(&h, h.nf, RENDER_SPAWN_SIDE, J->eps, o); /* on the front */
             caustic |= !specular;
             specular = 1;
         } else {
             double E[3];
-            if (direct(J, w, p, nf, E) != 0) return -1;
+            if (direct(J, w, &h, E) != 0) return -1;
             for (int i = 0; i < 3; i++)
                 out[i] += beta[i] * s.rgb[i] * E[i];
             if (++bounces >= J->max_depth) return 0;
-            cosine_dir(&w->g, nf, d);
-            for (int i = 0; i < 3; i++) {
-                o[i] = p[i] + J->eps * nf[i];
+            cosine_dir(&w->g, h.nf, d);
+            render_ray_spawn(&h, h.nf, RENDER_SPAWN_SIDE, J->eps, o); /* on the front */
+            for (int i = 0; i < 3; i++)
                 beta[i] *= s.rgb[i]; /* f·cos θ / pdf = (ρ/π)·cos θ / (cos θ/π) */
-            }
             specular = 0;
         }
         tmin = 0;
@@ -542,9 +517,7 @@ static int render_tile(const void *job, iv_arena *a, void *state, int tile)
     int ns = opt->path_trace;
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
-            /* a distinct constant keeps these streams apart from render.c's */
-            w->g.s = mix64(((uint64_t)opt->seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^
-                           (uint32_t)x ^ 0x5054000000000000ULL);
+            w->g = rng_for_pixel(opt->seed, x, y, PT_STREAM);
             double sum[3] = {0, 0, 0}, ox = rng_next(&w->g), oy = rng_next(&w->g);
             for (int k = 0; k < ns; k++) {
                 /* pixel positions from the R2 sequence (Roberts), shifted per
@@ -553,18 +526,7 @@ static int render_tile(const void *job, iv_arena *a, void *state, int tile)
                 double jy = fmod(oy + k * 0.56984029099805327, 1.0);
                 double o[3], d[3], tmin, tmax, L[3];
                 render_raygen_ray(&J->gen, x + jx, y + jy, o, d);
-                double df = dot3(d, c->forward);
-                if (opt->aperture > 0 && df > 0) {
-                    double f[3], lx, ly;
-                    for (int i = 0; i < 3; i++)
-                        f[i] = o[i] + d[i] * (J->focus / df);
-                    square_to_disc(rng_next(&w->g), rng_next(&w->g), &lx, &ly);
-                    for (int i = 0; i < 3; i++) {
-                        o[i] += opt->aperture / 2 * (lx * c->right[i] + ly * c->up[i]);
-                        d[i] = f[i] - o[i];
-                    }
-                    normalize3(d);
-                }
+                thin_lens(c, opt->aperture, J->focus, &w->g, o, d);
                 ray_range(c, d, &tmin, &tmax);
                 int rc = path(J, w, o, d, tmin, tmax, L);
                 iv_arena_reset(w->a);
@@ -593,7 +555,7 @@ static int setup(pt_job *J)
     if (!J->le || !J->sampled || !J->lights) return -1;
 
     double centre[3], size = model_scale(S, centre); /* as render.c's */
-    J->eps = 1e-7 * size;
+    J->eps = render_ray_offset(size);
     J->focus = lens_focus(opt, J->cam, centre, size);
 
     for (int li = 0; li < opt->nlights && li < RAYSCAD_MAX_LIGHTS; li++) {

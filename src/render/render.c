@@ -38,18 +38,15 @@
 #include "path_trace.h"
 #include "sampling.h"
 #include "shade.h"
+#include "surface.h"
 #include "tiles.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_LIGHT_SAMPLES = 16 };
-
-/* Opacity past which the surfaces behind cannot change a byte. */
-#define OPAQUE (1.0 - 1.0 / 4096)
 
 typedef struct job {
     const csg_scene *scene;
@@ -68,7 +65,7 @@ typedef struct job {
     int nlights;
     int light_n;   /* shadow rays per light: light_n² */
     int max_depth; /* secondary rays */
-    double eps;    /* offset of secondary ray origins */
+    double eps;    /* offset of secondary ray origins (render_ray_offset) */
     double focus;  /* thin lens */
     int first_hit; /* csg_trace_first may stand in for the full lists */
     /* Primary samples outside cover (x0, x1, y0, y1) see the background
@@ -80,14 +77,6 @@ typedef struct job {
 static void set_err(char *err, size_t errlen, const char *msg)
 {
     if (err && errlen) snprintf(err, errlen, "%s", msg);
-}
-
-/* ---- random numbers (sampling.h) ------------------------------------------ */
-
-static rng rng_for_pixel(unsigned seed, int x, int y)
-{
-    rng g = {mix64(((uint64_t)seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^ (uint32_t)x)};
-    return g;
 }
 
 /* What a worker thread carries from ray to ray: its arena, the current
@@ -106,54 +95,24 @@ typedef struct worker_ctx {
  * model.  Lower rank = nearer. */
 static const int root_rank[MAX_ROOTS] = {2, 0, 1};
 
-/* The sRGB colour and alpha of boundary b of root r, before lighting. */
-static void surface_color(const job *J, int r, const iv_bound *b, float c[4])
-{
-    const render_colors *cs = &J->opt->colors;
-    const csg_material *m = csg_scene_material(J->scene, b->prim);
-    if (r == RAYSCAD_ROOT_HIGHLIGHT) {
-        /* Renderer::setColor: HIGHLIGHT ignores the object's own colour. */
-        memcpy(c, cs->highlight, sizeof cs->highlight);
-    } else if (m && m->has_color) {
-        memcpy(c, m->rgba, sizeof m->rgba);
-    } else if (r == RAYSCAD_ROOT_BACKGROUND) {
-        memcpy(c, cs->background_modifier, sizeof cs->background_modifier);
-    } else {
-        memcpy(c, b->flip ? cs->back : cs->face, 3 * sizeof(float));
-        c[3] = 1;
-    }
-    if (c[3] > 1) c[3] = 1;
-    if (J->opt->xray > 0 && c[3] > J->opt->xray) c[3] = (float)J->opt->xray;
-}
-
-/* The Beer–Lambert coefficient (per unit length) of a solid whose surface
- * has material m and alpha a, or 0 when its surfaces composite one by one:
- * $rs_absorb wins; otherwise, in absorption mode, a transparent colour's
- * alpha is the opacity of opt->absorb units of it, so
- * σ = -ln(1 - a) / thickness.  Opaque solids stay surfaces. */
-static double absorption(const job *J, const csg_material *m, double a)
-{
-    if (m && m->absorb > 0) return m->absorb;
-    if (J->opt->absorb > 0 && a > 0 && a < 1) return -log1p(-a) / J->opt->absorb;
-    return 0;
-}
-
 /* ---- shadows ------------------------------------------------------------------ */
 
 /* Whether transmittance's product is 0 once the first boundary b of a shadow
- * ray's list is crossed: a surface (not a clip, not an emitter, not an
- * absorbing volume, which needs its exit) whose factor 1 - alpha is already
- * below the 1/4096 cut-off.  Alphas lie in [0, 1] (color() rejects negative
- * ones, surface_color caps at 1), so the later factors are at most 1 and
- * the product stays below the cut-off, which transmittance returns as 0. */
+ * ray's list is crossed: a surface (not a clip, not an emitter) whose own
+ * factor is already below the RENDER_DARK cut-off (an absorbing volume's is
+ * 1: its span needs the exit).  Alphas lie in [0, 1] (color() rejects
+ * negative ones, render_surface_color caps at 1), so the later factors are
+ * at most 1 and the product stays below the cut-off, which transmittance
+ * returns as 0. */
 static int stops_light(const job *J, const iv_bound *b)
 {
     if (b->prim == IV_PRIM_NONE) return 0;
-    const csg_material *m = csg_scene_material(J->scene, b->prim);
-    if (m->emit > 0) return 0;
     float c[4];
-    surface_color(J, RAYSCAD_ROOT_MODEL, b, c);
-    return absorption(J, m, c[3]) == 0 && 1 - c[3] < 1.0 / 4096;
+    const csg_material *m;
+    render_surface_color(J->scene, J->opt, RAYSCAD_ROOT_MODEL, b, c, &m);
+    if (m->emit > 0) return 0;
+    double sigma = render_surface_absorption(J->opt, m, c[3]);
+    return render_surface_transmittance(c[3], sigma) < RENDER_DARK;
 }
 
 /* The fraction of light that passes along o + t·d, t in (0, tmax), through
@@ -176,47 +135,39 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
     if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
     if (J->first_hit) wk->full_shadow = !(l.n == 0 || stops_light(J, &l.v[0].enter));
     double T = 1;
-    for (int i = 0; i < l.n && T > 1.0 / 4096; i++) {
+    for (int i = 0; i < l.n && T > RENDER_DARK; i++) {
         const iv_span *sp = &l.v[i];
         for (int e = 0; e < 2; e++) {
             const iv_bound *b = e ? &sp->exit : &sp->enter;
             if (b->prim == IV_PRIM_NONE) continue;
-            const csg_material *m = csg_scene_material(J->scene, b->prim);
+            float c[4];
+            const csg_material *m;
+            render_surface_color(J->scene, J->opt, RAYSCAD_ROOT_MODEL, b, c, &m);
             if (m->emit > 0) continue;
-            float c[4];
-            surface_color(J, RAYSCAD_ROOT_MODEL, b, c);
-            double sigma = absorption(J, m, c[3]);
-            if (sigma > 0) {
-                if (e == 0) T *= exp(-sigma * (sp->exit.t - sp->enter.t));
-            } else {
-                T *= 1 - c[3];
-            }
-        }
-        /* a span entered before o (clipped) still absorbs up to its exit */
-        if (sp->enter.prim == IV_PRIM_NONE && sp->exit.prim != IV_PRIM_NONE) {
-            const csg_material *m = csg_scene_material(J->scene, sp->exit.prim);
-            float c[4];
-            surface_color(J, RAYSCAD_ROOT_MODEL, &sp->exit, c);
-            double sigma = m->emit > 0 ? 0 : absorption(J, m, c[3]);
-            if (sigma > 0) T *= exp(-sigma * (sp->exit.t - sp->enter.t));
+            double sigma = render_surface_absorption(J->opt, m, c[3]);
+            T *= render_surface_transmittance(c[3], sigma);
+            /* an absorbing span counts once: from its entry, or from o when
+             * it was entered before o (the clip) */
+            if (sigma > 0 && (e == 0 || sp->enter.prim == IV_PRIM_NONE))
+                T *= render_span_transmittance(sigma, sp->exit.t - sp->enter.t);
         }
     }
-    return T < 1.0 / 4096 ? 0 : T;
+    return T < RENDER_DARK ? 0 : T;
 }
 
-/* The lighting factor at point p with unit normal nf (turned toward the
- * viewer) under the opt-in model: ambient 0.2 plus, per light, intensity ×
+/* The lighting factor at hit h (its normal nf turned toward the viewer)
+ * under the opt-in model: ambient 0.2 plus, per light, intensity ×
  * cos θ × the mean transmittance of its shadow rays.  The preview's pair of
  * opposite directional lights when no light is given: the key light
  * (-1,-1,1)/√3 in the viewer's frame casts shadows, its opposite fill does
  * not, so an unshadowed point gets exactly the preview's factor.  Returns
  * -1 when out of memory. */
-static double light_factor(const job *J, worker_ctx *wk, const double p[3], const double nf[3])
+static double light_factor(const job *J, worker_ctx *wk, const render_hit *h)
 {
     const render_camera *c = J->cam;
-    double o[3];
-    for (int i = 0; i < 3; i++)
-        o[i] = p[i] + J->eps * nf[i];
+    const double *p = h->p, *nf = h->nf;
+    double o[3]; /* every shadow ray leaves on the side nf faces */
+    render_ray_spawn(h, nf, RENDER_SPAWN_SIDE, J->eps, o);
     double f = 0.2;
     if (J->keylight) {
         const double k = 0.57735026918962576;
@@ -276,85 +227,63 @@ static double light_factor(const job *J, worker_ctx *wk, const double p[3], cons
 
 /* ---- the walk ------------------------------------------------------------------ */
 
-/* Refraction direction of unit d through a surface with unit normal nf
- * facing d's origin (nf·d < 0), index ratio eta = n_from / n_to.  Returns 0
- * at total internal reflection. */
-static int refract_dir(const double d[3], const double nf[3], double eta, double out[3])
-{
-    double ci = -dot3(nf, d);
-    double k = 1 - eta * eta * (1 - ci * ci);
-    if (k < 0) return 0;
-    for (int i = 0; i < 3; i++)
-        out[i] = eta * d[i] + (eta * ci - sqrt(k)) * nf[i];
-    normalize3(out);
-    return 1;
-}
-
 /* Whether trace_ray's walk ends at boundary b of root r when b comes first:
- * a surface (not a clip, not at an infinite t, which the walk skips) that
- * composites as a surface (no absorption, which needs the span's exit) with
- * alpha >= OPAQUE, so the accumulated opacity passes OPAQUE at once — and
- * then neither later surfaces nor refraction are looked at.  Mirror rays
- * and shadow rays are traced from b alone, so they do not care.  Fills c
- * with b's colour (surface_color) and *m with its material when it does. */
+ * an opaque surface (render_surface_opaque; not a clip, not at an infinite
+ * t, which the walk skips), so the accumulated opacity passes RENDER_OPAQUE
+ * at once — and then neither later surfaces nor refraction are looked at.
+ * Mirror rays and shadow rays are traced from b alone, so they do not care.
+ * Fills c with b's colour and *m with its material (render_surface_color)
+ * when it does. */
 static int ends_walk(const job *J, int r, const iv_bound *b, float c[4], const csg_material **m)
 {
     if (b->prim == IV_PRIM_NONE || !isfinite(b->t)) return 0;
-    surface_color(J, r, b, c);
-    double alpha = c[3];
-    *m = csg_scene_material(J->scene, b->prim);
-    return alpha >= OPAQUE && absorption(J, *m, alpha) == 0;
+    render_surface_color(J->scene, J->opt, r, b, c, m);
+    return render_surface_opaque(J->opt, *m, c[3]);
 }
 
 static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
                      double tmin, double tmax, int depth, double out[3]);
 
-/* A secondary ray from p (offset along the side dir points to). */
-static int trace_from(const job *J, worker_ctx *wk, const double p[3], const double nf[3],
-                      const double dir[3], int depth, double out[3])
+/* A secondary ray (mirror, refracted) leaving hit h along dir, on the side
+ * of the surface dir points to. */
+static int trace_from(const job *J, worker_ctx *wk, const render_hit *h, const double dir[3],
+                      int depth, double out[3])
 {
-    double o[3], side = dot3(dir, nf) >= 0 ? 1 : -1;
-    for (int i = 0; i < 3; i++)
-        o[i] = p[i] + side * J->eps * nf[i];
+    double o[3];
+    render_ray_spawn(h, dir, RENDER_SPAWN_SIDE, J->eps, o);
     return trace_ray(J, wk, o, dir, 0, INFINITY, depth, out);
 }
 
 /* The light a surface sends back along the ray at boundary bb, whose
  * material (sb's: bb itself, or the exit of the span a clip opened) has
  * colour c and material m: its shading, mixed with a mirror ray when it
- * reflects, in local; the point and the normal facing the ray in p and nf,
- * for a refracted ray.  Returns 0, or -1 when the arena is out of memory. */
+ * reflects, in local; the hit (its point and the normal facing the ray) in
+ * h, for a refracted ray.  Returns 0, or -1 when the arena is out of
+ * memory. */
 static int surface_light(const job *J, worker_ctx *wk, const iv_bound *bb, const iv_bound *sb,
                          const float c[4], const csg_material *m, const double o[3],
-                         const double d[3], int depth, double local[3], double p[3], double nf[3])
+                         const double d[3], int depth, double local[3], render_hit *h)
 {
-    double n[3];
-    csg_scene_normal(J->scene, sb, o, d, n);
-    for (int i = 0; i < 3; i++)
-        p[i] = o[i] + bb->t * d[i];
-    double side = dot3(n, d) > 0 ? -1 : 1;
-    for (int i = 0; i < 3; i++)
-        nf[i] = side * n[i];
+    render_surface_hit(J->scene, sb, bb->t, o, d, RENDER_GRAZE_ENTERS, h);
 
     float lit[3];
     if (m->emit > 0) {
         for (int i = 0; i < 3; i++)
             lit[i] = c[i];
     } else if (J->lit) {
-        double f = light_factor(J, wk, p, nf);
+        double f = light_factor(J, wk, h);
         if (f < 0) return -1;
         render_shade_apply(c, f, lit);
     } else {
-        render_shade_apply(c, render_shade_factor(J->cam, n), lit);
+        render_shade_apply(c, render_shade_factor(J->cam, h->n), lit);
     }
     for (int i = 0; i < 3; i++)
         local[i] = lit[i];
 
     if (m->reflect > 0 && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
-        double rd[3], rc[3], dn = dot3(d, nf);
-        for (int i = 0; i < 3; i++)
-            rd[i] = d[i] - 2 * dn * nf[i];
-        if (trace_from(J, wk, p, nf, rd, depth + 1, rc) != 0) return -1;
+        double rd[3], rc[3];
+        render_reflect_dir(d, h->nf, rd);
+        if (trace_from(J, wk, h, rd, depth + 1, rc) != 0) return -1;
         for (int i = 0; i < 3; i++)
             local[i] = (1 - m->reflect) * local[i] + m->reflect * rc[i];
     }
@@ -420,8 +349,9 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         }
         if (ends_walk(J, best, &fb[best], c, &m)) {
             /* The walk's one step, as it takes it for this boundary. */
-            double local[3], p[3], nf[3];
-            if (surface_light(J, wk, &fb[best], &fb[best], c, m, o, d, depth, local, p, nf) != 0)
+            double local[3];
+            render_hit h;
+            if (surface_light(J, wk, &fb[best], &fb[best], c, m, o, d, depth, local, &h) != 0)
                 return -1;
             composite(acc, &acc_a, c[3], local);
             over_background(J, acc, acc_a, out);
@@ -448,7 +378,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         wk->full_primary = !(best < 0 || ends_walk(J, best, first[best], c, &m));
     }
 
-    while (acc_a < OPAQUE) {
+    while (acc_a < RENDER_OPAQUE) {
         int best = -1;
         const iv_bound *bb = NULL;
         for (int q = 0; q < J->nlive; q++) {
@@ -476,18 +406,17 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         }
 
         float c[4];
-        surface_color(J, best, sb, c);
-        const csg_material *m = csg_scene_material(J->scene, sb->prim);
+        const csg_material *m;
+        render_surface_color(J->scene, J->opt, best, sb, c, &m);
         double alpha = c[3];
-        double sigma = absorption(J, m, alpha);
+        double sigma = render_surface_absorption(J->opt, m, alpha);
         if (sigma > 0) {
             if (is_exit) {
                 int was = volume[best];
                 volume[best] = 0;
                 if (was) continue;
             } else {
-                double len = span->exit.t - span->enter.t;
-                alpha = isfinite(len) ? -expm1(-sigma * len) : 1;
+                alpha = render_span_opacity(sigma, span->exit.t - span->enter.t);
                 volume[best] = 1;
             }
         } else if (bb->prim == IV_PRIM_NONE) {
@@ -495,21 +424,23 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         }
         if (!(alpha > 0)) continue;
 
-        double local[3], p[3], nf[3];
-        if (surface_light(J, wk, bb, sb, c, m, o, d, depth, local, p, nf) != 0) return -1;
+        double local[3];
+        render_hit h;
+        if (surface_light(J, wk, bb, sb, c, m, o, d, depth, local, &h) != 0) return -1;
 
         composite(acc, &acc_a, alpha, local);
 
-        double ior = m->ior > 1 ? m->ior : J->opt->ior > 1 && alpha < 1 ? J->opt->ior : 0;
-        if (ior > 1 && acc_a < OPAQUE && depth < J->max_depth && bb->prim != IV_PRIM_NONE) {
+        double ior = acc_a < RENDER_OPAQUE && depth < J->max_depth && bb->prim != IV_PRIM_NONE
+                         ? render_surface_ior(J->opt, m, alpha)
+                         : 0;
+        if (ior > 1) {
             /* What lies behind is seen along the refracted ray, not the
              * straight one: entering a solid bends by 1/ior, leaving it by
              * ior; total internal reflection mirrors instead. */
             double td[3], tc[3];
-            if (!refract_dir(d, nf, is_exit ? ior : 1 / ior, td))
-                for (int i = 0; i < 3; i++)
-                    td[i] = d[i] - 2 * dot3(d, nf) * nf[i];
-            if (trace_from(J, wk, p, nf, td, depth + 1, tc) != 0) return -1;
+            if (render_refract_dir(d, h.nf, is_exit ? ior : 1 / ior, td) < 0)
+                render_reflect_dir(d, h.nf, td);
+            if (trace_from(J, wk, &h, td, depth + 1, tc) != 0) return -1;
             for (int i = 0; i < 3; i++)
                 out[i] = acc[i] + (1 - acc_a) * tc[i];
             return 0;
@@ -517,28 +448,6 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
     }
     over_background(J, acc, acc_a, out);
     return 0;
-}
-
-/* The primary ray of image position (px, py), through a thin lens when the
- * aperture is open: every ray of a pixel meets the others on the plane of
- * focus, at depth J->focus along forward. */
-static void primary_ray(const job *J, rng *g, double px, double py, double o[3], double d[3])
-{
-    const render_options *opt = J->opt;
-    render_raygen_ray(&J->gen, px, py, o, d);
-    if (!(opt->aperture > 0)) return;
-    const render_camera *c = J->cam;
-    double df = dot3(d, c->forward);
-    if (!(df > 0)) return;
-    double f[3], lx, ly;
-    for (int i = 0; i < 3; i++)
-        f[i] = o[i] + d[i] * (J->focus / df);
-    square_to_disc(rng_next(g), rng_next(g), &lx, &ly);
-    for (int i = 0; i < 3; i++) {
-        o[i] += opt->aperture / 2 * (lx * c->right[i] + ly * c->up[i]);
-        d[i] = f[i] - o[i];
-    }
-    normalize3(d);
 }
 
 /* Pixel (x, y): the mean of its s² samples, whose sum is sum (inv = 1/s²). */
@@ -578,7 +487,7 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
         for (int x = x0; x < x1; x++) {
             double sum[3] = {0, 0, 0};
             if (J->jitter) /* only the light model draws random numbers */
-                wk->g = rng_for_pixel(opt->seed, x, y);
+                wk->g = rng_for_pixel(opt->seed, x, y, 0);
             /* s×s strata.  The preview look samples each at its centre
              * (deterministic, and s = 1 is the pixel centre where GL
              * samples coverage); the light model jitters within them. */
@@ -595,7 +504,8 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
                             sum[k] += (float)(double)J->opt->colors.background[k];
                         continue;
                     }
-                    primary_ray(J, &wk->g, px, py, o, d);
+                    render_raygen_ray(&J->gen, px, py, o, d);
+                    thin_lens(J->cam, opt->aperture, J->focus, &wk->g, o, d);
                     ray_range(J->cam, d, &tmin, &tmax);
                     int rc = trace_ray(J, wk, o, d, tmin, tmax, 0, c);
                     iv_arena_reset(wk->a);
@@ -642,12 +552,12 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
     J->light_n = opt->light_samples > 0 ? opt->light_samples : 4;
     J->max_depth = opt->bounces > 0 ? opt->bounces : 4;
     J->jitter = J->lit || opt->aperture > 0;
-    /* An x-ray opacity below OPAQUE makes every surface transparent, so the
+    /* An x-ray opacity below RENDER_OPAQUE makes every surface transparent, so the
      * first boundary never settles a ray. */
-    J->first_hit = !(opt->xray > 0 && opt->xray < OPAQUE);
+    J->first_hit = !(opt->xray > 0 && opt->xray < RENDER_OPAQUE);
 
     double centre[3], size = model_scale(J->scene, centre);
-    J->eps = 1e-7 * size;
+    J->eps = render_ray_offset(size);
     J->focus = lens_focus(opt, J->cam, centre, size);
     return 0;
 }

@@ -1,8 +1,9 @@
 /*
  * sampling.h — private to src/render: what the preview renderer (render.c)
  * and the path tracer (path_trace.c) both draw on: per-pixel random streams,
- * the concentric disc map, small vector helpers and the camera's t range.
- * All static inline, so each file keeps its own copy of the code it uses.
+ * the concentric disc map, small vector helpers, the model's scale, the thin
+ * lens and the camera's t range.  All static inline, so each file keeps its
+ * own copy of the code it uses.
  */
 #ifndef RAYSCAD_RENDER_SAMPLING_H
 #define RAYSCAD_RENDER_SAMPLING_H
@@ -25,6 +26,14 @@ static inline uint64_t mix64(uint64_t z)
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
     return z ^ (z >> 31);
+}
+
+/* The stream of pixel (x, y) under seed: xoring in its own constant
+ * `stream` keeps one renderer's streams apart from the other's. */
+static inline rng rng_for_pixel(unsigned seed, int x, int y, uint64_t stream)
+{
+    rng g = {mix64(((uint64_t)seed << 42) ^ ((uint64_t)(uint32_t)y << 21) ^ (uint32_t)x ^ stream)};
+    return g;
 }
 
 /* Uniform in [0, 1): the top 53 bits. */
@@ -83,10 +92,9 @@ static inline void basis_of(const double w[3], double u[3], double v[3])
 
 /* The model's size — the diagonal of its bounds (infinite extents count as
  * 0), at least 1 and at least its centre's distance from the origin along
- * any axis — and its centre (the origin when it has no bounds).  Secondary
- * rays leave a surface 1e-7 of this along its normal: far above the
- * rounding of t (a few ulps of the distances involved), far below any
- * feature. */
+ * any axis — and its centre (the origin when it has no bounds): what
+ * secondary rays' offsets (render_ray_offset), the lens's default focus and
+ * the path tracer's light falloff scale with. */
 static inline double model_scale(const csg_scene *s, double centre[3])
 {
     double lo[3], hi[3], size = 1;
@@ -113,6 +121,27 @@ static inline double lens_focus(const render_options *opt, const render_camera *
     if (opt->focus > 0) return opt->focus;
     double v[3] = {centre[0] - c->eye[0], centre[1] - c->eye[1], centre[2] - c->eye[2]};
     return fmax(dot3(v, c->forward), 1e-6 * size);
+}
+
+/* A primary ray (o, d) from render_raygen_ray, moved onto a thin lens of
+ * diameter `aperture` when it is open: every ray of a pixel meets the
+ * others on the plane of focus, at depth `focus` along forward, and draws
+ * its point on the lens from g. */
+static inline void thin_lens(const render_camera *c, double aperture, double focus, rng *g,
+                             double o[3], double d[3])
+{
+    if (!(aperture > 0)) return;
+    double df = dot3(d, c->forward);
+    if (!(df > 0)) return;
+    double f[3], lx, ly;
+    for (int i = 0; i < 3; i++)
+        f[i] = o[i] + d[i] * (focus / df);
+    square_to_disc(rng_next(g), rng_next(g), &lx, &ly);
+    for (int i = 0; i < 3; i++) {
+        o[i] += aperture / 2 * (lx * c->right[i] + ly * c->up[i]);
+        d[i] = f[i] - o[i];
+    }
+    normalize3(d);
 }
 
 /* The parameter range [tmin, tmax] along o + t·d that the camera keeps: its
