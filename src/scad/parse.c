@@ -1,7 +1,8 @@
 /*
- * parse.c — recursive-descent parser for the OpenSCAD grammar (parser.y of
- * OpenSCAD 2021.01, with the same precedences: ?: < || < && < == != <
- * < <= > >= < + - < * / % < unary + - ! < ^ < call, index, member).
+ * parse.c — the recursive-descent parser for the OpenSCAD grammar (parser.y
+ * of OpenSCAD 2021.01): statements, definitions, include and use, and the
+ * token helpers and error reporting both halves share (the expressions are
+ * parse_expr.c's).
  *
  * The tokens and every node live in the parse's arena.  Statements are added
  * to the scope being parsed; a bare { } block adds to the enclosing scope, as
@@ -14,60 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ast.h"
-
-enum { MAX_DEPTH = 2000, MAX_ERRORS = 50 };
-
-typedef struct parser {
-    scad_arena *a;
-    scad_diag *d;
-    scad_token *t;
-    int pos, ntok;
-    int depth;
-    int errors;
-    int oom;
-    int include_depth;
-    struct shared *shared; /* one for a parse and its includes and uses */
-} parser;
-
-/* What a parse shares with the parses of the files it includes and uses:
- * the names, the files already `use`d (each is parsed once, and a cycle of
- * uses ends), and the scopes that define functions or modules, indexed by
- * name when the whole parse is done. */
-typedef struct shared {
-    scad_names *names;
-    const scad_options *opt; /* the file services */
-    const char **path;
-    scad_scope **scope;
-    int n, cap;
-    scad_scope **defining;
-    int ndefining, capdefining;
-} shared;
-
-/* Raised by a failing rule: the whole statement is abandoned. */
-#define FAIL_IF(cond)                                                                              \
-    do {                                                                                           \
-        if (cond) return NULL;                                                                     \
-    } while (0)
-
-static scad_token *peek(parser *P)
-{
-    return &P->t[P->pos];
-}
-static scad_token *peek2(parser *P)
-{
-    return &P->t[P->pos + 1 < P->ntok ? P->pos + 1 : P->pos];
-}
-static scad_token *next(parser *P)
-{
-    scad_token *t = &P->t[P->pos];
-    if (P->pos < P->ntok - 1) P->pos++;
-    return t;
-}
-static int is_ch(const scad_token *t, int c)
-{
-    return t->kind == TK_CHAR && t->ch == c;
-}
+#include "parse.h"
 
 static const char *describe(const scad_token *t, char *buf, size_t n)
 {
@@ -99,7 +47,7 @@ static const char *describe(const scad_token *t, char *buf, size_t n)
     }
 }
 
-static void syntax_error(parser *P, const char *want)
+void scad_parse_syntax_error(parser *P, const char *want)
 {
     char buf[64];
     scad_token *t = peek(P);
@@ -114,17 +62,17 @@ static void syntax_error(parser *P, const char *want)
     P->errors++;
 }
 
-static int expect(parser *P, int c, const char *want)
+int scad_parse_expect(parser *P, int c, const char *want)
 {
     if (is_ch(peek(P), c)) {
         next(P);
         return 1;
     }
-    syntax_error(P, want);
+    scad_parse_syntax_error(P, want);
     return 0;
 }
 
-static void *alloc(parser *P, size_t n)
+void *scad_parse_alloc(parser *P, size_t n)
 {
     void *p = scad_arena_alloc(P->a, n);
     if (!p) P->oom = 1;
@@ -132,436 +80,22 @@ static void *alloc(parser *P, size_t n)
 }
 
 /* Grow an arena array of elem-size items by doubling. */
-static void *grow(parser *P, void *v, int n, int *cap, size_t elem)
+void *scad_parse_grow(parser *P, void *v, int n, int *cap, size_t elem)
 {
     if (n < *cap) return v;
     int c = *cap ? *cap * 2 : 4;
-    void *nv = alloc(P, elem * (size_t)c);
+    void *nv = scad_parse_alloc(P, elem * (size_t)c);
     if (!nv) return NULL;
     if (n) memcpy(nv, v, elem * (size_t)n);
     *cap = c;
     return nv;
 }
 
-static scad_expr *new_expr(parser *P, scad_expr_kind kind, scad_loc loc)
-{
-    scad_expr *e = alloc(P, sizeof *e);
-    if (e) {
-        e->kind = kind;
-        e->loc = loc;
-    }
-    return e;
-}
-
-static scad_expr *expr(parser *P);
-static scad_expr *vector_element(parser *P);
-
-/* ---- arguments and parameters --------------------------------------------- */
-
-/* '(' already consumed.  Parses `a, b = e, …` up to ')' (consumed).
- * is_def: parameters (names required, defaults optional). */
-static int at_close(parser *P, int close)
-{
-    return is_ch(peek(P), ')') || (close == ';' && is_ch(peek(P), ';'));
-}
-
-/* close is ')' or ';' (then ')' also ends the list: for(…;…;…)). */
-static int arg_list(parser *P, scad_args *out, int is_def, int close)
-{
-    int cap = 0;
-    out->v = NULL;
-    out->n = 0;
-    while (!at_close(P, close)) {
-        scad_arg arg = {NULL, NULL, peek(P)->loc};
-        if (peek(P)->kind == TK_ID && is_ch(peek2(P), '=')) {
-            arg.name = next(P)->text;
-            next(P);
-            arg.value = expr(P);
-            if (!arg.value) return 0;
-        } else if (is_def) {
-            if (peek(P)->kind != TK_ID) {
-                syntax_error(P, "a parameter name");
-                return 0;
-            }
-            arg.name = next(P)->text;
-        } else {
-            arg.value = expr(P);
-            if (!arg.value) return 0;
-        }
-        out->v = grow(P, out->v, out->n, &cap, sizeof *out->v);
-        if (!out->v) return 0;
-        out->v[out->n++] = arg;
-        if (is_ch(peek(P), ',')) {
-            while (is_ch(peek(P), ','))
-                next(P); /* optional_commas */
-            continue;
-        }
-        if (!at_close(P, close)) {
-            syntax_error(P, close == ')' ? "',' or ')'" : "',', ';' or ')'");
-            return 0;
-        }
-    }
-    next(P);
-    return 1;
-}
-
-/* ---- expressions ------------------------------------------------------------ */
-
-static scad_expr *binary(parser *P, int op, scad_loc loc, scad_expr *l, scad_expr *r)
-{
-    FAIL_IF(!l || !r);
-    scad_expr *e = new_expr(P, EX_BINARY, loc);
-    FAIL_IF(!e);
-    e->op = op;
-    e->a[0] = l;
-    e->a[1] = r;
-    return e;
-}
-
-static scad_expr *primary(parser *P)
-{
-    scad_token *t = peek(P);
-    scad_expr *e;
-    switch (t->kind) {
-    case TK_NUMBER:
-        next(P);
-        e = new_expr(P, EX_NUMBER, t->loc);
-        if (e) e->num = t->num;
-        return e;
-    case TK_STRING:
-        next(P);
-        e = new_expr(P, EX_STRING, t->loc);
-        if (e) {
-            e->str = t->text;
-            e->len = t->len;
-        }
-        return e;
-    case TK_TRUE:
-    case TK_FALSE:
-        next(P);
-        e = new_expr(P, EX_BOOL, t->loc);
-        if (e) e->num = t->kind == TK_TRUE;
-        return e;
-    case TK_UNDEF:
-        next(P);
-        return new_expr(P, EX_UNDEF, t->loc);
-    case TK_ID:
-        next(P);
-        e = new_expr(P, EX_VAR, t->loc);
-        if (e) e->str = t->text;
-        return e;
-    default:
-        break;
-    }
-    if (is_ch(t, '(')) {
-        next(P);
-        e = expr(P);
-        FAIL_IF(!e);
-        FAIL_IF(!expect(P, ')', "')'"));
-        return e;
-    }
-    if (is_ch(t, '[')) {
-        next(P);
-        scad_loc loc = t->loc;
-        if (is_ch(peek(P), ']')) {
-            next(P);
-            return new_expr(P, EX_VECTOR, loc);
-        }
-        scad_expr *first = vector_element(P);
-        FAIL_IF(!first);
-        if (is_ch(peek(P), ':') && first->kind < LC_FOR) {
-            next(P);
-            scad_expr *second = expr(P);
-            FAIL_IF(!second);
-            e = new_expr(P, EX_RANGE, loc);
-            FAIL_IF(!e);
-            e->a[0] = first;
-            if (is_ch(peek(P), ':')) {
-                next(P);
-                e->a[1] = second;
-                e->a[2] = expr(P);
-                FAIL_IF(!e->a[2]);
-            } else {
-                e->a[2] = second;
-            }
-            FAIL_IF(!expect(P, ']', "']'"));
-            return e;
-        }
-        e = new_expr(P, EX_VECTOR, loc);
-        FAIL_IF(!e);
-        int cap = 0;
-        e->list = grow(P, NULL, 0, &cap, sizeof *e->list);
-        FAIL_IF(!e->list);
-        e->list[e->n++] = first;
-        for (;;) {
-            if (is_ch(peek(P), ']')) {
-                next(P);
-                return e;
-            }
-            FAIL_IF(!expect(P, ',', "',' or ']'"));
-            while (is_ch(peek(P), ','))
-                next(P);
-            if (is_ch(peek(P), ']')) continue;
-            scad_expr *el = vector_element(P);
-            FAIL_IF(!el);
-            e->list = grow(P, e->list, e->n, &cap, sizeof *e->list);
-            FAIL_IF(!e->list);
-            e->list[e->n++] = el;
-        }
-    }
-    syntax_error(P, "an expression");
-    return NULL;
-}
-
-static scad_expr *postfix(parser *P)
-{
-    scad_expr *e = primary(P);
-    for (;;) {
-        FAIL_IF(!e);
-        scad_token *t = peek(P);
-        if (is_ch(t, '(')) {
-            next(P);
-            scad_expr *c = new_expr(P, EX_CALL, e->loc);
-            FAIL_IF(!c);
-            c->a[0] = e;
-            FAIL_IF(!arg_list(P, &c->args, 0, ')'));
-            e = c;
-        } else if (is_ch(t, '[')) {
-            next(P);
-            scad_expr *c = new_expr(P, EX_INDEX, e->loc);
-            FAIL_IF(!c);
-            c->a[0] = e;
-            c->a[1] = expr(P);
-            FAIL_IF(!c->a[1]);
-            FAIL_IF(!expect(P, ']', "']'"));
-            e = c;
-        } else if (is_ch(t, '.')) {
-            next(P);
-            if (peek(P)->kind != TK_ID) {
-                syntax_error(P, "a member name");
-                return NULL;
-            }
-            scad_expr *c = new_expr(P, EX_MEMBER, e->loc);
-            FAIL_IF(!c);
-            c->a[0] = e;
-            c->str = next(P)->text;
-            e = c;
-        } else {
-            return e;
-        }
-    }
-}
-
-static scad_expr *unary(parser *P);
-
-static scad_expr *power(parser *P)
-{
-    scad_expr *l = postfix(P);
-    FAIL_IF(!l);
-    if (is_ch(peek(P), '^')) {
-        scad_loc loc = next(P)->loc;
-        return binary(P, '^', loc, l, unary(P));
-    }
-    return l;
-}
-
-static scad_expr *unary(parser *P)
-{
-    scad_token *t = peek(P);
-    if (is_ch(t, '-') || is_ch(t, '+') || is_ch(t, '!')) {
-        next(P);
-        if (++P->depth > MAX_DEPTH) {
-            scad_diag_error(P->d, t->loc, "expression nested deeper than %d levels", MAX_DEPTH);
-            P->errors = MAX_ERRORS;
-            return NULL;
-        }
-        scad_expr *operand = unary(P);
-        P->depth--;
-        FAIL_IF(!operand);
-        scad_expr *e = new_expr(P, EX_UNARY, t->loc);
-        FAIL_IF(!e);
-        e->op = t->ch;
-        e->a[0] = operand;
-        return e;
-    }
-    return power(P);
-}
-
-/* How tightly a binary operator binds (OpenSCAD 2021.01's parser.y, all
- * left associative): || 1, && 2, == != 3, < > <= >= 4, + - 5, * / % 6;
- * 0 when t is not a binary operator.  *op gets the operator as binary()
- * takes it: the character, or the token kind. */
-static int binary_priority(const scad_token *t, int *op)
-{
-    static const struct {
-        scad_tok_kind kind;
-        int ch, priority;
-    } ops[] = {
-        {TK_OR, 0, 1},     {TK_AND, 0, 2},    {TK_EQ, 0, 3},     {TK_NE, 0, 3},
-        {TK_CHAR, '<', 4}, {TK_CHAR, '>', 4}, {TK_LE, 0, 4},     {TK_GE, 0, 4},
-        {TK_CHAR, '+', 5}, {TK_CHAR, '-', 5}, {TK_CHAR, '*', 6}, {TK_CHAR, '/', 6},
-        {TK_CHAR, '%', 6},
-    };
-    for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++)
-        if (t->kind == ops[i].kind && (t->kind != TK_CHAR || t->ch == ops[i].ch)) {
-            *op = t->kind == TK_CHAR ? t->ch : (int)t->kind;
-            return ops[i].priority;
-        }
-    *op = 0;
-    return 0;
-}
-
-/* The binary operators that bind tighter than `limit`, over unary operands:
- * precedence climbing, as Lua's subexpr.  A right operand takes only
- * operators tighter than its own, so equal ones group to the left; a chain
- * of equal operators is this loop, not recursion. */
-static scad_expr *binary_chain(parser *P, int limit)
-{
-    scad_expr *l = unary(P);
-    for (;;) {
-        int op, priority = binary_priority(peek(P), &op);
-        if (!l || priority <= limit) return l;
-        scad_token *t = next(P);
-        l = binary(P, op, t->loc, l, binary_chain(P, priority));
-    }
-}
-
-/* let/assert/echo(args) expr, and function(params) expr. */
-static scad_expr *prefixed(parser *P, scad_expr_kind kind, int body_optional)
-{
-    scad_token *t = next(P);
-    scad_expr *e = new_expr(P, kind, t->loc);
-    FAIL_IF(!e);
-    FAIL_IF(!expect(P, '(', "'('"));
-    FAIL_IF(!arg_list(P, &e->args, kind == EX_FUNCLIT, ')'));
-    if (body_optional) {
-        scad_token *n = peek(P);
-        if (is_ch(n, ';') || is_ch(n, ')') || is_ch(n, ']') || is_ch(n, ',') || is_ch(n, ':') ||
-            n->kind == TK_EOF)
-            return e;
-    }
-    e->a[0] = expr(P);
-    FAIL_IF(!e->a[0]);
-    return e;
-}
-
-static scad_expr *expr(parser *P)
-{
-    if (++P->depth > MAX_DEPTH) {
-        scad_diag_error(P->d, peek(P)->loc, "expression nested deeper than %d levels", MAX_DEPTH);
-        P->errors = MAX_ERRORS;
-        return NULL;
-    }
-    scad_expr *e;
-    scad_token *t = peek(P);
-    if (t->kind == TK_FUNCTION) {
-        e = prefixed(P, EX_FUNCLIT, 0);
-    } else if (t->kind == TK_LET) {
-        e = prefixed(P, EX_LET, 0);
-    } else if (t->kind == TK_ASSERT) {
-        e = prefixed(P, EX_ASSERT, 1);
-    } else if (t->kind == TK_ECHO) {
-        e = prefixed(P, EX_ECHO, 1);
-    } else {
-        e = binary_chain(P, 0);
-        if (e && is_ch(peek(P), '?')) {
-            scad_token *q = next(P);
-            scad_expr *c = new_expr(P, EX_TERNARY, q->loc);
-            if (!c) return NULL;
-            c->a[0] = e;
-            c->a[1] = expr(P);
-            if (!c->a[1] || !expect(P, ':', "':'")) return NULL;
-            c->a[2] = expr(P);
-            e = c->a[2] ? c : NULL;
-        }
-    }
-    P->depth--;
-    return e;
-}
-
-/* One element of a vector: an expression or a list comprehension. */
-static scad_expr *lc_element(parser *P, int parens_ok);
-
-/* A vector's own elements may not be a parenthesised comprehension (only
- * the bodies of for/if/let/each may), as in OpenSCAD 2021.01's grammar. */
-static scad_expr *vector_element(parser *P)
-{
-    return lc_element(P, 0);
-}
-
-static scad_expr *lc_element(parser *P, int parens_ok)
-{
-    scad_token *t = peek(P);
-    if (++P->depth > MAX_DEPTH) {
-        scad_diag_error(P->d, t->loc, "expression nested deeper than %d levels", MAX_DEPTH);
-        P->errors = MAX_ERRORS;
-        return NULL;
-    }
-    scad_expr *e = NULL;
-    if (t->kind == TK_EACH) {
-        next(P);
-        e = new_expr(P, LC_EACH, t->loc);
-        if (e && !(e->a[0] = lc_element(P, 1))) e = NULL;
-    } else if (t->kind == TK_FOR) {
-        next(P);
-        e = new_expr(P, LC_FOR, t->loc);
-        if (e && expect(P, '(', "'('")) {
-            /* for (init; cond; update) or for (args) */
-            scad_args init;
-            if (!arg_list(P, &init, 0, ';')) {
-                e = NULL;
-            } else {
-                e->args = init;
-                if (is_ch(&P->t[P->pos - 1], ';')) {
-                    e->kind = LC_CFOR;
-                    e->a[1] = expr(P);
-                    if (!e->a[1] || !expect(P, ';', "';'") || !arg_list(P, &e->args2, 0, ')'))
-                        e = NULL;
-                }
-                if (e && !(e->a[0] = lc_element(P, 1))) e = NULL;
-            }
-        } else {
-            e = NULL;
-        }
-    } else if (t->kind == TK_IF) {
-        next(P);
-        e = new_expr(P, LC_IF, t->loc);
-        if (e && expect(P, '(', "'('") && (e->a[1] = expr(P)) && expect(P, ')', "')'") &&
-            (e->a[0] = lc_element(P, 1))) {
-            if (peek(P)->kind == TK_ELSE) {
-                next(P);
-                if (!(e->a[2] = lc_element(P, 1))) e = NULL;
-            }
-        } else {
-            e = NULL;
-        }
-    } else if (t->kind == TK_LET) {
-        /* let(…) followed by a comprehension is LC_LET, else an expression */
-        next(P);
-        e = new_expr(P, LC_LET, t->loc);
-        if (e && expect(P, '(', "'('") && arg_list(P, &e->args, 0, ')') &&
-            (e->a[0] = lc_element(P, 1))) {
-            if (e->a[0]->kind < LC_FOR) e->kind = EX_LET;
-        } else {
-            e = NULL;
-        }
-    } else if (parens_ok && is_ch(t, '(') &&
-               (peek2(P)->kind == TK_FOR || peek2(P)->kind == TK_EACH || peek2(P)->kind == TK_IF)) {
-        next(P);
-        e = lc_element(P, 1);
-        if (e && !expect(P, ')', "')'")) e = NULL;
-    } else {
-        e = expr(P);
-    }
-    P->depth--;
-    return e;
-}
-
 /* ---- statements ------------------------------------------------------------ */
 
 static scad_scope *new_scope(parser *P)
 {
-    return alloc(P, sizeof(scad_scope));
+    return scad_parse_alloc(P, sizeof(scad_scope));
 }
 
 static int statement(parser *P, scad_scope *s);
@@ -576,7 +110,7 @@ static void add_assign(parser *P, scad_scope *s, const char *name, scad_expr *va
             return;
         }
     }
-    s->assigns = grow(P, s->assigns, s->nassigns, &s->capassigns, sizeof *s->assigns);
+    s->assigns = scad_parse_grow(P, s->assigns, s->nassigns, &s->capassigns, sizeof *s->assigns);
     if (!s->assigns) return;
     scad_assign a = {name, value, loc};
     s->assigns[s->nassigns++] = a;
@@ -584,7 +118,7 @@ static void add_assign(parser *P, scad_scope *s, const char *name, scad_expr *va
 
 static void add_stmt(parser *P, scad_scope *s, scad_stmt *st)
 {
-    s->stmts = grow(P, s->stmts, s->nstmts, &s->capstmts, sizeof *s->stmts);
+    s->stmts = scad_parse_grow(P, s->stmts, s->nstmts, &s->capstmts, sizeof *s->stmts);
     if (s->stmts) s->stmts[s->nstmts++] = st;
 }
 
@@ -616,12 +150,12 @@ static scad_stmt *instantiation(parser *P)
         }
     } else if (t->kind == TK_IF) {
         next(P);
-        st = alloc(P, sizeof *st);
+        st = scad_parse_alloc(P, sizeof *st);
         if (st) {
             st->name = t->text;
             st->loc = t->loc;
-            if (!expect(P, '(', "'('") || !(st->cond = expr(P)) || !expect(P, ')', "')'") ||
-                !(st->children = child_scope(P))) {
+            if (!scad_parse_expect(P, '(', "'('") || !(st->cond = scad_parse_expr(P)) ||
+                !scad_parse_expect(P, ')', "')'") || !(st->children = child_scope(P))) {
                 st = NULL;
             } else if (peek(P)->kind == TK_ELSE) {
                 next(P);
@@ -631,16 +165,16 @@ static scad_stmt *instantiation(parser *P)
     } else if (t->kind == TK_ID || t->kind == TK_FOR || t->kind == TK_LET || t->kind == TK_ASSERT ||
                t->kind == TK_ECHO || t->kind == TK_EACH) {
         next(P);
-        st = alloc(P, sizeof *st);
+        st = scad_parse_alloc(P, sizeof *st);
         if (st) {
             st->name = t->text;
             st->loc = t->loc;
-            if (!expect(P, '(', "'('") || !arg_list(P, &st->args, 0, ')') ||
+            if (!scad_parse_expect(P, '(', "'('") || !scad_parse_args(P, &st->args, 0, ')') ||
                 !(st->children = child_scope(P)))
                 st = NULL;
         }
     } else {
-        syntax_error(P, "a statement");
+        scad_parse_syntax_error(P, "a statement");
     }
     P->depth--;
     return st;
@@ -651,7 +185,8 @@ static void defining(parser *P, scad_scope *s)
 {
     if (s->nfuncs + s->nmods != 1) return; /* not its first definition */
     shared *sh = P->shared;
-    sh->defining = grow(P, sh->defining, sh->ndefining, &sh->capdefining, sizeof *sh->defining);
+    sh->defining =
+        scad_parse_grow(P, sh->defining, sh->ndefining, &sh->capdefining, sizeof *sh->defining);
     if (sh->defining) sh->defining[sh->ndefining++] = s;
 }
 
@@ -660,14 +195,14 @@ static int definition(parser *P, scad_scope *s)
     scad_token *kw = next(P);
     scad_token *name = peek(P);
     if (name->kind != TK_ID) {
-        syntax_error(P, kw->kind == TK_MODULE ? "a module name" : "a function name");
+        scad_parse_syntax_error(P, kw->kind == TK_MODULE ? "a module name" : "a function name");
         return 0;
     }
     next(P);
     scad_args params;
-    if (!expect(P, '(', "'('") || !arg_list(P, &params, 1, ')')) return 0;
+    if (!scad_parse_expect(P, '(', "'('") || !scad_parse_args(P, &params, 1, ')')) return 0;
     if (kw->kind == TK_MODULE) {
-        scad_moddef *m = alloc(P, sizeof *m);
+        scad_moddef *m = scad_parse_alloc(P, sizeof *m);
         scad_scope *body = new_scope(P);
         if (!m || !body) return 0;
         m->name = name->text;
@@ -675,18 +210,18 @@ static int definition(parser *P, scad_scope *s)
         m->params = params;
         m->body = body;
         if (!statement(P, body)) return 0;
-        s->mods = grow(P, s->mods, s->nmods, &s->capmods, sizeof *s->mods);
+        s->mods = scad_parse_grow(P, s->mods, s->nmods, &s->capmods, sizeof *s->mods);
         if (s->mods) s->mods[s->nmods++] = m;
         defining(P, s);
         return 1;
     }
-    scad_funcdef *f = alloc(P, sizeof *f);
-    if (!f || !expect(P, '=', "'='")) return 0;
+    scad_funcdef *f = scad_parse_alloc(P, sizeof *f);
+    if (!f || !scad_parse_expect(P, '=', "'='")) return 0;
     f->name = name->text;
     f->loc = kw->loc;
     f->params = params;
-    if (!(f->body = expr(P)) || !expect(P, ';', "';'")) return 0;
-    s->funcs = grow(P, s->funcs, s->nfuncs, &s->capfuncs, sizeof *s->funcs);
+    if (!(f->body = scad_parse_expr(P)) || !scad_parse_expect(P, ';', "';'")) return 0;
+    s->funcs = scad_parse_grow(P, s->funcs, s->nfuncs, &s->capfuncs, sizeof *s->funcs);
     if (s->funcs) s->funcs[s->nfuncs++] = f;
     defining(P, s);
     return 1;
@@ -732,7 +267,7 @@ static int statement(parser *P, scad_scope *s)
         int ok = 1;
         while (!is_ch(peek(P), '}')) {
             if (peek(P)->kind == TK_EOF) {
-                syntax_error(P, "'}'");
+                scad_parse_syntax_error(P, "'}'");
                 return 0;
             }
             if (!statement(P, s)) {
@@ -758,8 +293,8 @@ static int statement(parser *P, scad_scope *s)
     if (t->kind == TK_ID && is_ch(peek2(P), '=')) {
         next(P);
         next(P);
-        scad_expr *e = expr(P);
-        if (!e || !expect(P, ';', "';'")) return 0;
+        scad_expr *e = scad_parse_expr(P);
+        if (!e || !scad_parse_expect(P, ';', "';'")) return 0;
         add_assign(P, s, t->text, e, t->loc);
         return 1;
     }
@@ -776,7 +311,7 @@ static int parse_into(parser *P, scad_scope *s)
             if (P->errors >= MAX_ERRORS || P->oom) break;
             recover(P);
             if (is_ch(peek(P), '}')) {
-                syntax_error(P, "a statement");
+                scad_parse_syntax_error(P, "a statement");
                 next(P);
             }
         }
@@ -815,8 +350,8 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         }
         if (u->n == u->cap) {
             int cap = u->cap ? u->cap * 2 : 8;
-            const char **np = alloc(P, sizeof *np * (size_t)cap);
-            scad_scope **ns = alloc(P, sizeof *ns * (size_t)cap);
+            const char **np = scad_parse_alloc(P, sizeof *np * (size_t)cap);
+            scad_scope **ns = scad_parse_alloc(P, sizeof *ns * (size_t)cap);
             if (!np || !ns) return;
             if (u->n) {
                 memcpy(np, u->path, sizeof *np * (size_t)u->n);
@@ -847,7 +382,7 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
     }
     for (int i = 0; i < s->nuses; i++)
         if (s->uses[i] == scope) return;
-    s->uses = grow(P, s->uses, s->nuses, &s->capuses, sizeof *s->uses);
+    s->uses = scad_parse_grow(P, s->uses, s->nuses, &s->capuses, sizeof *s->uses);
     if (s->uses) s->uses[s->nuses++] = scope;
 }
 
