@@ -62,7 +62,7 @@ LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c sr
 	src/io/*.c)
 IO_SRC   = $(filter-out src/io/image.cpp,$(wildcard src/io/*.cpp))
 CLI_SRC  = $(wildcard src/cli/*.c)
-TEST_SRC = $(wildcard tests/test_*.c)
+TEST_SRC = $(wildcard tests/*/test_*.c)
 TOOL_SRC = $(wildcard tests/tools/*.c)
 
 LIB_OBJ  = $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(IO_SRC:%.cpp=$(BUILD)/obj/%.o)
@@ -76,11 +76,14 @@ TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
 .PHONY: all deps demo test unit cli compare conformance meshcheck asan clean format bench fuzz hostile \
-	valgrind install uninstall installcheck
+	valgrind install uninstall installcheck format-check
 .DEFAULT_GOAL := all
 
-all: $(BUILD)/rayscad $(BUILD)/$(SO_NAME) $(TESTS) $(TOOLS) $(BUILD)/tests/$(notdir $(IMAGE_SO)) \
-	$(BUILD)/tools/$(notdir $(IMAGE_SO))
+# The test programs (one folder per module, as tests/ mirrors src/) and the
+# tools find the image adapter through a link in their folder.
+ADAPTER_LINKS = $(addsuffix $(notdir $(IMAGE_SO)),$(sort $(dir $(TESTS) $(TOOLS))))
+
+all: $(BUILD)/rayscad $(BUILD)/$(SO_NAME) $(TESTS) $(TOOLS) $(ADAPTER_LINKS)
 
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -93,11 +96,10 @@ $(BUILD)/obj/%.o: %.cpp
 # The OpenImageIO adapter: image.cpp and the temp-file helpers as a shared
 # object of their own, found beside the program or library (or in
 # lib/rayscad/ when installed) and dlopened only when an image is read or
-# written (src/io/image_loader.c says why).  The test programs and tools
-# live one folder down, and find it through a link there.
-$(BUILD)/tests/$(notdir $(IMAGE_SO)) $(BUILD)/tools/$(notdir $(IMAGE_SO)): $(IMAGE_SO)
+# written (src/io/image_loader.c says why).
+$(ADAPTER_LINKS): $(IMAGE_SO)
 	@mkdir -p $(dir $@)
-	ln -sf ../$(notdir $(IMAGE_SO)) $@
+	ln -sf $(abspath $(IMAGE_SO)) $@
 
 $(BUILD)/pic/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -204,9 +206,9 @@ uninstall:
 	-rmdir $(DESTDIR)$(LIBDIR)/rayscad 2>/dev/null
 
 # An installation into a scratch DESTDIR, used as a stranger would use it
-# (tests/install_test.sh).
+# (tests/rayscad/install_test.sh).
 installcheck: all
-	tests/install_test.sh $(BUILD)
+	tests/rayscad/install_test.sh $(BUILD)
 
 deps:
 	@missing=""; for p in $(DEBS); do \
@@ -235,27 +237,28 @@ unit: all
 	@fail=0; for t in $(TESTS); do $$t --jobs=$(UNIT_JOBS) || fail=1; done; exit $$fail
 
 cli: all
-	tests/cli_test.sh $(BUILD)
+	tests/cli/cli_test.sh $(BUILD)
 
 compare: all
-	tests/compare_openscad.sh $(BUILD)
+	tests/cli/compare_openscad.sh $(BUILD)
 
 # Hostile inputs and OpenSCAD's examples: no signal, no hang, no sanitizer report,
-# no output left behind by a failure (tests/hostile.sh).
+# no output left behind by a failure (tests/cli/hostile.sh).
 hostile: all
-	tests/hostile.sh $(BUILD)
+	tests/cli/hostile.sh $(BUILD)
 
 # The demos under valgrind memcheck (minutes; not part of make test).
 valgrind: all
-	tests/valgrind.sh $(BUILD)
+	tests/cli/valgrind.sh $(BUILD)
 
 conformance: all
-	tests/conformance.sh $(BUILD)
+	tests/cli/conformance.sh $(BUILD)
 
 meshcheck: all
-	tests/mesh_compare.sh $(BUILD)
+	tests/cli/mesh_compare.sh $(BUILD)
 
 test: deps
+	$(MAKE) format-check
 	$(MAKE) all
 	$(MAKE) unit
 	$(MAKE) cli
@@ -321,8 +324,17 @@ fuzz: $(FUZZ_BINS)
 	done
 	@if ls $(FUZZ)/findings | grep -q .; then echo "findings:"; ls $(FUZZ)/findings; exit 1; fi
 
+# Every C, C++ and header file of ours, as .clang-format lays it out:
+# `make format` rewrites them, `make format-check` (part of make test, so
+# of CI) fails on any that differs.
+FORMATTED = $(sort $(shell find src tests include examples -name '*.c' -o -name '*.h' -o \
+	-name '*.cpp'))
+
 format:
-	clang-format -i $(LIB_SRC) $(CLI_SRC) $(TEST_SRC) $(TOOL_SRC) $(wildcard src/io/*.cpp) src/*/*.h
+	clang-format -i $(FORMATTED)
+
+format-check:
+	clang-format --dry-run -Werror $(FORMATTED)
 
 clean:
 	rm -rf build build-asan build-fuzz out

@@ -33,9 +33,11 @@ int main(int argc, char **argv)
     rayscad_camera cam;
     float *rgba = malloc((size_t)ro.width * ro.height * 4 * sizeof *rgba);
     if (rc == RAYSCAD_OK) rc = rgba ? RAYSCAD_OK : RAYSCAD_ERROR_MEMORY;
-    if (rc == RAYSCAD_OK) rc = rayscad_camera_frame(scene, &view, ro.width, ro.height, &cam, err, sizeof err);
+    if (rc == RAYSCAD_OK)
+        rc = rayscad_camera_frame(scene, &view, ro.width, ro.height, &cam, err, sizeof err);
     if (rc == RAYSCAD_OK) rc = rayscad_render(scene, &cam, &ro, rgba, err, sizeof err);
-    if (rc == RAYSCAD_OK) rc = rayscad_image_write(argv[1], ro.width, ro.height, 4, rgba, err, sizeof err);
+    if (rc == RAYSCAD_OK)
+        rc = rayscad_image_write(argv[1], ro.width, ro.height, 4, rgba, err, sizeof err);
     if (rc != RAYSCAD_OK) fprintf(stderr, "render: %s\n", err);
     free(rgba);
     rayscad_scene_free(scene);

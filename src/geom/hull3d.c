@@ -1,8 +1,9 @@
 /*
  * hull3d.c — the 3D convex hull of a point set by quickhull with outside
  * sets (Barber, Dobkin and Huhdanpaa 1996), for hull() of hundreds of
- * thousands of points and minkowski()'s pairwise sums.  polytope.c's
- * iv_shape_hull, which tests every point against every face, is the
+ * thousands of points and minkowski()'s pairwise sums.  The
+ * incremental hull (hull3d_incremental.c), which tests every point against
+ * every face, is the
  * last resort here.
  *
  * The hull starts as a tetrahedron of extreme points.  Every other point is
@@ -19,9 +20,9 @@
  * across the edge v[j] → v[j+1]); each point that is neither a vertex nor
  * known to be inside is in exactly one live face's outside set.
  *
- * Tolerance.  eps is polytope.c's (a relative 1e-11 of the coordinates):
+ * Tolerance.  eps is the incremental hull's (a relative 1e-11 of the coordinates):
  * a point within eps of a face is on it, so exact input (grids, a cube's
- * corners, OpenSCAD's tessellations) gives the same solid as iv_shape_hull.
+ * corners, OpenSCAD's tessellations) gives the same solid as the incremental hull.
  * Input coplanar only to within a few eps, or with points a few eps apart,
  * needs guards, since rounding can then bend the hull by about eps and a
  * thin face turns that into a tilt that cuts the hull far off:
@@ -41,10 +42,11 @@
  *     above its plane leaves its plane out.
  * On random points 1e-9 to 1e-6 apart the result holds every point within
  * a relative 1e-7, and on random points coplanar to within 20 eps mostly
- * so, at worst within 1e-3 (iv_shape_hull can be off by the whole size
+ * so, at worst within 1e-3 (the incremental hull can be off by the whole size
  * there, or take minutes).
  */
 #include "hull3d.h"
+#include "hull3d_internal.h"
 #include "../intervals/vec3.h"
 
 #include <math.h>
@@ -171,13 +173,13 @@ static int outside_add(hull *h, int f, int p, double dist)
     return 0;
 }
 
-/* Make the first tetrahedron, as polytope.c does (iv_hull_tetrahedron).
+/* Make the first tetrahedron, as the incremental hull does (geom_hull_tetrahedron).
  * Returns 0, GEOM_HULL_FLAT or GEOM_HULL_NO_MEMORY. */
 static int tetrahedron(hull *h, int ids[4])
 {
     const double(*P)[3] = h->P;
     int t[4][3];
-    if (iv_hull_tetrahedron(P, h->n, h->eps, ids, t) != 0) return GEOM_HULL_FLAT;
+    if (geom_hull_tetrahedron(P, h->n, h->eps, ids, t) != 0) return GEOM_HULL_FLAT;
     for (int k = 0; k < 4; k++) {
         double nn[3], dd;
         if (vec3_plane(P, t[k][0], t[k][1], t[k][2], nn, &dd)) return GEOM_HULL_FLAT;
@@ -500,7 +502,7 @@ static int in_play(const hull *h, int **idx)
 }
 
 /* The live faces as a polytope: their planes, and the points they use in
- * input order (as iv_shape_hull lists them), taken from V (P itself, or
+ * input order (as the incremental hull lists them), taken from V (P itself, or
  * the unjittered points: a plane is then raised to its own vertices). */
 static int finish(hull *h, const double (*P)[3], const double (*V)[3], iv_shape *s)
 {
@@ -631,8 +633,8 @@ done:
 int geom_hull3d(iv_shape *s, const double (*P)[3], int n)
 {
     if (n < 4) return GEOM_HULL_FLAT;
-    double eps; /* polytope.c's tolerance: the same solid */
-    if (iv_hull_eps(P, n, &eps) != 0) return GEOM_HULL_BAD_INPUT;
+    double eps; /* the incremental hull's tolerance: the same solid */
+    if (geom_hull_eps(P, n, &eps) != 0) return GEOM_HULL_BAD_INPUT;
     int *idx = NULL, m = 0, *sub = NULL, ms = 0;
     int rc = quickhull(P, P, n, eps, s, &idx, &m);
     /* A failed step (rounding in nearly coplanar input): again over the
@@ -665,13 +667,13 @@ int geom_hull3d(iv_shape *s, const double (*P)[3], int n)
         free(V);
         free(J);
     }
-    if (rc == 1) { /* give up: polytope.c's O(n · faces) hull of what is left */
+    if (rc == 1) { /* give up: the incremental O(n · faces) hull of what is left */
         double(*V)[3] = malloc((size_t)m * sizeof *V);
         rc = GEOM_HULL_NO_MEMORY;
         if (V) {
             for (int i = 0; i < m; i++)
                 memcpy(V[i], P[idx[i]], sizeof *V);
-            rc = iv_shape_hull(s, (const double(*)[3])V, m) == 0 ? 0 : GEOM_HULL_FLAT;
+            rc = geom_hull3d_incremental(s, (const double(*)[3])V, m) == 0 ? 0 : GEOM_HULL_FLAT;
             free(V);
         }
     }

@@ -15,7 +15,7 @@ enum {
 };
 
 /* The convex hull of the n points P (borrowed) as a polytope in *s, which
- * then holds the only reference: the same solid iv_shape_hull makes — the
+ * then holds the only reference: the same solid the incremental hull makes — the
  * same tolerance, points within it of a face count as inside — in
  * O(n log n) expected time instead of O(n · faces).  Returns 0, or one of
  * the GEOM_HULL_ codes (nothing made). */

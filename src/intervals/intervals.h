@@ -212,22 +212,6 @@ void iv_shape_release(iv_shape *s);
  * n is 0 or more than 65536 planes, or a value is not finite. */
 int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes, const double (*verts)[3],
                       int nverts);
-/* The convex hull of n points as a polytope (quickhull with a relative
- * tolerance; coplanar input has no volume).  Returns 0, or -1 when the hull
- * is flat or empty, or out of memory. */
-int iv_shape_hull(iv_shape *s, const double (*pts)[3], int n);
-/* The tolerance of a convex hull of P[0..n) (iv_shape_hull and
- * src/scad/hull3d.c both, so the same points give the same solid): 1e-11
- * of the larger of the points' extent and their largest coordinate.
- * Returns 0, or -1 when a coordinate is not finite. */
-int iv_hull_eps(const double (*P)[3], int n, double *eps);
-/* The tetrahedron a convex hull of P[0..n) starts from (iv_shape_hull and
- * src/scad/hull3d.c both): the point of least x, the point farthest from
- * it, the farthest from their line and the farthest from their plane
- * (ids, in that order), and its four faces t[k] wound counter-clockwise
- * seen from outside.  Returns 0, or -1 when the points lie within eps of a
- * line or a plane. */
-int iv_hull_tetrahedron(const double (*P)[3], int n, double eps, int ids[4], int t[4][3]);
 /* The vertices of a polytope (borrowed), or NULL for other kinds. */
 const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3];
 /* The planes of a polytope (borrowed): {nx, ny, nz, d} with unit n, inside

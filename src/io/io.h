@@ -21,8 +21,8 @@ extern "C" {
  * EXR/HDR.  The file is written to a temporary name beside path and renamed,
  * so a failure never leaves a partial file nor touches an existing one.
  * Returns 0, or -1 with a message in err. */
-int io_image_write(const char *path, int width, int height, int channels,
-                   const float *pixels, char *err, size_t errlen);
+int io_image_write(const char *path, int width, int height, int channels, const float *pixels,
+                   char *err, size_t errlen);
 
 /* Read an image as sRGB-encoded floats (channels as stored, 1–4).  *pixels
  * is malloc'ed; the caller frees it.  Returns 0, or -1 with a message. */

@@ -47,7 +47,8 @@
 #include "io.h"
 #include "temp_file.h"
 
-namespace {
+namespace
+{
 
 struct Traits : public OpenMesh::DefaultTraits {
     typedef OpenMesh::Vec3f Point;
@@ -57,8 +58,7 @@ typedef OpenMesh::TriMesh_ArrayKernelT<Traits> TriMesh;
 
 void set_err(char *err, size_t errlen, const std::string &msg)
 {
-    if (err && errlen)
-        std::snprintf(err, errlen, "%s", msg.c_str());
+    if (err && errlen) std::snprintf(err, errlen, "%s", msg.c_str());
 }
 
 void quiet()
@@ -72,8 +72,7 @@ std::string lower_ext(const char *path)
 {
     const char *slash = std::strrchr(path, '/');
     const char *dot = std::strrchr(path, '.');
-    if (!dot || (slash && dot < slash))
-        return "";
+    if (!dot || (slash && dot < slash)) return "";
     std::string e(dot + 1);
     for (char &c : e)
         c = (char)std::tolower((unsigned char)c);
@@ -100,14 +99,13 @@ bool indices_ok(const int32_t *t, int nv, int nt, std::string &msg)
 
 /* The general path: add_face, which refuses a face that would make the
  * mesh non-manifold. */
-bool build_by_faces(TriMesh &m, const float *v, int nv, const int32_t *t, int nt,
-                    std::string &msg)
+bool build_by_faces(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::string &msg)
 {
     m.reserve((size_t)nv, (size_t)nv + (size_t)nt, (size_t)nt);
     std::vector<TriMesh::VertexHandle> vh((size_t)nv);
     for (int i = 0; i < nv; i++)
-        vh[(size_t)i] = m.add_vertex(TriMesh::Point(v[3 * (size_t)i], v[3 * (size_t)i + 1],
-                                                    v[3 * (size_t)i + 2]));
+        vh[(size_t)i] = m.add_vertex(
+            TriMesh::Point(v[3 * (size_t)i], v[3 * (size_t)i + 1], v[3 * (size_t)i + 2]));
     for (int i = 0; i < nt; i++) {
         const int32_t *f = t + 3 * (size_t)i;
         TriMesh::FaceHandle fh = m.add_face(vh[(size_t)f[0]], vh[(size_t)f[1]], vh[(size_t)f[2]]);
@@ -120,7 +118,10 @@ bool build_by_faces(TriMesh &m, const float *v, int nv, const int32_t *t, int nt
 }
 
 /* Corner q of triangle q / 3 starts the directed edge t[q] -> t[next(q)]. */
-inline size_t next_corner(size_t q) { return q % 3 == 2 ? q - 2 : q + 1; }
+inline size_t next_corner(size_t q)
+{
+    return q % 3 == 2 ? q - 2 : q + 1;
+}
 
 /* The direct path for closed manifold input.  Returns 1 when m is built, 0
  * when the input is not closed (some directed edge has no reverse; m is
@@ -153,8 +154,7 @@ int build_closed(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, s
     std::vector<int32_t> he(nc, -1);
     int32_t ne = 0;
     for (size_t q = 0; q < nc; q++) {
-        if (he[q] >= 0)
-            continue;
+        if (he[q] >= 0) continue;
         int32_t a = t[q], b = t[next_corner(q)];
         int twins = 0, same = 0;
         size_t twin = 0;
@@ -165,8 +165,7 @@ int build_closed(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, s
             }
         for (int32_t k = first[(size_t)a]; k < first[(size_t)a + 1]; k++)
             same += by_start[(size_t)k].end == b;
-        if (twins == 0)
-            return 0;
+        if (twins == 0) return 0;
         if (twins > 1 || same > 1 || he[twin] >= 0) {
             msg = "triangle " + std::to_string(q / 3) +
                   " would make the mesh non-manifold (an edge in more than two triangles, or "
@@ -180,8 +179,8 @@ int build_closed(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, s
 
     m.resize((size_t)nv, (size_t)ne, (size_t)nt);
     for (int i = 0; i < nv; i++)
-        m.set_point(TriMesh::VertexHandle(i), TriMesh::Point(v[3 * (size_t)i], v[3 * (size_t)i + 1],
-                                                              v[3 * (size_t)i + 2]));
+        m.set_point(TriMesh::VertexHandle(i),
+                    TriMesh::Point(v[3 * (size_t)i], v[3 * (size_t)i + 1], v[3 * (size_t)i + 2]));
     for (size_t q = 0; q < nc; q++) {
         TriMesh::HalfedgeHandle h(he[q]);
         TriMesh::FaceHandle f((int)(q / 3));
@@ -191,15 +190,13 @@ int build_closed(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, s
         m.set_halfedge_handle(TriMesh::VertexHandle(t[q]), h);
         /* The face's halfedge ends at its first vertex, so OpenMesh lists
          * the vertices in the input's order (as add_face does). */
-        if (q % 3 == 2)
-            m.set_halfedge_handle(f, h);
+        if (q % 3 == 2) m.set_halfedge_handle(f, h);
     }
     /* Each vertex's outgoing halfedges must form one cycle under
      * next(opposite(h)); two fans at one vertex (a pinch) would not. */
     for (int i = 0; i < nv; i++) {
         int32_t valence = first[(size_t)i + 1] - first[(size_t)i];
-        if (valence == 0)
-            continue;
+        if (valence == 0) continue;
         TriMesh::HalfedgeHandle h0 = m.halfedge_handle(TriMesh::VertexHandle(i)), h = h0;
         int32_t steps = 0;
         do {
@@ -220,11 +217,9 @@ int build_closed(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, s
  * mesh: an index out of range, a non-manifold or degenerate triangle. */
 bool build(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::string &msg)
 {
-    if (!indices_ok(t, nv, nt, msg))
-        return false;
+    if (!indices_ok(t, nv, nt, msg)) return false;
     int rc = build_closed(m, v, nv, t, nt, msg);
-    if (rc < 0)
-        return false;
+    if (rc < 0) return false;
     return rc > 0 || build_by_faces(m, v, nv, t, nt, msg);
 }
 
@@ -234,7 +229,8 @@ void set_face_normals(TriMesh &m, const float *v, const int32_t *t, int nt)
 {
     m.request_face_normals();
     for (int i = 0; i < nt; i++) {
-        const float *p0 = v + 3 * (size_t)t[3 * (size_t)i], *p1 = v + 3 * (size_t)t[3 * (size_t)i + 1],
+        const float *p0 = v + 3 * (size_t)t[3 * (size_t)i],
+                    *p1 = v + 3 * (size_t)t[3 * (size_t)i + 1],
                     *p2 = v + 3 * (size_t)t[3 * (size_t)i + 2];
         double e1[3], e2[3];
         for (int k = 0; k < 3; k++) {
@@ -275,8 +271,7 @@ bool extract(TriMesh &m, float **v, int *nv, int32_t **t, int *nt, std::string &
     for (TriMesh::FaceHandle f : m.faces()) {
         int k = 0;
         for (TriMesh::VertexHandle h : m.fv_range(f)) {
-            if (k < 3)
-                tt[3 * q + (size_t)k] = h.idx();
+            if (k < 3) tt[3 * q + (size_t)k] = h.idx();
             k++;
         }
         if (k != 3) {
@@ -330,12 +325,10 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
             set_face_normals(m, v, t, nt);
             opt += OpenMesh::IO::Options::FaceNormal;
         }
-        if (!ascii && (ext == "stl" || ext == "ply"))
-            opt += OpenMesh::IO::Options::Binary;
+        if (!ascii && (ext == "stl" || ext == "ply")) opt += OpenMesh::IO::Options::Binary;
 
         std::vector<char> name(std::strlen(path) + 64);
-        if (io_temp_beside(path, name.data(), name.size(), err, errlen) != 0)
-            return -1;
+        if (io_temp_beside(path, name.data(), name.size(), err, errlen) != 0) return -1;
         tmp = name.data();
         if (!OpenMesh::IO::write_mesh(m, tmp, opt, 9)) {
             unlink(tmp.c_str());
@@ -344,23 +337,19 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
         }
         std::string done;
         done.swap(tmp); /* io_temp_commit removes it on failure */
-        if (io_temp_commit(done.c_str(), path, err, errlen) != 0)
-            return -1;
+        if (io_temp_commit(done.c_str(), path, err, errlen) != 0) return -1;
         return 0;
     } catch (const std::bad_alloc &) {
-        if (!tmp.empty())
-            unlink(tmp.c_str());
+        if (!tmp.empty()) unlink(tmp.c_str());
         /* No std::string here: an allocation could throw again. */
         if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "mesh");
         return -1;
     } catch (const std::exception &e) {
-        if (!tmp.empty())
-            unlink(tmp.c_str());
+        if (!tmp.empty()) unlink(tmp.c_str());
         set_err(err, errlen, std::string(path ? path : "") + ": " + e.what());
         return -1;
     } catch (...) {
-        if (!tmp.empty())
-            unlink(tmp.c_str());
+        if (!tmp.empty()) unlink(tmp.c_str());
         set_err(err, errlen, "mesh write failed");
         return -1;
     }
@@ -391,7 +380,8 @@ static bool plausible_counts(const char *path, const std::string &ext, std::stri
             words += ' ';
             double a, b;
             const char *p = words.c_str();
-            while (*p && !std::isdigit((unsigned char)*p) && *p != '-') p++;
+            while (*p && !std::isdigit((unsigned char)*p) && *p != '-')
+                p++;
             if (std::sscanf(p, "%lf %lf", &a, &b) == 2) {
                 need = 6 * a + 8 * b;
                 break;
@@ -460,9 +450,8 @@ int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, cha
     }
 }
 
-int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double tol,
-                     float **out_v, int *out_nv, int32_t **out_t, int *out_nt, char *err,
-                     size_t errlen)
+int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double tol, float **out_v,
+                     int *out_nv, int32_t **out_t, int *out_nt, char *err, size_t errlen)
 {
     try {
         quiet();

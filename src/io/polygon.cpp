@@ -21,16 +21,17 @@
 #include <new>
 #include <string>
 
-namespace {
+namespace
+{
 
 using ClipperLib::cInt;
 using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
 
-const double SCALE = 65536.0;         /* OpenSCAD 2021.01 CLIPPER_SCALE */
-const double CLEAN_DISTANCE = 0.001;  /* model units, OpenSCAD's toPolygon2d */
-const double RANGE = 4.0e18 / SCALE;  /* below Clipper's hiRange (~4.6e18) */
+const double SCALE = 65536.0;        /* OpenSCAD 2021.01 CLIPPER_SCALE */
+const double CLEAN_DISTANCE = 0.001; /* model units, OpenSCAD's toPolygon2d */
+const double RANGE = 4.0e18 / SCALE; /* below Clipper's hiRange (~4.6e18) */
 
 void set_err(char *err, size_t errlen, const char *msg)
 {
@@ -169,7 +170,8 @@ extern "C" int io_polygon_offset(const io_paths *a, double delta, io_join join, 
     });
 }
 
-namespace {
+namespace
+{
 
 /* Every edge of p swept along every edge of q: a parallelogram each, wound
  * counter-clockwise (a degenerate one, from parallel edges, is harmless to
@@ -208,8 +210,8 @@ void fill_insides(const Paths &a, const Paths &b, Paths &out)
 
 } // namespace
 
-extern "C" int io_polygon_minkowski(const io_paths *a, const io_paths *b, io_paths *out,
-                                    char *err, size_t errlen)
+extern "C" int io_polygon_minkowski(const io_paths *a, const io_paths *b, io_paths *out, char *err,
+                                    size_t errlen)
 {
     return run("Minkowski sum failed", out, err, errlen, [&](ClipperLib::PolyTree &tree) {
         Paths pa = to_clipper(a), pb = to_clipper(b), terms;

@@ -14,8 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-extern "C" int io_temp_beside(const char *path, char *tmp, size_t tmplen, char *err,
-                              size_t errlen)
+extern "C" int io_temp_beside(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
 {
     const char *slash = std::strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;

@@ -40,10 +40,11 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
-const double SCALE = 1000;          /* FreetypeRenderer::scale */
-const double HB_SCALE = 64.0 * 16;  /* its divisor for advances and boxes */
+const double SCALE = 1000;         /* FreetypeRenderer::scale */
+const double HB_SCALE = 64.0 * 16; /* its divisor for advances and boxes */
 
 void set_err(char *err, size_t errlen, const std::string &msg)
 {
@@ -62,8 +63,7 @@ struct Drawing {
 
     void add(Pt v)
     {
-        contours.back().push_back(
-            {v.x + offset.x + advance.x, v.y + offset.y + advance.y});
+        contours.back().push_back({v.x + offset.x + advance.x, v.y + offset.y + advance.y});
     }
 };
 
@@ -332,8 +332,7 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
             starts.push_back((int)(pts.size() / 2));
             io_paths all = {reinterpret_cast<double(*)[2]>(pts.data()), starts.data(),
                             (int)starts.size() - 1};
-            if (io_polygon_clip(IO_CLIP_UNION, &all, 0, nullptr, 0, out, err, errlen) != 0)
-                throw 1;
+            if (io_polygon_clip(IO_CLIP_UNION, &all, 0, nullptr, 0, out, err, errlen) != 0) throw 1;
         }
     } catch (int) {
         rc = -1;

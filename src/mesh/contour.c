@@ -144,8 +144,7 @@ static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
             return NULL;
         }
         for (size_t i = 0; i < m->cap; i++) {
-            if (!m->key[i])
-                continue;
+            if (!m->key[i]) continue;
             size_t p = mix(m->key[i]) & (cap - 1);
             while (k[p])
                 p = (p + 1) & (cap - 1);
@@ -182,16 +181,16 @@ typedef struct sweep {
     mesh *m;
     tables tb;
     double cos_feature;
-    int nx, ny, nz; /* cells */
-    int k;          /* current slab */
-    uint8_t *sign[2];  /* node signs of layers k, k+1: i + (nx+1) j */
+    int nx, ny, nz;   /* cells */
+    int k;            /* current slab */
+    uint8_t *sign[2]; /* node signs of layers k, k+1: i + (nx+1) j */
     /* z crossings bucketed by the first node layer at or above them: the
      * columns flip[flip_at[k] .. flip_at[k + 1]) change sign at layer k. */
     uint32_t *flip;
     size_t *flip_at;
-    int32_t *xv[2];    /* x-edge vertices of layers k, k+1: i + nx j */
-    int32_t *yv[2];    /* y-edge vertices: i + (nx+1) j */
-    int32_t *zv;       /* z-edge vertices of slab k: i + (nx+1) j */
+    int32_t *xv[2]; /* x-edge vertices of layers k, k+1: i + nx j */
+    int32_t *yv[2]; /* y-edge vertices: i + (nx+1) j */
+    int32_t *zv;    /* z-edge vertices of slab k: i + (nx+1) j */
     fmap faces;
     int oom;
 } sweep;
@@ -216,8 +215,7 @@ static int flips_init(sweep *s)
     size_t nl = (size_t)s->nz + 2, nr = (size_t)(s->nx + 1) * (s->ny + 1);
     s->flip_at = calloc(nl + 1, sizeof *s->flip_at);
     s->flip = malloc((d->nhit[2] ? d->nhit[2] : 1) * sizeof *s->flip);
-    if (!s->flip_at || !s->flip)
-        return -1;
+    if (!s->flip_at || !s->flip) return -1;
     for (size_t q = 0; q < d->nhit[2]; q++) {
         int k = layer_of(d->hit[2][q].t, d->h);
         s->flip_at[(size_t)(k < (int)nl ? k : (int)nl - 1) + 1]++;
@@ -225,8 +223,7 @@ static int flips_init(sweep *s)
     for (size_t k = 0; k < nl; k++)
         s->flip_at[k + 1] += s->flip_at[k];
     size_t *fill = malloc(nl * sizeof *fill);
-    if (!fill)
-        return -1;
+    if (!fill) return -1;
     memcpy(fill, s->flip_at, nl * sizeof *fill);
     for (size_t r = 0; r < nr; r++)
         for (size_t q = d->off[2][r]; q < d->off[2][r + 1]; q++) {
@@ -282,8 +279,7 @@ static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, con
     if (!best) {
         double bd = h;
         for (size_t q = lo > 2 ? lo - 2 : 0; q < nh && q < lo + 3; q++) {
-            if (hp[q].enter != enter)
-                continue;
+            if (hp[q].enter != enter) continue;
             double dist = hp[q].t < t0 ? t0 - hp[q].t : hp[q].t - t1;
             if (dist <= bd) {
                 bd = dist;
@@ -304,10 +300,8 @@ static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, con
             out->n[c] = 0;
         out->n[a] = enter ? -1 : 1;
     }
-    if (t < t0 + EPS * h)
-        t = t0 + EPS * h;
-    if (t > t1 - EPS * h)
-        t = t1 - EPS * h;
+    if (t < t0 + EPS * h) t = t0 + EPS * h;
+    if (t > t1 - EPS * h) t = t1 - EPS * h;
     out->p[a] = d->org[a] + t;
 }
 
@@ -344,8 +338,7 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     edge_sample(s, a, r, seg, enter, base, out);
     if (*slot < 0) {
         *slot = mesh_push_vertex(s->m, out->p[0], out->p[1], out->p[2]);
-        if (*slot < 0)
-            return -1;
+        if (*slot < 0) return -1;
     }
     out->vid = *slot;
     return 0;
@@ -363,8 +356,7 @@ static int face_point(const sweep *s, const sample *a, const sample *b, int f, c
         a = b;
         b = t;
     }
-    if (dot3(a->n, b->n) >= s->cos_feature)
-        return 0;
+    if (dot3(a->n, b->n) >= s->cos_feature) return 0;
     int fa = f / 2, u, v;
     mesh_axes_other(fa, &u, &v);
     double h = s->d->h;
@@ -397,12 +389,10 @@ static void qef_solve(double a[3][3], const double b[3], double x[3])
     double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int sweep_i = 0; sweep_i < 12; sweep_i++) {
         double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-        if (off < 1e-24)
-            break;
+        if (off < 1e-24) break;
         for (int p = 0; p < 2; p++)
             for (int q = p + 1; q < 3; q++) {
-                if (fabs(a[p][q]) < 1e-30)
-                    continue;
+                if (fabs(a[p][q]) < 1e-30) continue;
                 double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
                 double t = (theta >= 0 ? 1 : -1) / (fabs(theta) + sqrt(theta * theta + 1));
                 double c = 1 / sqrt(t * t + 1), sn = t * c;
@@ -427,8 +417,7 @@ static void qef_solve(double a[3][3], const double b[3], double x[3])
     x[0] = x[1] = x[2] = 0;
     for (int e = 0; e < 3; e++) {
         double l = a[e][e];
-        if (!(fabs(l) > 0.05 * lmax) || lmax == 0)
-            continue;
+        if (!(fabs(l) > 0.05 * lmax) || lmax == 0) continue;
         double proj = (v[0][e] * b[0] + v[1][e] * b[1] + v[2][e] * b[2]) / l;
         for (int k = 0; k < 3; k++)
             x[k] += proj * v[k][e];
@@ -470,18 +459,15 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
         for (int r = 0; r < 3; r++) {
             br[r] = b[r];
             for (int c = 0; c < 3; c++) {
-                if (fixed >> c & 1)
-                    br[r] -= a[r][c] * x[c];
+                if (fixed >> c & 1) br[r] -= a[r][c] * x[c];
                 ar[r][c] = (fixed >> r & 1) || (fixed >> c & 1) ? 0 : a[r][c];
             }
-            if (fixed >> r & 1)
-                br[r] = 0;
+            if (fixed >> r & 1) br[r] = 0;
         }
         qef_solve(ar, br, y);
         int moved = 0;
         for (int c = 0; c < 3; c++) {
-            if (fixed >> c & 1)
-                continue;
+            if (fixed >> c & 1) continue;
             x[c] = y[c];
             if (!(x[c] >= blo[c]) || !(x[c] <= bhi[c])) {
                 x[c] = x[c] > bhi[c] ? bhi[c] : blo[c];
@@ -489,8 +475,7 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
                 moved = 1;
             }
         }
-        if (!moved)
-            break;
+        if (!moved) break;
     }
     for (int c = 0; c < 3; c++)
         out[c] = fmin(fmax(mass[c] + x[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
@@ -523,17 +508,14 @@ static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
         int ok = 1;
         for (int q = 2; q < nl - 1 && ok; q++) {
             int e0 = lv[st].edge, e1 = lv[(st + q) % nl].edge;
-            if (e0 < 0 || e1 < 0 || (s->tb.edge_faces[e0] & s->tb.edge_faces[e1]))
-                ok = 0;
+            if (e0 < 0 || e1 < 0 || (s->tb.edge_faces[e0] & s->tb.edge_faces[e1])) ok = 0;
         }
         for (int q = 1; q + 1 < nl && ok; q++) {
             double n[3];
             tri_normal(lv[st].p, lv[(st + q) % nl].p, lv[(st + q + 1) % nl].p, n);
-            if (!(dot3(n, n) > min2) || !(dot3(n, navg) > 0))
-                ok = 0;
+            if (!(dot3(n, n) > min2) || !(dot3(n, navg) > 0)) ok = 0;
         }
-        if (!ok)
-            continue;
+        if (!ok) continue;
         for (int q = 1; q + 1 < nl; q++)
             if (mesh_push_triangle(s->m, lv[st].vid, lv[(st + q) % nl].vid,
                                    lv[(st + q + 1) % nl].vid) < 0)
@@ -554,8 +536,7 @@ static void cell(sweep *s, int i, int j, int mask)
     for (int e = 0; e < 12; e++) {
         int c0 = edge_corner(e, 0), c1 = edge_corner(e, 1);
         int s0 = mask >> c0 & 1, s1 = mask >> c1 & 1;
-        if (s0 == s1)
-            continue;
+        if (s0 == s1) continue;
         has[e] = 1;
         if (cell_edge(s, i, j, e, s1, &smp[e]) != 0) {
             s->oom = 1;
@@ -567,8 +548,7 @@ static void cell(sweep *s, int i, int j, int mask)
         for (int m = 0; m < 4; m++)
             in[m] = mask >> face_corner[f][m] & 1;
         for (int m = 0; m < 4; m++) {
-            if (in[m] || !in[(m + 1) & 3])
-                continue; /* not an outside-to-inside crossing */
+            if (in[m] || !in[(m + 1) & 3]) continue; /* not an outside-to-inside crossing */
             for (int q = 1; q < 4; q++) {
                 int mm = (m + q) & 3;
                 if (in[mm] != in[(mm + 1) & 3]) {
@@ -582,8 +562,7 @@ static void cell(sweep *s, int i, int j, int mask)
     }
     int done[12] = {0};
     for (int e0 = 0; e0 < 12; e0++) {
-        if (!has[e0] || done[e0])
-            continue;
+        if (!has[e0] || done[e0]) continue;
         int loop[12], nl = 0;
         for (int e = e0; !done[e]; e = next[e]) {
             done[e] = 1;
@@ -602,8 +581,7 @@ static void cell(sweep *s, int i, int j, int mask)
             for (int c = 0; c < 3; c++)
                 navg[c] += a->n[c];
             for (int r = q + 1; r < nl; r++)
-                if (dot3(a->n, smp[loop[r]].n) < s->cos_feature)
-                    feature = 1;
+                if (dot3(a->n, smp[loop[r]].n) < s->cos_feature) feature = 1;
             double fp[3];
             if (face_point(s, a, b, segface[loop[q]], lo, fp)) {
                 int32_t lo_id = a->vid < b->vid ? a->vid : b->vid;
@@ -626,8 +604,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 feature = 1;
             }
         }
-        if (!feature && fan_plain(s, lv, nv, navg))
-            continue;
+        if (!feature && fan_plain(s, lv, nv, navg)) continue;
         double c[3];
         loop_vertex(s, smp, loop, nl, lo, c);
         int32_t cv = mesh_push_vertex(s->m, c[0], c[1], c[2]);
@@ -636,8 +613,7 @@ static void cell(sweep *s, int i, int j, int mask)
             return;
         }
         for (int q = 0; q < nv; q++)
-            if (mesh_push_triangle(s->m, cv, lv[q].vid, lv[(q + 1) % nv].vid) < 0)
-                s->oom = 1;
+            if (mesh_push_triangle(s->m, cv, lv[q].vid, lv[(q + 1) % nv].vid) < 0) s->oom = 1;
     }
 }
 
@@ -673,8 +649,8 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
         s.yv[l] = malloc(nye * sizeof *s.yv[l]);
     }
     int rc = -1;
-    if (flips_init(&s) != 0 || !s.zv || !s.sign[0] || !s.sign[1] || !s.xv[0] || !s.xv[1] || !s.yv[0] ||
-        !s.yv[1]) {
+    if (flips_init(&s) != 0 || !s.zv || !s.sign[0] || !s.sign[1] || !s.xv[0] || !s.xv[1] ||
+        !s.yv[0] || !s.yv[1]) {
         snprintf(err, errlen, "out of memory contouring");
         goto done;
     }
@@ -722,8 +698,7 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
                 }
                 int mask = b0[i] | b0[i + 1] << 1 | b1[i] << 2 | b1[i + 1] << 3 | t0[i] << 4 |
                            t0[i + 1] << 5 | t1[i] << 6 | t1[i + 1] << 7;
-                if (mask != 0 && mask != 255)
-                    cell(&s, i, j, mask);
+                if (mask != 0 && mask != 255) cell(&s, i, j, mask);
             }
         }
     }

@@ -58,8 +58,7 @@ void mesh_options_default(mesh_options *o)
 
 void mesh_dexels_free(mesh_dexels *d)
 {
-    if (!d)
-        return;
+    if (!d) return;
     for (int a = 0; a < 3; a++) {
         free(d->off[a]);
         free(d->hit[a]);
@@ -115,14 +114,12 @@ static int take_row(job *j)
 
 static int reserve(worker *w, size_t more)
 {
-    if (w->n + more <= w->cap)
-        return 0;
+    if (w->n + more <= w->cap) return 0;
     size_t cap = w->cap ? w->cap : 1024;
     while (cap < w->n + more)
         cap *= 2;
     mesh_hit *b = realloc(w->buf, cap * sizeof *b);
-    if (!b)
-        return -1;
+    if (!b) return -1;
     w->buf = b;
     w->cap = cap;
     return 0;
@@ -143,10 +140,8 @@ static int cast_row(worker *w, int iv)
         o[j->u] = d->org[j->u] + iu * d->h;
         iv_arena_reset(w->arena);
         iv_list l;
-        if (csg_trace(j->s, j->root, o, dir, 0, tmax, w->arena, &l) != 0)
-            return -1;
-        if (reserve(w, 2 * (size_t)l.n) != 0)
-            return -1;
+        if (csg_trace(j->s, j->root, o, dir, 0, tmax, w->arena, &l) != 0) return -1;
+        if (reserve(w, 2 * (size_t)l.n) != 0) return -1;
         for (int k = 0; k < l.n; k++) {
             for (int e = 0; e < 2; e++) {
                 const iv_bound *b = e == 0 ? &l.v[k].enter : &l.v[k].exit;
@@ -222,16 +217,13 @@ static int cast_family(const csg_scene *s, int root, mesh_dexels *d, int a, int 
             ws[t].failed = IV_ARENA_OUT_OF_MEMORY;
     }
     for (int t = 0; t < nthreads; t++)
-        if (ws[t].failed)
-            j.stop = 1;
+        if (ws[t].failed) j.stop = 1;
     /* Worker 0 runs on this thread. */
     for (int t = 1; t < nthreads && !j.stop; t++) {
-        if (pthread_create(&th[t], NULL, work, &ws[t]) != 0)
-            break;
+        if (pthread_create(&th[t], NULL, work, &ws[t]) != 0) break;
         started = t;
     }
-    if (!j.stop)
-        work(&ws[0]);
+    if (!j.stop) work(&ws[0]);
     for (int t = 1; t <= started; t++)
         pthread_join(th[t], NULL);
     pthread_mutex_destroy(&j.lock);
@@ -324,8 +316,7 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
             free(d);
             return -1;
         }
-        if (hi[a] - lo[a] > longest)
-            longest = hi[a] - lo[a];
+        if (hi[a] - lo[a] > longest) longest = hi[a] - lo[a];
     }
     double h = o->h;
     if (!(h > 0)) {
@@ -397,8 +388,7 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
         m->lo[a] = INFINITY;
         m->hi[a] = -INFINITY;
     }
-    if (!d->off[0])
-        return;
+    if (!d->off[0]) return;
     double h = d->h, vol = 0, mom[3] = {0, 0, 0}, area = 0;
     long long crossings = 0;
     for (int a = 0; a < 3; a++) {
@@ -412,8 +402,7 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
                 size_t r = (size_t)iv * rowlen + iu;
                 const mesh_hit *hp = d->hit[a] + d->off[a][r];
                 size_t nh = d->off[a][r + 1] - d->off[a][r];
-                if (!nh)
-                    continue;
+                if (!nh) continue;
                 double cu = iu * h, len = 0, ta = 0;
                 for (size_t k = 0; k + 1 < nh; k += 2) {
                     double t0 = hp[k].t, t1 = hp[k + 1].t;
@@ -428,18 +417,12 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
                  * position is inside the solid's extent on u and v. */
                 double t0 = d->org[a] + hp[0].t, t1 = d->org[a] + hp[nh - 1].t;
                 double pu = d->org[u] + cu, pv = d->org[v] + cv;
-                if (t0 < m->lo[a])
-                    m->lo[a] = t0;
-                if (t1 > m->hi[a])
-                    m->hi[a] = t1;
-                if (pu < m->lo[u])
-                    m->lo[u] = pu;
-                if (pu > m->hi[u])
-                    m->hi[u] = pu;
-                if (pv < m->lo[v])
-                    m->lo[v] = pv;
-                if (pv > m->hi[v])
-                    m->hi[v] = pv;
+                if (t0 < m->lo[a]) m->lo[a] = t0;
+                if (t1 > m->hi[a]) m->hi[a] = t1;
+                if (pu < m->lo[u]) m->lo[u] = pu;
+                if (pu > m->hi[u]) m->hi[u] = pu;
+                if (pv < m->lo[v]) m->lo[v] = pv;
+                if (pv > m->hi[v]) m->hi[v] = pv;
                 for (size_t k = 0; k < nh; k++) {
                     double l1 = fabs(hp[k].n[0]) + fabs(hp[k].n[1]) + fabs(hp[k].n[2]);
                     /* A unit normal has 1 <= |n|₁ <= √3; guard a zero normal. */
@@ -466,8 +449,7 @@ void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
 {
     memset(out, 0, sizeof *out);
     out->min_wall = out->min_gap = INFINITY;
-    if (!d->off[0])
-        return;
+    if (!d->off[0]) return;
     double h = d->h;
     for (int a = 0; a < 3; a++) {
         int u, v;
@@ -479,11 +461,9 @@ void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
             for (size_t k = 0; k + 1 < nh; k++) {
                 const float *n0 = hp[k].n, *n1 = hp[k + 1].n;
                 double dot = (double)n0[0] * n1[0] + (double)n0[1] * n1[1] + (double)n0[2] * n1[2];
-                if (!(dot < MESH_THIN_COS))
-                    continue;
+                if (!(dot < MESH_THIN_COS)) continue;
                 double w = (hp[k + 1].t - hp[k].t) * 0.5 * (fabs(n0[a]) + fabs(n1[a]));
-                if (!(w < thickness))
-                    continue;
+                if (!(w < thickness)) continue;
                 /* Crossings alternate enter / exit from an enter, so an even
                  * k starts a span of solid and an odd k a gap. */
                 int wall = (k & 1) == 0;

@@ -15,16 +15,13 @@
 
 static int grow(void **p, int *cap, int need, size_t elem)
 {
-    if (need <= *cap)
-        return 0;
+    if (need <= *cap) return 0;
     long long c = *cap ? *cap : 1024;
     while (c < need)
         c *= 2;
-    if (c > INT32_MAX)
-        c = INT32_MAX;
+    if (c > INT32_MAX) c = INT32_MAX;
     void *q = realloc(*p, (size_t)c * elem);
-    if (!q)
-        return -1;
+    if (!q) return -1;
     *p = q;
     *cap = (int)c;
     return 0;
@@ -43,8 +40,7 @@ int mesh_push_vertex(mesh *m, double x, double y, double z)
 
 int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c)
 {
-    if (m->nt == INT32_MAX ||
-        grow((void **)&m->t, &m->capt, m->nt + 1, 3 * sizeof(int32_t)) != 0)
+    if (m->nt == INT32_MAX || grow((void **)&m->t, &m->capt, m->nt + 1, 3 * sizeof(int32_t)) != 0)
         return -1;
     int32_t *p = m->t + 3 * (size_t)m->nt;
     p[0] = a;
@@ -55,37 +51,43 @@ int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c)
 
 void mesh_free(mesh *m)
 {
-    if (!m)
-        return;
+    if (!m) return;
     free(m->v);
     free(m->t);
     free(m);
 }
 
-int mesh_vertex_count(const mesh *m) { return m->nv; }
-int mesh_triangle_count(const mesh *m) { return m->nt; }
-const float *mesh_vertices(const mesh *m) { return m->v; }
-const int32_t *mesh_triangles(const mesh *m) { return m->t; }
+int mesh_vertex_count(const mesh *m)
+{
+    return m->nv;
+}
+int mesh_triangle_count(const mesh *m)
+{
+    return m->nt;
+}
+const float *mesh_vertices(const mesh *m)
+{
+    return m->v;
+}
+const int32_t *mesh_triangles(const mesh *m)
+{
+    return m->t;
+}
 
 mesh *mesh_new_from_arrays(const float *v, int nv, const int32_t *t, int nt)
 {
-    if (nv < 0 || nt < 0)
-        return NULL;
+    if (nv < 0 || nt < 0) return NULL;
     for (long long q = 0; q < 3LL * nt; q++)
-        if (t[q] < 0 || t[q] >= nv)
-            return NULL;
+        if (t[q] < 0 || t[q] >= nv) return NULL;
     mesh *m = calloc(1, sizeof *m);
-    if (!m)
-        return NULL;
+    if (!m) return NULL;
     if (grow((void **)&m->v, &m->capv, nv, 3 * sizeof(float)) != 0 ||
         grow((void **)&m->t, &m->capt, nt, 3 * sizeof(int32_t)) != 0) {
         mesh_free(m);
         return NULL;
     }
-    if (nv)
-        memcpy(m->v, v, 3 * (size_t)nv * sizeof(float));
-    if (nt)
-        memcpy(m->t, t, 3 * (size_t)nt * sizeof(int32_t));
+    if (nv) memcpy(m->v, v, 3 * (size_t)nv * sizeof(float));
+    if (nt) memcpy(m->t, t, 3 * (size_t)nt * sizeof(int32_t));
     m->nv = nv;
     m->nt = nt;
     return m;
@@ -138,10 +140,8 @@ int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_
     mesh_dexels *d;
     *out = NULL;
     int rc = mesh_dexels_new(s, o, &d, err, errlen);
-    if (rc != 0)
-        return rc;
-    if (m)
-        mesh_dexels_measure(d, m);
+    if (rc != 0) return rc;
+    if (m) mesh_dexels_measure(d, m);
     rc = mesh_dexels_contour(d, o, out, err, errlen);
     mesh_dexels_free(d);
     return rc;
@@ -152,8 +152,7 @@ int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *
 {
     mesh_dexels *d;
     int rc = mesh_dexels_new(s, o, &d, err, errlen);
-    if (rc != 0)
-        return rc;
+    if (rc != 0) return rc;
     mesh_dexels_measure(d, out);
     mesh_dexels_free(d);
     return 0;

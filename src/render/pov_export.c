@@ -498,7 +498,7 @@ int render_pov_export(const csg_scene *s, const render_camera *cam, const render
         put(&w, "// root %d%s\n", r,
             r == RAYSCAD_ROOT_HIGHLIGHT    ? " (# highlight)"
             : r == RAYSCAD_ROOT_BACKGROUND ? " (% background)"
-                                          : "");
+                                           : "");
         node(&c, i, 0, 0);
     }
     if (c.too_deep || w.failed) {

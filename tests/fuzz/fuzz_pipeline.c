@@ -52,14 +52,14 @@ static int offset(void *ud, const scad_paths *a, double delta, int join, double 
 {
     (void)ud;
     io_paths ia = to_io(a), r = {0};
-    int rc = io_polygon_offset(&ia, delta, (io_join)join, miter_limit, arc_tolerance, &r, err,
-                               errlen);
+    int rc =
+        io_polygon_offset(&ia, delta, (io_join)join, miter_limit, arc_tolerance, &r, err, errlen);
     from_io(&r, out);
     return rc;
 }
 
-static int minkowski(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out,
-                     char *err, size_t errlen)
+static int minkowski(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out, char *err,
+                     size_t errlen)
 {
     (void)ud;
     io_paths ia = to_io(a), ib = to_io(b), r = {0};
@@ -68,8 +68,8 @@ static int minkowski(void *ud, const scad_paths *a, const scad_paths *b, scad_pa
     return rc;
 }
 
-static int mesh_tree(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t,
-                     int *nt, char *err, size_t errlen)
+static int mesh_tree(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t, int *nt,
+                     char *err, size_t errlen)
 {
     (void)ud;
     *v = NULL;

@@ -85,7 +85,7 @@ typedef struct scad_file_arg {
  * but not two finite numbers warns as OpenSCAD's `who` does (NULL: no
  * warning). */
 void scad_file_arg_read(scad_call *c, int file, int layer, int origin, int alt_file, int alt_layer,
-                    const char *who, scad_file_arg *out);
+                        const char *who, scad_file_arg *out);
 /* "file = "…", layer = "…", origin = [x, y]" as OpenSCAD prints them (the
  * path relative to the main file's folder); *mtime gets the file's
  * modification time, 0 when it does not exist. */

@@ -14,13 +14,13 @@
 #   - the files in MUST_FAIL do fail (so the checks above are exercised), and
 #     those in MUST_PASS render.
 #
-# Usage: tests/hostile.sh [BUILD [PATTERN]]   (default build; the asan build is detected
+# Usage: tests/cli/hostile.sh [BUILD [PATTERN]]   (default build; the asan build is detected
 # and runs with a longer per-file timeout; PATTERN, a shell glob such as 'fuzz_*', runs
 # only the corpus files whose name matches it).  Runs as many files at once as there are
 # cores.  Exit status 0 when every file passes.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/.." && pwd)
+root=$(cd "$here/../.." && pwd)
 build=${1:-build}
 pattern=${2:-}
 bin="$root/$build/rayscad"
@@ -94,11 +94,11 @@ export -f check_one
 export work bin limit MUST_FAIL MUST_PASS
 
 if [ -n "$pattern" ]; then
-    files=$(ls "$here"/hostile/$pattern.scad 2>/dev/null)
+    files=$(ls "$root"/tests/hostile/$pattern.scad 2>/dev/null)
     [ -n "$files" ] || { echo "hostile.sh: no tests/hostile/$pattern.scad" >&2; exit 1; }
     n=$(echo "$files" | wc -l)
 else
-    files=$( (ls "$here"/hostile/*.scad; find /usr/share/openscad/examples -name '*.scad' 2>/dev/null | sort) )
+    files=$( (ls "$root"/tests/hostile/*.scad; find /usr/share/openscad/examples -name '*.scad' 2>/dev/null | sort) )
     n=$(echo "$files" | wc -l)
     [ "$n" -ge 100 ] || { echo "hostile.sh: only $n files found" >&2; exit 1; }
 fi

@@ -3,13 +3,13 @@
  * checked against hand-computed values and against an independent
  * point-membership classifier.
  */
-#include "support.h"
+#include "../support.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "../src/intervals/intervals.h"
+#include "../../src/intervals/intervals.h"
 
 /* ---- helpers ------------------------------------------------------------ */
 

@@ -7,8 +7,8 @@
  * thread count, and interreflection carries a red wall's colour onto the
  * white floor beside it, which direct light alone (--bounces 1) does not.
  */
-#include "../src/csg/csg.h"
-#include "../src/render/render.h"
+#include "../../src/csg/csg.h"
+#include "../../src/render/render.h"
 
 #include <criterion/criterion.h>
 

@@ -14,10 +14,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../src/scad/ast.h"
-#include "../src/scad/scad.h"
-#include "services.h"
-#include "support.h"
+#include "../../src/scad/ast.h"
+#include "../../src/scad/scad.h"
+#include "../services.h"
+#include "../support.h"
 
 /* ---- collecting messages ------------------------------------------------- */
 

@@ -9,7 +9,7 @@
 # A mismatch fails unless tests/lang/known_differences.txt lists it, one
 # line each: "<file>[:echo|:csg] <reason>" (file as printed below).
 # Outputs of each run stay in BUILD/conformance/.
-#   usage: tests/conformance.sh [BUILD] [file.scad ...]
+#   usage: tests/cli/conformance.sh [BUILD] [file.scad ...]
 set -u
 build=${1:-build}
 shift || true

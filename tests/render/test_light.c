@@ -10,10 +10,10 @@
  * start just off a sphere on the side they leave to (its equation says
  * which).
  */
-#include "../src/csg/csg.h"
-#include "../src/render/render.h"
-#include "../src/render/surface.h"
-#include "../src/scad/scad.h"
+#include "../../src/csg/csg.h"
+#include "../../src/render/render.h"
+#include "../../src/render/surface.h"
+#include "../../src/scad/scad.h"
 
 #include <criterion/criterion.h>
 

@@ -7,10 +7,10 @@
  * silhouette and fails; a control case checks that a camera turned by 3°
  * does fail, so the threshold can tell.  Skipped when povray is missing.
  */
-#include "../src/csg/csg.h"
-#include "../src/io/io.h"
-#include "../src/render/render.h"
-#include "../src/scad/scad.h"
+#include "../../src/csg/csg.h"
+#include "../../src/io/io.h"
+#include "../../src/render/render.h"
+#include "../../src/scad/scad.h"
 
 #include <criterion/criterion.h>
 

@@ -4,7 +4,7 @@
 # the object masks: IoU >= 0.99 outside a one-pixel band at the silhouette.
 # The flags come from the model's "// args:" line (none: OpenSCAD's defaults
 # at 512x512).  Images and mask diffs of each run stay in BUILD/compare/.
-#   usage: tests/compare_openscad.sh [BUILD] [model.scad ...]
+#   usage: tests/cli/compare_openscad.sh [BUILD] [model.scad ...]
 set -u
 build=${1:-build}
 shift || true

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The rayscad command as a user meets it: exit codes, messages with
 # file:line:col, and outputs that are whole or absent.
-#   usage: tests/cli_test.sh [BUILD]
+#   usage: tests/cli/cli_test.sh [BUILD]
 set -u
 build=${1:-build}
 rayscad=$(realpath "$build/rayscad")

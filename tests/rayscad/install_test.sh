@@ -11,10 +11,10 @@
 #   - the installed command rendering with the adapter beside the library;
 #   - `man -l` showing the page;
 #   - `make uninstall` leaving no file behind.
-#   usage: tests/install_test.sh [BUILD]
+#   usage: tests/rayscad/install_test.sh [BUILD]
 set -u
 build=${1:-build}
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$root" || exit 1
 work=$(mktemp -d "${TMPDIR:-/tmp}/rayscad-install.XXXXXX")
 dest=$work/dest

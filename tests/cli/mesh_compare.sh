@@ -7,12 +7,12 @@
 # Ours must also print no warning (none of these models has a wall thinner
 # than h).  The issue's model (cube_sphere_cylinders.scad) must also measure
 # (--measure, interval integration) within 0.1 % of its exact volume.
-#   usage: tests/mesh_compare.sh [BUILD]
+#   usage: tests/cli/mesh_compare.sh [BUILD]
 set -u
 build=${1:-build}
 rayscad=$(realpath "$build/rayscad")
 meshcmp=$(realpath "$build/tools/meshcmp")
-models=$(realpath "$(dirname "$0")/mesh_models")
+models=$(realpath "$(dirname "$0")/../mesh_models")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 py=/usr/bin/python3

@@ -6,10 +6,10 @@
  * analytic box (no CSG code involved) and compares that mask with the object
  * mask of OpenSCAD's image.
  */
-#include "../src/csg/csg.h"
-#include "../src/io/io.h"
-#include "../src/render/render.h"
-#include "support.h"
+#include "../../src/csg/csg.h"
+#include "../../src/io/io.h"
+#include "../../src/render/render.h"
+#include "../support.h"
 
 #include <criterion/criterion.h>
 

@@ -16,9 +16,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../src/csg/csg.h"
-#include "../src/io/io.h"
-#include "../src/mesh/mesh.h"
+#include "../../src/csg/csg.h"
+#include "../../src/io/io.h"
+#include "../../src/mesh/mesh.h"
 
 #define PI 3.14159265358979323846
 #define CSG_VOLUME 2404.778358 /* cube(20,center) - sphere(11) - 3 cylinders r=6.5 */

@@ -3,7 +3,7 @@
  * as an independent reader (oiiotool --dumpdata) sees them, straight alpha,
  * linear EXR, and writes that fail without leaving a file behind.
  */
-#include "../src/io/io.h"
+#include "../../src/io/io.h"
 
 #include <criterion/criterion.h>
 

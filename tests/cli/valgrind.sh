@@ -4,13 +4,13 @@
 # write, use of uninitialised memory, or definite leak.  Not part of `make test`
 # (it takes minutes); run it by hand on a build without sanitizers:
 #
-#   tests/valgrind.sh [BUILD] [FILE.scad ...]    (default build, models/*.scad)
+#   tests/cli/valgrind.sh [BUILD] [FILE.scad ...]    (default build, models/*.scad)
 #
 # Leaks of the libraries rayscad loads (fontconfig, OpenImageIO's plugin caches)
 # are "still reachable" or "possibly lost" and are not counted: only
 # "definitely lost" and "indirectly lost" blocks fail a run.
 set -u
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-build}
 shift || true
 bin="$root/$build/rayscad"
@@ -26,7 +26,7 @@ for f in "${files[@]}"; do
     args=$(sed -n 's|^// args: *||p' "$f" | head -n 1)
     log="$work/$name.log"
     # shellcheck disable=SC2086
-    valgrind --error-exitcode=99 --suppressions="$root/tests/valgrind.supp" --leak-check=full \
+    valgrind --error-exitcode=99 --suppressions="$root/tests/cli/valgrind.supp" --leak-check=full \
         --errors-for-leak-kinds=definite,indirect \
         --show-leak-kinds=definite,indirect --log-file="$log" \
         "$bin" "$f" -o "$work/$name.png" $args --imgsize=32,24 --threads=2 >/dev/null 2>"$work/$name.err"

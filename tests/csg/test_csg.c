@@ -4,15 +4,15 @@
  * classifier that evaluates the CSG expression directly, with transforms the
  * test builds and inverts itself.
  */
-#include "support.h"
+#include "../support.h"
 
 #include <math.h>
 #include <pthread.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "../src/csg/csg.h"
-#include "../src/csg/csg_internal.h"
+#include "../../src/csg/csg.h"
+#include "../../src/csg/csg_internal.h"
 
 /* ---- helpers ------------------------------------------------------------ */
 

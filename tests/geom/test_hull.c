@@ -1,0 +1,351 @@
+/*
+ * test_hull.c — the convex hull (src/geom/hull3d.c): quickhull against the
+ * plain incremental algorithm and against the points themselves (each
+ * inside every plane, the vertices extreme along random directions), on
+ * random, gridded, near-duplicate and near-coplanar points.  Property tests
+ * print their seed.
+ */
+/*
+ * test_geometry.c — the shapes with shared data (polytope, hull, mesh,
+ * prism, revolve): their interval lists along random lines against an
+ * independent point classifier, watertightness on lines through vertices and
+ * edges, and reference counting.  Property tests print their seed.
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../../src/intervals/intervals.h"
+#include "../../src/io/io.h"
+#include "../../src/geom/hull3d.h"
+#include "../../src/geom/hull3d_internal.h"
+#include "../../src/scad/scad.h"
+#include "../services.h"
+
+#define PI 3.14159265358979323846
+
+static uint64_t rng_state;
+
+static uint64_t rng_next(void)
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+static double uni(double lo, double hi)
+{
+    return lo + (hi - lo) * ((double)(rng_next() >> 11) / 9007199254740992.0);
+}
+
+static iv_arena *arena;
+
+static void setup(void)
+{
+    arena = iv_arena_new(0);
+}
+
+static void teardown(void)
+{
+    iv_arena_free(arena);
+}
+
+typedef int (*classify_fn)(const double p[3], const void *ud);
+
+/* Intersect s with `rays` random lines through the box [-R, R]³ and compare
+ * membership of random points on each line with classify(), away from the
+ * boundaries (a relative 1e-7).  Returns the number of disagreements. */
+static int check_shape(const iv_shape *s, classify_fn classify, const void *ud, double R, int rays,
+                       uint64_t seed)
+{
+    rng_state = seed;
+    int bad = 0;
+    for (int r = 0; r < rays; r++) {
+        iv_arena_reset(arena);
+        double o[3], d[3];
+        for (int k = 0; k < 3; k++) {
+            o[k] = uni(-R, R);
+            d[k] = uni(-1, 1);
+        }
+        /* every tenth line axis-aligned, through the grid of half-units,
+         * to hit vertices and edges exactly */
+        if (r % 10 == 0) {
+            int ax = (int)(rng_next() % 3);
+            for (int k = 0; k < 3; k++) {
+                o[k] = 0.5 * floor(uni(-2 * R, 2 * R));
+                d[k] = k == ax ? 1 : 0;
+            }
+        }
+        iv_list l;
+        int cap = iv_shape_max_spans(s);
+        cr_assert_eq(iv_list_init(&l, cap, arena), 0);
+        int n = iv_shape_intersect(s, o, d, 3, &l);
+        cr_assert(n >= 0, "seed %llu ray %d: room", (unsigned long long)seed, r);
+        for (int i = 0; i < l.n; i++) {
+            cr_assert(l.v[i].enter.t < l.v[i].exit.t, "seed %llu ray %d: empty span",
+                      (unsigned long long)seed, r);
+            if (i > 0)
+                cr_assert(l.v[i - 1].exit.t < l.v[i].enter.t, "seed %llu ray %d: order",
+                          (unsigned long long)seed, r);
+        }
+        for (int k = 0; k < 40; k++) {
+            double t = uni(-4 * R, 4 * R);
+            int near = 0;
+            for (int i = 0; i < l.n; i++)
+                if (fabs(t - l.v[i].enter.t) < 1e-7 * (1 + fabs(t)) ||
+                    fabs(t - l.v[i].exit.t) < 1e-7 * (1 + fabs(t)))
+                    near = 1;
+            if (near) continue;
+            double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
+            int want = classify(p, ud), edge = 0;
+            /* a point on the boundary (a line lying in a face) is no test */
+            for (int a = 0; a < 6 && !edge; a++) {
+                double q[3] = {p[0], p[1], p[2]};
+                q[a / 2] += (a & 1 ? 1e-9 : -1e-9) * (1 + fabs(q[a / 2]));
+                edge = classify(q, ud) != want;
+            }
+            if (edge) continue;
+            if (want != iv_list_contains(&l, t)) {
+                if (bad < 5)
+                    cr_log_warn("seed %llu ray %d t %g: classify %d list %d",
+                                (unsigned long long)seed, r, t, want, !want);
+                bad++;
+            }
+        }
+    }
+    return bad;
+}
+
+/* ---- polytope, hull ------------------------------------------------------------- */
+
+static int in_box(const double p[3], const void *ud)
+{
+    const double *b = ud; /* lo[3], hi[3] */
+    for (int k = 0; k < 3; k++)
+        if (p[k] < b[k] || p[k] > b[3 + k]) return 0;
+    return 1;
+}
+
+/* ---- hull3d (src/scad: quickhull) -------------------------------------------------- */
+
+static int cmp_point(const void *a, const void *b)
+{
+    const double *p = a, *q = b;
+    for (int k = 0; k < 3; k++)
+        if (p[k] != q[k]) return p[k] < q[k] ? -1 : 1;
+    return 0;
+}
+
+/* The largest distance of any of the n points above a plane of s. */
+static double farthest_outside(const iv_shape *s, const double (*P)[3], int n)
+{
+    int np;
+    const double(*pl)[4] = iv_polytope_planes(s, &np);
+    double worst = -INFINITY;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < np; j++)
+            worst = fmax(worst,
+                         pl[j][0] * P[i][0] + pl[j][1] * P[i][1] + pl[j][2] * P[i][2] - pl[j][3]);
+    return worst;
+}
+
+
+Test(polytope, hull_of_cube_and_inner_points, .init = setup, .fini = teardown)
+{
+    double P[40][3];
+    int n = 0;
+    for (int i = 0; i < 8; i++) {
+        P[n][0] = (i & 1) ? 2 : -1;
+        P[n][1] = (i & 2) ? 1 : -1;
+        P[n][2] = (i & 4) ? 3 : 0;
+        n++;
+    }
+    rng_state = 5;
+    while (n < 40) {
+        P[n][0] = uni(-1, 2);
+        P[n][1] = uni(-1, 1);
+        P[n][2] = uni(0, 3);
+        n++;
+    }
+    iv_shape s;
+    cr_assert_eq(geom_hull3d_incremental(&s, (const double(*)[3])P, n), 0);
+    int nv;
+    iv_polytope_vertices(&s, &nv);
+    cr_expect_eq(nv, 8);
+    double box[6] = {-1, -1, 0, 2, 1, 3};
+    cr_expect_eq(check_shape(&s, in_box, box, 4, 400, 12), 0);
+    iv_shape_release(&s);
+    /* flat input has no hull */
+    double F[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    cr_expect_eq(geom_hull3d_incremental(&s, (const double(*)[3])F, 4), -1);
+}
+
+/* The hull of points on a sphere is inside the sphere and contains the
+ * sphere shrunk by the chord sagitta. */
+Test(polytope, hull_of_sphere_points, .init = setup, .fini = teardown)
+{
+    enum { N = 300 };
+    double P[N][3];
+    rng_state = 9;
+    for (int i = 0; i < N; i++) {
+        double z = uni(-1, 1), a = uni(0, 2 * PI), r = sqrt(1 - z * z);
+        P[i][0] = 5 * r * cos(a);
+        P[i][1] = 5 * r * sin(a);
+        P[i][2] = 5 * z;
+    }
+    iv_shape s;
+    cr_assert_eq(geom_hull3d_incremental(&s, (const double(*)[3])P, N), 0);
+    int nv;
+    iv_polytope_vertices(&s, &nv);
+    cr_expect_eq(nv, N); /* points on a sphere are all extreme */
+    for (int i = 0; i < 200; i++) {
+        double o[3] = {uni(-6, 6), uni(-6, 6), uni(-6, 6)},
+               d[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)};
+        iv_list l;
+        iv_list_init(&l, 1, arena);
+        if (iv_shape_intersect(&s, o, d, 0, &l) != 1) continue;
+        for (int e = 0; e < 2; e++) {
+            double t = e ? l.v[0].exit.t : l.v[0].enter.t;
+            double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
+            double r = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            cr_expect(r <= 5 + 1e-9, "boundary outside the sphere: %g", r);
+        }
+    }
+    iv_shape_release(&s);
+}
+
+/* Random points (in a ball, on a sphere): geom_hull3d has the vertices
+ * polytope.c's brute-force hull (every point against every face) finds, on
+ * a subset of 1500, and every point of a set of 100,000 inside its planes,
+ * its vertices the extreme points along random directions. */
+Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
+{
+    enum { N = 100000, SUB = 1500 };
+    static double P[N][3], A[N][3], B[N][3];
+    for (int kind = 0; kind < 2; kind++) {
+        uint64_t seed = 41 + (uint64_t)kind;
+        rng_state = seed;
+        for (int i = 0; i < N; i++) {
+            double z = uni(-1, 1), a = uni(0, 2 * PI), r = sqrt(1 - z * z);
+            double len = kind ? 1 : cbrt(uni(0, 1));
+            P[i][0] = 3 + 10 * len * r * cos(a);
+            P[i][1] = -2 + 10 * len * r * sin(a);
+            P[i][2] = 10 * len * z;
+        }
+        iv_shape h, ref;
+        cr_assert_eq(geom_hull3d(&h, (const double(*)[3])P, SUB), 0, "seed %llu",
+                     (unsigned long long)seed);
+        cr_assert_eq(geom_hull3d_incremental(&ref, (const double(*)[3])P, SUB), 0);
+        int na, nb;
+        const double(*VA)[3] = iv_polytope_vertices(&h, &na);
+        const double(*VB)[3] = iv_polytope_vertices(&ref, &nb);
+        cr_assert_eq(na, nb, "seed %llu: %d vertices, brute force %d", (unsigned long long)seed, na,
+                     nb);
+        memcpy(A, VA, sizeof *A * (size_t)na);
+        memcpy(B, VB, sizeof *B * (size_t)nb);
+        qsort(A, (size_t)na, sizeof *A, cmp_point);
+        qsort(B, (size_t)nb, sizeof *B, cmp_point);
+        cr_expect(memcmp(A, B, sizeof *A * (size_t)na) == 0, "seed %llu: other vertices",
+                  (unsigned long long)seed);
+        iv_shape_release(&h);
+        iv_shape_release(&ref);
+
+        int n = kind ? 20000 : N; /* sphere points are all vertices */
+        cr_assert_eq(geom_hull3d(&h, (const double(*)[3])P, n), 0);
+        double out = farthest_outside(&h, (const double(*)[3])P, kind ? 2000 : n);
+        /* within the tolerance: 1e-11 of the coordinates */
+        cr_expect(out <= 1e-9, "seed %llu: a point %g outside", (unsigned long long)seed, out);
+        const double(*V)[3] = iv_polytope_vertices(&h, &na);
+        if (kind) cr_expect_eq(na, n, "seed %llu", (unsigned long long)seed);
+        for (int t = 0; t < 50; t++) {
+            double d[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)}, best = -INFINITY, got = -INFINITY;
+            for (int i = 0; i < n; i++)
+                best = fmax(best, d[0] * P[i][0] + d[1] * P[i][1] + d[2] * P[i][2]);
+            for (int i = 0; i < na; i++)
+                got = fmax(got, d[0] * V[i][0] + d[1] * V[i][1] + d[2] * V[i][2]);
+            cr_expect(fabs(got - best) <= 1e-9, "seed %llu: support %g, points %g",
+                      (unsigned long long)seed, got, best);
+        }
+        iv_shape_release(&h);
+    }
+}
+
+/* Exact coplanar input (a grid, a cube's faces subdivided): the solid is
+ * the box, as polytope.c makes it; flat, too few and non-finite points make
+ * nothing. */
+Test(hull3d, grid_is_its_box_and_bad_input_fails, .init = setup, .fini = teardown)
+{
+    static double P[6 * 6 * 6][3];
+    int n = 0;
+    for (int i = 0; i < 6; i++)
+        for (int j = 0; j < 6; j++)
+            for (int k = 0; k < 6; k++) {
+                P[n][0] = i * 0.4 - 1;
+                P[n][1] = j * 0.2 - 1;
+                P[n][2] = k * 0.6;
+                n++;
+            }
+    iv_shape s;
+    cr_assert_eq(geom_hull3d(&s, (const double(*)[3])P, n), 0);
+    double box[6] = {-1, -1, 0, 1, 0, 3};
+    cr_expect_eq(check_shape(&s, in_box, box, 4, 400, 13), 0);
+    cr_expect(farthest_outside(&s, (const double(*)[3])P, n) <= 1e-12);
+    iv_shape_release(&s);
+    double F[5][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 5, 0}};
+    cr_expect_eq(geom_hull3d(&s, (const double(*)[3])F, 5), GEOM_HULL_FLAT);
+    cr_expect_eq(geom_hull3d(&s, (const double(*)[3])F, 3), GEOM_HULL_FLAT);
+    F[4][2] = NAN;
+    cr_expect_eq(geom_hull3d(&s, (const double(*)[3])F, 5), GEOM_HULL_BAD_INPUT);
+}
+
+/* Rounding's worst cases: corners of 0.1 cubes around a cylinder, each
+ * moved by up to 1e-9 (points a few eps apart), and points on a cube's
+ * faces off them by up to 2e-11 (coplanar to a few eps).  Every point
+ * stays within a relative 1e-7 of the hull (polytope.c's hull is off by up
+ * to the whole size on these, or takes minutes). */
+Test(hull3d, near_duplicate_and_near_coplanar_points, .init = setup, .fini = teardown)
+{
+    enum { N = 3000 };
+    static double P[N][3];
+    for (int kind = 0; kind < 2; kind++)
+        for (uint64_t seed = 1; seed <= 10; seed++) {
+            rng_state = seed + 100 * (uint64_t)kind;
+            for (int i = 0; i < N; i++) {
+                if (kind == 0) {
+                    double a = (i % 360) * PI / 180;
+                    P[i][0] = 10 * cos(a) + (i & 1) * 0.1 + uni(-1e-9, 1e-9);
+                    P[i][1] = 10 * sin(a) + (i >> 1 & 1) * 0.1 + uni(-1e-9, 1e-9);
+                    P[i][2] = i % 10 + (i >> 2 & 1) * 0.1 + uni(-1e-9, 1e-9);
+                } else {
+                    int f = (int)uni(0, 6);
+                    for (int k = 0; k < 3; k++)
+                        P[i][k] = uni(-1, 1);
+                    P[i][f % 3] = (f < 3 ? -1 : 1) + uni(-2e-11, 2e-11);
+                }
+            }
+            iv_shape h;
+            cr_assert_eq(geom_hull3d(&h, (const double(*)[3])P, N), 0, "kind %d seed %llu", kind,
+                         (unsigned long long)seed);
+            double out = farthest_outside(&h, (const double(*)[3])P, N), size = kind ? 1 : 10;
+            cr_expect(out <= 1e-7 * size, "kind %d seed %llu: a point %g outside", kind,
+                      (unsigned long long)seed, out);
+            int nv;
+            const double(*V)[3] = iv_polytope_vertices(&h, &nv);
+            for (int t = 0; t < 20; t++) {
+                double d[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)}, best = -INFINITY,
+                       got = -INFINITY;
+                for (int i = 0; i < N; i++)
+                    best = fmax(best, d[0] * P[i][0] + d[1] * P[i][1] + d[2] * P[i][2]);
+                for (int i = 0; i < nv; i++)
+                    got = fmax(got, d[0] * V[i][0] + d[1] * V[i][1] + d[2] * V[i][2]);
+                cr_expect(best - got <= 1e-7 * size, "kind %d seed %llu: support %g, points %g",
+                          kind, (unsigned long long)seed, got, best);
+            }
+            iv_shape_release(&h);
+        }
+}

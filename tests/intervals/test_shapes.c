@@ -1,0 +1,337 @@
+/*
+ * test_shapes.c — the shapes with shared data (polytope, mesh, prism,
+ * revolve): their interval lists along random lines against an independent
+ * point classifier, watertightness on lines through vertices and edges, and
+ * reference counting.  Property tests print their seed.
+ */
+/*
+ * test_geometry.c — the shapes with shared data (polytope, hull, mesh,
+ * prism, revolve): their interval lists along random lines against an
+ * independent point classifier, watertightness on lines through vertices and
+ * edges, and reference counting.  Property tests print their seed.
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../../src/intervals/intervals.h"
+#include "../../src/io/io.h"
+#include "../../src/geom/hull3d.h"
+#include "../../src/geom/hull3d_internal.h"
+#include "../../src/scad/scad.h"
+#include "../services.h"
+
+#define PI 3.14159265358979323846
+
+static uint64_t rng_state;
+
+static uint64_t rng_next(void)
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+static double uni(double lo, double hi)
+{
+    return lo + (hi - lo) * ((double)(rng_next() >> 11) / 9007199254740992.0);
+}
+
+static iv_arena *arena;
+
+static void setup(void)
+{
+    arena = iv_arena_new(0);
+}
+
+static void teardown(void)
+{
+    iv_arena_free(arena);
+}
+
+typedef int (*classify_fn)(const double p[3], const void *ud);
+
+/* Intersect s with `rays` random lines through the box [-R, R]³ and compare
+ * membership of random points on each line with classify(), away from the
+ * boundaries (a relative 1e-7).  Returns the number of disagreements. */
+static int check_shape(const iv_shape *s, classify_fn classify, const void *ud, double R, int rays,
+                       uint64_t seed)
+{
+    rng_state = seed;
+    int bad = 0;
+    for (int r = 0; r < rays; r++) {
+        iv_arena_reset(arena);
+        double o[3], d[3];
+        for (int k = 0; k < 3; k++) {
+            o[k] = uni(-R, R);
+            d[k] = uni(-1, 1);
+        }
+        /* every tenth line axis-aligned, through the grid of half-units,
+         * to hit vertices and edges exactly */
+        if (r % 10 == 0) {
+            int ax = (int)(rng_next() % 3);
+            for (int k = 0; k < 3; k++) {
+                o[k] = 0.5 * floor(uni(-2 * R, 2 * R));
+                d[k] = k == ax ? 1 : 0;
+            }
+        }
+        iv_list l;
+        int cap = iv_shape_max_spans(s);
+        cr_assert_eq(iv_list_init(&l, cap, arena), 0);
+        int n = iv_shape_intersect(s, o, d, 3, &l);
+        cr_assert(n >= 0, "seed %llu ray %d: room", (unsigned long long)seed, r);
+        for (int i = 0; i < l.n; i++) {
+            cr_assert(l.v[i].enter.t < l.v[i].exit.t, "seed %llu ray %d: empty span",
+                      (unsigned long long)seed, r);
+            if (i > 0)
+                cr_assert(l.v[i - 1].exit.t < l.v[i].enter.t, "seed %llu ray %d: order",
+                          (unsigned long long)seed, r);
+        }
+        for (int k = 0; k < 40; k++) {
+            double t = uni(-4 * R, 4 * R);
+            int near = 0;
+            for (int i = 0; i < l.n; i++)
+                if (fabs(t - l.v[i].enter.t) < 1e-7 * (1 + fabs(t)) ||
+                    fabs(t - l.v[i].exit.t) < 1e-7 * (1 + fabs(t)))
+                    near = 1;
+            if (near) continue;
+            double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
+            int want = classify(p, ud), edge = 0;
+            /* a point on the boundary (a line lying in a face) is no test */
+            for (int a = 0; a < 6 && !edge; a++) {
+                double q[3] = {p[0], p[1], p[2]};
+                q[a / 2] += (a & 1 ? 1e-9 : -1e-9) * (1 + fabs(q[a / 2]));
+                edge = classify(q, ud) != want;
+            }
+            if (edge) continue;
+            if (want != iv_list_contains(&l, t)) {
+                if (bad < 5)
+                    cr_log_warn("seed %llu ray %d t %g: classify %d list %d",
+                                (unsigned long long)seed, r, t, want, !want);
+                bad++;
+            }
+        }
+    }
+    return bad;
+}
+
+/* ---- polytope, hull ------------------------------------------------------------- */
+
+static int in_box(const double p[3], const void *ud)
+{
+    const double *b = ud; /* lo[3], hi[3] */
+    for (int k = 0; k < 3; k++)
+        if (p[k] < b[k] || p[k] > b[3 + k]) return 0;
+    return 1;
+}
+
+/* ---- mesh ------------------------------------------------------------------------ */
+
+/* OpenSCAD's manual cube: points then faces, clockwise from outside. */
+static const double cube_pts[8][3] = {{0, 0, 0}, {10, 0, 0}, {10, 7, 0}, {0, 7, 0},
+                                      {0, 0, 5}, {10, 0, 5}, {10, 7, 5}, {0, 7, 5}};
+
+static const int cube_faces[] = {0, 1, 2, 3, 4, 5, 1, 0, 7, 6, 5, 4,
+                                 5, 6, 2, 1, 6, 7, 3, 2, 7, 4, 0, 3};
+
+static const int cube_start[] = {0, 4, 8, 12, 16, 20, 24};
+
+/* An L-shaped prism with concave end faces given as single 6-gons, and a
+ * fine grid of lines: the fan of a concave face must cover it exactly. */
+static int in_L(const double p[3], const void *ud)
+{
+    (void)ud;
+    if (p[2] < 0 || p[2] > 2) return 0;
+    int a = p[0] >= 0 && p[0] <= 4 && p[1] >= 0 && p[1] <= 1;
+    int b = p[0] >= 0 && p[0] <= 1 && p[1] >= 0 && p[1] <= 3;
+    return a || b;
+}
+
+/* ---- prism, region ------------------------------------------------------------------ */
+
+/* Independent even-odd test: a 4×4 square with a 2×2 hole, z in [-1, 1]. */
+static int in_frame(const double p[3], const void *ud)
+{
+    (void)ud;
+    if (p[2] < -1 || p[2] > 1) return 0;
+    int outer = p[0] >= 0 && p[0] <= 4 && p[1] >= 0 && p[1] <= 4;
+    int hole = p[0] > 1 && p[0] < 3 && p[1] > 1 && p[1] < 3;
+    return outer && !hole;
+}
+
+static int in_disc(const double p[3], const void *ud)
+{
+    (void)ud;
+    return p[0] * p[0] + p[1] * p[1] <= 4 && p[2] >= 0 && p[2] <= 3;
+}
+
+/* ---- revolve ------------------------------------------------------------------------ */
+
+typedef struct rev_case {
+    double angle;
+} rev_case;
+
+/* Profile: the triangle (1,0) (3,0) (1,2) and a square hole-free ring. */
+static int in_rev(const double p[3], const void *ud)
+{
+    const rev_case *c = ud;
+    double rho = hypot(p[0], p[1]), z = p[2];
+    int prof = rho >= 1 && z >= 0 && rho + z <= 3;
+    if (!prof) return 0;
+    if (c->angle >= 360) return 1;
+    double a = atan2(p[1], p[0]) * 180 / PI;
+    if (a < 0) a += 360;
+    return a <= c->angle;
+}
+
+
+Test(polytope, box_planes, .init = setup, .fini = teardown)
+{
+    const double pl[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 2},  {0, -2, 0, 2},
+                             {0, 1, 0, 1},  {0, 0, -1, 0}, {0, 0, 1, 3}};
+    const double v[2][3] = {{-1, -1, 0}, {2, 1, 3}};
+    iv_shape s;
+    cr_assert_eq(iv_shape_polytope(&s, pl, 6, v, 2), 0);
+    double box[6] = {-1, -1, 0, 2, 1, 3};
+    cr_expect_eq(check_shape(&s, in_box, box, 4, 400, 11), 0);
+    double lo[3], hi[3];
+    cr_assert_eq(iv_shape_bounds(&s, lo, hi), 0);
+    cr_expect_eq(lo[0], -1);
+    cr_expect_eq(hi[2], 3);
+    double n[3];
+    iv_shape_normal(&s, (double[3]){0, 0, 3}, 5, n);
+    cr_expect_eq(n[2], 1);
+    iv_shape_release(&s);
+}
+
+Test(mesh, manual_cube_matches_box, .init = setup, .fini = teardown)
+{
+    iv_shape s;
+    cr_assert_eq(iv_shape_mesh(&s, cube_pts, 8, cube_faces, cube_start, 6), 0);
+    cr_expect_float_eq(iv_mesh_volume(&s), 350, 1e-9);
+    double box[6] = {0, 0, 0, 10, 7, 5};
+    cr_expect_eq(check_shape(&s, in_box, box, 12, 2000, 21), 0);
+    /* the normal of the top face */
+    double n[3];
+    iv_list l;
+    iv_list_init(&l, iv_shape_max_spans(&s), arena);
+    cr_assert_eq(iv_shape_intersect(&s, (double[3]){3, 3, 9}, (double[3]){0, 0, -1}, 0, &l), 1);
+    cr_expect_float_eq(l.v[0].enter.t, 4, 1e-12);
+    iv_shape_normal(&s, (double[3]){3, 3, 5}, l.v[0].enter.part, n);
+    cr_expect_float_eq(n[2], 1, 1e-12);
+    iv_shape_release(&s);
+}
+
+Test(mesh, reversed_winding_is_turned_outside_in, .init = setup, .fini = teardown)
+{
+    int rev[24];
+    for (int f = 0; f < 6; f++)
+        for (int j = 0; j < 4; j++)
+            rev[4 * f + j] = cube_faces[4 * f + 3 - j];
+    iv_shape s;
+    cr_assert_eq(iv_shape_mesh(&s, cube_pts, 8, rev, cube_start, 6), 0);
+    double box[6] = {0, 0, 0, 10, 7, 5};
+    cr_expect_eq(check_shape(&s, in_box, box, 12, 300, 22), 0);
+    iv_shape_release(&s);
+}
+
+Test(mesh, open_and_bad_input, .init = setup, .fini = teardown)
+{
+    iv_shape s;
+    cr_expect_eq(iv_shape_mesh(&s, cube_pts, 8, cube_faces, cube_start, 5), 1); /* no top */
+    iv_shape_release(&s);
+    int bad[] = {0, 1, 9};
+    int bs[] = {0, 3};
+    cr_expect_eq(iv_shape_mesh(&s, cube_pts, 8, bad, bs, 1), -1);
+}
+
+Test(mesh, concave_faces_by_fans, .init = setup, .fini = teardown)
+{
+    /* base outline counter-clockwise from above */
+    const double L[6][2] = {{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 3}, {0, 3}};
+    double P[12][3];
+    for (int i = 0; i < 6; i++) {
+        P[i][0] = P[i + 6][0] = L[i][0];
+        P[i][1] = P[i + 6][1] = L[i][1];
+        P[i][2] = 0;
+        P[i + 6][2] = 2;
+    }
+    int F[6 + 6 + 24], S[9];
+    int k = 0, f = 0;
+    S[f++] = 0;
+    /* bottom seen from below is clockwise when counter-clockwise from above */
+    for (int i = 0; i < 6; i++)
+        F[k++] = i;
+    S[f++] = k;
+    for (int i = 5; i >= 0; i--)
+        F[k++] = 6 + i;
+    S[f++] = k;
+    for (int i = 0; i < 6; i++) {
+        int j = (i + 1) % 6;
+        /* side quad, clockwise from outside */
+        F[k++] = i;
+        F[k++] = 6 + i;
+        F[k++] = 6 + j;
+        F[k++] = j;
+        S[f++] = k;
+    }
+    iv_shape s;
+    cr_assert_eq(iv_shape_mesh(&s, (const double(*)[3])P, 12, F, S, 8), 0);
+    cr_expect_float_eq(iv_mesh_volume(&s), 12, 1e-9);
+    cr_expect_eq(check_shape(&s, in_L, NULL, 5, 3000, 23), 0);
+    iv_shape_release(&s);
+}
+
+Test(prism, square_with_hole, .init = setup, .fini = teardown)
+{
+    /* both paths counter-clockwise: the region re-orients the hole */
+    const double pts[8][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    const int st[3] = {0, 4, 8};
+    iv_region *g = iv_region_new(pts, st, 2);
+    cr_assert_not_null(g);
+    iv_shape s;
+    iv_shape_prism(&s, g, -1, 1);
+    iv_region_release(g); /* the shape holds its own reference */
+    cr_expect_eq(check_shape(&s, in_frame, NULL, 5, 3000, 31), 0);
+    /* the hole's wall normal points into the hole */
+    iv_list l;
+    iv_list_init(&l, iv_shape_max_spans(&s), arena);
+    cr_assert_eq(iv_shape_intersect(&s, (double[3]){-1, 2, 0}, (double[3]){1, 0, 0}, 0, &l), 2);
+    double n[3];
+    iv_shape_normal(&s, (double[3]){1, 2, 0}, l.v[0].exit.part, n);
+    cr_expect_float_eq(n[0], 1, 1e-12);
+    iv_shape_release(&s);
+}
+
+Test(prism, disc, .init = setup, .fini = teardown)
+{
+    iv_shape s;
+    memset(&s, 0, sizeof s);
+    s.kind = IV_SHAPE_PRISM;
+    s.u.prism.r = 2;
+    s.u.prism.z0 = 0;
+    s.u.prism.z1 = 3;
+    cr_expect_eq(check_shape(&s, in_disc, NULL, 4, 1000, 32), 0);
+}
+
+Test(revolve, triangle_profile_full_and_partial, .init = setup, .fini = teardown)
+{
+    const double pts[3][2] = {{1, 0}, {3, 0}, {1, 2}};
+    const int st[2] = {0, 3};
+    iv_region *g = iv_region_new(pts, st, 1);
+    const double angles[] = {360, 90, 200};
+    for (int i = 0; i < 3; i++) {
+        iv_shape s;
+        iv_shape_revolve(&s, g, angles[i]);
+        rev_case c = {angles[i]};
+        cr_expect_eq(check_shape(&s, in_rev, &c, 4, 2000, 41 + (uint64_t)i), 0, "angle %g",
+                     angles[i]);
+        iv_shape_release(&s);
+    }
+    iv_region_release(g);
+}
