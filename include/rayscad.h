@@ -201,7 +201,9 @@ enum { RAYSCAD_ROOT_MODEL = 0, RAYSCAD_ROOT_HIGHLIGHT = 1, RAYSCAD_ROOT_BACKGROU
  * RAYSCAD_OK and *out (rayscad_scene_free), or an error with a message. */
 rayscad_status rayscad_scene_new(rayscad_model *m, rayscad_scene **out, char *err, size_t errlen);
 void rayscad_scene_free(rayscad_scene *s);
-/* The exact bounds of root r: 0, or -1 when it is empty. */
+/* The bounds of root r, padded outward by a relative 1e-9 (so that no
+ * rounding of a ray's test ever clips the solid): 0, or -1 when the root is
+ * empty.  Components may be infinite (an unbounded intersection). */
 int rayscad_scene_bounds(const rayscad_scene *s, int r, double lo[3], double hi[3]);
 
 /* The view as OpenSCAD's command line states it. */

@@ -1,0 +1,264 @@
+/*
+ * test_api.c — the library through its one public header, as a program
+ * that includes nothing else uses it: files served from memory through the
+ * services (include and use never touch the disk), the status codes and
+ * their messages, the .csg text against OpenSCAD 2021.01's own for the same
+ * source, a render whose pixels are the colour scheme's, and volumes
+ * measured on the rays against closed forms.
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../include/rayscad.h"
+
+/* ---- files from memory -------------------------------------------------------- */
+
+typedef struct memfile {
+    const char *path, *text;
+} memfile;
+
+static const memfile files[] = {
+    {"/mem/main.scad", "include <lib/shapes.scad>\nuse <fns.scad>\necho(twice(size));\nbox();\n"},
+    {"/mem/lib/shapes.scad", "size = 3;\nmodule box() cube(size);\n"},
+    {"/mem/fns.scad", "function twice(x) = 2 * x;\n"},
+};
+
+static const memfile *find(const char *path)
+{
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++)
+        if (strcmp(files[i].path, path) == 0) return &files[i];
+    return NULL;
+}
+
+static int reads; /* how often the library asked */
+
+static int mem_read(void *ud, const char *path, size_t max, char **data, size_t *len, char *err,
+                    size_t errlen)
+{
+    (void)ud;
+    reads++;
+    const memfile *f = find(path);
+    if (!f || strlen(f->text) > max) {
+        snprintf(err, errlen, "No such file or directory");
+        return -1;
+    }
+    *len = strlen(f->text);
+    *data = malloc(*len + 1);
+    memcpy(*data, f->text, *len + 1);
+    return 0;
+}
+
+static int mem_stat(void *ud, const char *path, long long *mtime)
+{
+    (void)ud;
+    if (mtime) *mtime = 0;
+    return find(path) != NULL;
+}
+
+typedef struct lines {
+    char text[8192];
+} lines;
+
+static void collect(void *ud, rayscad_message_kind kind, const char *line)
+{
+    lines *l = ud;
+    size_t n = strlen(l->text);
+    snprintf(l->text + n, sizeof l->text - n, "%d %s\n", (int)kind, line);
+}
+
+/* include and use resolve relative to the including file and are read
+ * through the caller's services alone: a model that exists nowhere on disk
+ * evaluates, and its scene has the included module's cube. */
+Test(api, files_come_through_the_services)
+{
+    lines m = {""};
+    rayscad_services s = {.read_file = mem_read, .stat_file = mem_stat};
+    rayscad_eval_options o = {.message = collect, .message_ud = &m, .services = &s};
+    rayscad_model *model;
+    reads = 0;
+    cr_assert_eq(rayscad_model_load("/mem/main.scad", &o, &model), RAYSCAD_OK, "%s", m.text);
+    cr_expect_str_eq(m.text, "0 ECHO: 6\n");
+    cr_expect_geq(reads, 3);
+    rayscad_scene *scene;
+    char err[256];
+    cr_assert_eq(rayscad_scene_new(model, &scene, err, sizeof err), RAYSCAD_OK, "%s", err);
+    rayscad_model_free(model);
+    double lo[3], hi[3];
+    cr_assert_eq(rayscad_scene_bounds(scene, RAYSCAD_ROOT_MODEL, lo, hi), 0);
+    for (int k = 0; k < 3; k++) { /* padded by a relative 1e-9 */
+        cr_expect_float_eq(lo[k], 0, 1e-8);
+        cr_expect_float_eq(hi[k], 3, 1e-8);
+    }
+    rayscad_scene_free(scene);
+}
+
+/* A file the services do not have is the language's own error, at the
+ * include, worded as OpenSCAD's warning. */
+Test(api, missing_files_are_reported_not_opened)
+{
+    lines m = {""};
+    rayscad_services s = {.read_file = mem_read, .stat_file = mem_stat};
+    rayscad_eval_options o = {.message = collect, .message_ud = &m, .services = &s};
+    rayscad_model *model = NULL;
+    cr_assert_eq(
+        rayscad_model_load_string("/mem/x.scad", "include <nowhere.scad>\ncube(1);", &o, &model),
+        RAYSCAD_OK);
+    cr_expect_str_eq(m.text, "1 WARNING: Can't open include file 'nowhere.scad'.\n");
+    rayscad_model_free(model);
+    m.text[0] = 0;
+    cr_expect_eq(rayscad_model_load("/mem/none.scad", &o, &model), RAYSCAD_ERROR);
+    cr_expect_null(model);
+    cr_expect_str_eq(m.text,
+                     "2 /mem/none.scad:1:1: error: cannot read file: No such file or directory\n");
+}
+
+/* ---- status codes -------------------------------------------------------------- */
+
+Test(api, status_codes_say_what_failed)
+{
+    lines m = {""};
+    rayscad_eval_options o = {.message = collect, .message_ud = &m};
+    rayscad_model *model;
+    cr_expect_eq(rayscad_model_load_string("t.scad", "cube(;", &o, &model), RAYSCAD_ERROR);
+    cr_expect(strstr(m.text, "2 t.scad:1:6: error: syntax error"), "%s", m.text);
+
+    rayscad_colors c;
+    cr_expect_eq(rayscad_colors_by_name("Plaid", &c), RAYSCAD_ERROR_ARGUMENT);
+    cr_expect_eq(rayscad_colors_by_name("Cornfield", &c), RAYSCAD_OK);
+
+    cr_assert_eq(
+        rayscad_model_load_string("t.scad", "difference() { cube(10); sphere(6); }", &o, &model),
+        RAYSCAD_OK);
+    rayscad_scene *scene;
+    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
+    rayscad_model_free(model);
+    char err[256] = "";
+    rayscad_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {1, 2, 3, 1, 2, 3}};
+    rayscad_camera cam;
+    cr_expect_eq(rayscad_camera_frame(scene, &v, 64, 48, &cam, err, sizeof err),
+                 RAYSCAD_ERROR_ARGUMENT);
+    cr_expect_str_eq(err, "the camera's eye and centre coincide");
+
+    rayscad_mesh_options mo;
+    rayscad_mesh_options_default(&mo);
+    mo.h = 0.01;
+    mo.max_cells = 1000;
+    rayscad_sampling *d;
+    cr_expect_eq(rayscad_sampling_new(scene, &mo, &d, err, sizeof err), RAYSCAD_ERROR_CELLS);
+
+    /* a difference needs the whole list: one interval is too few */
+    rayscad_view def = {.kind = RAYSCAD_CAMERA_DEFAULT};
+    cr_assert_eq(rayscad_camera_frame(scene, &def, 64, 48, &cam, NULL, 0), RAYSCAD_OK);
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.width = 64;
+    ro.height = 48;
+    ro.max_intervals = 1;
+    float *rgba = malloc(64 * 48 * 4 * sizeof *rgba);
+    cr_expect_eq(rayscad_render(scene, &cam, &ro, rgba, err, sizeof err), RAYSCAD_ERROR_INTERVALS);
+    free(rgba);
+    rayscad_scene_free(scene);
+    cr_expect_str_eq(rayscad_version(), RAYSCAD_VERSION_STRING);
+}
+
+/* ---- the .csg text --------------------------------------------------------------- */
+
+/* OpenSCAD 2021.01's `openscad -o x.csg` of this source, byte for byte
+ * (the warnings are those of its .echo, which .csg now gives too). */
+Test(api, csg_text_is_openscads)
+{
+    lines m = {""};
+    rayscad_eval_options o = {.message = collect, .message_ud = &m};
+    char *text = NULL;
+    size_t len = 0;
+    cr_assert_eq(rayscad_csg_text_string("t.scad",
+                                         "translate([1, 0, 0]) cube([1, 2]);\n"
+                                         "linear_extrude(center = true, 5) square(1);\n",
+                                         &o, &text, &len),
+                 RAYSCAD_OK);
+    cr_expect_str_eq(text,
+                     "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+                     "\tcube(size = [1, 1, 1], center = false);\n"
+                     "}\n"
+                     "linear_extrude(height = 100, center = true, convexity = 1, "
+                     "scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {\n"
+                     "\tsquare(size = [1, 1], center = false);\n"
+                     "}\n\n");
+    cr_expect_eq(len, strlen(text));
+    cr_expect_str_eq(m.text, "1 WARNING: Unable to convert cube(size=[1, 2], ...) parameter to a "
+                             "number or a vec3 of numbers in file t.scad, line 1\n");
+    free(text);
+}
+
+/* ---- rendering and measuring ------------------------------------------------------ */
+
+/* Cornfield's background (#ffffe5) in a corner, and no background at the
+ * centre, where the default view looks at the cube. */
+Test(api, render_draws_the_model_over_the_scheme)
+{
+    rayscad_model *model;
+    cr_assert_eq(rayscad_model_load_string("t.scad", "cube(10, center = true);", NULL, &model),
+                 RAYSCAD_OK);
+    rayscad_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
+    rayscad_model_file_view(model, &v.file);
+    rayscad_scene *scene;
+    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
+    rayscad_model_free(model);
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.width = 80;
+    ro.height = 60;
+    rayscad_camera cam;
+    cr_assert_eq(rayscad_camera_frame(scene, &v, ro.width, ro.height, &cam, NULL, 0), RAYSCAD_OK);
+    float *px = malloc((size_t)ro.width * ro.height * 4 * sizeof *px);
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, px, NULL, 0), RAYSCAD_OK);
+    const float bg[3] = {1, 1, 229 / 255.0f};
+    for (int k = 0; k < 3; k++)
+        cr_expect_float_eq(px[k], bg[k], 1e-6, "corner channel %d", k);
+    const float *mid = px + ((size_t)30 * ro.width + 40) * 4;
+    cr_expect(fabsf(mid[0] - bg[0]) + fabsf(mid[1] - bg[1]) + fabsf(mid[2] - bg[2]) > 0.1f);
+    free(px);
+    rayscad_scene_free(scene);
+}
+
+static double measured_volume(const char *src, rayscad_facets facets, double h)
+{
+    rayscad_eval_options o = {.facets = facets};
+    rayscad_model *model;
+    cr_assert_eq(rayscad_model_load_string("t.scad", src, &o, &model), RAYSCAD_OK);
+    rayscad_scene *scene;
+    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
+    rayscad_model_free(model);
+    rayscad_mesh_options mo;
+    rayscad_mesh_options_default(&mo);
+    mo.h = h;
+    rayscad_sampling *d;
+    char err[256];
+    cr_assert_eq(rayscad_sampling_new(scene, &mo, &d, err, sizeof err), RAYSCAD_OK, "%s", err);
+    rayscad_measurement m;
+    rayscad_sampling_measure(d, &m);
+    rayscad_mesh *mesh;
+    cr_assert_eq(rayscad_sampling_mesh(d, &mo, &mesh, err, sizeof err), RAYSCAD_OK, "%s", err);
+    cr_expect(fabs(rayscad_mesh_volume(mesh) - m.volume) < 0.02 * m.volume, "mesh %g, rays %g",
+              rayscad_mesh_volume(mesh), m.volume);
+    rayscad_mesh_free(mesh);
+    rayscad_sampling_free(d);
+    rayscad_scene_free(scene);
+    return m.volume;
+}
+
+/* A box's volume is exact along every ray; OpenSCAD's own tessellation of
+ * a cylinder with $fn = inf is 3 fragments (get_fragments_from_r), a
+ * triangular prism of area 3√3/4 · r². */
+Test(api, volumes_against_closed_forms)
+{
+    double v = measured_volume("cube([2, 3, 4]);", RAYSCAD_FACETS_AUTO, 0.05);
+    cr_expect(fabs(v - 24) < 1e-9, "box %.12g", v);
+    v = measured_volume("cylinder(r = 10, h = 1, $fn = 1/0);", RAYSCAD_FACETS_OPENSCAD, 0.05);
+    double prism = 3 * sqrt(3) / 4 * 100;
+    cr_expect(fabs(v - prism) < 0.005 * prism, "prism %g, closed form %g", v, prism);
+}
