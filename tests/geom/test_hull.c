@@ -154,7 +154,6 @@ static double farthest_outside(const iv_shape *s, const double (*P)[3], int n)
     return worst;
 }
 
-
 Test(polytope, hull_of_cube_and_inner_points, .init = setup, .fini = teardown)
 {
     double P[40][3];

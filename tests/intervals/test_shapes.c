@@ -189,7 +189,6 @@ static int in_rev(const double p[3], const void *ud)
     return a <= c->angle;
 }
 
-
 Test(polytope, box_planes, .init = setup, .fini = teardown)
 {
     const double pl[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 2},  {0, -2, 0, 2},
