@@ -294,7 +294,7 @@ FUZZ      = build-fuzz
 FUZZ_SAN  = -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 FUZZ_NAMES = parse eval pipeline
 FUZZ_BINS = $(FUZZ_NAMES:%=$(FUZZ)/fuzz_%)
-FUZZ_C    = $(filter-out src/io/%,$(LIB_SRC))
+FUZZ_C    = $(LIB_SRC)
 FUZZ_OBJ  = $(FUZZ_C:%.c=$(FUZZ)/obj/%.o) $(IO_SRC:%.cpp=$(FUZZ)/obj/%.o)
 .PRECIOUS: $(FUZZ)/obj/%.o
 
