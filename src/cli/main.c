@@ -76,8 +76,7 @@ static int has_extension(const char *path, const char *ext)
 static int write_image(const cli_options *o, const rayscad_scene *scene)
 {
     char err[512];
-    rayscad_render_options ro;
-    rayscad_render_options_default(&ro);
+    rayscad_render_options ro = o->optics; /* the light model; the rest is set here */
     if (rayscad_colors_by_name(o->colorscheme, &ro.colors) != RAYSCAD_OK) {
         fprintf(stderr, "rayscad: error: unknown colour scheme '%s'\n", o->colorscheme);
         return EXIT_USAGE;
@@ -94,7 +93,6 @@ static int write_image(const cli_options *o, const rayscad_scene *scene)
     ro.samples = o->samples;
     ro.threads = o->threads;
     ro.max_intervals = o->max_intervals;
-    cli_options_apply_optics(o, &ro);
     if (has_extension(o->output, ".pov")) { /* the same scene and camera for POV-Ray */
         char *text;
         size_t len;

@@ -70,20 +70,26 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, do
                rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
 }
 
+/* One kind of thin-feature warning: "walls thinner", "the thinnest", "thick",
+ * what the mesh may do to them and the measure a finer grid must undercut. */
+static void warn_narrow(const char *kind, const char *extreme, const char *unit, double h,
+                        double size, const double at[3], long long rays, const char *effect,
+                        const char *measure)
+{
+    fprintf(stderr,
+            "rayscad: warning: %s than the grid spacing %g (%s %.3g %s, at [%.4g, %.4g, %.4g]; "
+            "%lld rays): the mesh may %s; a --mesh-size below their %s resolves them\n",
+            kind, h, extreme, size, unit, at[0], at[1], at[2], rays, effect, measure);
+}
+
 static void warn_thin(const rayscad_thin *t, double h)
 {
     if (t->walls)
-        fprintf(stderr,
-                "rayscad: warning: walls thinner than the grid spacing %g (the thinnest %.3g "
-                "thick, at [%.4g, %.4g, %.4g]; %lld rays): the mesh may lose them or have holes "
-                "through them; a --mesh-size below their thickness resolves them\n",
-                h, t->min_wall, t->wall_at[0], t->wall_at[1], t->wall_at[2], t->walls);
+        warn_narrow("walls thinner", "the thinnest", "thick", h, t->min_wall, t->wall_at, t->walls,
+                    "lose them or have holes through them", "thickness");
     if (t->gaps)
-        fprintf(stderr,
-                "rayscad: warning: gaps narrower than the grid spacing %g (the narrowest %.3g "
-                "wide, at [%.4g, %.4g, %.4g]; %lld rays): the mesh may close them; a "
-                "--mesh-size below their width resolves them\n",
-                h, t->min_gap, t->gap_at[0], t->gap_at[1], t->gap_at[2], t->gaps);
+        warn_narrow("gaps narrower", "the narrowest", "wide", h, t->min_gap, t->gap_at, t->gaps,
+                    "close them", "width");
 }
 
 /* Decimate (when asked) and write; 0 or 1 (printed). */

@@ -269,23 +269,6 @@ static int parse_optics(int argc, char **argv, int *i, rayscad_render_options *p
     return 0;
 }
 
-void cli_options_apply_optics(const cli_options *o, rayscad_render_options *ro)
-{
-    const rayscad_render_options *p = &o->optics;
-    ro->shadows = p->shadows;
-    memcpy(ro->lights, p->lights, sizeof ro->lights);
-    ro->nlights = p->nlights;
-    ro->light_samples = p->light_samples;
-    ro->bounces = p->bounces;
-    ro->ior = p->ior;
-    ro->aperture = p->aperture;
-    ro->focus = p->focus;
-    ro->xray = p->xray;
-    ro->absorb = p->absorb;
-    ro->seed = p->seed;
-    ro->path_trace = p->path_trace;
-}
-
 int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen)
 {
     memset(o, 0, sizeof *o);

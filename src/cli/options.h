@@ -38,7 +38,8 @@ typedef struct cli_options {
                                 max_memory is that one; 0: none */
     /* The opt-in light model (--shadows, --light, --bounces, --refract,
      * --aperture, --focus, --xray, --absorb, --light-samples, --seed): only
-     * the fields of rayscad_render_options below `ud` are set. */
+     * the fields of rayscad_render_options below `ud` are set, the rest are
+     * 0, and an image's options start from these. */
     rayscad_render_options optics;
     /* Meshes and measurement (mesh_output.h). */
     double mesh_size; /* --mesh-size: grid spacing > 0; 0 = derived from the model */
@@ -54,9 +55,6 @@ typedef struct cli_options {
  * 65500, and the renderer counts tiles in an int). */
 #define CLI_MAX_PIXELS_DEFAULT (1LL << 28)
 enum { CLI_MAX_IMAGE_SIDE = 65536 };
-
-/* Copy the light-model fields of o->optics into *ro (leaving the rest). */
-void cli_options_apply_optics(const cli_options *o, rayscad_render_options *ro);
 
 /* Parse argv into *o.  -o may be left out when --measure is given (then
  * o->output is NULL).  Returns 0, or -1 with a message in err (a usage

@@ -208,10 +208,11 @@ static csg_node *finish_leaf(csg_node *x)
     return x;
 }
 
-/* Post-order without recursion: descend through unvisited children, setting
- * each child's `link` to its parent; when a node's children are done,
- * finish it and store the replacement in the parent's slot. */
-static csg_node *simplify(csg_node *root)
+/* Post-order without recursion: descend through unvisited children (a NULL
+ * one is passed over), setting each child's `link` to its parent; when a
+ * node's children are done, finish it and store what finish returns in the
+ * parent's slot.  Returns what finish made of the root. */
+static csg_node *post_order(csg_node *root, csg_node *(*finish)(csg_node *x))
 {
     if (!root) return NULL;
     root->link = NULL;
@@ -230,11 +231,16 @@ static csg_node *simplify(csg_node *root)
             continue;
         }
         csg_node *parent = x->link;
-        csg_node *r = x->is_leaf ? finish_leaf(x) : finish_op(x);
+        csg_node *r = finish(x);
         if (!parent) return r;
         parent->kids[parent->visit++] = r;
         x = parent;
     }
+}
+
+static csg_node *finish_node(csg_node *x)
+{
+    return x->is_leaf ? finish_leaf(x) : finish_op(x);
 }
 
 /* ---- grouping: a bounding hierarchy inside wide unions ------------------- */
@@ -376,34 +382,18 @@ static void group_op(csg_node *x, int from)
     x->nkids = n;
 }
 
-/* Post-order pass over a simplified tree: group wide unions and
- * differences, and refresh sizes and depths. */
-static void group_tree(csg_node *root)
+/* Groups a wide union or difference and refreshes its size and depth (a
+ * post_order finish). */
+static csg_node *group_wide(csg_node *x)
 {
-    if (!root) return;
-    root->link = NULL;
-    root->visit = 0;
-    csg_node *x = root;
-    for (;;) {
-        if (!x->is_leaf && x->visit < x->nkids) {
-            csg_node *c = x->kids[x->visit];
-            c->link = x;
-            c->visit = 0;
-            x = c;
-            continue;
-        }
-        if (!x->is_leaf) {
-            if (x->op == CSG_OP_UNION && x->nkids > GROUP_MAX)
-                group_op(x, 0);
-            else if (x->op == CSG_OP_DIFFERENCE && x->nkids - 1 > GROUP_MAX)
-                group_op(x, 1);
-            op_totals(x);
-        }
-        csg_node *parent = x->link;
-        if (!parent) return;
-        parent->visit++;
-        x = parent;
+    if (!x->is_leaf) {
+        if (x->op == CSG_OP_UNION && x->nkids > GROUP_MAX)
+            group_op(x, 0);
+        else if (x->op == CSG_OP_DIFFERENCE && x->nkids - 1 > GROUP_MAX)
+            group_op(x, 1);
+        op_totals(x);
     }
+    return x;
 }
 
 /* Lay out a simplified tree in pre-order from node index `at` and primitive
@@ -531,8 +521,8 @@ csg_scene *csg_scene_new(csg_node **roots, int n, char *err, size_t errlen)
     s->avx = csg_cpu_has_avx();
     long nodes = 0, prims = 0;
     for (int r = 0; r < n; r++) {
-        roots[r] = simplify(roots[r]);
-        group_tree(roots[r]);
+        roots[r] = post_order(roots[r], finish_node);
+        post_order(roots[r], group_wide); /* group wide unions and differences */
         if (roots[r]) {
             nodes += roots[r]->size;
             prims += roots[r]->leaves;

@@ -607,14 +607,7 @@ int geom_dxf_read(const char *text, size_t len, const char *abs, const char *rel
                   const geom_dxf_params *p, geom_dxf_message_fn msg, void *ud, geom_dxf *out)
 {
     memset(out, 0, sizeof *out);
-    reader r;
-    memset(&r, 0, sizeof r);
-    r.prm = p;
-    r.msg = msg;
-    r.ud = ud;
-    r.abs_path = abs;
-    r.rel_path = rel;
-    r.out = out;
+    reader r = {.prm = p, .msg = msg, .ud = ud, .abs_path = abs, .rel_path = rel, .out = out};
     out->path_start = malloc(sizeof *out->path_start);
     int rc = out->path_start ? 0 : -1;
     if (out->path_start) {

@@ -48,6 +48,25 @@ int iv_region_next(const iv_region *g, int e)
     return e + 1 < g->start[p + 1] ? e + 1 : g->start[p];
 }
 
+int iv_region_nearest_edge(const iv_region *g, int first, int stride, double x, double y)
+{
+    int best = -1;
+    double bd = INFINITY;
+    for (int e = first; e < g->npts; e += stride) {
+        const double *a = g->pt[e], *b = g->pt[iv_region_next(g, e)];
+        double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
+        double u = l2 > 0 ? ((x - a[0]) * ex + (y - a[1]) * ey) / l2 : 0;
+        u = u < 0 ? 0 : u > 1 ? 1 : u;
+        double qx = a[0] + u * ex - x, qy = a[1] + u * ey - y;
+        double dist = qx * qx + qy * qy;
+        if (dist < bd) {
+            bd = dist;
+            best = e;
+        }
+    }
+    return best;
+}
+
 int iv_region_path_of(const iv_region *g, int e)
 {
     int lo = 0, hi = g->npaths - 1;
@@ -211,22 +230,9 @@ int iv_prism_intersect(const iv_shape *s, const double o[3], const double d[3], 
                        iv_list *out)
 {
     const double z0 = s->u.prism.z0, z1 = s->u.prism.z1;
-    double s0 = -INFINITY, s1 = INFINITY;
+    double s0, s1;
     int c0 = IV_PART_PRISM_BOTTOM, c1 = IV_PART_PRISM_TOP;
-    if (!(z0 < z1)) return 0;
-    if (d[2] == 0) {
-        if (o[2] < z0 || o[2] > z1) return 0;
-    } else {
-        s0 = (z0 - o[2]) / d[2];
-        s1 = (z1 - o[2]) / d[2];
-        if (s0 > s1) {
-            double x = s0;
-            s0 = s1;
-            s1 = x;
-            c0 = IV_PART_PRISM_TOP;
-            c1 = IV_PART_PRISM_BOTTOM;
-        }
-    }
+    if (!(z0 < z1) || !iv_slab(o[2], d[2], z0, z1, &s0, &s1, &c0, &c1)) return 0;
     const iv_region *g = s->u.prism.g;
     const double dx = d[0], dy = d[1], ox = o[0], oy = o[1];
     const double A = dx * dx + dy * dy;
@@ -246,13 +252,8 @@ int iv_prism_intersect(const iv_shape *s, const double o[3], const double d[3], 
         double lf = sqrt(fx * fx + fy * fy);
         double disc = A * (r - lf) * (r + lf);
         if (!(disc > 0)) return 0;
-        double q = -(B + copysign(sqrt(disc), B));
-        double ta = q / A, tb = C / q;
-        if (ta > tb) {
-            double x = ta;
-            ta = tb;
-            tb = x;
-        }
+        double ta, tb;
+        iv_quadratic_roots(A, B, C, disc, &ta, &tb);
         int pa = IV_PART_PRISM_EDGE, pb = IV_PART_PRISM_EDGE;
         if (!(ta > s0)) ta = s0, pa = c0;
         if (!(tb < s1)) tb = s1, pb = c1;
@@ -287,15 +288,7 @@ int iv_prism_intersect(const iv_shape *s, const double o[3], const double d[3], 
             w0 = w1;
         }
     }
-    for (long i = 1; i < nc; i++) {
-        iv_bound x = c[i];
-        long j = i;
-        while (j > 0 && c[j - 1].t > x.t) {
-            c[j] = c[j - 1];
-            j--;
-        }
-        c[j] = x;
-    }
+    iv_bounds_sort(c, nc);
     int ns = 0;
     for (long i = 0; i + 1 < nc; i += 2) {
         double ta = c[i].t, tb = c[i + 1].t;
@@ -319,12 +312,8 @@ int iv_prism_intersect(const iv_shape *s, const double o[3], const double d[3], 
 void iv_prism_normal(const iv_shape *s, const double p[3], int part, double n[3])
 {
     n[0] = n[1] = n[2] = 0;
-    if (part == IV_PART_PRISM_BOTTOM) {
-        n[2] = -1;
-        return;
-    }
-    if (part == IV_PART_PRISM_TOP) {
-        n[2] = 1;
+    if (part == IV_PART_PRISM_BOTTOM || part == IV_PART_PRISM_TOP) {
+        n[2] = part == IV_PART_PRISM_TOP ? 1 : -1;
         return;
     }
     const iv_region *g = s->u.prism.g;
@@ -338,20 +327,7 @@ void iv_prism_normal(const iv_shape *s, const double p[3], int part, double n[3]
         }
         return;
     }
-    int best = -1;
-    double bd = INFINITY;
-    for (int e = (part - IV_PART_PRISM_EDGE) & 0xffff; e < g->npts; e += 65536) {
-        const double *a = g->pt[e], *b = g->pt[iv_region_next(g, e)];
-        double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
-        double u = l2 > 0 ? ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / l2 : 0;
-        u = u < 0 ? 0 : u > 1 ? 1 : u;
-        double qx = a[0] + u * ex - p[0], qy = a[1] + u * ey - p[1];
-        double dist = qx * qx + qy * qy;
-        if (dist < bd) {
-            bd = dist;
-            best = e;
-        }
-    }
+    int best = iv_region_nearest_edge(g, (part - IV_PART_PRISM_EDGE) & 0xffff, 65536, p[0], p[1]);
     if (best < 0) {
         n[2] = 1;
         return;

@@ -126,15 +126,7 @@ int iv_revolve_intersect(const iv_shape *s, const double o[3], const double d[3]
     }
 #undef ADD
     if (nc < 2) return 0;
-    for (long i = 1; i < nc; i++) {
-        iv_bound x = c[i];
-        long j = i;
-        while (j > 0 && c[j - 1].t > x.t) {
-            c[j] = c[j - 1];
-            j--;
-        }
-        c[j] = x;
-    }
+    iv_bounds_sort(c, nc);
     /* Sweep the gaps; write spans behind the read position. */
     long w = 0;
     int in = 0;
@@ -167,20 +159,7 @@ void iv_revolve_normal(const iv_shape *s, const double p[3], int part, double n[
         return;
     }
     double rho = hypot(p[0], p[1]);
-    int best = -1;
-    double bd = INFINITY;
-    for (int e = part; e < g->npts; e += IV_PART_REVOLVE_START) {
-        const double *a = g->pt[e], *b = g->pt[iv_region_next(g, e)];
-        double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
-        double u = l2 > 0 ? ((rho - a[0]) * ex + (p[2] - a[1]) * ey) / l2 : 0;
-        u = u < 0 ? 0 : u > 1 ? 1 : u;
-        double qx = a[0] + u * ex - rho, qy = a[1] + u * ey - p[2];
-        double dist = qx * qx + qy * qy;
-        if (dist < bd) {
-            bd = dist;
-            best = e;
-        }
-    }
+    int best = iv_region_nearest_edge(g, part, IV_PART_REVOLVE_START, rho, p[2]);
     if (best < 0) {
         n[2] = 1;
         return;

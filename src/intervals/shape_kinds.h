@@ -8,7 +8,65 @@
 
 #include "intervals.h"
 
+#include <math.h>
 #include <stdatomic.h>
+
+/* The span [*t0, *t1] of the line o + t·d (one axis) inside the slab
+ * lo <= x <= hi, and the parts it enters and leaves through: *p0 and *p1
+ * come in as lo's and hi's and are swapped with the ends.  A line parallel
+ * to the slab is inside for every t (returns 1 with ±inf) or for none
+ * (returns 0); testing that before dividing keeps 0·inf (a NaN) out, and
+ * dividing rather than multiplying by 1/d keeps a subnormal d's inf out. */
+static inline int iv_slab(double o, double d, double lo, double hi, double *t0, double *t1, int *p0,
+                          int *p1)
+{
+    *t0 = -INFINITY;
+    *t1 = INFINITY;
+    if (d == 0) return !(o < lo || o > hi);
+    *t0 = (lo - o) / d;
+    *t1 = (hi - o) / d;
+    if (*t0 > *t1) {
+        double t = *t0;
+        *t0 = *t1;
+        *t1 = t;
+        int p = *p0;
+        *p0 = *p1;
+        *p1 = p;
+    }
+    return 1;
+}
+
+/* The roots *t0 <= *t1 of A t² + 2B t + C = 0 whose discriminant
+ * (B² - AC, scaled by A as the caller finds it most exact) is disc > 0:
+ * q = -(B + copysign(√disc, B)) adds like-signed terms, and the roots are
+ * q/A and C/q (Vieta), neither losing digits. */
+static inline void iv_quadratic_roots(double A, double B, double C, double disc, double *t0,
+                                      double *t1)
+{
+    double q = -(B + copysign(sqrt(disc), B));
+    *t0 = q / A;
+    *t1 = C / q;
+    if (*t0 > *t1) {
+        double t = *t0;
+        *t0 = *t1;
+        *t1 = t;
+    }
+}
+
+/* Sorts n bounds by t, keeping equal ones in order (insertion: the lists
+ * are short). */
+static inline void iv_bounds_sort(iv_bound *c, long n)
+{
+    for (long i = 1; i < n; i++) {
+        iv_bound x = c[i];
+        long j = i;
+        while (j > 0 && c[j - 1].t > x.t) {
+            c[j] = c[j - 1];
+            j--;
+        }
+        c[j] = x;
+    }
+}
 
 int iv_polytope_intersect(const iv_polytope *p, const double o[3], const double d[3], int32_t prim,
                           iv_list *out);
@@ -49,5 +107,7 @@ struct iv_region {
 int iv_region_path_of(const iv_region *g, int e);
 /* Next point index after e within its path (wrapping). */
 int iv_region_next(const iv_region *g, int e);
+/* The edge e = first, first + stride, … (< npts) nearest (x, y); -1 if none. */
+int iv_region_nearest_edge(const iv_region *g, int first, int stride, double x, double y);
 
 #endif

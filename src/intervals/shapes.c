@@ -61,15 +61,8 @@ static int sphere(double r, const double o[3], const double d[3], int32_t prim, 
     double disc = A * (r - lf) * (r + lf);
     if (!(disc > 0)) /* miss, or tangent: a single point is no span */
         return 0;
-    /* q has the sign of -B, so B + copysign(…) adds like-signed terms; the
-     * two roots are q/A and C/q (Vieta), neither losing digits. */
-    double q = -(B + copysign(sqrt(disc), B));
-    double t0 = q / A, t1 = C / q;
-    if (t0 > t1) {
-        double tmp = t0;
-        t0 = t1;
-        t1 = tmp;
-    }
+    double t0, t1;
+    iv_quadratic_roots(A, B, C, disc, &t0, &t1);
     return emit(out, t0, IV_PART_SURFACE, t1, IV_PART_SURFACE, prim);
 }
 
@@ -79,26 +72,9 @@ static int box(const double lo[3], const double hi[3], const double o[3], const 
     double t0 = -INFINITY, t1 = INFINITY;
     int p0 = IV_PART_BOX_XMIN, p1 = IV_PART_BOX_XMAX;
     for (int k = 0; k < 3; k++) {
-        if (!(lo[k] < hi[k])) return 0;
-        if (d[k] == 0) {
-            /* Parallel to the slab: inside for every t or for none.  Testing
-             * this before dividing keeps 0·inf (a NaN) out. */
-            if (o[k] < lo[k] || o[k] > hi[k]) return 0;
-            continue;
-        }
-        /* Divide rather than multiply by 1/d: for a subnormal d, 1/d is inf
-         * and (lo - o)·inf is NaN when o lies on the plane, while
-         * 0/d is 0. */
-        double ta = (lo[k] - o[k]) / d[k], tb = (hi[k] - o[k]) / d[k];
+        double ta, tb;
         int pa = 2 * k, pb = 2 * k + 1;
-        if (ta > tb) {
-            double tt = ta;
-            ta = tb;
-            tb = tt;
-            int pp = pa;
-            pa = pb;
-            pb = pp;
-        }
+        if (!(lo[k] < hi[k]) || !iv_slab(o[k], d[k], lo[k], hi[k], &ta, &tb, &pa, &pb)) return 0;
         if (ta > t0) {
             t0 = ta;
             p0 = pa;
@@ -137,21 +113,9 @@ static int cone(double r1, double r2, double h, const double o[3], const double 
 {
     if (!cone_valid(r1, r2, h)) return 0;
     /* The slab 0 <= z <= h, handled like a box slab. */
-    double s0 = -INFINITY, s1 = INFINITY;
+    double s0, s1;
     int z0 = IV_PART_CONE_BOTTOM, z1 = IV_PART_CONE_TOP;
-    if (d[2] == 0) {
-        if (o[2] < 0 || o[2] > h) return 0;
-    } else {
-        s0 = -o[2] / d[2];
-        s1 = (h - o[2]) / d[2];
-        if (s0 > s1) {
-            double tt = s0;
-            s0 = s1;
-            s1 = tt;
-            z0 = IV_PART_CONE_TOP;
-            z1 = IV_PART_CONE_BOTTOM;
-        }
-    }
+    if (!iv_slab(o[2], d[2], 0, h, &s0, &s1, &z0, &z1)) return 0;
     /* The side: Q = x² + y² - r(z)² <= 0 with r(z) = r1 + k z.  Along the
      * line Q(t) = A t² + 2B t + C.  Q <= 0 is the solid double cone (or a
      * cylinder when k = 0); its second nappe has r(z) < 0, which only
@@ -210,13 +174,8 @@ static int cone(double r1, double r2, double h, const double o[3], const double 
              * axis); the slab alone bounds it. */
             return emit(out, s0, z0, s1, z1, prim);
         }
-        double q = -(B + copysign(sqrt(disc), B));
-        double ra = q / A, rb = C / q;
-        if (ra > rb) {
-            double tt = ra;
-            ra = rb;
-            rb = tt;
-        }
+        double ra, rb;
+        iv_quadratic_roots(A, B, C, disc, &ra, &rb);
         if (A > 0) {
             np = 1;
             c0[0] = ra;
@@ -368,12 +327,8 @@ void iv_shape_normal(const iv_shape *s, const double p[3], int part, double n[3]
     case IV_SHAPE_CONE: {
         const double r1 = s->u.cone.r1, r2 = s->u.cone.r2, h = s->u.cone.h;
         n[0] = n[1] = 0;
-        if (part == IV_PART_CONE_BOTTOM) {
-            n[2] = -1;
-            return;
-        }
-        if (part == IV_PART_CONE_TOP) {
-            n[2] = 1;
+        if (part == IV_PART_CONE_BOTTOM || part == IV_PART_CONE_TOP) {
+            n[2] = part == IV_PART_CONE_TOP ? 1 : -1;
             return;
         }
         /* Side: the gradient of x² + y² - r(z)² is 2(x, y, -k r(z)); on the

@@ -60,7 +60,7 @@
 #include <stdio.h>
 #include <string.h>
 
-enum { TILE = 32, DEFAULT_DEPTH = 8, RR_AFTER = 3, MAX_PASS = 64 };
+enum { DEFAULT_DEPTH = 8, RR_AFTER = 3, MAX_PASS = 64 };
 
 #define PI 3.14159265358979323846
 /* The most radiance one sample of a caustic path may carry: display white.
@@ -90,12 +90,7 @@ typedef struct pt_light {
 } pt_light;
 
 typedef struct pt_job {
-    const csg_scene *scene;
-    const render_camera *cam;
-    render_raygen gen; /* cam's primary rays at this image size */
-    const render_options *opt;
-    float *rgba;
-    int tiles_x, ntiles;
+    render_frame f;
     pt_light *lights;
     int nlights;
     double *le;    /* per primitive: emitted radiance per unit linear colour */
@@ -144,11 +139,11 @@ typedef struct pt_surface {
 static void surface_of(const pt_job *J, const iv_bound *b, pt_surface *s)
 {
     float c[4];
-    s->alpha = render_surface_color(J->scene, J->opt, RAYSCAD_ROOT_MODEL, b, c, &s->m);
+    s->alpha = render_surface_color(J->f.scene, J->f.opt, RAYSCAD_ROOT_MODEL, b, c, &s->m);
     for (int i = 0; i < 3; i++)
         s->rgb[i] = srgb_to_linear(c[i]);
-    s->sigma = render_surface_absorption(J->opt, s->m, s->alpha);
-    s->ior = render_surface_ior(J->opt, s->m, s->alpha);
+    s->sigma = render_surface_absorption(J->f.opt, s->m, s->alpha);
+    s->ior = render_surface_ior(J->f.opt, s->m, s->alpha);
 }
 
 /* ---- tracing ------------------------------------------------------------------ */
@@ -160,12 +155,12 @@ static void surface_of(const pt_job *J, const iv_bound *b, pt_surface *s)
 static int nearest(const pt_job *J, pt_worker *w, const double o[3], const double d[3], double tmin,
                    double tmax, iv_bound *hit)
 {
-    int rc = csg_trace_first(J->scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
+    int rc = csg_trace_first(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
     if (rc <= 0) return rc;
     if (hit->prim != IV_PRIM_NONE && isfinite(hit->t)) return 1;
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0) return -1;
+    if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0) return -1;
     for (int i = 0; i < 2 * l.n; i++) {
         const iv_bound *b = (i & 1) ? &l.v[i / 2].exit : &l.v[i / 2].enter;
         if (b->prim != IV_PRIM_NONE && isfinite(b->t)) {
@@ -197,21 +192,21 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
 {
     double tlim = target >= 0 ? dist * (1 + 2e-6) + 8 * J->eps : dist;
     iv_bound b;
-    int rc = csg_trace_first(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
+    int rc = csg_trace_first(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
     if (rc < 0) return -1;
     if (rc == 0) return target >= 0 ? 0 : 1;
     pt_surface s;
     if (b.prim != IV_PRIM_NONE) {
         if (is_target(J, &b, target, dist)) {
-            csg_scene_normal(J->scene, &b, o, d, nt);
+            csg_scene_normal(J->f.scene, &b, o, d, nt);
             return 1;
         }
         surface_of(J, &b, &s);
-        if (s.ior > 1 || render_surface_opaque(J->opt, s.m, s.alpha)) return 0;
+        if (s.ior > 1 || render_surface_opaque(J->f.opt, s.m, s.alpha)) return 0;
     }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
+    if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
     double T = 1;
     for (int i = 0; i < l.n && T > 0; i++) {
         const iv_span *sp = &l.v[i];
@@ -228,7 +223,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
             const iv_bound *bb = e ? &sp->exit : &sp->enter;
             if (bb->prim == IV_PRIM_NONE) continue;
             if (is_target(J, bb, target, dist)) {
-                csg_scene_normal(J->scene, bb, o, d, nt);
+                csg_scene_normal(J->f.scene, bb, o, d, nt);
                 return T;
             }
             surface_of(J, bb, &s);
@@ -316,19 +311,12 @@ static int direct(const pt_job *J, pt_worker *w, const render_hit *h, double E[3
                 normalize3(wv);
                 basis_of(wv, u, v);
                 square_to_disc(rng_next(&w->g), rng_next(&w->g), &dx, &dy);
-                for (int i = 0; i < 3; i++)
-                    q[i] += L->radius * (dx * u[i] + dy * v[i]);
+                disc_point(L->pos, L->radius, u, v, dx, dy, q);
             }
         } else {
             sample_emitter(L, &w->g, q, &pdf);
         }
-        for (int i = 0; i < 3; i++)
-            dir[i] = q[i] - o[i];
-        double dist = sqrt(dot3(dir, dir));
-        if (!(dist > 0)) continue;
-        for (int i = 0; i < 3; i++)
-            dir[i] /= dist;
-        double cs = dot3(nf, dir);
+        double dist, cs = toward(o, q, nf, dir, &dist);
         if (cs <= 0) continue;
         int32_t target = L->kind == PT_POINT ? -1 : L->prim;
         double T = shadow(J, w, o, dir, dist, target, nt);
@@ -386,7 +374,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             return 0;
         }
         render_hit h;
-        render_surface_hit(J->scene, &b, b.t, o, d, RENDER_GRAZE_LEAVES, &h);
+        render_surface_hit(J->f.scene, &b, b.t, o, d, RENDER_GRAZE_LEAVES, &h);
         int entering = h.entering;
         pt_surface s;
         surface_of(J, &b, &s);
@@ -422,7 +410,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             if (entering) {
                 iv_list l;
                 memset(&l, 0, sizeof l);
-                if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
+                if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
                     return -1;
                 double len = INFINITY;
                 for (int i = 0; i < l.n; i++)
@@ -504,16 +492,13 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
 
 /* ---- the image --------------------------------------------------------------------- */
 
-static int render_tile(const void *job, iv_arena *a, void *state, int tile)
+static int render_tile(const void *job, iv_arena *a, void *state, int x0, int y0, int x1, int y1)
 {
     const pt_job *J = job;
     pt_worker *w = state;
     w->a = a;
-    const render_options *opt = J->opt;
-    const render_camera *c = J->cam;
-    int x0 = (tile % J->tiles_x) * TILE, y0 = (tile / J->tiles_x) * TILE;
-    int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
-    int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
+    const render_options *opt = J->f.opt;
+    const render_camera *c = J->f.cam;
     int ns = opt->path_trace;
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
@@ -525,7 +510,7 @@ static int render_tile(const void *job, iv_arena *a, void *state, int tile)
                 double jx = fmod(ox + k * 0.75487766624669276, 1.0);
                 double jy = fmod(oy + k * 0.56984029099805327, 1.0);
                 double o[3], d[3], tmin, tmax, L[3];
-                render_raygen_ray(&J->gen, x + jx, y + jy, o, d);
+                render_raygen_ray(&J->f.gen, x + jx, y + jy, o, d);
                 thin_lens(c, opt->aperture, J->focus, &w->g, o, d);
                 ray_range(c, d, &tmin, &tmax);
                 int rc = path(J, w, o, d, tmin, tmax, L);
@@ -535,7 +520,7 @@ static int render_tile(const void *job, iv_arena *a, void *state, int tile)
                     for (int i = 0; i < 3; i++)
                         sum[i] += L[i];
             }
-            float *px = J->rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
+            float *px = J->f.rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
             for (int i = 0; i < 3; i++)
                 px[i] = (float)linear_to_srgb(sum[i] / ns);
             px[3] = 1;
@@ -546,8 +531,8 @@ static int render_tile(const void *job, iv_arena *a, void *state, int tile)
 /* The lights, per-primitive emission and the scale of the scene, once. */
 static int setup(pt_job *J)
 {
-    const csg_scene *S = J->scene;
-    const render_options *opt = J->opt;
+    const csg_scene *S = J->f.scene;
+    const render_options *opt = J->f.opt;
     int np = csg_scene_prim_count(S);
     J->le = calloc((size_t)np + 1, sizeof *J->le);
     J->sampled = calloc((size_t)np + 1, 1);
@@ -556,7 +541,7 @@ static int setup(pt_job *J)
 
     double centre[3], size = model_scale(S, centre); /* as render.c's */
     J->eps = render_ray_offset(size);
-    J->focus = lens_focus(opt, J->cam, centre, size);
+    J->focus = lens_focus(opt, J->f.cam, centre, size);
 
     for (int li = 0; li < opt->nlights && li < RAYSCAD_MAX_LIGHTS; li++) {
         const render_light *R = &opt->lights[li];
@@ -613,7 +598,7 @@ static int setup(pt_job *J)
     }
     if (opt->nlights == 0 && emitters == 0) {
         /* the preview's key light, (-1,-1,1)/√3 in (right, forward, up) */
-        const render_camera *c = J->cam;
+        const render_camera *c = J->f.cam;
         pt_light *L = &J->lights[J->nlights++];
         L->kind = PT_KEY;
         for (int i = 0; i < 3; i++)
@@ -637,43 +622,17 @@ int render_path_trace(const csg_scene *s, const render_camera *cam, const render
                      "lights, no negative bounces, aperture, focus or absorption)");
         return -1;
     }
-    pt_job J;
-    memset(&J, 0, sizeof J);
-    J.scene = s;
-    J.cam = cam;
-    render_raygen_init(&J.gen, cam, opt->width, opt->height);
-    J.opt = opt;
-    J.rgba = rgba;
-    J.tiles_x = (opt->width + TILE - 1) / TILE;
-    J.ntiles = J.tiles_x * ((opt->height + TILE - 1) / TILE);
+    pt_job J = {0};
+    render_frame_init(&J.f, s, cam, opt, rgba);
     int rc = -1;
-    const char *msg = "render: out of memory while path tracing";
-    char too_long[96];
-    if (setup(&J) != 0) goto done;
-    render_pool pool = {
-        .ntiles = J.ntiles,
-        .threads = opt->threads,
-        .max_intervals = opt->max_intervals,
-        .state_size = sizeof(pt_worker),
-        .tile = render_tile,
-        .job = &J,
-        .progress = opt->progress,
-        .ud = opt->ud,
-    };
-    int failed = render_pool_run(&pool);
-    if (!failed) {
-        rc = 0;
-    } else if (failed == IV_ARENA_LIST_TOO_LONG) {
-        snprintf(too_long, sizeof too_long,
-                 "render: a ray's interval list holds more than %d intervals",
-                 opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
-        msg = too_long;
-        rc = RAYSCAD_ERROR_INTERVALS;
+    if (setup(&J) != 0) {
+        if (err && errlen) snprintf(err, errlen, "render: out of memory while path tracing");
+    } else {
+        rc =
+            render_tiles_draw(opt, sizeof(pt_worker), render_tile, &J, "path tracing", err, errlen);
     }
-done:
     free(J.le);
     free(J.sampled);
     free(J.lights);
-    if (rc != 0 && err && errlen) snprintf(err, errlen, "%s", msg);
     return rc;
 }

@@ -46,17 +46,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { TILE = 32, MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_LIGHT_SAMPLES = 16 };
+enum { MAX_ROOTS = 3, MAX_SAMPLES = 64, MAX_LIGHT_SAMPLES = 16 };
 
 typedef struct job {
-    const csg_scene *scene;
-    const render_camera *cam;
-    render_raygen gen; /* cam's primary rays at this image size */
-    const render_options *opt;
-    float *rgba;
+    render_frame f;
     int nroots;
     int live[MAX_ROOTS], nlive; /* the roots that are not empty, in order */
-    int tiles_x;
     /* the light model, resolved once */
     int lit;      /* shadow rays and the lights below */
     int keylight; /* lit by the preview's own pair, the key one shadowed */
@@ -109,9 +104,9 @@ static int stops_light(const job *J, const iv_bound *b)
     if (b->prim == IV_PRIM_NONE) return 0;
     float c[4];
     const csg_material *m;
-    render_surface_color(J->scene, J->opt, RAYSCAD_ROOT_MODEL, b, c, &m);
+    render_surface_color(J->f.scene, J->f.opt, RAYSCAD_ROOT_MODEL, b, c, &m);
     if (m->emit > 0) return 0;
-    double sigma = render_surface_absorption(J->opt, m, c[3]);
+    double sigma = render_surface_absorption(J->f.opt, m, c[3]);
     return render_surface_transmittance(c[3], sigma) < RENDER_DARK;
 }
 
@@ -124,7 +119,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
 {
     if (J->first_hit && !wk->full_shadow) {
         iv_bound b;
-        int rc = csg_trace_first(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
+        int rc = csg_trace_first(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
         if (rc < 0) return -1;
         if (rc == 0) return 1; /* nothing in the way: the loop below leaves T = 1 */
         if (stops_light(J, &b)) return 0;
@@ -132,7 +127,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
     }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
+    if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
     if (J->first_hit) wk->full_shadow = !(l.n == 0 || stops_light(J, &l.v[0].enter));
     double T = 1;
     for (int i = 0; i < l.n && T > RENDER_DARK; i++) {
@@ -142,9 +137,9 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
             if (b->prim == IV_PRIM_NONE) continue;
             float c[4];
             const csg_material *m;
-            render_surface_color(J->scene, J->opt, RAYSCAD_ROOT_MODEL, b, c, &m);
+            render_surface_color(J->f.scene, J->f.opt, RAYSCAD_ROOT_MODEL, b, c, &m);
             if (m->emit > 0) continue;
-            double sigma = render_surface_absorption(J->opt, m, c[3]);
+            double sigma = render_surface_absorption(J->f.opt, m, c[3]);
             T *= render_surface_transmittance(c[3], sigma);
             /* an absorbing span counts once: from its entry, or from o when
              * it was entered before o (the clip) */
@@ -164,7 +159,7 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
  * -1 when out of memory. */
 static double light_factor(const job *J, worker_ctx *wk, const render_hit *h)
 {
-    const render_camera *c = J->cam;
+    const render_camera *c = J->f.cam;
     const double *p = h->p, *nf = h->nf;
     double o[3]; /* every shadow ray leaves on the side nf faces */
     render_ray_spawn(h, nf, RENDER_SPAWN_SIDE, J->eps, o);
@@ -204,17 +199,9 @@ static double light_factor(const job *J, worker_ctx *wk, const render_hit *h)
                     double dx, dy;
                     square_to_disc((si + rng_next(&wk->g)) / ns, (sj + rng_next(&wk->g)) / ns, &dx,
                                    &dy);
-                    for (int i = 0; i < 3; i++)
-                        q[i] += L->radius * (dx * u[i] + dy * v[i]);
+                    disc_point(L->pos, L->radius, u, v, dx, dy, q);
                 }
-                double dir[3];
-                for (int i = 0; i < 3; i++)
-                    dir[i] = q[i] - o[i];
-                double len = sqrt(dot3(dir, dir));
-                if (!(len > 0)) continue;
-                for (int i = 0; i < 3; i++)
-                    dir[i] /= len;
-                double cs = dot3(nf, dir);
+                double dir[3], len, cs = toward(o, q, nf, dir, &len);
                 if (cs <= 0) continue;
                 double T = transmittance(J, wk, o, dir, len);
                 if (T < 0) return -1;
@@ -237,8 +224,8 @@ static double light_factor(const job *J, worker_ctx *wk, const render_hit *h)
 static int ends_walk(const job *J, int r, const iv_bound *b, float c[4], const csg_material **m)
 {
     if (b->prim == IV_PRIM_NONE || !isfinite(b->t)) return 0;
-    render_surface_color(J->scene, J->opt, r, b, c, m);
-    return render_surface_opaque(J->opt, *m, c[3]);
+    render_surface_color(J->f.scene, J->f.opt, r, b, c, m);
+    return render_surface_opaque(J->f.opt, *m, c[3]);
 }
 
 static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const double d[3],
@@ -264,7 +251,7 @@ static int surface_light(const job *J, worker_ctx *wk, const iv_bound *bb, const
                          const float c[4], const csg_material *m, const double o[3],
                          const double d[3], int depth, double local[3], render_hit *h)
 {
-    render_surface_hit(J->scene, sb, bb->t, o, d, RENDER_GRAZE_ENTERS, h);
+    render_surface_hit(J->f.scene, sb, bb->t, o, d, RENDER_GRAZE_ENTERS, h);
 
     float lit[3];
     if (m->emit > 0) {
@@ -275,7 +262,7 @@ static int surface_light(const job *J, worker_ctx *wk, const iv_bound *bb, const
         if (f < 0) return -1;
         render_shade_apply(c, f, lit);
     } else {
-        render_shade_apply(c, render_shade_factor(J->cam, h->n), lit);
+        render_shade_apply(c, render_shade_factor(J->f.cam, h->n), lit);
     }
     for (int i = 0; i < 3; i++)
         local[i] = lit[i];
@@ -317,7 +304,7 @@ static void composite(double acc[3], double *acc_a, double alpha, const double l
 /* What the ray shows once compositing stops: acc over the background. */
 static void over_background(const job *J, const double acc[3], double acc_a, double out[3])
 {
-    const float *bg = J->opt->colors.background;
+    const float *bg = J->f.opt->colors.background;
     for (int i = 0; i < 3; i++)
         out[i] = acc[i] + (1 - acc_a) * bg[i];
 }
@@ -336,7 +323,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         const iv_bound *have[MAX_ROOTS] = {NULL};
         for (int q = 0; q < J->nlive; q++) {
             int r = J->live[q];
-            int rc = csg_trace_first(J->scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
+            int rc = csg_trace_first(J->f.scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
             if (rc < 0) return -1;
             if (rc) have[r] = &fb[r];
         }
@@ -368,7 +355,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         int r = J->live[q];
         pos[r] = 0;
         volume[r] = 0;
-        if (csg_trace(J->scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
+        if (csg_trace(J->f.scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
         if (lists[r].n > 0) first[r] = &lists[r].v[0].enter;
     }
     if (J->first_hit) {
@@ -407,9 +394,9 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
 
         float c[4];
         const csg_material *m;
-        render_surface_color(J->scene, J->opt, best, sb, c, &m);
+        render_surface_color(J->f.scene, J->f.opt, best, sb, c, &m);
         double alpha = c[3];
-        double sigma = render_surface_absorption(J->opt, m, alpha);
+        double sigma = render_surface_absorption(J->f.opt, m, alpha);
         if (sigma > 0) {
             if (is_exit) {
                 int was = volume[best];
@@ -431,7 +418,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         composite(acc, &acc_a, alpha, local);
 
         double ior = acc_a < RENDER_OPAQUE && depth < J->max_depth && bb->prim != IV_PRIM_NONE
-                         ? render_surface_ior(J->opt, m, alpha)
+                         ? render_surface_ior(J->f.opt, m, alpha)
                          : 0;
         if (ior > 1) {
             /* What lies behind is seen along the refracted ray, not the
@@ -453,21 +440,18 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
 /* Pixel (x, y): the mean of its s² samples, whose sum is sum (inv = 1/s²). */
 static void put_pixel(const job *J, int x, int y, const double sum[3], double inv)
 {
-    float *p = J->rgba + ((size_t)y * (size_t)J->opt->width + (size_t)x) * 4;
+    float *p = J->f.rgba + ((size_t)y * (size_t)J->f.opt->width + (size_t)x) * 4;
     for (int k = 0; k < 3; k++)
         p[k] = (float)(sum[k] * inv);
     p[3] = 1;
 }
 
-static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
+static int render_tile(const void *job_, iv_arena *a, void *state, int x0, int y0, int x1, int y1)
 {
     const job *J = job_;
     worker_ctx *wk = state;
     wk->a = a;
-    const render_options *opt = J->opt;
-    int x0 = (tile % J->tiles_x) * TILE, y0 = (tile / J->tiles_x) * TILE;
-    int x1 = x0 + TILE < opt->width ? x0 + TILE : opt->width;
-    int y1 = y0 + TILE < opt->height ? y0 + TILE : opt->height;
+    const render_options *opt = J->f.opt;
     int s = opt->samples;
     double inv = 1.0 / ((double)s * s);
     if (!J->covered &&
@@ -501,12 +485,12 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
                                          py >= J->cover[2] && py <= J->cover[3])) {
                         /* what trace_ray gives a ray that meets nothing */
                         for (int k = 0; k < 3; k++)
-                            sum[k] += (float)(double)J->opt->colors.background[k];
+                            sum[k] += (float)(double)J->f.opt->colors.background[k];
                         continue;
                     }
-                    render_raygen_ray(&J->gen, px, py, o, d);
-                    thin_lens(J->cam, opt->aperture, J->focus, &wk->g, o, d);
-                    ray_range(J->cam, d, &tmin, &tmax);
+                    render_raygen_ray(&J->f.gen, px, py, o, d);
+                    thin_lens(J->f.cam, opt->aperture, J->focus, &wk->g, o, d);
+                    ray_range(J->f.cam, d, &tmin, &tmax);
                     int rc = trace_ray(J, wk, o, d, tmin, tmax, 0, c);
                     iv_arena_reset(wk->a);
                     if (rc != 0) return -1;
@@ -523,7 +507,7 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int tile)
  * secondary-ray offset and the focal distance. */
 static int resolve_light_model(job *J, char *err, size_t errlen)
 {
-    const render_options *opt = J->opt;
+    const render_options *opt = J->f.opt;
     if (opt->nlights < 0 || opt->nlights > RAYSCAD_MAX_LIGHTS || opt->light_samples < 0 ||
         opt->light_samples > MAX_LIGHT_SAMPLES || opt->bounces < 0 || opt->aperture < 0 ||
         opt->focus < 0 || opt->xray < 0 || opt->xray > 1 || opt->absorb < 0 ||
@@ -537,8 +521,8 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
         J->lights[J->nlights++] = opt->lights[i];
     for (int i = 0; i < J->nlights; i++)
         if (!(J->lights[i].intensity > 0)) J->lights[i].intensity = 1;
-    for (int p = 0; p < csg_scene_prim_count(J->scene); p++) {
-        const csg_material *m = csg_scene_material(J->scene, p);
+    for (int p = 0; p < csg_scene_prim_count(J->f.scene); p++) {
+        const csg_material *m = csg_scene_material(J->f.scene, p);
         if (!(m->emit > 0)) continue;
         if (J->nlights == RAYSCAD_MAX_LIGHTS) continue;
         render_light *L = &J->lights[J->nlights++];
@@ -556,9 +540,9 @@ static int resolve_light_model(job *J, char *err, size_t errlen)
      * first boundary never settles a ray. */
     J->first_hit = !(opt->xray > 0 && opt->xray < RENDER_OPAQUE);
 
-    double centre[3], size = model_scale(J->scene, centre);
+    double centre[3], size = model_scale(J->f.scene, centre);
     J->eps = render_ray_offset(size);
-    J->focus = lens_focus(opt, J->cam, centre, size);
+    J->focus = lens_focus(opt, J->f.cam, centre, size);
     return 0;
 }
 
@@ -569,10 +553,10 @@ static void find_cover(job *J)
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     int any = 0;
     J->covered = 1;
-    if (J->opt->aperture > 0) return;
+    if (J->f.opt->aperture > 0) return;
     for (int r = 0; r < J->nroots; r++) {
         double l[3], h[3];
-        if (csg_scene_bounds(J->scene, r, l, h) != 0) continue;
+        if (csg_scene_bounds(J->f.scene, r, l, h) != 0) continue;
         any = 1;
         for (int k = 0; k < 3; k++) {
             lo[k] = fmin(lo[k], l[k]);
@@ -585,7 +569,7 @@ static void find_cover(job *J)
         J->covered = 0;
         return;
     }
-    J->covered = render_raygen_cover(&J->gen, lo, hi, J->cover) != 0;
+    J->covered = render_raygen_cover(&J->f.gen, lo, hi, J->cover) != 0;
 }
 
 int render_image(const csg_scene *s, const render_camera *cam, const render_options *opt,
@@ -600,13 +584,8 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
     }
     /* ---- the path-traced quality mode: a separate integrator -------------- */
     if (opt->path_trace > 0) return render_path_trace(s, cam, opt, rgba, err, errlen);
-    job J;
-    memset(&J, 0, sizeof J);
-    J.scene = s;
-    J.cam = cam;
-    render_raygen_init(&J.gen, cam, opt->width, opt->height);
-    J.opt = opt;
-    J.rgba = rgba;
+    job J = {0};
+    render_frame_init(&J.f, s, cam, opt, rgba);
     J.nroots = csg_scene_root_count(s);
     if (J.nroots > MAX_ROOTS) J.nroots = MAX_ROOTS;
     if (J.nroots < 0) J.nroots = 0;
@@ -614,27 +593,5 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
         if (csg_scene_root_node(s, r) >= 0) J.live[J.nlive++] = r;
     if (resolve_light_model(&J, err, errlen) != 0) return -1;
     find_cover(&J);
-    J.tiles_x = (opt->width + TILE - 1) / TILE;
-    render_pool pool = {
-        .ntiles = J.tiles_x * ((opt->height + TILE - 1) / TILE),
-        .threads = opt->threads,
-        .max_intervals = opt->max_intervals,
-        .state_size = sizeof(worker_ctx),
-        .tile = render_tile,
-        .job = &J,
-        .progress = opt->progress,
-        .ud = opt->ud,
-    };
-    int failed = render_pool_run(&pool);
-    if (failed == IV_ARENA_LIST_TOO_LONG) {
-        if (err && errlen)
-            snprintf(err, errlen, "render: a ray's interval list holds more than %d intervals",
-                     opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
-        return RAYSCAD_ERROR_INTERVALS;
-    }
-    if (failed) {
-        set_err(err, errlen, "render: out of memory while tracing rays");
-        return -1;
-    }
-    return 0;
+    return render_tiles_draw(opt, sizeof(worker_ctx), render_tile, &J, "tracing rays", err, errlen);
 }

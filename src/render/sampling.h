@@ -88,6 +88,29 @@ static inline void basis_of(const double w[3], double u[3], double v[3])
     v[2] = w[0] * u[1] - w[1] * u[0];
 }
 
+/* The point (dx, dy) of the unit disc on the disc of radius r about c
+ * spanned by u and v. */
+static inline void disc_point(const double c[3], double r, const double u[3], const double v[3],
+                              double dx, double dy, double q[3])
+{
+    for (int i = 0; i < 3; i++)
+        q[i] = c[i] + r * (dx * u[i] + dy * v[i]);
+}
+
+/* The unit direction dir from o to q and the distance *len; returns the
+ * cosine of dir with n, or 0 when q is o (or the distance is not a number). */
+static inline double toward(const double o[3], const double q[3], const double n[3], double dir[3],
+                            double *len)
+{
+    for (int i = 0; i < 3; i++)
+        dir[i] = q[i] - o[i];
+    *len = sqrt(dot3(dir, dir));
+    if (!(*len > 0)) return 0;
+    for (int i = 0; i < 3; i++)
+        dir[i] /= *len;
+    return dot3(n, dir);
+}
+
 /* ---- the model's scale, for offsets and the lens ---------------------------- */
 
 /* The model's size — the diagonal of its bounds (infinite extents count as

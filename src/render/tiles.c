@@ -9,12 +9,21 @@
 #include "tiles.h"
 
 #include <pthread.h>
+#include <stdio.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <time.h>
 #include <unistd.h>
 
-enum { MAX_THREADS = 256, POLL_NS = 100 * 1000 * 1000 };
+enum { MAX_THREADS = 256, POLL_NS = 100 * 1000 * 1000, TILE = 32 };
+
+typedef struct render_pool {
+    const render_options *opt;
+    int tiles_x, ntiles;
+    size_t state_size;
+    render_tile_fn tile;
+    const void *job;
+} render_pool;
 
 typedef struct pool_run {
     const render_pool *p;
@@ -43,11 +52,14 @@ static void draw(pool_run *R)
     if (!a || !state) {
         fail(R, NULL);
     } else {
-        iv_arena_set_list_limit(a, p->max_intervals);
+        iv_arena_set_list_limit(a, p->opt->max_intervals);
         while (!atomic_load(&R->failed)) {
             int t = atomic_fetch_add(&R->next, 1);
             if (t >= p->ntiles) break;
-            if (p->tile(p->job, a, state, t) != 0) {
+            int x0 = (t % p->tiles_x) * TILE, y0 = (t / p->tiles_x) * TILE;
+            int x1 = x0 + TILE < p->opt->width ? x0 + TILE : p->opt->width;
+            int y1 = y0 + TILE < p->opt->height ? y0 + TILE : p->opt->height;
+            if (p->tile(p->job, a, state, x0, y0, x1, y1) != 0) {
                 fail(R, a);
                 break;
             }
@@ -78,10 +90,10 @@ static int watch(pool_run *R, int started)
     pthread_mutex_lock(&R->mu);
     while (R->exited < started) {
         int d = atomic_load(&R->done);
-        if (d != reported && p->progress) {
+        if (d != reported && p->opt->progress) {
             reported = d;
             pthread_mutex_unlock(&R->mu);
-            p->progress(p->ud, (double)d / p->ntiles);
+            p->opt->progress(p->opt->ud, (double)d / p->ntiles);
             pthread_mutex_lock(&R->mu);
             continue;
         }
@@ -98,14 +110,17 @@ static int watch(pool_run *R, int started)
     return reported;
 }
 
-int render_pool_run(const render_pool *p)
+/* Draws every tile.  Returns 0, or why the first worker to fail stopped (an
+ * iv_arena_failure_kind; IV_ARENA_OUT_OF_MEMORY also when a worker could not
+ * get its arena or state). */
+static int run(const render_pool *p)
 {
     pool_run R = {.p = p};
     atomic_init(&R.next, 0);
     atomic_init(&R.done, 0);
     atomic_init(&R.failed, 0);
     if (p->ntiles <= 0) return 0;
-    int nthreads = p->threads;
+    int nthreads = p->opt->threads;
     if (nthreads <= 0) {
         long n = sysconf(_SC_NPROCESSORS_ONLN);
         nthreads = n > 0 ? (int)n : 1;
@@ -129,6 +144,24 @@ int render_pool_run(const render_pool *p)
     }
     if (started == 0) draw(&R); /* no thread to be had: draw on this one */
     int failed = atomic_load(&R.failed);
-    if (!failed && p->progress && reported != p->ntiles) p->progress(p->ud, 1.0);
+    if (!failed && p->opt->progress && reported != p->ntiles) p->opt->progress(p->opt->ud, 1.0);
     return failed;
+}
+
+int render_tiles_draw(const render_options *opt, size_t state_size, render_tile_fn tile,
+                      const void *job, const char *doing, char *err, size_t errlen)
+{
+    render_pool p = {.opt = opt, .state_size = state_size, .tile = tile, .job = job};
+    p.tiles_x = (opt->width + TILE - 1) / TILE;
+    p.ntiles = p.tiles_x * ((opt->height + TILE - 1) / TILE);
+    int failed = run(&p);
+    if (!failed) return 0;
+    if (failed == IV_ARENA_LIST_TOO_LONG) {
+        if (err && errlen)
+            snprintf(err, errlen, "render: a ray's interval list holds more than %d intervals",
+                     opt->max_intervals > 0 ? opt->max_intervals : IV_LIST_LIMIT_DEFAULT);
+        return RAYSCAD_ERROR_INTERVALS;
+    }
+    if (err && errlen) snprintf(err, errlen, "render: out of memory while %s", doing);
+    return -1;
 }

@@ -12,19 +12,31 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "../intervals/intervals.h"
 #include "scad.h"
 
 /* ---- arena ---------------------------------------------------------------- */
 
-typedef struct scad_arena scad_arena;
+/* The interval lists' bump allocator (intervals.h), never reset: what a
+ * parse or an evaluation allocates lives until scad_arena_free. */
+typedef iv_arena scad_arena;
 
-scad_arena *scad_arena_new(void);
-void scad_arena_free(scad_arena *a);
+static inline scad_arena *scad_arena_new(void)
+{
+    return iv_arena_new(16384);
+}
+static inline void scad_arena_free(scad_arena *a)
+{
+    iv_arena_free(a);
+}
 /* Zeroed, 16-byte aligned memory valid until scad_arena_free; NULL when out
  * of memory. */
 void *scad_arena_alloc(scad_arena *a, size_t bytes);
 /* The same, not zeroed: for memory the caller fills before reading. */
-void *scad_arena_alloc_raw(scad_arena *a, size_t bytes);
+static inline void *scad_arena_alloc_raw(scad_arena *a, size_t bytes)
+{
+    return iv_arena_alloc(a, bytes);
+}
 /* A NUL-terminated copy of s[0..n). */
 char *scad_arena_strndup(scad_arena *a, const char *s, size_t n);
 

@@ -393,10 +393,11 @@ static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const sc
 static const scad_args *builtin_params(scad_eval *ev, const scad_module_def *d, int id)
 {
     scad_args *p = &ev->builtin_params[id];
-    if (p->v || !d->params[0]) return p;
+    if (p->v || !d->params) return p;
     int n = 0;
     while (d->params[n])
         n++;
+    if (n > SCAD_MAX_PARAMS) return NULL;
     scad_arg *v = scad_arena_alloc(ev->arena, sizeof *v * (size_t)n);
     if (!v) return NULL;
     for (int i = 0; i < n; i++) {

@@ -319,6 +319,29 @@ static int parse_into(parser *P, scad_scope *s)
     return P->errors == 0 && !P->oom;
 }
 
+/* Lexes src (the file path) with names and parses it into scope with a
+ * parser like P's, one include level deeper, its nesting starting at depth
+ * (0 for a used file, which is a fresh scope). */
+static void parse_file_into(parser *P, scad_scope *scope, scad_names *names, const char *path,
+                            const char *src, int depth)
+{
+    scad_token *toks;
+    int n = scad_lex(P->a, P->d, names, path, src, &toks);
+    if (!toks) {
+        P->oom = 1;
+        return;
+    }
+    parser sub = *P;
+    sub.t = toks;
+    sub.ntok = n;
+    sub.pos = 0;
+    sub.depth = depth;
+    sub.include_depth++;
+    parse_into(&sub, scope);
+    P->errors = sub.errors;
+    P->oom |= sub.oom;
+}
+
 enum { MAX_INCLUDE_DEPTH = 64 };
 
 static void use_file(parser *P, scad_scope *s, scad_token *t)
@@ -364,21 +387,7 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         u->path[u->n] = path;
         u->scope[u->n] = scope;
         u->n++;
-        scad_token *toks;
-        int n = scad_lex(P->a, P->d, u->names, path, src, &toks);
-        if (!toks) {
-            P->oom = 1;
-            return;
-        }
-        parser sub = *P;
-        sub.t = toks;
-        sub.ntok = n;
-        sub.pos = 0;
-        sub.depth = 0;
-        sub.include_depth++;
-        parse_into(&sub, scope);
-        P->errors = sub.errors;
-        P->oom |= sub.oom;
+        parse_file_into(P, scope, u->names, path, src, 0);
     }
     for (int i = 0; i < s->nuses; i++)
         if (s->uses[i] == scope) return;
@@ -402,20 +411,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
         scad_diag_line(P->d, RAYSCAD_MSG_WARNING, line);
         return;
     }
-    scad_token *toks;
-    int n = scad_lex(P->a, P->d, P->shared->names, path, src, &toks);
-    if (!toks) {
-        P->oom = 1;
-        return;
-    }
-    parser sub = *P;
-    sub.t = toks;
-    sub.ntok = n;
-    sub.pos = 0;
-    sub.include_depth++;
-    parse_into(&sub, s);
-    P->errors = sub.errors;
-    P->oom |= sub.oom;
+    parse_file_into(P, s, P->shared->names, path, src, P->depth);
 }
 
 scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,

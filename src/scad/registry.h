@@ -18,11 +18,12 @@ typedef struct scad_call scad_call;
 
 typedef struct scad_module_def {
     const char *name;
-    /* Its parameters, NULL-terminated, in OpenSCAD 2021.01's order: the
-     * first npositional take the call's unnamed arguments in turn, the rest
-     * are given by name only.  A named argument that is none of them warns
+    /* Its parameters (at most SCAD_MAX_PARAMS), NULL-terminated, in
+     * OpenSCAD 2021.01's order; NULL when it has none.  The first
+     * npositional take the call's unnamed arguments in turn, the rest are
+     * given by name only.  A named argument that is none of them warns
      * "variable x not specified as parameter" ($-names excepted). */
-    const char *params[SCAD_MAX_PARAMS + 1];
+    const char *const *params;
     int npositional;
     /* read fills args (size bytes, zeroed first; at most SCAD_MAX_ARGS)
      * from the bound arguments, with OpenSCAD's conversions, defaults and

@@ -5,12 +5,6 @@
  * random, gridded, near-duplicate and near-coplanar points.  Property tests
  * print their seed.
  */
-/*
- * test_geometry.c — the shapes with shared data (polytope, hull, mesh,
- * prism, revolve): their interval lists along random lines against an
- * independent point classifier, watertightness on lines through vertices and
- * edges, and reference counting.  Property tests print their seed.
- */
 #include <criterion/criterion.h>
 
 #include <math.h>

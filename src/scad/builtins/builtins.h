@@ -65,8 +65,8 @@ void scad_print_g(scad_buf *b, double x);
 void scad_print_bool(scad_buf *b, int x);
 /* Quotes around the bytes, nothing escaped (OpenSCAD's QuotedString). */
 void scad_print_quoted(scad_buf *b, const char *s, size_t n);
-/* ", $fn = …, $fa = …, $fs = …" (no leading ", " when !leading_comma). */
-void scad_print_facets(scad_buf *b, scad_facet_params f, int leading_comma);
+/* before, "$fn = …, $fa = …, $fs = …", after. */
+void scad_print_facets(scad_buf *b, scad_facet_params f, const char *before, const char *after);
 /* The path of `name` (as written in the file `from`) as OpenSCAD prints it:
  * relative to the main file's folder; *mtime gets its modification time
  * (0 when it does not exist). */
@@ -116,6 +116,9 @@ scad_geom *scad_region_leaf(scad_eval *ev, iv_region *g, const scad_state *state
 /* The n-gon OpenSCAD makes of a circle of radius r (a new reference); NULL
  * when out of memory. */
 iv_region *scad_circle_region(double r, int n);
+/* The call's children evaluated as one union under state (NULL: the
+ * call's own). */
+scad_geom *scad_call_children(scad_call *c, const scad_state *state);
 /* g (a leaf, or NULL) with the call's $rs_ optics in its material. */
 scad_geom *scad_with_optics(scad_call *c, scad_geom *g);
 /* Circle point i of n at radius r, OpenSCAD's generate_circle. */

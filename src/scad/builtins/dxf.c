@@ -180,26 +180,30 @@ static int read_for(scad_eval *ev, scad_loc loc, dxf_args *d, geom_dxf *dxf)
     return rc != 0;
 }
 
+/* The arguments of fname (has_name: it takes a name) and the drawing they
+ * name; nonzero when that could not be read (the arguments are freed). */
+static int open_dxf(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname,
+                    int has_name, dxf_args *d, geom_dxf *dxf)
+{
+    read_args(ev, a, loc, fname, has_name, d);
+    if (!read_for(ev, loc, d, dxf)) return 0;
+    free_args(d);
+    return 1;
+}
+
 static double atan2_degrees(double y, double x)
 {
     return atan2(y, x) * 180.0 / IV_PI;
 }
 
-static scad_value f_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
+/* dxf_dim: the measure of the dimension d names in dxf, or undef. */
+static scad_value dimension(scad_eval *ev, scad_loc loc, dxf_args *d, const geom_dxf *dxf)
 {
-    (void)fname;
-    dxf_args d;
-    read_args(ev, a, loc, "dxf_dim", 1, &d);
-    geom_dxf dxf;
     scad_value r = scad_undef();
-    if (read_for(ev, loc, &d, &dxf)) {
-        free_args(&d);
-        return r;
-    }
-    const char *want = scad_buf_str(&d.name);
+    const char *want = scad_buf_str(&d->name);
     int found = 0;
-    for (int i = 0; i < dxf.ndims && !found; i++) {
-        const geom_dxf_dim *m = &dxf.dims[i];
+    for (int i = 0; i < dxf->ndims && !found; i++) {
+        const geom_dxf_dim *m = &dxf->dims[i];
         if (want[0] && strcmp(m->name, want)) continue;
         found = 1;
         const double(*c)[2] = m->coords;
@@ -229,37 +233,29 @@ static scad_value f_dxf_dim(scad_eval *ev, const scad_argv *a, scad_loc loc, con
         default: /* 5: angular 3 point, 7 */
             scad_diag_warning(ev->d, loc,
                               "Dimension '%s' in '%s', layer '%s' has unsupported type!", want,
-                              scad_buf_str(&d.raw), scad_buf_str(&d.layer));
+                              scad_buf_str(&d->raw), scad_buf_str(&d->layer));
         }
     }
     if (!found)
         scad_diag_warning(ev->d, loc, "Can't find dimension '%s' in '%s', layer '%s'!", want,
-                          scad_buf_str(&d.raw), scad_buf_str(&d.layer));
-    geom_dxf_free(&dxf);
-    free_args(&d);
+                          scad_buf_str(&d->raw), scad_buf_str(&d->layer));
     return r;
 }
 
-static scad_value f_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
+/* dxf_cross: where the first two single-segment paths of dxf cross, or
+ * undef. */
+static scad_value cross(scad_eval *ev, scad_loc loc, dxf_args *d, const geom_dxf *dxf)
 {
-    (void)fname;
-    dxf_args d;
-    read_args(ev, a, loc, "dxf_cross", 0, &d);
-    geom_dxf dxf;
     scad_value r = scad_undef();
-    if (read_for(ev, loc, &d, &dxf)) {
-        free_args(&d);
-        return r;
-    }
     /* the first two single-segment paths, crossed as infinite lines */
     double c[4][2];
     int j = 0, found = 0;
-    for (int i = 0; i < dxf.npaths && !found; i++) {
-        int a0 = dxf.path_start[i];
-        if (dxf.path_start[i + 1] - a0 != 2) continue;
+    for (int i = 0; i < dxf->npaths && !found; i++) {
+        int a0 = dxf->path_start[i];
+        if (dxf->path_start[i + 1] - a0 != 2) continue;
         for (int k = 0; k < 2; k++, j++) {
-            c[j][0] = dxf.pts[dxf.idx[a0 + k]][0];
-            c[j][1] = dxf.pts[dxf.idx[a0 + k]][1];
+            c[j][0] = dxf->pts[dxf->idx[a0 + k]][0];
+            c[j][1] = dxf->pts[dxf->idx[a0 + k]][1];
         }
         if (j < 4) continue;
         double dem =
@@ -276,10 +272,8 @@ static scad_value f_dxf_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, c
         found = 1;
     }
     if (!found)
-        scad_diag_warning(ev->d, loc, "Can't find cross in '%s', layer '%s'!", scad_buf_str(&d.raw),
-                          scad_buf_str(&d.layer));
-    geom_dxf_free(&dxf);
-    free_args(&d);
+        scad_diag_warning(ev->d, loc, "Can't find cross in '%s', layer '%s'!",
+                          scad_buf_str(&d->raw), scad_buf_str(&d->layer));
     return r;
 }
 
@@ -326,8 +320,21 @@ scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,
     return g;
 }
 
+/* dxf_dim and dxf_cross: the drawing their arguments name, measured. */
+static scad_value f_dxf(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *fname)
+{
+    int dim = strcmp(fname, "dxf_dim") == 0;
+    dxf_args d;
+    geom_dxf dxf;
+    if (open_dxf(ev, a, loc, fname, dim, &d, &dxf)) return scad_undef();
+    scad_value r = dim ? dimension(ev, loc, &d, &dxf) : cross(ev, loc, &d, &dxf);
+    geom_dxf_free(&dxf);
+    free_args(&d);
+    return r;
+}
+
 const scad_function_def scad_dxf_functions[] = {
-    {"dxf_cross", "file, layer, origin, scale", f_dxf_cross},
-    {"dxf_dim", "file, name, layer, origin, scale", f_dxf_dim},
+    {"dxf_cross", "file, layer, origin, scale", f_dxf},
+    {"dxf_dim", "file, name, layer, origin, scale", f_dxf},
     {NULL, NULL, NULL},
 };

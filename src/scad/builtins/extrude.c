@@ -249,8 +249,10 @@ static int linear_print(scad_call *c, const void *args, scad_buf *b)
     scad_buf_puts(b, ", ");
     scad_print_g(b, p->scale[1]);
     scad_buf_puts(b, "]");
-    if (nslices <= 0) scad_print_facets(b, p->f, 1);
-    scad_buf_puts(b, ")");
+    if (nslices <= 0)
+        scad_print_facets(b, p->f, ", ", ")");
+    else
+        scad_buf_puts(b, ")");
     return children;
 }
 
@@ -273,7 +275,7 @@ static scad_geom *linear_build(scad_call *c, const void *args)
             t.e.scale[k] = t.e.scale[k] > 0 ? 1 : 0;
     if (isfinite(p->slices) && p->slices >= 1)
         t.e.slices = p->slices > 100000 ? 100000 : (int)p->slices;
-    scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, NULL);
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
@@ -290,14 +292,11 @@ static scad_geom *linear_build(scad_call *c, const void *args)
     return kids;
 }
 
+static const char *const linear_extrude_params[] = {
+    "file", "layer", "height", "origin", "scale", "center", "twist", "slices", "convexity", NULL};
 static const scad_module_def linear_extrude = {
-    "linear_extrude",
-    {"file", "layer", "height", "origin", "scale", "center", "twist", "slices", "convexity"},
-    8,
-    sizeof(linear_args),
-    linear_read,
-    linear_print,
-    linear_build};
+    "linear_extrude", linear_extrude_params, 8,           sizeof(linear_args),
+    linear_read,      linear_print,          linear_build};
 
 /* ---- rotate_extrude ------------------------------------------------------------- */
 
@@ -430,8 +429,7 @@ static int rotate_print(scad_call *c, const void *args, scad_buf *b)
     scad_buf_puts(b, "angle = ");
     scad_print_g(b, p->angle);
     scad_buf_printf(b, ", convexity = %d", p->convexity);
-    scad_print_facets(b, p->f, 1);
-    scad_buf_puts(b, ")");
+    scad_print_facets(b, p->f, ", ", ")");
     return children;
 }
 
@@ -441,7 +439,7 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     scad_eval *ev = c->ev;
     double angle = p->angle;
     if (angle == 0) return NULL;
-    scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, NULL);
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
@@ -473,13 +471,10 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     return kids;
 }
 
+static const char *const rotate_extrude_params[] = {"file",  "layer",     "origin", "scale",
+                                                    "angle", "convexity", NULL};
 static const scad_module_def rotate_extrude = {
-    "rotate_extrude",
-    {"file", "layer", "origin", "scale", "angle", "convexity"},
-    4,
-    sizeof(rotate_args),
-    rotate_read,
-    rotate_print,
-    rotate_build};
+    "rotate_extrude", rotate_extrude_params, 4,           sizeof(rotate_args),
+    rotate_read,      rotate_print,          rotate_build};
 
 const scad_module_def *const scad_extrude_modules[] = {&linear_extrude, &rotate_extrude, NULL};

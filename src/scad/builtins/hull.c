@@ -146,7 +146,7 @@ static scad_geom *hull_build(scad_call *c, const void *args)
     scad_eval *ev = c->ev;
     const scad_stmt *st = c->st;
     const scad_state *state = c->state;
-    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, NULL);
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
@@ -184,7 +184,7 @@ static int hull_print(scad_call *c, const void *args, scad_buf *b)
     return 1;
 }
 
-static const scad_module_def hull = {"hull",    {NULL},     0,         sizeof(hull_args),
+static const scad_module_def hull = {"hull",    NULL,       0,         sizeof(hull_args),
                                      hull_read, hull_print, hull_build};
 
 /* ---- resize ------------------------------------------------------------------------ */
@@ -301,7 +301,7 @@ static scad_geom *resize_build(scad_call *c, const void *args)
     /* the children in the resize's own frame, placed at the end */
     scad_state local = *state;
     memcpy(local.xf, csg_affine_identity, sizeof local.xf);
-    scad_geom *kids = scad_eval_children(ev, c->env, st, &local, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, &local);
     if (!kids) return NULL;
     double lo[3], hi[3];
     int any3d = 0;
@@ -330,9 +330,8 @@ static scad_geom *resize_build(scad_call *c, const void *args)
     return kids;
 }
 
-static const scad_module_def resize = {"resize",    {"newsize", "auto", "convexity"},
-                                       3,           sizeof(resize_args),
-                                       resize_read, resize_print,
-                                       resize_build};
+static const char *const resize_params[] = {"newsize", "auto", "convexity", NULL};
+static const scad_module_def resize = {"resize",    resize_params, 3,           sizeof(resize_args),
+                                       resize_read, resize_print,  resize_build};
 
 const scad_module_def *const scad_hull_modules[] = {&hull, &resize, NULL};

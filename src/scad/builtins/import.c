@@ -9,13 +9,10 @@
  * heightmaps), so src/scad needs no file-format library; the text .dat
  * heightmaps are parsed here.  A file that is missing or unreadable is a
  * warning worded as OpenSCAD words it, and builds nothing, as OpenSCAD does.
- *
- * surface() builds the very polyhedron of OpenSCAD 2021.01's
- * SurfaceNode::createGeometry: each grid cell four triangles meeting at its
- * centre (at the mean of the corner heights), four side walls down to a flat
- * bottom at z = min(0, lowest height - 1), the bottom one polygon.
+ * surface()'s polyhedron is geom_heightmap_mesh's.
  */
 #include "builtins.h"
+#include "../../geom/heightmap.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -86,8 +83,8 @@ static int import_print(scad_call *c, const void *args, scad_buf *b)
     scad_buf_puts(b, ", scale = ");
     scad_print_g(b, p->scale);
     scad_buf_printf(b, ", convexity = %d", p->convexity);
-    scad_print_facets(b, p->f, 1);
-    scad_buf_printf(b, ", timestamp = %lld)", mtime);
+    scad_print_facets(b, p->f, ", ", ", timestamp = ");
+    scad_buf_printf(b, "%lld)", mtime);
     return 0;
 }
 
@@ -196,13 +193,7 @@ static scad_geom *import_build(scad_call *c, const void *args)
 /* A heightmap file is at most this long. */
 #define MAX_HEIGHTMAP_BYTES ((size_t)1 << 28)
 
-/* A heightmap: w × h values, row 0 at y = 0; base is the bottom's height,
- * OpenSCAD 2021.01's min(0, lowest - 1) for both kinds of file. */
-typedef struct heightmap {
-    double *z;
-    int w, h;
-    double base;
-} heightmap;
+typedef geom_heightmap heightmap;
 
 /* OpenSCAD's read_dat: lines of numbers separated by spaces or tabs; blank
  * lines and lines starting with '#' skipped; a ragged row is padded with 0.  A
@@ -355,109 +346,6 @@ static int read_png(scad_eval *ev, const scad_stmt *st, const char *path, int in
     return 0;
 }
 
-/* The surface polyhedron (see the top of the file) as faces in OpenSCAD's
- * order, each reversed into iv_shape_mesh's clockwise winding. */
-static int surface_mesh(const heightmap *m, int center, iv_shape *out)
-{
-    int W = m->w, H = m->h;
-    double ox = center ? -(W - 1) / 2.0 : 0, oy = center ? -(H - 1) / 2.0 : 0;
-    size_t cells = (size_t)(W - 1) * (size_t)(H - 1);
-    /* vertices: the grid, the cell centres, the bottom ring's grid points */
-    size_t nv = (size_t)W * H + cells + (size_t)W * H;
-    size_t nf = 4 * cells + 2 * (size_t)(H - 1) + 2 * (size_t)(W - 1) + 1;
-    size_t nidx = 12 * cells + 8 * (size_t)(H - 1) + 8 * (size_t)(W - 1) + 2 * (size_t)(W - 1) +
-                  2 * (size_t)(H - 1);
-    if (nv > 100000000 || nf > 100000000) return -1;
-    double(*V)[3] = malloc(nv * sizeof *V);
-    int *idx = malloc(nidx * sizeof *idx), *start = malloc((nf + 1) * sizeof *start);
-    if (!V || !idx || !start) {
-        free(V);
-        free(idx);
-        free(start);
-        return -1;
-    }
-#define GRID(i, j) ((int)((size_t)(i) * (size_t)W + (size_t)(j)))
-#define MID(i, j) ((int)((size_t)W * H + (size_t)((i)-1) * (size_t)(W - 1) + (size_t)((j)-1)))
-#define LOW(i, j) ((int)((size_t)W * H + cells + (size_t)(i) * (size_t)W + (size_t)(j)))
-    for (int i = 0; i < H; i++)
-        for (int j = 0; j < W; j++) {
-            double *p = V[GRID(i, j)], *q = V[LOW(i, j)];
-            p[0] = q[0] = ox + j;
-            p[1] = q[1] = oy + i;
-            p[2] = m->z[GRID(i, j)];
-            q[2] = m->base;
-        }
-    for (int i = 1; i < H; i++)
-        for (int j = 1; j < W; j++) {
-            double *p = V[MID(i, j)];
-            p[0] = ox + j - 0.5;
-            p[1] = oy + i - 0.5;
-            p[2] = (m->z[GRID(i - 1, j - 1)] + m->z[GRID(i - 1, j)] + m->z[GRID(i, j - 1)] +
-                    m->z[GRID(i, j)]) /
-                   4;
-        }
-    size_t k = 0, f = 0;
-#define FACE3(a, b, c)                                                                             \
-    do {                                                                                           \
-        start[f++] = (int)k;                                                                       \
-        idx[k++] = (c);                                                                            \
-        idx[k++] = (b);                                                                            \
-        idx[k++] = (a);                                                                            \
-    } while (0)
-#define FACE4(a, b, c, d)                                                                          \
-    do {                                                                                           \
-        start[f++] = (int)k;                                                                       \
-        idx[k++] = (d);                                                                            \
-        idx[k++] = (c);                                                                            \
-        idx[k++] = (b);                                                                            \
-        idx[k++] = (a);                                                                            \
-    } while (0)
-    for (int i = 1; i < H; i++)
-        for (int j = 1; j < W; j++) {
-            int v1 = GRID(i - 1, j - 1), v2 = GRID(i - 1, j), v3 = GRID(i, j - 1), v4 = GRID(i, j),
-                vx = MID(i, j);
-            FACE3(v1, v2, vx);
-            FACE3(v2, v4, vx);
-            FACE3(v4, v3, vx);
-            FACE3(v3, v1, vx);
-        }
-    for (int i = 1; i < H; i++) {
-        FACE4(LOW(i - 1, 0), GRID(i - 1, 0), GRID(i, 0), LOW(i, 0));
-        FACE4(LOW(i, W - 1), GRID(i, W - 1), GRID(i - 1, W - 1), LOW(i - 1, W - 1));
-    }
-    for (int j = 1; j < W; j++) {
-        FACE4(LOW(0, j), GRID(0, j), GRID(0, j - 1), LOW(0, j - 1));
-        FACE4(LOW(H - 1, j - 1), GRID(H - 1, j - 1), GRID(H - 1, j), LOW(H - 1, j));
-    }
-    /* the bottom, OpenSCAD's ring walked backwards */
-    start[f++] = (int)k;
-    size_t ring = k;
-    for (int i = 0; i < H - 1; i++)
-        idx[k++] = LOW(i, 0);
-    for (int j = 0; j < W - 1; j++)
-        idx[k++] = LOW(H - 1, j);
-    for (int i = H - 1; i > 0; i--)
-        idx[k++] = LOW(i, W - 1);
-    for (int j = W - 1; j > 0; j--)
-        idx[k++] = LOW(0, j);
-    for (size_t a = ring, b = k - 1; a < b; a++, b--) {
-        int x = idx[a];
-        idx[a] = idx[b];
-        idx[b] = x;
-    }
-    start[f] = (int)k;
-#undef FACE3
-#undef FACE4
-#undef GRID
-#undef MID
-#undef LOW
-    int rc = iv_shape_mesh(out, (const double(*)[3])V, (int)nv, idx, start, (int)f);
-    free(V);
-    free(idx);
-    free(start);
-    return rc < 0 ? -1 : 0;
-}
-
 enum { SF_FILE, SF_CENTER, SF_CONVEXITY, SF_INVERT };
 
 typedef struct surface_args {
@@ -529,7 +417,7 @@ static scad_geom *surface_build(scad_call *c, const void *args)
         scad_eval_error(ev, st->loc, "out of memory");
     } else if (rc == 0 && m.w > 1 && m.h > 1) {
         iv_shape s;
-        if (surface_mesh(&m, center, &s) == 0)
+        if (geom_heightmap_mesh(&m, center, &s) == 0)
             g = scad_geometry_leaf(ev, &s, state);
         else
             scad_eval_error(ev, st->loc, "surface(): out of memory");
@@ -538,21 +426,14 @@ static scad_geom *surface_build(scad_call *c, const void *args)
     return g;
 }
 
-static const scad_module_def import = {"import",
-                                       {"file", "layer", "convexity", "origin", "scale", "width",
-                                        "height", "filename", "layername", "center", "dpi", "id"},
-                                       5,
-                                       sizeof(import_args),
-                                       import_read,
-                                       import_print,
-                                       import_build};
+static const char *const import_params[] = {"file",  "layer",  "convexity", "origin",    "scale",
+                                            "width", "height", "filename",  "layername", "center",
+                                            "dpi",   "id",     NULL};
+static const scad_module_def import = {"import",    import_params, 5,           sizeof(import_args),
+                                       import_read, import_print,  import_build};
 
-static const scad_module_def surface = {"surface",
-                                        {"file", "center", "convexity", "invert"},
-                                        3,
-                                        sizeof(surface_args),
-                                        surface_read,
-                                        surface_print,
-                                        surface_build};
+static const char *const surface_params[] = {"file", "center", "convexity", "invert", NULL};
+static const scad_module_def surface = {
+    "surface", surface_params, 3, sizeof(surface_args), surface_read, surface_print, surface_build};
 
 const scad_module_def *const scad_import_modules[] = {&import, &surface, NULL};

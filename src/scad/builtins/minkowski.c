@@ -1,5 +1,5 @@
 /*
- * builtin_minkowski.c — minkowski(): the Minkowski sum of the children.
+ * minkowski.c — minkowski(): the Minkowski sum of the children.
  *
  * 2D children (all of them 2D): each child is flattened to a polygon set
  * (geom2d.c; any booleans) and the sets are summed one after the other by
@@ -22,6 +22,7 @@
  */
 #include "builtins.h"
 #include "../../geom/hull3d.h"
+#include "../../geom/minkowski.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -35,17 +36,6 @@ enum {
     SMOOTH_FRAGMENTS = 64
 };
 
-/* A convex part: its points in the call's frame. */
-typedef struct part {
-    double (*p)[3];
-    int n;
-} part;
-
-typedef struct parts {
-    part *v;
-    int n, cap;
-} parts;
-
 typedef struct mctx {
     scad_eval *ev;
     scad_loc loc;
@@ -55,47 +45,14 @@ typedef struct mctx {
     int oom;
 } mctx;
 
-static void parts_free(parts *P)
-{
-    for (int i = 0; i < P->n; i++)
-        free(P->v[i].p);
-    free(P->v);
-    P->v = NULL;
-    P->n = P->cap = 0;
-}
-
-/* Append an empty part with room for n points; NULL when out of memory. */
-static part *parts_new(mctx *c, parts *P, int n)
-{
-    if (P->n == P->cap) {
-        int cap = P->cap ? 2 * P->cap : 8;
-        part *v = realloc(P->v, (size_t)cap * sizeof *v);
-        if (!v) {
-            c->oom = 1;
-            return NULL;
-        }
-        P->v = v;
-        P->cap = cap;
-    }
-    part *q = &P->v[P->n];
-    q->p = malloc((size_t)(n ? n : 1) * sizeof *q->p);
-    q->n = 0;
-    if (!q->p) {
-        c->oom = 1;
-        return NULL;
-    }
-    P->n++;
-    return q;
-}
-
-static void put(const mctx *c, part *q, const double xf[12], double x, double y, double z)
+static void put(const mctx *c, geom_convex *q, const double xf[12], double x, double y, double z)
 {
     double o[3] = {x, y, z}, w[3];
     csg_affine_point(xf, o, w);
     csg_affine_point(c->lfw, w, q->p[q->n++]);
 }
 
-static void circle(const mctx *c, part *q, const double xf[12], double r, double z, int n)
+static void circle(const mctx *c, geom_convex *q, const double xf[12], double r, double z, int n)
 {
     if (r == 0) {
         put(c, q, xf, 0, 0, z);
@@ -107,6 +64,14 @@ static void circle(const mctx *c, part *q, const double xf[12], double r, double
     }
 }
 
+/* Append an empty part with room for n points; NULL when out of memory. */
+static geom_convex *parts_new(mctx *c, geom_convex_set *P, int n)
+{
+    geom_convex *q = geom_convex_set_add(P, n);
+    if (!q) c->oom = 1;
+    return q;
+}
+
 /* Fragments of a smooth leaf of radius r (faceted leaves are polytopes). */
 static int fragments(const mctx *c, double r)
 {
@@ -114,31 +79,7 @@ static int fragments(const mctx *c, double r)
     return scad_facets_shown(c->ev, c->f, r) || n >= SMOOTH_FRAGMENTS ? n : SMOOTH_FRAGMENTS;
 }
 
-/* 1 when every vertex of the mesh is a vertex of its hull. */
-static int mesh_is_convex(const double (*V)[3], int n)
-{
-    iv_shape h;
-    if (geom_hull3d(&h, V, n) != 0) return 0;
-    int m;
-    iv_polytope_vertices(&h, &m);
-    iv_shape_release(&h);
-    return m == n;
-}
-
-/* 1 when the closed polygon turns one way only (collinear points allowed). */
-static int convex_polygon(const double (*V)[2], int n)
-{
-    int pos = 0, neg = 0;
-    for (int i = 0; i < n; i++) {
-        const double *a = V[i], *b = V[(i + 1) % n], *d = V[(i + 2) % n];
-        double t = (b[0] - a[0]) * (d[1] - b[1]) - (b[1] - a[1]) * (d[0] - b[0]);
-        pos |= t > 0;
-        neg |= t < 0;
-    }
-    return !(pos && neg);
-}
-
-static void decompose(mctx *c, const scad_geom *g, parts *P)
+static void decompose(mctx *c, const scad_geom *g, geom_convex_set *P)
 {
     if (!g || c->why || c->oom || c->ev->aborted) return;
     if (!g->is_leaf) {
@@ -151,7 +92,7 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
         return;
     }
     const iv_shape *s = &g->shape;
-    part *q;
+    geom_convex *q;
     switch (s->kind) {
     case IV_SHAPE_BOX:
         if (!(q = parts_new(c, P, 8))) return;
@@ -194,7 +135,7 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
     case IV_SHAPE_MESH: {
         int n;
         const double(*V)[3] = iv_mesh_vertices(s, &n);
-        if (!mesh_is_convex(V, n)) {
+        if (!geom_points_convex(V, n)) {
             c->why = "a polyhedron that is not convex";
             return;
         }
@@ -220,7 +161,7 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
         int n, np;
         const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
         iv_region_paths(s->u.prism.g, &np);
-        if (np != 1 || !convex_polygon(V, n)) {
+        if (np != 1 || !geom_polygon_convex(V, n)) {
             c->why = "an extrusion of a shape that is not convex";
             return;
         }
@@ -237,48 +178,23 @@ static void decompose(mctx *c, const scad_geom *g, parts *P)
     }
 }
 
-/* The hull of all sums p + q; -1 when flat or out of memory. */
-static int hull_of_sums(const part *a, const part *b, iv_shape *out)
-{
-    size_t n = (size_t)a->n * (size_t)b->n;
-    double(*S)[3] = malloc((n ? n : 1) * sizeof *S);
-    if (!S) return -1;
-    size_t k = 0;
-    for (int i = 0; i < a->n; i++)
-        for (int j = 0; j < b->n; j++, k++)
-            for (int d = 0; d < 3; d++)
-                S[k][d] = a->p[i][d] + b->p[j][d];
-    int rc = geom_hull3d(out, (const double(*)[3])S, (int)n);
-    free(S);
-    return rc;
-}
-
 static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_stmt *st,
                          const scad_state *state, mctx *c)
 {
-    parts acc = {NULL, 0, 0};
+    geom_convex_set acc = {NULL, 0, 0};
     decompose(c, ops[0], &acc);
     for (int i = 1; i < nops && !c->why && !c->oom; i++) {
-        parts b = {NULL, 0, 0}, next = {NULL, 0, 0};
+        geom_convex_set b = {NULL, 0, 0}, next = {NULL, 0, 0};
         decompose(c, ops[i], &b);
         if (!c->why && (long)acc.n * b.n > MAX_PARTS) c->why = "too many convex parts";
         for (int x = 0; x < acc.n && !c->why && !c->oom && !ev->aborted; x++)
             for (int y = 0; y < b.n && !c->oom; y++) {
                 /* each pairwise sum is a step of work */
                 if (scad_eval_steps(ev, (long)acc.v[x].n * b.v[y].n, st->loc, "minkowski")) break;
-                iv_shape h;
-                if (hull_of_sums(&acc.v[x], &b.v[y], &h) != 0) continue;
-                int m;
-                const double(*V)[3] = iv_polytope_vertices(&h, &m);
-                part *q = parts_new(c, &next, m);
-                if (q) {
-                    memcpy(q->p, V, (size_t)m * sizeof *V);
-                    q->n = m;
-                }
-                iv_shape_release(&h);
+                if (geom_minkowski_pair(&acc.v[x], &b.v[y], &next) != 0) c->oom = 1;
             }
-        parts_free(&b);
-        parts_free(&acc);
+        geom_convex_set_free(&b);
+        geom_convex_set_free(&acc);
         acc = next;
     }
     scad_geom *u = NULL;
@@ -303,7 +219,7 @@ static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_st
         }
         if (!u) u = one;
     }
-    parts_free(&acc);
+    geom_convex_set_free(&acc);
     return u;
 }
 
@@ -364,7 +280,7 @@ static scad_geom *minkowski_build(scad_call *c, const void *args)
     scad_eval *ev = c->ev;
     const scad_stmt *st = c->st;
     const scad_state *state = c->state;
-    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, NULL);
     if (!kids) return NULL;
     /* Several child statements come back as one union whose operands are
      * the children; a single statement is one operand, whatever it is. */
@@ -383,8 +299,9 @@ static scad_geom *minkowski_build(scad_call *c, const void *args)
     return sum_3d(ev, ops, nops, st, state, &m);
 }
 
+static const char *const minkowski_params[] = {"convexity", NULL};
 static const scad_module_def minkowski = {
-    "minkowski",     {"convexity"},  1, sizeof(minkowski_args), minkowski_read,
+    "minkowski",     minkowski_params, 1, sizeof(minkowski_args), minkowski_read,
     minkowski_print, minkowski_build};
 
 const scad_module_def *const scad_minkowski_modules[] = {&minkowski, NULL};

@@ -186,19 +186,21 @@ static scad_geom *transform_build(scad_call *c, const void *args)
     const transform_args *p = args;
     scad_state s = *c->state;
     csg_affine_mul(c->state->xf, p->m, s.xf);
-    return scad_eval_children(c->ev, c->env, c->st, &s, CSG_OP_UNION);
+    return scad_call_children(c, &s);
 }
 
-#define TRANSFORM(var, name, ...)                                                                  \
+#define TRANSFORM(var, name, param)                                                                \
+    static const char *const var##_params[] = {param, NULL};                                       \
     static const scad_module_def var = {                                                           \
-        name,           {__VA_ARGS__}, 1, sizeof(transform_args), transform_read, transform_print, \
+        name,           var##_params, 1, sizeof(transform_args), transform_read, transform_print,  \
         transform_build}
 TRANSFORM(translate, "translate", "v");
 TRANSFORM(scale, "scale", "v");
 TRANSFORM(mirror, "mirror", "v");
 TRANSFORM(multmatrix, "multmatrix", "m");
+static const char *const rotate_params[] = {"a", "v", NULL};
 static const scad_module_def rotate = {
-    "rotate",        {"a", "v"},     2, sizeof(transform_args), transform_read,
+    "rotate",        rotate_params,  2, sizeof(transform_args), transform_read,
     transform_print, transform_build};
 
 /* ---- color ------------------------------------------------------------------------- */
@@ -298,11 +300,12 @@ static scad_geom *color_build(scad_call *c, const void *args)
         for (int i = 0; i < 4; i++)
             s.mat.rgba[i] = rgba[i] > 1 ? 1.0f : rgba[i];
     }
-    return scad_eval_children(c->ev, c->env, c->st, &s, CSG_OP_UNION);
+    return scad_call_children(c, &s);
 }
 
-static const scad_module_def color = {"color",    {"c", "alpha"}, 2,          sizeof(color_args),
-                                      color_read, color_print,    color_build};
+static const char *const color_params[] = {"c", "alpha", NULL};
+static const scad_module_def color = {"color",    color_params, 2,          sizeof(color_args),
+                                      color_read, color_print,  color_build};
 
 /* ---- CSG operations ------------------------------------------------------------------ */
 
@@ -315,11 +318,10 @@ static scad_geom *group_build(scad_call *c, const void *args)
     return scad_eval_children(c->ev, c->env, c->st, c->state, op);
 }
 
-static const scad_module_def union_ = {"union", {NULL}, -1, 0, NULL, NULL, group_build};
-static const scad_module_def group = {"group", {NULL}, -1, 0, NULL, NULL, group_build};
-static const scad_module_def difference = {"difference", {NULL}, -1, 0, NULL, NULL, group_build};
-static const scad_module_def intersection = {"intersection", {NULL}, -1,         0,
-                                             NULL,           NULL,   group_build};
+static const scad_module_def union_ = {"union", NULL, -1, 0, NULL, NULL, group_build};
+static const scad_module_def group = {"group", NULL, -1, 0, NULL, NULL, group_build};
+static const scad_module_def difference = {"difference", NULL, -1, 0, NULL, NULL, group_build};
+static const scad_module_def intersection = {"intersection", NULL, -1, 0, NULL, NULL, group_build};
 
 typedef struct render_args {
     int convexity;
@@ -337,7 +339,8 @@ static int render_print(scad_call *c, const void *args, scad_buf *b)
     return 1;
 }
 
-static const scad_module_def render = {"render",    {"convexity"}, 1,          sizeof(render_args),
+static const char *const render_params[] = {"convexity", NULL};
+static const scad_module_def render = {"render",    render_params, 1,          sizeof(render_args),
                                        render_read, render_print,  group_build};
 
 const scad_module_def *const scad_operation_modules[] = {

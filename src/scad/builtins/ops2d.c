@@ -72,8 +72,7 @@ static int offset_print(scad_call *c, const void *args, scad_buf *b)
         scad_buf_puts(b, ", chamfer = ");
         scad_print_bool(b, p->chamfer);
     }
-    scad_print_facets(b, p->f, 1);
-    scad_buf_puts(b, ")");
+    scad_print_facets(b, p->f, ", ", ")");
     return 1;
 }
 
@@ -83,7 +82,7 @@ static scad_geom *offset_build(scad_call *c, const void *args)
     scad_eval *ev = c->ev;
     const scad_stmt *st = c->st;
     const scad_state *state = c->state;
-    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, NULL);
     double delta = p->delta;
     int join = p->round ? SCAD_JOIN_ROUND : p->chamfer ? SCAD_JOIN_SQUARE : SCAD_JOIN_MITER;
     if (!kids) return NULL;
@@ -112,9 +111,9 @@ static scad_geom *offset_build(scad_call *c, const void *args)
     return g;
 }
 
-static const scad_module_def offset = {
-    "offset",    {"r", "delta", "chamfer"}, 1, sizeof(offset_args), offset_read, offset_print,
-    offset_build};
+static const char *const offset_params[] = {"r", "delta", "chamfer", NULL};
+static const scad_module_def offset = {"offset",    offset_params, 1,           sizeof(offset_args),
+                                       offset_read, offset_print,  offset_build};
 
 /* ---- projection ------------------------------------------------------------------ */
 
@@ -387,7 +386,7 @@ static scad_geom *projection_build(scad_call *c, const void *args)
     scad_eval *ev = c->ev;
     const scad_stmt *st = c->st;
     const scad_state *state = c->state;
-    scad_geom *kids = scad_eval_children(ev, c->env, st, state, CSG_OP_UNION);
+    scad_geom *kids = scad_call_children(c, NULL);
     if (!kids || !(scad_geom_dims(kids) & 2)) return NULL;
     int cut = ((const projection_args *)args)->cut;
     const scad_services *s = ev->services;
@@ -424,8 +423,9 @@ static scad_geom *projection_build(scad_call *c, const void *args)
     return g;
 }
 
+static const char *const projection_params[] = {"cut", "convexity", NULL};
 static const scad_module_def projection = {
-    "projection",     {"cut", "convexity"}, 1, sizeof(projection_args), projection_read,
+    "projection",     projection_params, 1, sizeof(projection_args), projection_read,
     projection_print, projection_build};
 
 const scad_module_def *const scad_ops2d_modules[] = {&offset, &projection, NULL};

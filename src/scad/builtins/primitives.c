@@ -86,8 +86,9 @@ static scad_geom *cube_build(scad_call *c, const void *args)
     return scad_optics_leaf(c, &sh, NULL);
 }
 
-static const scad_module_def cube = {"cube",    {"size", "center"}, 2,         sizeof(cube_args),
-                                     cube_read, cube_print,         cube_build};
+static const char *const cube_params[] = {"size", "center", NULL};
+static const scad_module_def cube = {"cube",    cube_params, 2,         sizeof(cube_args),
+                                     cube_read, cube_print,  cube_build};
 
 /* ---- sphere, circle ------------------------------------------------------------- */
 
@@ -111,8 +112,7 @@ static int round_print(scad_call *c, const void *args, scad_buf *b)
     const round_args *p = args;
     scad_buf_puts(b, c->def->name);
     scad_buf_puts(b, "(");
-    scad_print_facets(b, p->f, 0);
-    scad_buf_puts(b, ", r = ");
+    scad_print_facets(b, p->f, "", ", r = ");
     scad_print_g(b, p->r);
     scad_buf_puts(b, ")");
     return 0;
@@ -195,10 +195,12 @@ static scad_geom *circle_build(scad_call *c, const void *args)
     return scad_with_optics(c, g);
 }
 
-static const scad_module_def sphere = {"sphere",   {"r", "d"},  1,           sizeof(round_args),
-                                       round_read, round_print, sphere_build};
-static const scad_module_def circle = {"circle",   {"r", "d"},  1,           sizeof(round_args),
-                                       round_read, round_print, circle_build};
+static const char *const sphere_params[] = {"r", "d", NULL};
+static const scad_module_def sphere = {"sphere",   sphere_params, 1,           sizeof(round_args),
+                                       round_read, round_print,   sphere_build};
+static const char *const circle_params[] = {"r", "d", NULL};
+static const scad_module_def circle = {"circle",   circle_params, 1,           sizeof(round_args),
+                                       round_read, round_print,   circle_build};
 
 /* ---- cylinder ------------------------------------------------------------------- */
 
@@ -228,8 +230,7 @@ static int cylinder_print(scad_call *c, const void *args, scad_buf *b)
     const cylinder_args *p = args;
     (void)c;
     scad_buf_puts(b, "cylinder(");
-    scad_print_facets(b, p->f, 0);
-    scad_buf_puts(b, ", h = ");
+    scad_print_facets(b, p->f, "", ", h = ");
     scad_print_g(b, p->h);
     scad_buf_puts(b, ", r1 = ");
     scad_print_g(b, p->r1);
@@ -281,13 +282,11 @@ static scad_geom *cylinder_build(scad_call *c, const void *args)
     return g;
 }
 
-static const scad_module_def cylinder = {"cylinder",
-                                         {"h", "r1", "r2", "center", "r", "d", "d1", "d2"},
-                                         4,
-                                         sizeof(cylinder_args),
-                                         cylinder_read,
-                                         cylinder_print,
-                                         cylinder_build};
+static const char *const cylinder_params[] = {"h", "r1", "r2", "center", "r",
+                                              "d", "d1", "d2", NULL};
+static const scad_module_def cylinder = {
+    "cylinder",     cylinder_params, 4, sizeof(cylinder_args), cylinder_read,
+    cylinder_print, cylinder_build};
 
 /* ---- square ----------------------------------------------------------------------- */
 
@@ -354,8 +353,9 @@ static scad_geom *square_build(scad_call *c, const void *args)
         c, scad_region_leaf(c->ev, iv_region_new((const double(*)[2])P, ps, 1), c->state));
 }
 
-static const scad_module_def square = {
-    "square", {"size", "center"}, 2, sizeof(square_args), square_read, square_print, square_build};
+static const char *const square_params[] = {"size", "center", NULL};
+static const scad_module_def square = {"square",    square_params, 2,           sizeof(square_args),
+                                       square_read, square_print,  square_build};
 
 /* ---- polygon, polyhedron ------------------------------------------------------------ */
 
@@ -505,16 +505,12 @@ static scad_geom *polyhedron_build(scad_call *c, const void *args)
     return scad_with_optics(c, g);
 }
 
-static const scad_module_def polygon = {
-    "polygon",    {"points", "paths", "convexity"}, 3, sizeof(poly_args), poly_read, poly_print,
-    polygon_build};
-static const scad_module_def polyhedron = {"polyhedron",
-                                           {"points", "faces", "convexity", "triangles"},
-                                           3,
-                                           sizeof(poly_args),
-                                           poly_read,
-                                           poly_print,
-                                           polyhedron_build};
+static const char *const polygon_params[] = {"points", "paths", "convexity", NULL};
+static const scad_module_def polygon = {"polygon",  polygon_params, 3, sizeof(poly_args), poly_read,
+                                        poly_print, polygon_build};
+static const char *const polyhedron_params[] = {"points", "faces", "convexity", "triangles", NULL};
+static const scad_module_def polyhedron = {
+    "polyhedron", polyhedron_params, 3, sizeof(poly_args), poly_read, poly_print, polyhedron_build};
 
 const scad_module_def *const scad_primitive_modules[] = {&cube,   &sphere,  &cylinder,   &square,
                                                          &circle, &polygon, &polyhedron, NULL};

@@ -32,14 +32,16 @@ void scad_print_quoted(scad_buf *b, const char *s, size_t n)
     scad_buf_put(b, "\"", 1);
 }
 
-void scad_print_facets(scad_buf *b, scad_facet_params f, int leading_comma)
+void scad_print_facets(scad_buf *b, scad_facet_params f, const char *before, const char *after)
 {
-    scad_buf_puts(b, leading_comma ? ", $fn = " : "$fn = ");
+    scad_buf_puts(b, before);
+    scad_buf_puts(b, "$fn = ");
     scad_print_g(b, f.fn);
     scad_buf_puts(b, ", $fa = ");
     scad_print_g(b, f.fa);
     scad_buf_puts(b, ", $fs = ");
     scad_print_g(b, f.fs);
+    scad_buf_puts(b, after);
 }
 
 /* Lexically normalised absolute form of path (no symlinks resolved). */

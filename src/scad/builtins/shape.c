@@ -41,6 +41,11 @@ scad_geom *scad_optics_leaf(scad_call *c, const iv_shape *s, const csg_affine lo
     return scad_geom_leaf(c->ev, s, &st);
 }
 
+scad_geom *scad_call_children(scad_call *c, const scad_state *state)
+{
+    return scad_eval_children(c->ev, c->env, c->st, state ? state : c->state, CSG_OP_UNION);
+}
+
 scad_geom *scad_with_optics(scad_call *c, scad_geom *g)
 {
     if (g && g->is_leaf) scad_material_apply(c, &g->shape, g->xf, &g->mat);

@@ -151,8 +151,7 @@ static int text_print(scad_call *c, const void *args, scad_buf *b)
     if (script[0]) print_str(b, ", script = ", script, "");
     print_str(b, ", halign = ", p->halign, "left");
     print_str(b, ", valign = ", p->valign, "baseline");
-    scad_print_facets(b, p->f, 1);
-    scad_buf_puts(b, ")");
+    scad_print_facets(b, p->f, ", ", ")");
     return 0;
 }
 
@@ -160,7 +159,7 @@ static scad_geom *text_build(scad_call *c, const void *args)
 {
     const text_args *a = args;
     scad_eval *ev = c->ev;
-    scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION); /* text() takes none */
+    scad_call_children(c, NULL); /* text() takes none */
     scad_text_params p;
     p.text = a->text ? a->text : "";
     p.size = a->size;
@@ -190,13 +189,9 @@ static scad_geom *text_build(scad_call *c, const void *args)
     return g;
 }
 
-static const scad_module_def text = {
-    "text",
-    {"text", "size", "font", "direction", "language", "script", "halign", "valign", "spacing"},
-    3,
-    sizeof(text_args),
-    text_read,
-    text_print,
-    text_build};
+static const char *const text_params[] = {"text",   "size",   "font",   "direction", "language",
+                                          "script", "halign", "valign", "spacing",   NULL};
+static const scad_module_def text = {"text",    text_params, 3,         sizeof(text_args),
+                                     text_read, text_print,  text_build};
 
 const scad_module_def *const scad_text_modules[] = {&text, NULL};
