@@ -22,52 +22,11 @@
 #include "../../src/intervals/intervals.h"
 #include "../../src/geom/dxf.h"
 #include "../../src/scad/scad.h"
-#include "../services.h"
+#include "../scad_support.h"
 
 #define PI 3.14159265358979323846
 
 #define EXAMPLE009 "/usr/share/openscad/examples/Old/example009.dxf"
-
-static iv_arena *arena;
-
-static char dir[64];
-
-static void setup(void)
-{
-    arena = iv_arena_new(0);
-    snprintf(dir, sizeof dir, "/tmp/rayscad-dxf-XXXXXX");
-    cr_assert(mkdtemp(dir));
-}
-
-static void teardown(void)
-{
-    iv_arena_free(arena);
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    cr_assert_eq(system(cmd), 0);
-}
-
-/* Writes text to dir/name; the path into out. */
-static void write_file(const char *name, const char *text, char *out, size_t n)
-{
-    snprintf(out, n, "%s/%s", dir, name);
-    FILE *f = fopen(out, "w");
-    cr_assert(f);
-    fputs(text, f);
-    fclose(f);
-}
-
-typedef struct msgs {
-    char text[8192];
-} msgs;
-
-static void on_msg(void *ud, scad_msg_kind kind, const char *line)
-{
-    (void)kind;
-    msgs *m = ud;
-    size_t n = strlen(m->text);
-    snprintf(m->text + n, sizeof m->text - n, "%s\n", line);
-}
 
 static void on_dxf_msg(void *ud, int kind, const char *text)
 {
@@ -119,7 +78,7 @@ static const char square_dxf[] = "0\nSECTION\n2\nENTITIES\n"
                                  "0\nCIRCLE\n8\nround\n10\n3\n20\n4\n40\n5\n"
                                  "0\nENDSEC\n0\nEOF\n";
 
-Test(dxf_read, square_and_circle_areas, .init = setup, .fini = teardown)
+Test(dxf_read, square_and_circle_areas, .init = scratch_setup, .fini = scratch_teardown)
 {
     char path[256];
     write_file("a.dxf", square_dxf, path, sizeof path);
@@ -158,7 +117,7 @@ Test(dxf_read, square_and_circle_areas, .init = setup, .fini = teardown)
     cr_expect_str_empty(m.text);
 }
 
-Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teardown)
+Test(dxf_read, bad_values_and_unsupported_entities, .init = scratch_setup, .fini = scratch_teardown)
 {
     /* openscad 2021.01 (stderr of -o x.stl) on this very file */
     char path[256], want[2048];
@@ -168,12 +127,12 @@ Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teard
                "0\nLINE\n8\n0\n10\n10\n20\n0\n11\n0\n21\n10\n"
                "0\nLINE\n8\n0\n10\nabc\n20\n0\n11\n0\n21\n10\n0\nENDSEC\n0\nEOF\n",
                path, sizeof path);
-    cr_assert_eq(chdir(dir), 0);
+    cr_assert_eq(chdir(scratch), 0);
     msgs m = {""};
     geom_dxf d;
     geom_dxf_params p = {"0", 0, 0, 1, 0, 12, 2};
     char abs[300];
-    snprintf(abs, sizeof abs, "%s/bad.dxf", dir); /* as the language names it */
+    snprintf(abs, sizeof abs, "%s/bad.dxf", scratch); /* as the language names it */
     cr_assert_eq(read_named("bad.dxf", abs, "bad.dxf", &p, &m, &d), 0);
     snprintf(want, sizeof want,
              "Illegal value 'abc'in `%s/bad.dxf'\n"
@@ -181,7 +140,7 @@ Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teard
              "Not enough input values for EOF. in '%s/bad.dxf'\n"
              "Unsupported DXF Entity 'SPLINE' (1) in layer '0' of bad.dxf\n"
              "Unsupported DXF Entity 'POLYLINE' (1) in layer '0' of bad.dxf\n",
-             dir, dir, dir);
+             scratch, scratch, scratch);
     cr_expect_str_eq(m.text, want);
     /* the two good lines meet at (10, 0): one open path of 3 points */
     cr_expect_eq(d.npaths, 1);
@@ -191,7 +150,7 @@ Test(dxf_read, bad_values_and_unsupported_entities, .init = setup, .fini = teard
     cr_assert_eq(chdir("/"), 0);
 }
 
-Test(dxf_read, hostile_files_end, .init = setup, .fini = teardown)
+Test(dxf_read, hostile_files_end, .init = scratch_setup, .fini = scratch_teardown)
 {
     char path[256];
     /* an arc over 1e300 degrees, non-finite points, an ellipse of NaN

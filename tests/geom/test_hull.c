@@ -19,111 +19,11 @@
 #include "../../src/geom/hull3d_internal.h"
 #include "../../src/scad/scad.h"
 #include "../services.h"
+#include "../shape_check.h"
 
 #define PI 3.14159265358979323846
 
-static uint64_t rng_state;
-
-static uint64_t rng_next(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-static double uni(double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(rng_next() >> 11) / 9007199254740992.0);
-}
-
-static iv_arena *arena;
-
-static void setup(void)
-{
-    arena = iv_arena_new(0);
-}
-
-static void teardown(void)
-{
-    iv_arena_free(arena);
-}
-
-typedef int (*classify_fn)(const double p[3], const void *ud);
-
-/* Intersect s with `rays` random lines through the box [-R, R]³ and compare
- * membership of random points on each line with classify(), away from the
- * boundaries (a relative 1e-7).  Returns the number of disagreements. */
-static int check_shape(const iv_shape *s, classify_fn classify, const void *ud, double R, int rays,
-                       uint64_t seed)
-{
-    rng_state = seed;
-    int bad = 0;
-    for (int r = 0; r < rays; r++) {
-        iv_arena_reset(arena);
-        double o[3], d[3];
-        for (int k = 0; k < 3; k++) {
-            o[k] = uni(-R, R);
-            d[k] = uni(-1, 1);
-        }
-        /* every tenth line axis-aligned, through the grid of half-units,
-         * to hit vertices and edges exactly */
-        if (r % 10 == 0) {
-            int ax = (int)(rng_next() % 3);
-            for (int k = 0; k < 3; k++) {
-                o[k] = 0.5 * floor(uni(-2 * R, 2 * R));
-                d[k] = k == ax ? 1 : 0;
-            }
-        }
-        iv_list l;
-        int cap = iv_shape_max_spans(s);
-        cr_assert_eq(iv_list_init(&l, cap, arena), 0);
-        int n = iv_shape_intersect(s, o, d, 3, &l);
-        cr_assert(n >= 0, "seed %llu ray %d: room", (unsigned long long)seed, r);
-        for (int i = 0; i < l.n; i++) {
-            cr_assert(l.v[i].enter.t < l.v[i].exit.t, "seed %llu ray %d: empty span",
-                      (unsigned long long)seed, r);
-            if (i > 0)
-                cr_assert(l.v[i - 1].exit.t < l.v[i].enter.t, "seed %llu ray %d: order",
-                          (unsigned long long)seed, r);
-        }
-        for (int k = 0; k < 40; k++) {
-            double t = uni(-4 * R, 4 * R);
-            int near = 0;
-            for (int i = 0; i < l.n; i++)
-                if (fabs(t - l.v[i].enter.t) < 1e-7 * (1 + fabs(t)) ||
-                    fabs(t - l.v[i].exit.t) < 1e-7 * (1 + fabs(t)))
-                    near = 1;
-            if (near) continue;
-            double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-            int want = classify(p, ud), edge = 0;
-            /* a point on the boundary (a line lying in a face) is no test */
-            for (int a = 0; a < 6 && !edge; a++) {
-                double q[3] = {p[0], p[1], p[2]};
-                q[a / 2] += (a & 1 ? 1e-9 : -1e-9) * (1 + fabs(q[a / 2]));
-                edge = classify(q, ud) != want;
-            }
-            if (edge) continue;
-            if (want != iv_list_contains(&l, t)) {
-                if (bad < 5)
-                    cr_log_warn("seed %llu ray %d t %g: classify %d list %d",
-                                (unsigned long long)seed, r, t, want, !want);
-                bad++;
-            }
-        }
-    }
-    return bad;
-}
-
 /* ---- polytope, hull ------------------------------------------------------------- */
-
-static int in_box(const double p[3], const void *ud)
-{
-    const double *b = ud; /* lo[3], hi[3] */
-    for (int k = 0; k < 3; k++)
-        if (p[k] < b[k] || p[k] > b[3 + k]) return 0;
-    return 1;
-}
 
 /* ---- hull3d (src/scad: quickhull) -------------------------------------------------- */
 
@@ -148,7 +48,7 @@ static double farthest_outside(const iv_shape *s, const double (*P)[3], int n)
     return worst;
 }
 
-Test(polytope, hull_of_cube_and_inner_points, .init = setup, .fini = teardown)
+Test(polytope, hull_of_cube_and_inner_points, .init = arena_setup, .fini = arena_teardown)
 {
     double P[40][3];
     int n = 0;
@@ -160,9 +60,9 @@ Test(polytope, hull_of_cube_and_inner_points, .init = setup, .fini = teardown)
     }
     rng_state = 5;
     while (n < 40) {
-        P[n][0] = uni(-1, 2);
-        P[n][1] = uni(-1, 1);
-        P[n][2] = uni(0, 3);
+        P[n][0] = rng_uniform(-1, 2);
+        P[n][1] = rng_uniform(-1, 1);
+        P[n][2] = rng_uniform(0, 3);
         n++;
     }
     iv_shape s;
@@ -180,13 +80,13 @@ Test(polytope, hull_of_cube_and_inner_points, .init = setup, .fini = teardown)
 
 /* The hull of points on a sphere is inside the sphere and contains the
  * sphere shrunk by the chord sagitta. */
-Test(polytope, hull_of_sphere_points, .init = setup, .fini = teardown)
+Test(polytope, hull_of_sphere_points, .init = arena_setup, .fini = arena_teardown)
 {
     enum { N = 300 };
     double P[N][3];
     rng_state = 9;
     for (int i = 0; i < N; i++) {
-        double z = uni(-1, 1), a = uni(0, 2 * PI), r = sqrt(1 - z * z);
+        double z = rng_uniform(-1, 1), a = rng_uniform(0, 2 * PI), r = sqrt(1 - z * z);
         P[i][0] = 5 * r * cos(a);
         P[i][1] = 5 * r * sin(a);
         P[i][2] = 5 * z;
@@ -197,8 +97,8 @@ Test(polytope, hull_of_sphere_points, .init = setup, .fini = teardown)
     iv_polytope_vertices(&s, &nv);
     cr_expect_eq(nv, N); /* points on a sphere are all extreme */
     for (int i = 0; i < 200; i++) {
-        double o[3] = {uni(-6, 6), uni(-6, 6), uni(-6, 6)},
-               d[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)};
+        double o[3] = {rng_uniform(-6, 6), rng_uniform(-6, 6), rng_uniform(-6, 6)},
+               d[3] = {rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)};
         iv_list l;
         iv_list_init(&l, 1, arena);
         if (iv_shape_intersect(&s, o, d, 0, &l) != 1) continue;
@@ -216,7 +116,7 @@ Test(polytope, hull_of_sphere_points, .init = setup, .fini = teardown)
  * polytope.c's brute-force hull (every point against every face) finds, on
  * a subset of 1500, and every point of a set of 100,000 inside its planes,
  * its vertices the extreme points along random directions. */
-Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
+Test(hull3d, random_points_against_brute_force, .init = arena_setup, .fini = arena_teardown)
 {
     enum { N = 100000, SUB = 1500 };
     static double P[N][3], A[N][3], B[N][3];
@@ -224,8 +124,8 @@ Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
         uint64_t seed = 41 + (uint64_t)kind;
         rng_state = seed;
         for (int i = 0; i < N; i++) {
-            double z = uni(-1, 1), a = uni(0, 2 * PI), r = sqrt(1 - z * z);
-            double len = kind ? 1 : cbrt(uni(0, 1));
+            double z = rng_uniform(-1, 1), a = rng_uniform(0, 2 * PI), r = sqrt(1 - z * z);
+            double len = kind ? 1 : cbrt(rng_uniform(0, 1));
             P[i][0] = 3 + 10 * len * r * cos(a);
             P[i][1] = -2 + 10 * len * r * sin(a);
             P[i][2] = 10 * len * z;
@@ -256,7 +156,8 @@ Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
         const double(*V)[3] = iv_polytope_vertices(&h, &na);
         if (kind) cr_expect_eq(na, n, "seed %llu", (unsigned long long)seed);
         for (int t = 0; t < 50; t++) {
-            double d[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)}, best = -INFINITY, got = -INFINITY;
+            double d[3] = {rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)},
+                   best = -INFINITY, got = -INFINITY;
             for (int i = 0; i < n; i++)
                 best = fmax(best, d[0] * P[i][0] + d[1] * P[i][1] + d[2] * P[i][2]);
             for (int i = 0; i < na; i++)
@@ -271,7 +172,7 @@ Test(hull3d, random_points_against_brute_force, .init = setup, .fini = teardown)
 /* Exact coplanar input (a grid, a cube's faces subdivided): the solid is
  * the box, as polytope.c makes it; flat, too few and non-finite points make
  * nothing. */
-Test(hull3d, grid_is_its_box_and_bad_input_fails, .init = setup, .fini = teardown)
+Test(hull3d, grid_is_its_box_and_bad_input_fails, .init = arena_setup, .fini = arena_teardown)
 {
     static double P[6 * 6 * 6][3];
     int n = 0;
@@ -301,7 +202,7 @@ Test(hull3d, grid_is_its_box_and_bad_input_fails, .init = setup, .fini = teardow
  * faces off them by up to 2e-11 (coplanar to a few eps).  Every point
  * stays within a relative 1e-7 of the hull (polytope.c's hull is off by up
  * to the whole size on these, or takes minutes). */
-Test(hull3d, near_duplicate_and_near_coplanar_points, .init = setup, .fini = teardown)
+Test(hull3d, near_duplicate_and_near_coplanar_points, .init = arena_setup, .fini = arena_teardown)
 {
     enum { N = 3000 };
     static double P[N][3];
@@ -311,14 +212,14 @@ Test(hull3d, near_duplicate_and_near_coplanar_points, .init = setup, .fini = tea
             for (int i = 0; i < N; i++) {
                 if (kind == 0) {
                     double a = (i % 360) * PI / 180;
-                    P[i][0] = 10 * cos(a) + (i & 1) * 0.1 + uni(-1e-9, 1e-9);
-                    P[i][1] = 10 * sin(a) + (i >> 1 & 1) * 0.1 + uni(-1e-9, 1e-9);
-                    P[i][2] = i % 10 + (i >> 2 & 1) * 0.1 + uni(-1e-9, 1e-9);
+                    P[i][0] = 10 * cos(a) + (i & 1) * 0.1 + rng_uniform(-1e-9, 1e-9);
+                    P[i][1] = 10 * sin(a) + (i >> 1 & 1) * 0.1 + rng_uniform(-1e-9, 1e-9);
+                    P[i][2] = i % 10 + (i >> 2 & 1) * 0.1 + rng_uniform(-1e-9, 1e-9);
                 } else {
-                    int f = (int)uni(0, 6);
+                    int f = (int)rng_uniform(0, 6);
                     for (int k = 0; k < 3; k++)
-                        P[i][k] = uni(-1, 1);
-                    P[i][f % 3] = (f < 3 ? -1 : 1) + uni(-2e-11, 2e-11);
+                        P[i][k] = rng_uniform(-1, 1);
+                    P[i][f % 3] = (f < 3 ? -1 : 1) + rng_uniform(-2e-11, 2e-11);
                 }
             }
             iv_shape h;
@@ -330,8 +231,8 @@ Test(hull3d, near_duplicate_and_near_coplanar_points, .init = setup, .fini = tea
             int nv;
             const double(*V)[3] = iv_polytope_vertices(&h, &nv);
             for (int t = 0; t < 20; t++) {
-                double d[3] = {uni(-1, 1), uni(-1, 1), uni(-1, 1)}, best = -INFINITY,
-                       got = -INFINITY;
+                double d[3] = {rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)},
+                       best = -INFINITY, got = -INFINITY;
                 for (int i = 0; i < N; i++)
                     best = fmax(best, d[0] * P[i][0] + d[1] * P[i][1] + d[2] * P[i][2]);
                 for (int i = 0; i < nv; i++)

@@ -24,111 +24,11 @@
 #include "../../src/geom/hull3d_internal.h"
 #include "../../src/scad/scad.h"
 #include "../services.h"
+#include "../shape_check.h"
 
 #define PI 3.14159265358979323846
 
-static uint64_t rng_state;
-
-static uint64_t rng_next(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-static double uni(double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(rng_next() >> 11) / 9007199254740992.0);
-}
-
-static iv_arena *arena;
-
-static void setup(void)
-{
-    arena = iv_arena_new(0);
-}
-
-static void teardown(void)
-{
-    iv_arena_free(arena);
-}
-
-typedef int (*classify_fn)(const double p[3], const void *ud);
-
-/* Intersect s with `rays` random lines through the box [-R, R]³ and compare
- * membership of random points on each line with classify(), away from the
- * boundaries (a relative 1e-7).  Returns the number of disagreements. */
-static int check_shape(const iv_shape *s, classify_fn classify, const void *ud, double R, int rays,
-                       uint64_t seed)
-{
-    rng_state = seed;
-    int bad = 0;
-    for (int r = 0; r < rays; r++) {
-        iv_arena_reset(arena);
-        double o[3], d[3];
-        for (int k = 0; k < 3; k++) {
-            o[k] = uni(-R, R);
-            d[k] = uni(-1, 1);
-        }
-        /* every tenth line axis-aligned, through the grid of half-units,
-         * to hit vertices and edges exactly */
-        if (r % 10 == 0) {
-            int ax = (int)(rng_next() % 3);
-            for (int k = 0; k < 3; k++) {
-                o[k] = 0.5 * floor(uni(-2 * R, 2 * R));
-                d[k] = k == ax ? 1 : 0;
-            }
-        }
-        iv_list l;
-        int cap = iv_shape_max_spans(s);
-        cr_assert_eq(iv_list_init(&l, cap, arena), 0);
-        int n = iv_shape_intersect(s, o, d, 3, &l);
-        cr_assert(n >= 0, "seed %llu ray %d: room", (unsigned long long)seed, r);
-        for (int i = 0; i < l.n; i++) {
-            cr_assert(l.v[i].enter.t < l.v[i].exit.t, "seed %llu ray %d: empty span",
-                      (unsigned long long)seed, r);
-            if (i > 0)
-                cr_assert(l.v[i - 1].exit.t < l.v[i].enter.t, "seed %llu ray %d: order",
-                          (unsigned long long)seed, r);
-        }
-        for (int k = 0; k < 40; k++) {
-            double t = uni(-4 * R, 4 * R);
-            int near = 0;
-            for (int i = 0; i < l.n; i++)
-                if (fabs(t - l.v[i].enter.t) < 1e-7 * (1 + fabs(t)) ||
-                    fabs(t - l.v[i].exit.t) < 1e-7 * (1 + fabs(t)))
-                    near = 1;
-            if (near) continue;
-            double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-            int want = classify(p, ud), edge = 0;
-            /* a point on the boundary (a line lying in a face) is no test */
-            for (int a = 0; a < 6 && !edge; a++) {
-                double q[3] = {p[0], p[1], p[2]};
-                q[a / 2] += (a & 1 ? 1e-9 : -1e-9) * (1 + fabs(q[a / 2]));
-                edge = classify(q, ud) != want;
-            }
-            if (edge) continue;
-            if (want != iv_list_contains(&l, t)) {
-                if (bad < 5)
-                    cr_log_warn("seed %llu ray %d t %g: classify %d list %d",
-                                (unsigned long long)seed, r, t, want, !want);
-                bad++;
-            }
-        }
-    }
-    return bad;
-}
-
 /* ---- polytope, hull ------------------------------------------------------------- */
-
-static int in_box(const double p[3], const void *ud)
-{
-    const double *b = ud; /* lo[3], hi[3] */
-    for (int k = 0; k < 3; k++)
-        if (p[k] < b[k] || p[k] > b[3 + k]) return 0;
-    return 1;
-}
 
 /* ---- mesh ------------------------------------------------------------------------ */
 
@@ -189,7 +89,7 @@ static int in_rev(const double p[3], const void *ud)
     return a <= c->angle;
 }
 
-Test(polytope, box_planes, .init = setup, .fini = teardown)
+Test(polytope, box_planes, .init = arena_setup, .fini = arena_teardown)
 {
     const double pl[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 2},  {0, -2, 0, 2},
                              {0, 1, 0, 1},  {0, 0, -1, 0}, {0, 0, 1, 3}};
@@ -208,7 +108,7 @@ Test(polytope, box_planes, .init = setup, .fini = teardown)
     iv_shape_release(&s);
 }
 
-Test(mesh, manual_cube_matches_box, .init = setup, .fini = teardown)
+Test(mesh, manual_cube_matches_box, .init = arena_setup, .fini = arena_teardown)
 {
     iv_shape s;
     cr_assert_eq(iv_shape_mesh(&s, cube_pts, 8, cube_faces, cube_start, 6), 0);
@@ -226,7 +126,7 @@ Test(mesh, manual_cube_matches_box, .init = setup, .fini = teardown)
     iv_shape_release(&s);
 }
 
-Test(mesh, reversed_winding_is_turned_outside_in, .init = setup, .fini = teardown)
+Test(mesh, reversed_winding_is_turned_outside_in, .init = arena_setup, .fini = arena_teardown)
 {
     int rev[24];
     for (int f = 0; f < 6; f++)
@@ -239,7 +139,7 @@ Test(mesh, reversed_winding_is_turned_outside_in, .init = setup, .fini = teardow
     iv_shape_release(&s);
 }
 
-Test(mesh, open_and_bad_input, .init = setup, .fini = teardown)
+Test(mesh, open_and_bad_input, .init = arena_setup, .fini = arena_teardown)
 {
     iv_shape s;
     cr_expect_eq(iv_shape_mesh(&s, cube_pts, 8, cube_faces, cube_start, 5), 1); /* no top */
@@ -249,7 +149,7 @@ Test(mesh, open_and_bad_input, .init = setup, .fini = teardown)
     cr_expect_eq(iv_shape_mesh(&s, cube_pts, 8, bad, bs, 1), -1);
 }
 
-Test(mesh, concave_faces_by_fans, .init = setup, .fini = teardown)
+Test(mesh, concave_faces_by_fans, .init = arena_setup, .fini = arena_teardown)
 {
     /* base outline counter-clockwise from above */
     const double L[6][2] = {{0, 0}, {4, 0}, {4, 1}, {1, 1}, {1, 3}, {0, 3}};
@@ -286,7 +186,7 @@ Test(mesh, concave_faces_by_fans, .init = setup, .fini = teardown)
     iv_shape_release(&s);
 }
 
-Test(prism, square_with_hole, .init = setup, .fini = teardown)
+Test(prism, square_with_hole, .init = arena_setup, .fini = arena_teardown)
 {
     /* both paths counter-clockwise: the region re-orients the hole */
     const double pts[8][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}};
@@ -307,7 +207,7 @@ Test(prism, square_with_hole, .init = setup, .fini = teardown)
     iv_shape_release(&s);
 }
 
-Test(prism, disc, .init = setup, .fini = teardown)
+Test(prism, disc, .init = arena_setup, .fini = arena_teardown)
 {
     iv_shape s;
     memset(&s, 0, sizeof s);
@@ -318,7 +218,7 @@ Test(prism, disc, .init = setup, .fini = teardown)
     cr_expect_eq(check_shape(&s, in_disc, NULL, 4, 1000, 32), 0);
 }
 
-Test(revolve, triangle_profile_full_and_partial, .init = setup, .fini = teardown)
+Test(revolve, triangle_profile_full_and_partial, .init = arena_setup, .fini = arena_teardown)
 {
     const double pts[3][2] = {{1, 0}, {3, 0}, {1, 2}};
     const int st[2] = {0, 3};

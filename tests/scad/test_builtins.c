@@ -24,91 +24,18 @@
 #include "../../src/geom/hull3d_internal.h"
 #include "../../src/scad/scad.h"
 #include "../services.h"
+#include "../scad_support.h"
+#include "../shape_check.h"
 
 #define PI 3.14159265358979323846
-
-static uint64_t rng_state;
-
-static uint64_t rng_next(void)
-{
-    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-static double uni(double lo, double hi)
-{
-    return lo + (hi - lo) * ((double)(rng_next() >> 11) / 9007199254740992.0);
-}
-
-static iv_arena *arena;
-
-static void setup(void)
-{
-    arena = iv_arena_new(0);
-}
-
-static void teardown(void)
-{
-    iv_arena_free(arena);
-}
 
 /* ---- geometry built by the language: twisted extrusion, surface, import,
  * resize — through scad_eval_string and a committed scene ---------------------- */
 
-/* The real services of the command (the OFF header rewrite included):
- * tests link the command's parts other than main. */
-
-typedef struct msgs {
-    char text[4096];
-} msgs;
-
-static void on_msg(void *ud, scad_msg_kind kind, const char *line)
-{
-    (void)kind;
-    msgs *m = ud;
-    size_t n = strlen(m->text);
-    snprintf(m->text + n, sizeof m->text - n, "%s\n", line);
-}
-
-/* The model of src as a scene (NULL when empty); messages into m. */
+/* The model of src as a scene; messages into m. */
 static csg_scene *scene_of(const char *src, msgs *m)
 {
-    scad_options o;
-    memset(&o, 0, sizeof o);
-    o.message = on_msg;
-    o.ud = m;
-    o.services = test_services();
-    scad_result r;
-    cr_assert_eq(scad_eval_string("t.scad", src, &o, &r), 0, "%s", m->text);
-    csg_node *root = r.model;
-    r.model = NULL;
-    scad_result_free(&r);
-    char err[256];
-    csg_scene *s = csg_scene_new(&root, 1, err, sizeof err);
-    cr_assert(s, "%s", err);
-    return s;
-}
-
-/* Volume by vertical rays through the centres of an n × n grid over the
- * scene's bounds: Σ length inside × cell area.  The error is the boundary
- * band of the grid, O(perimeter · cell). */
-static double traced_volume(const csg_scene *s, int n)
-{
-    double lo[3], hi[3];
-    if (csg_scene_bounds(s, 0, lo, hi) != 0) return 0;
-    double dx = (hi[0] - lo[0]) / n, dy = (hi[1] - lo[1]) / n, v = 0;
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++) {
-            iv_arena_reset(arena);
-            double o[3] = {lo[0] + (i + 0.5) * dx, lo[1] + (j + 0.5) * dy, lo[2] - 1};
-            iv_list l;
-            cr_assert_eq(csg_trace(s, 0, o, (double[3]){0, 0, 1}, 0, INFINITY, arena, &l), 0);
-            for (int k = 0; k < l.n; k++)
-                v += (l.v[k].exit.t - l.v[k].enter.t) * dx * dy;
-        }
-    return v;
+    return scene_as("t.scad", src, m);
 }
 
 /* 1 when p is inside root 0 (a vertical ray through it). */
@@ -144,12 +71,13 @@ static int twist_classify(const double p[3], const twist_case *c, int *sure)
 }
 
 /* Scene bounds are padded a little for the tracer. */
-static int near(double x, double want)
+static int bounds_near(double x, double want)
 {
     return fabs(x - want) < 1e-3 * (1 + fabs(want));
 }
 
-Test(linear_extrude, twisted_square_volume_is_the_prism_volume, .init = setup, .fini = teardown)
+Test(linear_extrude, twisted_square_volume_is_the_prism_volume, .init = arena_setup,
+     .fini = arena_teardown)
 {
     msgs m = {""};
     csg_scene *s = scene_of(
@@ -164,7 +92,8 @@ Test(linear_extrude, twisted_square_volume_is_the_prism_volume, .init = setup, .
     csg_scene_free(s);
 }
 
-Test(linear_extrude, scaled_frustum_and_pyramid_volumes, .init = setup, .fini = teardown)
+Test(linear_extrude, scaled_frustum_and_pyramid_volumes, .init = arena_setup,
+     .fini = arena_teardown)
 {
     msgs m = {""};
     /* uniform scale alone: one slice, planar faces, a frustum h·A·(1+s+s²)/3 */
@@ -180,7 +109,8 @@ Test(linear_extrude, scaled_frustum_and_pyramid_volumes, .init = setup, .fini = 
     cr_expect_str_empty(m.text);
 }
 
-Test(linear_extrude, twisted_points_against_the_inverse_map, .init = setup, .fini = teardown)
+Test(linear_extrude, twisted_points_against_the_inverse_map, .init = arena_setup,
+     .fini = arena_teardown)
 {
     msgs m = {""};
     csg_scene *s = scene_of("linear_extrude(height = 16, twist = -120, scale = 0.6, slices = 48)"
@@ -190,7 +120,7 @@ Test(linear_extrude, twisted_points_against_the_inverse_map, .init = setup, .fin
     rng_state = 42;
     int bad = 0, tested = 0;
     for (int i = 0; i < 4000; i++) {
-        double p[3] = {uni(-9, 9), uni(-9, 9), uni(-2, 18)};
+        double p[3] = {rng_uniform(-9, 9), rng_uniform(-9, 9), rng_uniform(-2, 18)};
         int certain;
         int want = twist_classify(p, &c, &certain);
         if (!certain) continue;
@@ -205,7 +135,8 @@ Test(linear_extrude, twisted_points_against_the_inverse_map, .init = setup, .fin
     csg_scene_free(s);
 }
 
-Test(linear_extrude, twist_with_a_hole_and_off_centre_disc, .init = setup, .fini = teardown)
+Test(linear_extrude, twist_with_a_hole_and_off_centre_disc, .init = arena_setup,
+     .fini = arena_teardown)
 {
     msgs m = {""};
     /* the hole stays empty along its twisted axis; the disc is OpenSCAD's
@@ -226,7 +157,7 @@ Test(linear_extrude, twist_with_a_hole_and_off_centre_disc, .init = setup, .fini
     csg_scene_free(s);
 }
 
-Test(surface, dat_and_png_volumes_match_openscad, .init = setup, .fini = teardown)
+Test(surface, dat_and_png_volumes_match_openscad, .init = arena_setup, .fini = arena_teardown)
 {
     msgs m = {""};
     /* volumes of `openscad -o x.off` of the same calls (2021.01): 115.5 and
@@ -242,7 +173,7 @@ Test(surface, dat_and_png_volumes_match_openscad, .init = setup, .fini = teardow
     cr_expect_str_empty(m.text);
 }
 
-Test(import, stl_and_one_line_off_round_trip, .init = setup, .fini = teardown)
+Test(import, stl_and_one_line_off_round_trip, .init = arena_setup, .fini = arena_teardown)
 {
     char dir[] = "/tmp/rayscad-test-XXXXXX";
     cr_assert(mkdtemp(dir));
@@ -283,7 +214,7 @@ Test(import, stl_and_one_line_off_round_trip, .init = setup, .fini = teardown)
     rmdir(dir);
 }
 
-Test(import, missing_and_unsupported_files_warn, .init = setup, .fini = teardown)
+Test(import, missing_and_unsupported_files_warn, .init = arena_setup, .fini = arena_teardown)
 {
     msgs m = {""};
     scad_options o;
@@ -308,25 +239,25 @@ Test(import, missing_and_unsupported_files_warn, .init = setup, .fini = teardown
     scad_result_free(&r);
 }
 
-Test(resize, box_auto_and_2d, .init = setup, .fini = teardown)
+Test(resize, box_auto_and_2d, .init = arena_setup, .fini = arena_teardown)
 {
     msgs m = {""};
     double lo[3], hi[3];
     csg_scene *s = scene_of("resize([30, 10, 5]) translate([1, 1, 1]) cube(2);", &m);
     cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
     /* scaled about the origin: [1,3] → [15,45] in x */
-    cr_expect(near(lo[0], 15) && near(hi[0], 45), "%g %g", lo[0], hi[0]);
-    cr_expect(near(hi[1], 15) && near(hi[2], 7.5));
+    cr_expect(bounds_near(lo[0], 15) && bounds_near(hi[0], 45), "%g %g", lo[0], hi[0]);
+    cr_expect(bounds_near(hi[1], 15) && bounds_near(hi[2], 7.5));
     csg_scene_free(s);
     /* auto: y follows x's scale (2), z keeps its size */
     s = scene_of("resize([8, 0, 0], auto = [0, 1, 0]) cube([4, 3, 2]);", &m);
     cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
-    cr_expect(near(hi[0], 8) && near(hi[1], 6) && near(hi[2], 2));
+    cr_expect(bounds_near(hi[0], 8) && bounds_near(hi[1], 6) && bounds_near(hi[2], 2));
     csg_scene_free(s);
     /* 2D: x and y only, the preview slab stays 1 thick */
     s = scene_of("resize([10, 4]) square([5, 1]);", &m);
     cr_assert_eq(csg_scene_bounds(s, 0, lo, hi), 0);
-    cr_expect(near(hi[0], 10) && near(hi[1], 4) && near(hi[2], 0.5));
+    cr_expect(bounds_near(hi[0], 10) && bounds_near(hi[1], 4) && bounds_near(hi[2], 0.5));
     csg_scene_free(s);
     cr_expect_str_empty(m.text);
 }

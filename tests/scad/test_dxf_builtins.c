@@ -22,52 +22,11 @@
 #include "../../src/intervals/intervals.h"
 #include "../../src/geom/dxf.h"
 #include "../../src/scad/scad.h"
-#include "../services.h"
+#include "../scad_support.h"
 
 #define PI 3.14159265358979323846
 
 #define EXAMPLE009 "/usr/share/openscad/examples/Old/example009.dxf"
-
-static iv_arena *arena;
-
-static char dir[64];
-
-static void setup(void)
-{
-    arena = iv_arena_new(0);
-    snprintf(dir, sizeof dir, "/tmp/rayscad-dxf-XXXXXX");
-    cr_assert(mkdtemp(dir));
-}
-
-static void teardown(void)
-{
-    iv_arena_free(arena);
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    cr_assert_eq(system(cmd), 0);
-}
-
-/* Writes text to dir/name; the path into out. */
-static void write_file(const char *name, const char *text, char *out, size_t n)
-{
-    snprintf(out, n, "%s/%s", dir, name);
-    FILE *f = fopen(out, "w");
-    cr_assert(f);
-    fputs(text, f);
-    fclose(f);
-}
-
-typedef struct msgs {
-    char text[8192];
-} msgs;
-
-static void on_msg(void *ud, scad_msg_kind kind, const char *line)
-{
-    (void)kind;
-    msgs *m = ud;
-    size_t n = strlen(m->text);
-    snprintf(m->text + n, sizeof m->text - n, "%s\n", line);
-}
 
 static const char square_dxf[] = "0\nSECTION\n2\nENTITIES\n"
                                  "0\nLWPOLYLINE\n8\nsq\n90\n4\n70\n1\n"
@@ -75,60 +34,24 @@ static const char square_dxf[] = "0\nSECTION\n2\nENTITIES\n"
                                  "0\nCIRCLE\n8\nround\n10\n3\n20\n4\n40\n5\n"
                                  "0\nENDSEC\n0\nEOF\n";
 
-/* Volume by vertical rays through an n × n grid over the scene's bounds. */
-static double traced_volume(const csg_scene *s, int n)
-{
-    double lo[3], hi[3];
-    if (csg_scene_bounds(s, 0, lo, hi) != 0) return 0;
-    double dx = (hi[0] - lo[0]) / n, dy = (hi[1] - lo[1]) / n, v = 0;
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++) {
-            iv_arena_reset(arena);
-            double o[3] = {lo[0] + (i + 0.5) * dx, lo[1] + (j + 0.5) * dy, lo[2] - 1};
-            iv_list l;
-            cr_assert_eq(csg_trace(s, 0, o, (double[3]){0, 0, 1}, 0, INFINITY, arena, &l), 0);
-            for (int k = 0; k < l.n; k++)
-                v += (l.v[k].exit.t - l.v[k].enter.t) * dx * dy;
-        }
-    return v;
-}
-
 static csg_scene *scene_of(const char *src, msgs *m)
 {
-    scad_options o;
-    memset(&o, 0, sizeof o);
-    o.services = test_services();
-    o.message = on_msg;
-    o.ud = m;
-    scad_result r;
     char main_file[256];
-    snprintf(main_file, sizeof main_file, "%s/t.scad", dir);
-    cr_assert_eq(scad_eval_string(main_file, src, &o, &r), 0, "%s", m->text);
-    csg_node *root = r.model;
-    r.model = NULL;
-    scad_result_free(&r);
-    char err[256];
-    csg_scene *s = csg_scene_new(&root, 1, err, sizeof err);
-    cr_assert(s, "%s", err);
-    return s;
+    snprintf(main_file, sizeof main_file, "%s/t.scad", scratch);
+    return scene_as(main_file, src, m);
 }
 
-/* The echo lines of src, evaluated as dir/t.scad. */
+/* The echo lines of src, evaluated as scratch/t.scad. */
 static void echo_of(const char *src, msgs *m)
 {
-    scad_options o;
-    memset(&o, 0, sizeof o);
-    o.services = test_services();
-    o.message = on_msg;
-    o.ud = m;
-    scad_result r;
     char main_file[256];
-    snprintf(main_file, sizeof main_file, "%s/t.scad", dir);
-    cr_assert_eq(scad_eval_string(main_file, src, &o, &r), 0, "%s", m->text);
+    snprintf(main_file, sizeof main_file, "%s/t.scad", scratch);
+    scad_result r;
+    eval_as(main_file, src, m, &r);
     scad_result_free(&r);
 }
 
-Test(dxf_import, extruded_square_with_a_round_hole, .init = setup, .fini = teardown)
+Test(dxf_import, extruded_square_with_a_round_hole, .init = scratch_setup, .fini = scratch_teardown)
 {
     char path[256];
     write_file("a.dxf", square_dxf, path, sizeof path);
@@ -147,7 +70,8 @@ Test(dxf_import, extruded_square_with_a_round_hole, .init = setup, .fini = teard
     cr_expect_str_empty(m.text);
 }
 
-Test(dxf_dim, example009_values_as_openscad_echoes_them, .init = setup, .fini = teardown)
+Test(dxf_dim, example009_values_as_openscad_echoes_them, .init = scratch_setup,
+     .fini = scratch_teardown)
 {
     if (access(EXAMPLE009, R_OK) != 0) cr_skip_test("no %s (openscad not installed)", EXAMPLE009);
     msgs m = {""};
@@ -169,7 +93,7 @@ Test(dxf_dim, example009_values_as_openscad_echoes_them, .init = setup, .fini = 
                              "ECHO: 11\n");
 }
 
-Test(dxf_dim, warnings_as_openscad_words_them, .init = setup, .fini = teardown)
+Test(dxf_dim, warnings_as_openscad_words_them, .init = scratch_setup, .fini = scratch_teardown)
 {
     char path[256];
     write_file("a.dxf", square_dxf, path, sizeof path);
@@ -196,13 +120,13 @@ Test(dxf_dim, warnings_as_openscad_words_them, .init = setup, .fini = teardown)
 
 /* Files the language cannot read (a folder, a missing file) are OpenSCAD's
  * warning and an empty drawing; the file services decide, not the reader. */
-Test(dxf_import, unreadable_files_warn, .init = setup, .fini = teardown)
+Test(dxf_import, unreadable_files_warn, .init = scratch_setup, .fini = scratch_teardown)
 {
     char path[256];
     write_file("gone.dxf", "", path, sizeof path);
     remove(path);
     char folder[300];
-    snprintf(folder, sizeof folder, "%s/folder.dxf", dir);
+    snprintf(folder, sizeof folder, "%s/folder.dxf", scratch);
     cr_assert_eq(mkdir(folder, 0700), 0);
     msgs m = {""};
     char src[700];
