@@ -222,7 +222,7 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
     int index = 0;
     if (!find_font(font.c_str(), file, index)) {
         set_err(err, errlen, "no font found for '" + font + "'");
-        return -1;
+        return 1;
     }
     FT_Library lib;
     if (FT_Init_FreeType(&lib)) {
@@ -233,7 +233,7 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
     if (FT_New_Face(lib, file.c_str(), index, &face)) {
         FT_Done_FreeType(lib);
         set_err(err, errlen, "cannot open font file " + file);
-        return -1;
+        return 1;
     }
     FT_Select_Charmap(face, FT_ENCODING_UNICODE);
     int rc = 0;
@@ -245,7 +245,7 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
     try {
         if (FT_Set_Char_Size(face, 0, (FT_F26Dot6)(p->size * SCALE), 100, 100)) {
             set_err(err, errlen, "cannot set font size for font " + font);
-            throw 1;
+            throw 2; /* OpenSCAD 2021.01 draws nothing and goes on */
         }
         hbf = hb_ft_font_create(face, nullptr);
         buf = hb_buffer_create();
@@ -334,8 +334,8 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
                             (int)starts.size() - 1};
             if (io_polygon_clip(IO_CLIP_UNION, &all, 0, nullptr, 0, out, err, errlen) != 0) throw 1;
         }
-    } catch (int) {
-        rc = -1;
+    } catch (int why) {
+        rc = why == 2 ? 1 : -1;
     }
     for (Glyph &g : glyphs)
         FT_Done_Glyph(g.glyph);

@@ -30,9 +30,11 @@ typedef struct io_text_params {
 
 /* The outlines of the shaped text in model units, each glyph filled by the
  * even-odd rule and the glyphs united (a normalised set, polygon.h).  Text
- * with no outlines (spaces, "") gives an empty set.  Returns 0 and *out,
- * or -1 with a message in err (no font found, FreeType failure, out of
- * memory). */
+ * with no outlines (spaces, "") gives an empty set.  Returns 0 and *out;
+ * 1 with a message in err when no font matches, the one found cannot be
+ * opened or not set to the size (OpenSCAD 2021.01 then draws nothing and
+ * goes on); -1 with a
+ * message (FreeType failure, out of memory). */
 int io_text_render(const io_text_params *p, io_paths *out, char *err, size_t errlen);
 
 #ifdef __cplusplus

@@ -285,7 +285,8 @@ static int text_outlines(void *ud, const scad_text_params *p, scad_paths *out, c
     io_text_params q = {p->text,    p->size,      p->font,     p->halign, p->valign,
                         p->spacing, p->direction, p->language, p->script, p->segments};
     io_paths r;
-    if (io_text_render(&q, &r, err, errlen) != 0) return -1;
+    int rc = io_text_render(&q, &r, err, errlen);
+    if (rc != 0) return rc;
     from_io(&r, out);
     return 0;
 }

@@ -88,7 +88,9 @@ typedef struct scad_services {
      * <= 0: the service picks one); arrays as read_mesh returns them. */
     int (*mesh_tree)(void *ud, csg_node *root, double h, float **v, int *nv, int32_t **t, int *nt,
                      char *err, size_t errlen);
-    /* text(): the glyph outlines of p, as OpenSCAD 2021.01 lays them out. */
+    /* text(): the glyph outlines of p, as OpenSCAD 2021.01 lays them out;
+     * 0, 1 when there is no font to draw with (a warning: nothing drawn, as
+     * in OpenSCAD), or -1 (failure), with a message in err. */
     int (*text)(void *ud, const scad_text_params *p, scad_paths *out, char *err, size_t errlen);
 } scad_services;
 

@@ -423,5 +423,11 @@ else
     fi
 fi
 
+# A font that cannot be had: OpenSCAD 2021.01 draws nothing for that text()
+# and goes on, so it is a warning, not an error.
+printf 'text("a", font = ":charset=xxx");\ncube(1);\n' >nofont.scad
+run nofont.scad -o nofont.stl
+check "text() without a font warns, draws the rest and exits 0" sh -c "test $rc -eq 0 && test -s nofont.stl && grep -q \"WARNING: text(): no font found for ':charset=xxx'; nothing is drawn\" err.txt && ! grep -q 'error:' err.txt"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -180,7 +180,12 @@ static scad_geom *text_build(scad_call *c, const void *args)
     }
     scad_paths out = {NULL, NULL, 0};
     char err[256];
-    if (s->text(s->ud, &p, &out, err, sizeof err) != 0) {
+    int rc = s->text(s->ud, &p, &out, err, sizeof err);
+    if (rc > 0) { /* OpenSCAD draws nothing and goes on */
+        scad_diag_warning(ev->d, c->st->loc, "text(): %s; nothing is drawn", err);
+        return NULL;
+    }
+    if (rc != 0) {
         scad_eval_error(ev, c->st->loc, "text(): %s", err);
         return NULL;
     }
