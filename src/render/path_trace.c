@@ -316,7 +316,9 @@ static int direct(const pt_job *J, pt_worker *w, const render_hit *h, double E[3
         } else {
             sample_emitter(L, &w->g, q, &pdf);
         }
-        double dist, cs = toward(o, q, nf, dir, &dist);
+        double dist = toward(o, q, dir);
+        if (!(dist > 0)) continue;
+        double cs = dot3(nf, dir);
         if (cs <= 0) continue;
         int32_t target = L->kind == PT_POINT ? -1 : L->prim;
         double T = shadow(J, w, o, dir, dist, target, nt);

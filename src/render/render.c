@@ -201,7 +201,9 @@ static double light_factor(const job *J, worker_ctx *wk, const render_hit *h)
                                    &dy);
                     disc_point(L->pos, L->radius, u, v, dx, dy, q);
                 }
-                double dir[3], len, cs = toward(o, q, nf, dir, &len);
+                double dir[3], len = toward(o, q, dir);
+                if (!(len > 0)) continue;
+                double cs = dot3(nf, dir);
                 if (cs <= 0) continue;
                 double T = transmittance(J, wk, o, dir, len);
                 if (T < 0) return -1;

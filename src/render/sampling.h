@@ -97,18 +97,17 @@ static inline void disc_point(const double c[3], double r, const double u[3], co
         q[i] = c[i] + r * (dx * u[i] + dy * v[i]);
 }
 
-/* The unit direction dir from o to q and the distance *len; returns the
- * cosine of dir with n, or 0 when q is o (or the distance is not a number). */
-static inline double toward(const double o[3], const double q[3], const double n[3], double dir[3],
-                            double *len)
+/* The unit direction dir from o to q; returns the distance, which is not
+ * > 0 (and dir no direction) when q is o. */
+static inline double toward(const double o[3], const double q[3], double dir[3])
 {
     for (int i = 0; i < 3; i++)
         dir[i] = q[i] - o[i];
-    *len = sqrt(dot3(dir, dir));
-    if (!(*len > 0)) return 0;
-    for (int i = 0; i < 3; i++)
-        dir[i] /= *len;
-    return dot3(n, dir);
+    double len = sqrt(dot3(dir, dir));
+    if (len > 0)
+        for (int i = 0; i < 3; i++)
+            dir[i] /= len;
+    return len;
 }
 
 /* ---- the model's scale, for offsets and the lens ---------------------------- */

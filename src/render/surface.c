@@ -22,29 +22,6 @@
 #include <math.h>
 #include <string.h>
 
-double render_surface_color(const csg_scene *s, const render_options *opt, int root,
-                            const iv_bound *b, float c[4], const csg_material **m)
-{
-    const render_colors *cs = &opt->colors;
-    *m = csg_scene_material(s, b->prim);
-    if (root == RAYSCAD_ROOT_HIGHLIGHT) {
-        memcpy(c, cs->highlight, sizeof cs->highlight);
-    } else if ((*m)->has_color) {
-        memcpy(c, (*m)->rgba, sizeof(*m)->rgba);
-    } else if (root == RAYSCAD_ROOT_BACKGROUND) {
-        memcpy(c, cs->background_modifier, sizeof cs->background_modifier);
-    } else {
-        memcpy(c, b->flip ? cs->back : cs->face, 3 * sizeof(float));
-        c[3] = 1;
-    }
-    /* The caps in double: c[3] rounds the x-ray opacity to float, as the
-     * preview's colours always have; the path tracer keeps it exact. */
-    double alpha = c[3] > 1 ? 1 : c[3];
-    if (opt->xray > 0 && alpha > opt->xray) alpha = opt->xray;
-    c[3] = (float)alpha;
-    return alpha;
-}
-
 double render_surface_ior(const render_options *opt, const csg_material *m, double alpha)
 {
     return m->ior > 1 ? m->ior : opt->ior > 1 && alpha < 1 ? opt->ior : 0;
@@ -87,19 +64,4 @@ double render_refract_dir(const double d[3], const double nf[3], double eta, dou
 double render_ray_offset(double size)
 {
     return 1e-7 * size;
-}
-
-void render_ray_spawn(const render_hit *h, const double dir[3], render_spawn rule, double eps,
-                      double o[3])
-{
-    if (rule == RENDER_SPAWN_AHEAD) {
-        for (int i = 0; i < 3; i++)
-            o[i] = h->p[i] + eps * dir[i];
-        return;
-    }
-    /* Negating eps is exact: leaving on nf's side is p + eps·nf bit for bit,
-     * on the other p - eps·nf. */
-    double step = dot3(dir, h->nf) >= 0 ? eps : -eps;
-    for (int i = 0; i < 3; i++)
-        o[i] = h->p[i] + step * h->nf[i];
 }

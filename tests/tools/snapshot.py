@@ -35,6 +35,7 @@ EXAMPLES = "/usr/share/openscad/examples"
 SCRATCH = os.path.join(tempfile.gettempdir(), "rayscad-snapshot-corpora")
 KINDS = ["echo", "csg", "png", "stl"]
 TIMEOUT = 60
+STDERR_KEEP = 1 << 16  # characters of stderr kept in the manifest
 
 
 def bosl2_scratch():
@@ -96,19 +97,43 @@ def run_one(binary, path, kind, outdir):
     if kind == "png":
         args.append("--imgsize=320,240")
     env = dict(os.environ, OPENSCADPATH=CORPORA)
-    try:
-        p = subprocess.run(["timeout", "-k", "5", str(TIMEOUT)] + args, cwd=os.path.dirname(path),
-                           env=env, capture_output=True)
-        rc, err = p.returncode, p.stderr
-    except OSError as e:
-        rc, err = -1, str(e).encode()
+    # stderr goes to a file: a run may print gigabytes of warnings in its
+    # time, which must not all be held here
+    with tempfile.TemporaryFile() as ef:
+        try:
+            rc = subprocess.run(["timeout", "-k", "5", str(TIMEOUT)] + args,
+                                cwd=os.path.dirname(path), env=env, stdout=subprocess.DEVNULL,
+                                stderr=ef).returncode
+        except OSError as e:
+            rc = -1
+            ef.write(str(e).encode())
+        size = ef.tell()
+        ef.seek(0)
+        err = ef.read(STDERR_KEEP + 1024)
+        rest = hashlib.sha256(err)
+        for block in iter(lambda: ef.read(1 << 20), b""):
+            rest.update(block)
     # the output's own name appears in some messages; make it DIR-independent
     err = err.replace(out.encode(), b"OUT").replace(outdir.encode(), b"DIR")
+    text = err.decode("utf-8", "replace")
+    if size > STDERR_KEEP:
+        text = "%s…[%d bytes, sha256 %s]" % (text[:STDERR_KEEP], size, rest.hexdigest())
     digest = None
     if os.path.exists(out):
+        h = hashlib.sha256()
         with open(out, "rb") as f:
-            digest = hashlib.sha256(f.read()).hexdigest()
-    return key, kind, {"rc": rc, "stderr": err.decode("utf-8", "replace"), "sha": digest}
+            for block in iter(lambda: f.read(1 << 20), b""):
+                h.update(block)
+        digest = h.hexdigest()
+    return key, kind, {"rc": rc, "stderr": text, "sha": digest}
+
+
+def same(x, y):
+    """Whether two results agree: exit status, output and stderr (a stderr
+    over STDERR_KEEP compared by its first STDERR_KEEP characters, which is
+    all a snapshot keeps of it)."""
+    return (x["rc"], x["sha"], x["stderr"][:STDERR_KEEP]) == (
+        y["rc"], y["sha"], y["stderr"][:STDERR_KEEP])
 
 
 def cmd_run(binary, outdir, only, kinds):
@@ -144,14 +169,14 @@ def cmd_diff(a_dir, b_dir, rerun):
     for key in sorted(set(a) & set(b)):
         for kind in sorted(set(a[key]) & set(b[key])):
             x, y = a[key][kind], b[key][kind]
-            if x == y:
+            if same(x, y):
                 continue
             if rerun and key in by_key:
                 with tempfile.TemporaryDirectory() as t:
                     os.makedirs(os.path.join(t, "files"))
                     _, _, again = run_one(os.path.abspath(rerun), by_key[key], kind, t)
                 again["stderr"] = again["stderr"].replace(t, a_dir)
-                if again != x:
+                if not same(again, x):
                     unstable += 1
                     print("unstable %s (%s)" % (key, kind))
                     continue
