@@ -243,7 +243,10 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
     std::vector<double> pts;
     std::vector<int> starts;
     try {
-        if (FT_Set_Char_Size(face, 0, (FT_F26Dot6)(p->size * SCALE), 100, 100)) {
+        /* A size whose 26.6 value is no long is one FreeType cannot take
+         * either (converting it would be undefined). */
+        double size = p->size * SCALE;
+        if (!(std::fabs(size) < 0x1p62) || FT_Set_Char_Size(face, 0, (FT_F26Dot6)size, 100, 100)) {
             set_err(err, errlen, "cannot set font size for font " + font);
             throw 2; /* OpenSCAD 2021.01 draws nothing and goes on */
         }
