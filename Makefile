@@ -3,7 +3,7 @@
 #   make deps     install the Debian packages (apt-get), only those missing
 #   make demo     deps + build + render models/demo.scad to out/demo.png
 #   make test     deps + build + every test (unit, language, against OpenSCAD)
-#   make asan     the same tests on a -fsanitize=address,undefined build
+#   make asan     the same tests on a -fsanitize=address,undefined,float-cast-overflow build
 #   make bench    rayscad against povray, openscad and manifold-3d (bench/run.py)
 # WERROR=1 turns warnings into errors (CI).
 
@@ -34,7 +34,7 @@ endif
 
 SANFLAGS =
 ifeq ($(SAN),1)
-SANFLAGS = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+SANFLAGS = -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=undefined,float-cast-overflow
 endif
 
 # No build path in what is built (debug information names files from here),
@@ -339,4 +339,4 @@ format-check:
 clean:
 	rm -rf build build-asan build-fuzz out
 
--include $(shell find $(BUILD) $(if $(filter fuzz,$(MAKECMDGOALS)),$(FUZZ)) -name '*.d' 2>/dev/null)
+-include $(shell find $(BUILD) $(if $(filter fuzz $(FUZZ)/%,$(MAKECMDGOALS)),$(FUZZ)) -name '*.d' 2>/dev/null)
