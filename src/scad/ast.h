@@ -91,9 +91,10 @@ typedef struct scad_loc {
 
 typedef struct scad_diag {
     const scad_options *opt;
-    const char *base_dir; /* the main file's folder with its '/', or "";
-                             stripped from paths in OpenSCAD's
-                             "in file x.scad, line N" */
+    const char *base_dir; /* the main file's folder with its '/', or "":
+                             OpenSCAD's "in file x.scad, line N" names
+                             files relative to it */
+    const char *cwd;      /* the working directory (absolute), or NULL */
     int errors;
     int warnings;
     scad_loc first_syntax; /* file NULL until a syntax error */
@@ -111,6 +112,9 @@ void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
  * it (RAYSCAD_MSG_TRACE): "<fmt> in file x.scad, line N". */
 void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* file as OpenSCAD names it in messages: relative to the main file's
+ * folder, lexically normalized, "../" where outside it; in buf (or file). */
+const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf, size_t size);
 /* Record where the first syntax error was, for scad_diag_parse_failed. */
 void scad_diag_syntax(scad_diag *d, scad_loc loc);
 /* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in
@@ -310,8 +314,8 @@ const scad_moddef *scad_scope_module(const scad_scope *s, const char *name);
 
 /* The file a `use <name>` / `include <name>` in file `from` refers to, in
  * OpenSCAD's search order: from's own folder, then each folder of
- * opt->library_path (':'-separated; NULL: $OPENSCADPATH), then
- * /usr/share/openscad/libraries.
+ * opt->library_path (':'-separated; NULL: $OPENSCADPATH), then the user's
+ * $HOME/.local/share/OpenSCAD/libraries, then /usr/share/openscad/libraries.
  * Absolute names are taken as they are.  Returns a path in the arena, or
  * NULL when no readable file is found. */
 char *scad_find_library(scad_arena *a, const scad_options *opt, const char *from, const char *name);

@@ -50,32 +50,87 @@ void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
     va_end(ap);
 }
 
-/* A file name as OpenSCAD prints it: relative to the main file's folder. */
-static const char *shown_file(const scad_diag *d, const char *file)
+/* The components of path (absolute, or relative to cwd), lexically
+ * normalized: no ".", no empty ones, ".." taking one away (none above the
+ * root), as OpenSCAD's paths are (symbolic links are not resolved).  Their
+ * starts and lengths go to at/len; returns their count (at most max). */
+static int components(const char *cwd, const char *path, const char **at, size_t *len, int max)
 {
+    int n = 0;
+    for (int pass = path[0] == '/' ? 1 : 0; pass < 2; pass++) {
+        const char *p = pass == 0 ? cwd : path;
+        while (*p) {
+            while (*p == '/')
+                p++;
+            const char *e = p;
+            while (*e && *e != '/')
+                e++;
+            size_t l = (size_t)(e - p);
+            if (l == 2 && p[0] == '.' && p[1] == '.') {
+                if (n > 0) n--;
+            } else if (l > 0 && !(l == 1 && p[0] == '.') && n < max) {
+                at[n] = p;
+                len[n++] = l;
+            }
+            p = e;
+        }
+    }
+    return n;
+}
+
+/* A file name as OpenSCAD prints it: relative to the main file's folder,
+ * with "../" where it lies outside, into buf. */
+static const char *shown_file(const scad_diag *d, const char *file, char *buf, size_t size)
+{
+    enum { MAXC = 256 };
     if (!file) return "?";
-    size_t n = d->base_dir ? strlen(d->base_dir) : 0;
-    if (n && strncmp(file, d->base_dir, n) == 0) file += n;
-    return file;
+    if (!d->cwd) { /* no working directory known: the folder's prefix off */
+        size_t n = d->base_dir ? strlen(d->base_dir) : 0;
+        return n && strncmp(file, d->base_dir, n) == 0 ? file + n : file;
+    }
+    const char *fa[MAXC], *ba[MAXC];
+    size_t fl[MAXC], bl[MAXC];
+    int nf = components(d->cwd, file, fa, fl, MAXC);
+    int nb = components(d->cwd, d->base_dir ? d->base_dir : "", ba, bl, MAXC);
+    int common = 0;
+    while (common < nf - 1 && common < nb && fl[common] == bl[common] &&
+           memcmp(fa[common], ba[common], fl[common]) == 0)
+        common++;
+    size_t k = 0;
+    for (int i = common; i < nb && k + 3 < size; i++, k += 3)
+        memcpy(buf + k, "../", 3);
+    for (int i = common; i < nf && k + fl[i] + 1 < size; i++) {
+        memcpy(buf + k, fa[i], fl[i]);
+        k += fl[i];
+        if (i + 1 < nf) buf[k++] = '/';
+    }
+    buf[k] = 0;
+    return buf;
+}
+
+const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf, size_t size)
+{
+    return shown_file(d, file, buf, size);
 }
 
 static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
 {
-    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];
     vsnprintf(msg, sizeof msg, fmt, ap);
-    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg, shown_file(d, loc.file),
-             loc.line);
+    snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg,
+             shown_file(d, loc.file, name, sizeof name), loc.line);
     scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
 }
 
 void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
-    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256];
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(line, sizeof line, "%s in file %s, line %d", msg, shown_file(d, loc.file), loc.line);
+    snprintf(line, sizeof line, "%s in file %s, line %d", msg,
+             shown_file(d, loc.file, name, sizeof name), loc.line);
     scad_diag_line(d, RAYSCAD_MSG_TRACE, line);
 }
 

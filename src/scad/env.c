@@ -175,10 +175,26 @@ void scad_env_set(scad_env *env, const char *name, scad_value v)
     }
 }
 
+/* The $-variables set in from and its lexical parents up to stop (inclusive)
+ * copied into to, the innermost of each name winning, where to does not
+ * set them already. */
+void scad_env_copy_specials(scad_env *to, scad_env *from, const scad_env *stop)
+{
+    for (scad_env *e = from; e; e = e->parent) {
+        for (int i = 0; i < e->nvars; i++)
+            if (e->vars[i].name[0] == '$' && !env_find(to, e->vars[i].name))
+                scad_env_set(to, e->vars[i].name, scad_value_ref(e->vars[i].v));
+        if (e == stop) break;
+    }
+}
+
 scad_value scad_env_lookup(scad_eval *ev, scad_env *env, const char *name, scad_loc loc, int silent,
                            int *found)
 {
-    int special = name[0] == '$';
+    /* $children is the count of the module whose body holds the
+     * reference, a lexical variable (inside a child block it is the
+     * caller's); every other $-variable is dynamic */
+    int special = name[0] == '$' && name != ev->sym_children;
     int k = special ? special_index(name) : -1;
     if (k >= 0) { /* a well-known one: where it is, at once */
         scad_var *v = env->special[k] ? env_find(env->special[k], name) : NULL;

@@ -202,6 +202,9 @@ typedef struct scad_vlist {
 } scad_vlist;
 
 /* Append v (taken) as one step of work, within the list limit. */
+/* OpenSCAD's Expression::isLiteral: constants, and vectors and ranges of
+ * constants. */
+int scad_expr_is_literal(const scad_expr *e);
 void scad_vlist_push(scad_eval *ev, scad_vlist *l, scad_value v, scad_loc loc);
 /* The list as a vector value; l is emptied. */
 scad_value scad_vlist_take(scad_vlist *l);
@@ -224,6 +227,10 @@ scad_value scad_env_lookup_cstr(scad_eval *ev, scad_env *env, const char *name, 
 /* Set (or replace) the variable of the interned name in env; takes
  * ownership of v. */
 void scad_env_set(scad_env *env, const char *name, scad_value v);
+
+/* The $-variables set in from and its lexical parents up to stop copied
+ * into to where it does not set them (a tail call keeps its caller's). */
+void scad_env_copy_specials(scad_env *to, scad_env *from, const scad_env *stop);
 
 /* Bind a call to parameters in two steps, in OpenSCAD 2021.01's order:
  * scad_bind_defaults evaluates every default in def_env (given or not);

@@ -221,6 +221,9 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
                                 "calls)",
                                 name, MAX_TAIL_CALLS);
             } else if ((next = scad_env_new(ev, def_env, env, NULL))) {
+                /* the frame being left is the call's dynamic parent: its
+                 * $-variables ($fn given to the first call) go on */
+                scad_env_copy_specials(next, cur, fe);
                 scad_bind_defaults(ev, next, def_env, params);
                 if (scad_args_bind(ev, cur, &tail->args, &argv, 1, params, params->n, tail->loc)) {
                     scad_env_free(next);

@@ -409,6 +409,30 @@ int scad_check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_
     return ok ? 0 : -1;
 }
 
+/* OpenSCAD's Expression::isLiteral: constants, unary operators on them, and
+ * vectors and ranges of them. */
+int scad_expr_is_literal(const scad_expr *e)
+{
+    switch (e->kind) {
+    case EX_NUMBER:
+    case EX_STRING:
+    case EX_BOOL:
+    case EX_UNDEF:
+        return 1;
+    case EX_UNARY:
+        return scad_expr_is_literal(e->a[0]);
+    case EX_VECTOR:
+        for (int i = 0; i < e->n; i++)
+            if (!scad_expr_is_literal(e->list[i])) return 0;
+        return 1;
+    case EX_RANGE:
+        return scad_expr_is_literal(e->a[0]) && (!e->a[1] || scad_expr_is_literal(e->a[1])) &&
+               scad_expr_is_literal(e->a[2]);
+    default:
+        return 0;
+    }
+}
+
 static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, scad_vlist *out);
 
 /* for (a = …, b = …) in a comprehension: nested, each level evaluated in
@@ -473,13 +497,14 @@ static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, scad_vlist
                 break;
             }
             lc_eval(ev, ie, e->a[0], out);
-            /* the update reads the old values and makes a new environment */
+            /* the updates run in order in a new environment, each seeing
+             * the ones before it (OpenSCAD's sequential assignment) */
             scad_env *ne = scad_env_new(ev, env, env, NULL);
             if (!ne) break;
             for (int i = 0; i < ie->nvars; i++)
                 scad_env_set(ne, ie->vars[i].name, scad_value_ref(ie->vars[i].v));
             for (int i = 0; i < e->args2.n && !ev->aborted; i++) {
-                scad_value v = scad_eval_expr(ev, ie, e->args2.v[i].value);
+                scad_value v = scad_eval_expr(ev, ne, e->args2.v[i].value);
                 if (e->args2.v[i].name)
                     scad_env_set(ne, e->args2.v[i].name, v);
                 else
@@ -544,10 +569,13 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
     case EX_VAR:
         return scad_value_ref(scad_env_lookup(ev, env, e->str, e->loc, 0, NULL));
     case EX_RANGE: {
-        /* OpenSCAD 2021.01's order: begin, end, step */
+        /* OpenSCAD 2021.01's order: begin, then end if begin is a number,
+         * then step if both are; the sign warnings only for literal ranges */
         scad_value b = scad_eval_expr(ev, env, e->a[0]);
-        scad_value en = scad_eval_expr(ev, env, e->a[2]);
-        scad_value s = e->a[1] ? scad_eval_expr(ev, env, e->a[1]) : scad_num(1);
+        scad_value en = b.kind == SV_NUM ? scad_eval_expr(ev, env, e->a[2]) : scad_undef();
+        scad_value s = en.kind != SV_NUM ? scad_undef()
+                       : e->a[1]         ? scad_eval_expr(ev, env, e->a[1])
+                                         : scad_num(1);
         scad_value r = scad_undef();
         if (b.kind == SV_NUM && s.kind == SV_NUM && en.kind == SV_NUM) {
             double bb = b.u.num, ss = s.u.num, ee = en.u.num;
@@ -558,12 +586,13 @@ scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e)
                 double t = bb;
                 bb = ee;
                 ee = t;
-            } else if (e->a[1] && ss < 0 && bb < ee) {
-                scad_diag_warning(ev->d, e->loc,
-                                  "begin is smaller than the end, but step is negative");
-            } else if (e->a[1] && ss > 0 && bb > ee) {
-                scad_diag_warning(ev->d, e->loc,
-                                  "begin is greater than the end, but step is positive");
+            } else if (e->a[1] && scad_expr_is_literal(e)) {
+                if (ss < 0 && bb < ee)
+                    scad_diag_warning(ev->d, e->loc,
+                                      "begin is smaller than the end, but step is negative");
+                else if (ss > 0 && bb > ee)
+                    scad_diag_warning(ev->d, e->loc,
+                                      "begin is greater than the end, but step is positive");
             }
             r = scad_range_new(bb, ss, ee);
         }

@@ -204,27 +204,6 @@ scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return child_scope(ev, env, env, st->children, state, op, NULL, 0);
 }
 
-/* OpenSCAD's Expression::isLiteral: constants, and vectors and ranges of
- * constants. */
-static int is_literal(const scad_expr *e)
-{
-    switch (e->kind) {
-    case EX_NUMBER:
-    case EX_STRING:
-    case EX_BOOL:
-    case EX_UNDEF:
-        return 1;
-    case EX_VECTOR:
-        for (int i = 0; i < e->n; i++)
-            if (!is_literal(e->list[i])) return 0;
-        return 1;
-    case EX_RANGE:
-        return is_literal(e->a[0]) && (!e->a[1] || is_literal(e->a[1])) && is_literal(e->a[2]);
-    default:
-        return 0;
-    }
-}
-
 static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_moddef *m, scad_env *def_env, const scad_state *state)
 {
@@ -260,7 +239,7 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     scad_env_set(me, ev->sym_parent_modules, scad_num(ev->module_depth));
     for (int i = 0; i < m->body->nassigns; i++) {
         const scad_assign *as = &m->body->assigns[i];
-        if (!is_literal(as->value)) continue;
+        if (!scad_expr_is_literal(as->value)) continue;
         for (int k = 0; k < m->params.n; k++)
             if (m->params.v[k].name == as->name)
                 scad_diag_warning(ev->d, as->loc,
@@ -365,27 +344,31 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return r;
 }
 
-/* for / intersection_for: nested loops over the arguments, evaluated once
- * in the caller's environment (as OpenSCAD does). */
-static void for_loop(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a, int k,
-                     scad_env *cur, const scad_state *state, gather *out)
+/* for / intersection_for: nested loops over the arguments, each evaluated in
+ * the environment of the loops outside it (for (i = [0:2], j = [i:2])), once
+ * per outer iteration, as OpenSCAD does. */
+static void for_loop(scad_eval *ev, const scad_stmt *st, int k, scad_env *cur,
+                     const scad_state *state, gather *out)
 {
     if (ev->aborted) return;
-    if (k == a->n) {
+    if (k == st->args.n) {
         gather_add(ev, out, child_scope(ev, cur, cur, st->children, state, CSG_OP_UNION, NULL, 0));
         return;
     }
+    const scad_arg *arg = &st->args.v[k];
+    scad_value src = scad_eval_expr(ev, cur, arg->value);
     scad_vlist items = {0};
-    if (scad_iter_values(ev, a->v[k], a->locs[k], &items) > 0) {
+    if (scad_iter_values(ev, src, arg->loc, &items) > 0) {
         for (int i = 0; i < items.n && !ev->aborted; i++) {
             scad_env *ie = scad_env_new(ev, cur, cur, NULL);
             if (!ie) break;
-            if (a->names[k]) scad_env_set(ie, a->names[k], scad_value_ref(items.v[i]));
-            for_loop(ev, env, st, a, k + 1, ie, state, out);
+            if (arg->name) scad_env_set(ie, arg->name, scad_value_ref(items.v[i]));
+            for_loop(ev, st, k + 1, ie, state, out);
             scad_env_free(ie);
         }
     }
     scad_vlist_free(&items);
+    scad_value_drop(src);
 }
 
 /* The interned parameters of builtin module d (registry index id), made on
@@ -517,6 +500,12 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_diag_warning(ev->d, st->loc, "Ignoring unknown module '%s'", name);
         return NULL;
     }
+    if (is_for || is_ifor) {
+        gather g = {0};
+        for_loop(ev, st, 0, env, state, &g);
+        scad_geom *r = finish(ev, &g, is_for ? CSG_OP_UNION : CSG_OP_INTERSECTION);
+        return ev->dump ? scad_dump_node(ev, is_for ? "group()" : "intersection()", r) : r;
+    }
     scad_argv a;
     if (scad_args_eval(ev, env, &st->args, &a)) return NULL;
     scad_geom *r = NULL;
@@ -530,11 +519,6 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
     if (dollar) env = dollar;
     if (ev->aborted) {
         /* nothing */
-    } else if (is_for || is_ifor) {
-        gather g = {0};
-        for_loop(ev, env, st, &a, 0, env, state, &g);
-        r = finish(ev, &g, is_for ? CSG_OP_UNION : CSG_OP_INTERSECTION);
-        if (ev->dump) r = scad_dump_node(ev, is_for ? "group()" : "intersection()", r);
     } else if (keyword == TK_ECHO) {
         scad_echo_line(ev, &a);
         r = scad_eval_children(ev, env, st, state, CSG_OP_UNION);

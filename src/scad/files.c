@@ -80,6 +80,13 @@ char *scad_find_library(scad_arena *a, const scad_options *opt, const char *from
         }
         dirs += n + (end ? 1 : 0);
     }
+    /* then the user's library folder, then the installation's */
+    const char *home = getenv("HOME");
+    if (home && *home) {
+        char *user = join_path(a, home, strlen(home), ".local/share/OpenSCAD/libraries");
+        p = user ? join_path(a, user, strlen(user), name) : NULL;
+        if (p && scad_file_stat(opt, p, NULL)) return p;
+    }
     p = join_path(a, "/usr/share/openscad/libraries", 29, name);
     if (p && scad_file_stat(opt, p, NULL)) return p;
     return NULL;

@@ -100,15 +100,32 @@ static scad_scope *new_scope(parser *P)
 
 static int statement(parser *P, scad_scope *s);
 
+/* An assignment to a name the scope assigns already replaces it, in place;
+ * OpenSCAD 2021.01 warns when both are in the main file, when both are in
+ * one other file on different lines (not a file included twice), and when
+ * an include overrides the main file, never when the main file overrides
+ * an include. */
 static void add_assign(parser *P, scad_scope *s, const char *name, scad_expr *value, scad_loc loc)
 {
     for (int i = 0; i < s->nassigns; i++) {
-        if (s->assigns[i].name == name) {
+        if (s->assigns[i].name != name) continue;
+        /* files compared as OpenSCAD names them (one file reached by two
+         * paths is one) */
+        scad_loc was = s->assigns[i].loc;
+        char m[1024], w[1024], c[1024];
+        const char *main = scad_diag_file_name(P->d, P->shared->main_file, m, sizeof m);
+        const char *wf = scad_diag_file_name(P->d, was.file, w, sizeof w);
+        const char *cf = scad_diag_file_name(P->d, loc.file, c, sizeof c);
+        int was_main = strcmp(wf, main) == 0, same = strcmp(wf, cf) == 0;
+        if (was_main && same)
             scad_diag_warning(P->d, loc, "%s was assigned on line %d but was overwritten", name,
-                              s->assigns[i].loc.line);
-            s->assigns[i].value = value;
-            return;
-        }
+                              was.line);
+        else if ((same && was.line != loc.line) || was_main)
+            scad_diag_warning(P->d, loc, "%s was assigned on line %d of \"%s\" but was overwritten",
+                              name, was.line, wf);
+        s->assigns[i].value = value;
+        s->assigns[i].loc = loc;
+        return;
     }
     s->assigns = scad_parse_grow(P, s->assigns, s->nassigns, &s->capassigns, sizeof *s->assigns);
     if (!s->assigns) return;
@@ -417,7 +434,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
 scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,
                        const char *src)
 {
-    shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0};
+    shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file};
     parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);

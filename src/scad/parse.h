@@ -33,6 +33,7 @@ typedef struct shared {
     int n, cap;
     scad_scope **defining;
     int ndefining, capdefining;
+    const char *main_file; /* the file the parse began with */
 } shared;
 
 /* Raised by a failing rule: the whole statement is abandoned. */

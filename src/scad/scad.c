@@ -17,6 +17,7 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "eval.h"
 #include "registry.h"
@@ -174,6 +175,7 @@ static void run_job(job *j)
         set_num(&ev, builtins, "$t", 0);
         set_value(&ev, builtins, "$preview", scad_bool(1));
         set_num(&ev, builtins, "$vpd", 500);
+        set_num(&ev, builtins, "$vpf", 22.5);
         set_vec3(&ev, builtins, "$vpr", 0, 0, 0);
         set_vec3(&ev, builtins, "$vpt", 0, 0, 0);
     }
@@ -315,6 +317,8 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
     d.opt = opt;
     const char *slash = strrchr(name, '/');
     d.base_dir = slash ? scad_arena_strndup(a, name, (size_t)(slash - name + 1)) : "";
+    char cwd[4096];
+    if (getcwd(cwd, sizeof cwd)) d.cwd = scad_arena_strndup(a, cwd, strlen(cwd));
     scad_names *names = scad_names_new(a);
     if (!names) {
         scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
