@@ -51,9 +51,9 @@ static scad_value f_unary(scad_eval *ev, const scad_argv *a, scad_loc loc, const
     switch (name[0]) {
     case 'a':
         if (!strcmp(name, "abs")) return scad_num(fabs(x));
-        if (!strcmp(name, "asin")) return scad_num(asin(x) * 180.0 / IV_PI);
-        if (!strcmp(name, "acos")) return scad_num(acos(x) * 180.0 / IV_PI);
-        return scad_num(atan(x) * 180.0 / IV_PI);
+        if (!strcmp(name, "asin")) return scad_num(iv_asin_degrees(x));
+        if (!strcmp(name, "acos")) return scad_num(iv_acos_degrees(x));
+        return scad_num(iv_atan_degrees(x));
     case 's':
         if (!strcmp(name, "sin")) return scad_num(iv_sin_degrees(x));
         if (!strcmp(name, "sqrt")) return scad_num(sqrt(x));
@@ -79,7 +79,7 @@ static scad_value f_atan2(scad_eval *ev, const scad_argv *a, scad_loc loc, const
 {
     double x[2];
     if (!nums(ev, a, loc, name, 2, x)) return scad_undef();
-    return scad_num(atan2(x[0], x[1]) * 180.0 / IV_PI);
+    return scad_num(iv_atan2_degrees(x[0], x[1]));
 }
 
 static scad_value f_pow(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
