@@ -108,8 +108,9 @@ typedef struct scad_eval {
     char *stack_base;
     size_t stack_budget;
     scad_env *captured;
-    unsigned long rand_state;
-    scad_geom *root; /* the first '!' subtree */
+    unsigned long rand_seed;  /* the clock's, for rands() without a seed */
+    struct scad_mt19937 *rng; /* rands()'s engine (math.c), made on first use */
+    scad_geom *root;          /* the first '!' subtree */
     int has_root;
     scad_geom **highlights;
     int nhighlights, caphighlights;

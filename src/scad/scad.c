@@ -146,7 +146,7 @@ static void run_job(job *j)
     ev.stack_base = &base;
     ev.stack_budget =
         j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;
-    ev.rand_state = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
+    ev.rand_seed = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
     ev.dump = j->dump != NULL;
     ev.at = (scad_loc){j->name, 1, 1};
     j->status = -1;

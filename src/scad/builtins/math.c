@@ -8,9 +8,11 @@
  * of 30 and 45 degrees where OpenSCAD's sin_degrees/cos_degrees are
  * (src/intervals/angles.c).  registry.c finds them by name.
  */
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -378,16 +380,18 @@ static scad_value f_lookup(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
     return scad_num(high_v * f + low_v * (1 - f));
 }
 
-/* ---- rands: std::mt19937 seeded with the seed as an unsigned, and
- * libstdc++'s uniform_real_distribution (two 32-bit draws per double), so
- * that a seeded rands() gives OpenSCAD's numbers. */
+/* ---- rands: OpenSCAD 2021.01's one std::mt19937 for the whole evaluation
+ * (seeded from the clock at the start; a seed given to rands() reseeds it,
+ * so the unseeded calls after a seeded one repeat too), seeds hashed to 32
+ * bits as Python hashes floats, and libstdc++'s uniform_real_distribution
+ * (two 32-bit draws per double). */
 
-typedef struct mt19937 {
+typedef struct scad_mt19937 {
     uint32_t s[624];
     int i;
-} mt19937;
+} scad_mt19937;
 
-static void mt_seed(mt19937 *m, uint32_t seed)
+static void mt_seed(scad_mt19937 *m, uint32_t seed)
 {
     m->s[0] = seed;
     for (int i = 1; i < 624; i++)
@@ -395,7 +399,7 @@ static void mt_seed(mt19937 *m, uint32_t seed)
     m->i = 624;
 }
 
-static uint32_t mt_next(mt19937 *m)
+static uint32_t mt_next(scad_mt19937 *m)
 {
     if (m->i >= 624) {
         for (int k = 0; k < 624; k++) {
@@ -412,7 +416,7 @@ static uint32_t mt_next(mt19937 *m)
     return y;
 }
 
-static double mt_canonical(mt19937 *m)
+static double mt_canonical(scad_mt19937 *m)
 {
     double lo = (double)mt_next(m);
     double hi = (double)mt_next(m);
@@ -421,36 +425,107 @@ static double mt_canonical(mt19937 *m)
     return r;
 }
 
+/* OpenSCAD's hash_floating_point: CPython's hash of a float with a 31-bit
+ * modulus (so whole seeds hash to themselves), in 32-bit unsigned
+ * arithmetic as it is there, without CPython's final -1 -> -2 step. */
+static uint32_t seed_hash(double v)
+{
+    const uint32_t mod = (1u << 31) - 1;
+    if (isnan(v)) return 0;
+    if (isinf(v)) return v > 0 ? 314159u : 0u - 314159u;
+    int e;
+    double m = frexp(v, &e);
+    uint32_t sign = 1;
+    if (m < 0) {
+        sign = 0u - 1u;
+        m = -m;
+    }
+    uint32_t x = 0;
+    while (m != 0) { /* 28 bits at a time */
+        x = ((x << 28) & mod) | x >> (31 - 28);
+        m *= 268435456.0;
+        e -= 28;
+        uint32_t y = (uint32_t)m;
+        m -= y;
+        x += y;
+        if (x >= mod) x -= mod;
+    }
+    e = e >= 0 ? e % 31 : 31 - 1 - ((-1 - e) % 31);
+    x = ((x << e) & mod) | x >> (31 - e);
+    return x * sign;
+}
+
+/* The evaluation's engine, made (and seeded from the clock) on first use. */
+static scad_mt19937 *engine(scad_eval *ev)
+{
+    if (!ev->rng) {
+        ev->rng = scad_arena_alloc(ev->arena, sizeof *ev->rng);
+        if (ev->rng) mt_seed(ev->rng, (uint32_t)ev->rand_seed);
+    }
+    return ev->rng;
+}
+
+/* "WARNING: <line>" without a location, as OpenSCAD's follow-up lines. */
+static void bare_warning(scad_eval *ev, const char *fmt, double x)
+{
+    char line[512];
+    int n = snprintf(line, sizeof line, "WARNING: ");
+    snprintf(line + n, sizeof line - (size_t)n, fmt, x);
+    scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, line);
+}
+
+/* In OpenSCAD 2021.01's order: a wrong count warns; a non-number argument
+ * gives undef silently, checked one at a time between the range warnings. */
 static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    double lo, hi, cnt;
-    if (a->n < 3 || a->n > 4 || !get_num(a->v[0], &lo) || !get_num(a->v[1], &hi) ||
-        !get_num(a->v[2], &cnt)) {
-        conv_warning(ev, loc, name);
+    if (a->n < 3 || a->n > 4) {
+        count_warning(ev, loc, name);
         return scad_undef();
     }
-    mt19937 *m = malloc(sizeof *m);
-    if (!m) return scad_undef();
-    double seed;
-    if (a->n == 4 && get_num(a->v[3], &seed)) {
-        /* OpenSCAD: seed((unsigned)seed); NaN and values past int64 become
-         * INT64_MIN as on x86-64, without the undefined conversion */
-        int64_t s64 = isnan(seed) || seed >= 9.2e18 || seed <= -9.2e18 ? INT64_MIN : (int64_t)seed;
-        mt_seed(m, (uint32_t)s64);
-    } else {
-        ev->rand_state = ev->rand_state * 6364136223846793005ul + 1442695040888963407ul;
-        mt_seed(m, (uint32_t)(ev->rand_state >> 32));
+    if (a->v[0].kind != SV_NUM) return scad_undef();
+    double lo = a->v[0].u.num;
+    if (!isfinite(lo)) {
+        scad_diag_warning(ev->d, loc, "rands() range min cannot be infinite");
+        lo = -DBL_MAX / 2;
+        bare_warning(ev, "resetting to %f", lo);
     }
-    if (!(cnt >= 0)) cnt = 0;
-    if (cnt > 1000000) cnt = 1000000;
-    int n = (int)cnt;
+    if (a->v[1].kind != SV_NUM) return scad_undef();
+    double hi = a->v[1].u.num;
+    if (!isfinite(hi)) {
+        scad_diag_warning(ev->d, loc, "rands() range max cannot be infinite");
+        hi = DBL_MAX / 2;
+        bare_warning(ev, "resetting to %f", hi);
+    }
+    if (hi < lo) {
+        double t = lo;
+        lo = hi;
+        hi = t;
+    }
+    if (a->v[2].kind != SV_NUM) return scad_undef();
+    double count = fabs(a->v[2].u.num);
+    if (!isfinite(count)) {
+        scad_diag_warning(ev->d, loc, "rands() cannot create an infinite number of results");
+        scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, "WARNING: resetting number of results to 1");
+        count = 1;
+    }
+    if (a->n == 4 && a->v[3].kind != SV_NUM) return scad_undef();
+    /* every value is a step of work: a count past the limits stops there */
+    if (count > ev->max_list ||
+        scad_eval_steps(ev, (long)count, loc, "the values rands() makes") != 0) {
+        if (!ev->aborted) scad_eval_error(ev, loc, "rands() cannot make %.0f values", floor(count));
+        return scad_undef();
+    }
+    scad_mt19937 *m = engine(ev);
+    if (!m) {
+        scad_eval_error(ev, loc, "out of memory");
+        return scad_undef();
+    }
+    if (a->n == 4) mt_seed(m, seed_hash(a->v[3].u.num));
+    int n = (int)count;
     scad_value r = scad_vec_new(n);
-    if (r.kind == SV_VEC) {
-        double a0 = lo < hi ? lo : hi, b0 = lo < hi ? hi : lo;
+    if (r.kind == SV_VEC)
         for (int i = 0; i < n; i++)
-            r.u.vec->v[i] = scad_num(mt_canonical(m) * (b0 - a0) + a0);
-    }
-    free(m);
+            r.u.vec->v[i] = scad_num(lo >= hi ? lo : mt_canonical(m) * (hi - lo) + lo);
     return r;
 }
 
