@@ -115,6 +115,9 @@ void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
 /* file as OpenSCAD names it in messages: relative to the main file's
  * folder, lexically normalized, "../" where outside it; in buf (or file). */
 const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf, size_t size);
+/* file as an absolute, lexically normalized path in buf: one file reached
+ * by two spellings has one key. */
+const char *scad_diag_file_key(const scad_diag *d, const char *file, char *buf, size_t size);
 /* Record where the first syntax error was, for scad_diag_parse_failed. */
 void scad_diag_syntax(scad_diag *d, scad_loc loc);
 /* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in

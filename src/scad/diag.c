@@ -113,6 +113,22 @@ const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf,
     return shown_file(d, file, buf, size);
 }
 
+const char *scad_diag_file_key(const scad_diag *d, const char *file, char *buf, size_t size)
+{
+    enum { MAXC = 256 };
+    const char *at[MAXC];
+    size_t len[MAXC];
+    int n = components(d->cwd ? d->cwd : "", file, at, len, MAXC);
+    size_t k = 0;
+    for (int i = 0; i < n && k + len[i] + 2 < size; i++) {
+        buf[k++] = '/';
+        memcpy(buf + k, at[i], len[i]);
+        k += len[i];
+    }
+    buf[k] = 0;
+    return buf;
+}
+
 static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];

@@ -376,7 +376,11 @@ void scad_echo_line(scad_eval *ev, const scad_argv *a)
         if (a->names[i]) scad_buf_printf(&b, "%s = ", a->names[i]);
         scad_value_format(&b, a->v[i], 1);
     }
-    scad_diag_line(ev->d, RAYSCAD_MSG_ECHO, scad_buf_str(&b));
+    if (b.too_deep)
+        scad_eval_error(ev, scad_eval_here(ev), "a vector nested %d deep cannot be printed (echo)",
+                        SCAD_MAX_NESTING);
+    else
+        scad_diag_line(ev->d, RAYSCAD_MSG_ECHO, scad_buf_str(&b));
     scad_buf_free(&b);
 }
 

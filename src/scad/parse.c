@@ -404,7 +404,10 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         u->path[u->n] = path;
         u->scope[u->n] = scope;
         u->n++;
+        const struct open_include *open = P->open;
+        P->open = NULL; /* a used file is a parse of its own */
         parse_file_into(P, scope, u->names, path, src, 0);
+        P->open = open;
     }
     for (int i = 0; i < s->nuses; i++)
         if (s->uses[i] == scope) return;
@@ -420,6 +423,10 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
         return;
     }
     char *path = scad_find_library(P->a, P->shared->opt, t->loc.file, t->text);
+    char key[4096];
+    if (path) scad_diag_file_key(P->d, path, key, sizeof key);
+    for (const struct open_include *o = P->open; path && o; o = o->up)
+        if (strcmp(o->key, key) == 0) path = NULL; /* a file including itself */
     char err[256];
     char *src = path ? scad_read_file(P->a, P->shared->opt, path, err, sizeof err) : NULL;
     if (!src) {
@@ -428,14 +435,17 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
         scad_diag_line(P->d, RAYSCAD_MSG_WARNING, line);
         return;
     }
+    struct open_include here = {key, P->open};
+    P->open = &here;
     parse_file_into(P, s, P->shared->names, path, src, P->depth);
+    P->open = here.up;
 }
 
 scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,
                        const char *src)
 {
     shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file};
-    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, &sh};
+    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, NULL, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);
     if (!P.t) {

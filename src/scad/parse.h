@@ -9,6 +9,11 @@
 
 enum { MAX_DEPTH = 2000, MAX_ERRORS = 50 };
 
+struct open_include {
+    const char *key;
+    const struct open_include *up;
+};
+
 typedef struct parser {
     scad_arena *a;
     scad_diag *d;
@@ -18,6 +23,9 @@ typedef struct parser {
     int errors;
     int oom;
     int include_depth;
+    /* the files being included (keys, innermost first): including one of
+     * them again fails, as openscad 2021.01's circular-include check */
+    const struct open_include *open;
     struct shared *shared; /* one for a parse and its includes and uses */
 } parser;
 

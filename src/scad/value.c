@@ -531,7 +531,7 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
     }
 }
 
-void scad_value_format(scad_buf *b, scad_value v, int quote_strings)
+static void format_at(scad_buf *b, scad_value v, int quote_strings, int depth)
 {
     switch (v.kind) {
     case SV_UNDEF:
@@ -549,10 +549,14 @@ void scad_value_format(scad_buf *b, scad_value v, int quote_strings)
         if (quote_strings) scad_buf_puts(b, "\"");
         break;
     case SV_VEC:
+        if (depth >= SCAD_MAX_NESTING) {
+            b->too_deep = 1;
+            return;
+        }
         scad_buf_puts(b, "[");
-        for (int i = 0; i < v.u.vec->n; i++) {
+        for (int i = 0; i < v.u.vec->n && !b->too_deep; i++) {
             if (i) scad_buf_puts(b, ", ");
-            scad_value_format(b, v.u.vec->v[i], 1);
+            format_at(b, v.u.vec->v[i], 1, depth + 1);
         }
         scad_buf_puts(b, "]");
         break;
@@ -569,4 +573,9 @@ void scad_value_format(scad_buf *b, scad_value v, int quote_strings)
         scad_expr_format(b, v.u.func->lit);
         break;
     }
+}
+
+void scad_value_format(scad_buf *b, scad_value v, int quote_strings)
+{
+    format_at(b, v, quote_strings, 0);
 }

@@ -119,6 +119,7 @@ typedef struct scad_buf {
     char *p;
     size_t n, cap;
     int oom, too_long;
+    int too_deep; /* scad_value_format met a vector nested SCAD_MAX_NESTING deep */
     size_t limit;
 } scad_buf;
 
@@ -135,6 +136,12 @@ const char *scad_buf_str(scad_buf *b);
 void scad_format_number(double d, char *buf);
 /* v as echo() and str() print it; quote_strings: strings in quotes (echo,
  * and any string inside a vector). */
+/* Vectors nested this deep are not printed: the text would be quadratic
+ * in the nesting of a recursion that wraps a value each call (openscad
+ * 2021.01 crashes there, its stack exhausted at about 22,000 levels). */
+enum { SCAD_MAX_NESTING = 10000 };
+/* v as OpenSCAD prints it; strings quoted or not; b->too_deep when v is
+ * nested SCAD_MAX_NESTING deep (the text then stops short). */
 void scad_value_format(scad_buf *b, scad_value v, int quote_strings);
 /* An operator's text: "<=" for TK_LE, "+" for '+' (written into buf, which
  * must hold 2 bytes, when one character). */

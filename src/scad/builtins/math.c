@@ -237,8 +237,14 @@ static scad_value f_str(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
 {
     (void)name;
     scad_buf b = {.limit = (size_t)ev->max_string};
-    for (int i = 0; i < a->n && !b.oom; i++)
+    for (int i = 0; i < a->n && !b.oom && !b.too_deep; i++)
         scad_value_format(&b, a->v[i], 0);
+    if (b.too_deep) {
+        scad_eval_error(ev, loc, "a vector nested %d deep cannot be printed (str)",
+                        SCAD_MAX_NESTING);
+        scad_buf_free(&b);
+        return scad_undef();
+    }
     if (b.oom) {
         if (b.too_long)
             scad_eval_error(ev, loc, "string longer than %d bytes (str)", ev->max_string);

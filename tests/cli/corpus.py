@@ -1,0 +1,278 @@
+#!/usr/bin/env python3
+"""Real OpenSCAD code against the real openscad 2021.01 (`make corpus`).
+
+  corpus.py BUILD [--only GLOB] [--jobs N] [--update]
+
+The two corpora of ../shared/corpora (see its README):
+  openscad-tests/data/scad/**.scad  .echo and .csg
+  BOSL2 tests/*.scadtest             .echo of every [[test]] script, written
+                                     into a scratch copy of BOSL2 so that its
+                                     include <../std.scad> resolves
+Each file runs in its own folder with OPENSCADPATH at the corpora root, under
+both programs, 2 jobs at a time.  .echo is compared byte for byte, .csg token
+by token as tests/cli/conformance.sh does (numbers within 1e-9 relative).
+openscad's outputs are kept in BUILD/corpus/ref and reused while newer than
+their input.
+
+A mismatch fails when tests/lang/known_differences.txt does not list it
+(openscad broken, or rayscad deliberately different) and
+tests/corpus/passing.txt does: that list is every file that matched when it
+was last written (--update rewrites it from this run), so the count can only
+rise.  A file that matches and is not on the list is reported as new.  rayscad
+taking over 10 s or 2 GB where openscad takes under is a failure too.
+
+Counts, each mismatch and each new match are printed; every result (with both
+programs' CPU time and peak memory) is in BUILD/corpus/results.json.
+"""
+import fnmatch
+import json
+import os
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import tomllib
+from concurrent.futures import ThreadPoolExecutor
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+CORPORA = os.path.abspath(os.environ.get("RAYSCAD_CORPORA",
+                                         os.path.join(ROOT, "..", "shared", "corpora")))
+KNOWN = os.path.join(ROOT, "tests", "lang", "known_differences.txt")
+PASSING = os.path.join(ROOT, "tests", "corpus", "passing.txt")
+TIMEOUT = 120           # seconds a run may take before it is stopped
+SLOW = 10.0             # seconds of CPU ...
+HEAVY = 2 << 30         # ... or bytes of memory beyond which rayscad must not go alone
+MEMORY_CAP = 6 << 30    # address space either program may map
+
+
+def bosl2_tests(scratch):
+    """(key, path) of every BOSL2 [[test]] script, written into scratch/BOSL2."""
+    src = os.path.join(CORPORA, "BOSL2")
+    dst = os.path.join(scratch, "BOSL2")
+    if not os.path.isdir(dst):
+        shutil.copytree(src, dst, ignore=shutil.ignore_patterns("*.scadtest"))
+    out = []
+    for t in sorted(os.listdir(os.path.join(src, "tests"))):
+        if not t.endswith(".scadtest"):
+            continue
+        with open(os.path.join(src, "tests", t), "rb") as f:
+            doc = tomllib.load(f)
+        for i, test in enumerate(doc.get("test", [])):
+            name = "%s__%03d_%s.scad" % (t[:-len(".scadtest")], i, test.get("name", "x"))
+            path = os.path.join(dst, "tests", name)
+            text = test["script"]
+            old = None
+            if os.path.exists(path):
+                with open(path) as f:
+                    old = f.read()
+            if old != text:
+                with open(path, "w") as f:
+                    f.write(text)
+            out.append(("BOSL2/tests/" + name, path))
+    return out
+
+
+def openscad_tests():
+    base = os.path.join(CORPORA, "openscad-tests", "data", "scad")
+    out = []
+    for d, _, names in os.walk(base):
+        for n in names:
+            if n.endswith(".scad"):
+                p = os.path.join(d, n)
+                out.append(("openscad-tests/" + os.path.relpath(p, base), p))
+    return sorted(out)
+
+
+def limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_CAP, MEMORY_CAP))
+
+
+def run(argv, cwd, out):
+    """Run argv in cwd writing out; (exit status, CPU seconds, peak bytes)."""
+    env = dict(os.environ, OPENSCADPATH=CORPORA)
+    env.pop("DISPLAY", None)
+    with open(out + ".log", "wb") as log:
+        p = subprocess.Popen(["timeout", "-k", "5", str(TIMEOUT)] + argv, cwd=cwd, env=env,
+                             stdin=subprocess.DEVNULL, stdout=log, stderr=log,
+                             preexec_fn=limit_memory)
+        _, status, ru = os.wait4(p.pid, 0)
+    p.returncode = os.waitstatus_to_exitcode(status)
+    if not os.path.exists(out):
+        open(out, "wb").close()
+    # timeout's own usage is negligible; its child's is folded into ru
+    return p.returncode, ru.ru_utime + ru.ru_stime, ru.ru_maxrss * 1024
+
+
+NUM = re.compile(r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?(?:inf|nan)')
+TOK = re.compile(r'"(?:[^"\\\n]|\\.)*"|' + NUM.pattern + r'|\w+|\S')
+
+
+def csg_diff(a, b):
+    """Why two .csg texts differ, or None (the rule of conformance.sh)."""
+    x, y = TOK.findall(a), TOK.findall(b)
+    for i, (s, t) in enumerate(zip(x, y)):
+        if s == t:
+            continue
+        if NUM.fullmatch(s) and NUM.fullmatch(t):
+            fs, ft = float(s), float(t)
+            if fs == ft or (fs != fs and ft != ft):
+                continue
+            if abs(fs - ft) <= max(1e-12, 1e-9 * max(abs(fs), abs(ft))):
+                continue
+        return "token %d: %r != %r" % (i, s, t)
+    if len(x) != len(y):
+        return "token count %d != %d" % (len(x), len(y))
+    return None
+
+
+def echo_diff(a, b):
+    """The first differing line of two .echo texts, or None."""
+    if a == b:
+        return None
+    x, y = a.split("\n"), b.split("\n")
+    for i, (s, t) in enumerate(zip(x, y)):
+        if s != t:
+            return "line %d: openscad %r, rayscad %r" % (i + 1, s[:160], t[:160])
+    i = min(len(x), len(y))
+    more = x[i] if len(x) > len(y) else y[i]
+    who = "openscad" if len(x) > len(y) else "rayscad"
+    return "line %d: only %s has %r" % (i + 1, who, more[:160])
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read().decode("utf-8", "replace")
+
+
+def check(rayscad, outdir, key, path, kind):
+    stem = key.replace("/", "__")
+    ref = os.path.join(outdir, "ref", stem + "." + kind)
+    ours = os.path.join(outdir, "ours", stem + "." + kind)
+    cwd, base = os.path.dirname(path), os.path.basename(path)
+    meta = ref + ".json"
+    fresh = (os.path.exists(meta) and os.path.getmtime(meta) >= os.path.getmtime(path))
+    if fresh:
+        with open(meta) as f:
+            theirs = json.load(f)
+    else:
+        rc, cpu, mem = run(["openscad", "-o", ref, base], cwd, ref)
+        theirs = {"rc": rc, "cpu": cpu, "mem": mem}
+        with open(meta, "w") as f:
+            json.dump(theirs, f)
+    rc, cpu, mem = run([rayscad, base, "-o", ours], cwd, ours)
+    a, b = read(ref), read(ours)
+    why = echo_diff(a, b) if kind == "echo" else csg_diff(a, b)
+    if why is None and rc in (124, 137) + tuple(range(-64, 0)):
+        why = "rayscad stopped (exit %d)" % rc
+    slow = (cpu > SLOW and theirs["cpu"] <= SLOW) or (mem > HEAVY and theirs["mem"] <= HEAVY)
+    return {"key": key, "kind": kind, "why": why, "slow": slow,
+            "openscad": theirs, "rayscad": {"rc": rc, "cpu": cpu, "mem": mem}}
+
+
+def read_known():
+    known = {}
+    if os.path.exists(KNOWN):
+        for line in open(KNOWN, encoding="utf-8"):
+            line = line.strip()
+            if line and not line.startswith("#"):
+                name, _, reason = line.partition(" ")
+                known[name] = reason.strip()
+    return known
+
+
+def read_passing():
+    if not os.path.exists(PASSING):
+        return set()
+    return {l.strip() for l in open(PASSING, encoding="utf-8")
+            if l.strip() and not l.startswith("#")}
+
+
+def main(argv):
+    if not argv or argv[0].startswith("-"):
+        print(__doc__)
+        return 2
+    build, only, jobs, update = argv[0], None, 2, False
+    i = 1
+    while i < len(argv):
+        if argv[i] == "--only":
+            only, i = argv[i + 1], i + 2
+        elif argv[i] == "--jobs":
+            jobs, i = int(argv[i + 1]), i + 2
+        elif argv[i] == "--update":
+            update, i = True, i + 1
+        else:
+            print("corpus.py: unknown argument %s" % argv[i], file=sys.stderr)
+            return 2
+    if not os.path.isdir(CORPORA):
+        print("corpus: skipped: no corpora at %s (see the README's Tests section)" % CORPORA)
+        return 0
+    if shutil.which("openscad") is None:
+        print("corpus: openscad is not installed (make deps)", file=sys.stderr)
+        return 2
+    rayscad = os.path.abspath(os.path.join(build, "rayscad"))
+    outdir = os.path.abspath(os.path.join(build, "corpus"))
+    for d in ("ref", "ours", "scratch"):
+        os.makedirs(os.path.join(outdir, d), exist_ok=True)
+
+    jobs_list = [(k, p, kind) for k, p in openscad_tests() for kind in ("echo", "csg")]
+    jobs_list += [(k, p, "echo") for k, p in bosl2_tests(os.path.join(outdir, "scratch"))]
+    if only:
+        jobs_list = [j for j in jobs_list if fnmatch.fnmatch(j[0], only)]
+
+    results = []
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        for n, r in enumerate(pool.map(lambda j: check(rayscad, outdir, *j), jobs_list), 1):
+            results.append(r)
+            if n % 100 == 0:
+                print("corpus: %d of %d" % (n, len(jobs_list)), flush=True)
+    with open(os.path.join(outdir, "results.json"), "w") as f:
+        json.dump(results, f, indent=1)
+
+    known, passing = read_known(), read_passing()
+    failed, new, counts = [], [], {}
+    for r in results:
+        name = "%s:%s" % (r["key"], r["kind"])
+        corpus = r["key"].split("/")[0] + " ." + r["kind"]
+        c = counts.setdefault(corpus, [0, 0, 0])
+        c[1] += 1
+        if r["why"] is None:
+            c[0] += 1
+            if name not in passing:
+                new.append(name)
+        elif name in known or r["key"] in known:
+            c[2] += 1
+        else:
+            print("DIFF %s: %s" % (name, r["why"]))
+            if name in passing:
+                failed.append("%s no longer matches openscad" % name)
+        if r["slow"]:
+            print("SLOW %s: rayscad %.1f s %.0f MB, openscad %.1f s %.0f MB" % (
+                name, r["rayscad"]["cpu"], r["rayscad"]["mem"] / 2**20,
+                r["openscad"]["cpu"], r["openscad"]["mem"] / 2**20))
+            failed.append("%s takes over %g s or %d GB where openscad does not" % (
+                name, SLOW, HEAVY >> 30))
+    for name in new:
+        print("NEW %s matches openscad (not yet in tests/corpus/passing.txt)" % name)
+    for corpus in sorted(counts):
+        ok, total, k = counts[corpus]
+        print("corpus: %s: %d of %d identical to openscad's, %d known differences" % (
+            corpus, ok, total, k))
+    for f in failed:
+        print("FAIL %s" % f)
+    if update:
+        keep = {n for n in passing if only and not fnmatch.fnmatch(n.split(":")[0], only)}
+        now = keep | {"%s:%s" % (r["key"], r["kind"]) for r in results if r["why"] is None}
+        os.makedirs(os.path.dirname(PASSING), exist_ok=True)
+        with open(PASSING, "w", encoding="utf-8") as f:
+            f.write("# Corpus files whose output matches openscad 2021.01's byte for byte\n"
+                    "# (.csg token by token); tests/cli/corpus.py --update writes it.\n")
+            for n in sorted(now):
+                f.write(n + "\n")
+        print("corpus: %s: %d files" % (os.path.relpath(PASSING, ROOT), len(now)))
+    print("corpus: %s" % ("%d failures" % len(failed) if failed else "passed"))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
