@@ -98,6 +98,8 @@ typedef struct scad_diag {
     int errors;
     int warnings;
     scad_loc first_syntax; /* file NULL until a syntax error */
+    const char *lex_error; /* OpenSCAD's wording of the first lexer error
+                              ("Unterminated string"), at first_syntax */
     int stopped;           /* an error stopped the evaluation: later lines are dropped */
 } scad_diag;
 
@@ -118,6 +120,10 @@ const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf,
 /* file as an absolute, lexically normalized path in buf: one file reached
  * by two spellings has one key. */
 const char *scad_diag_file_key(const scad_diag *d, const char *file, char *buf, size_t size);
+/* A lexer error: its compiler-style message at loc, and OpenSCAD's
+ * "Parser error: <what>" at openscad_line (where 2021.01 puts it). */
+void scad_diag_lex_error(scad_diag *d, scad_loc loc, int openscad_line, const char *what,
+                         const char *msg);
 /* Record where the first syntax error was, for scad_diag_parse_failed. */
 void scad_diag_syntax(scad_diag *d, scad_loc loc);
 /* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in

@@ -155,10 +155,26 @@ void scad_diag_syntax(scad_diag *d, scad_loc loc)
     if (!d->first_syntax.file) d->first_syntax = loc;
 }
 
+void scad_diag_lex_error(scad_diag *d, scad_loc loc, int openscad_line, const char *what,
+                         const char *msg)
+{
+    if (!d->first_syntax.file) {
+        d->first_syntax = loc;
+        d->first_syntax.line = openscad_line;
+        d->lex_error = what;
+    }
+    scad_diag_error(d, loc, "%s", msg);
+}
+
 /* Unlike its other messages, openscad's parser names files as given. */
 void scad_diag_parse_failed(scad_diag *d, const char *main_file)
 {
     char line[LINE_MAX_BYTES];
+    if (d->lex_error) {
+        snprintf(line, sizeof line, "ERROR: Parser error: %s in file %s, line %d", d->lex_error,
+                 d->first_syntax.file, d->first_syntax.line);
+        scad_diag_line(d, RAYSCAD_MSG_TRACE, line);
+    }
     if (d->first_syntax.file) {
         snprintf(line, sizeof line, "ERROR: Parser error: syntax error in file %s, line %d",
                  d->first_syntax.file, d->first_syntax.line);

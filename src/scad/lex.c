@@ -42,18 +42,27 @@ static void advance(lexer *L, size_t k)
     }
 }
 
+/* Past k bytes without counting their lines, as openscad 2021.01 does
+ * inside include <…> and use <…>: later lines are numbered that much
+ * lower in its messages, and so in ours. */
+static void advance_uncounted(lexer *L, size_t k)
+{
+    while (k-- && *L->p) {
+        L->col++;
+        L->p++;
+    }
+}
+
+/* The line openscad 2021.01 reports an error at the end of the file on:
+ * it lexes the file with "\n\x03\n" appended. */
+static int eof_line(const lexer *L)
+{
+    return L->line + 2;
+}
+
 static void out_of_memory(lexer *L)
 {
     L->oom = L->failed = 1;
-}
-
-/* A token's text: a copy of p[0..n) in the arena (NULL when out of
- * memory, recorded). */
-static const char *text_of(lexer *L, const char *p, size_t n)
-{
-    char *t = scad_arena_strndup(L->a, p, n);
-    if (!t) out_of_memory(L);
-    return t;
 }
 
 /* A new token at the end of the array; NULL when out of memory (recorded). */
@@ -210,8 +219,8 @@ static void lex_string(lexer *L, scad_loc loc)
     for (;;) {
         char c = *L->p;
         if (c == 0) {
-            scad_diag_syntax(L->d, loc);
-            scad_diag_error(L->d, loc, "unterminated string");
+            scad_diag_lex_error(L->d, loc, eof_line(L), "Unterminated string",
+                                "unterminated string");
             L->failed = 1;
             break;
         }
@@ -285,7 +294,11 @@ static void lex_string(lexer *L, scad_loc loc)
     t->len = n;
 }
 
-/* include <path> / use <path>: returns 1 when one was lexed. */
+/* include <path> / use <path>: returns 1 when one was lexed.  As
+ * openscad 2021.01's lexer: whitespace may stand between the word and '<',
+ * tabs and line breaks inside the brackets separate pieces of which the
+ * last folder part ("a/b/") and the last name part count, and the line
+ * breaks from the word to '>' are not counted. */
 static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kind)
 {
     const char *q = L->p + wordlen;
@@ -293,18 +306,48 @@ static int lex_include(lexer *L, scad_loc loc, size_t wordlen, scad_tok_kind kin
         q++;
     if (*q != '<') return 0;
     const char *end = strchr(q, '>');
-    if (!end || memchr(q, '\n', (size_t)(end - q))) {
-        scad_diag_syntax(L->d, loc);
-        scad_diag_error(L->d, loc, "unterminated file name after '%s'",
-                        kind == TK_USE ? "use" : "include");
-        advance(L, (size_t)(q - L->p) + 1);
+    if (!end) {
+        int is_use = kind == TK_USE;
+        scad_diag_lex_error(L->d, loc, L->line,
+                            is_use ? "Unterminated use statement"
+                                   : "Unterminated include statement",
+                            is_use ? "unterminated file name after 'use'"
+                                   : "unterminated file name after 'include'");
+        L->failed = 1;
         return 1;
     }
+    const char *dir = NULL, *name = NULL;
+    size_t dirlen = 0, namelen = 0;
+    for (const char *p = q + 1; p < end;) {
+        size_t n = strcspn(p, "\t\r\n>");
+        const char *piece = p, *slash = NULL;
+        for (size_t i = 0; i < n; i++)
+            if (piece[i] == '/') slash = piece + i;
+        if (slash) {
+            dir = piece;
+            dirlen = (size_t)(slash - piece) + 1;
+        }
+        if (piece + n > (slash ? slash + 1 : piece)) {
+            name = slash ? slash + 1 : piece;
+            namelen = (size_t)(piece + n - name);
+        }
+        p += n;
+        while (p < end && (*p == '\t' || *p == '\r' || *p == '\n'))
+            p++;
+    }
+    char *text = scad_arena_alloc(L->a, dirlen + namelen + 1);
+    if (!text) {
+        out_of_memory(L);
+        return 1;
+    }
+    if (dirlen) memcpy(text, dir, dirlen);
+    if (namelen) memcpy(text + dirlen, name, namelen);
+    text[dirlen + namelen] = 0;
     scad_token *t = push(L, kind, loc);
     if (!t) return 1;
-    t->text = text_of(L, q + 1, (size_t)(end - q - 1));
-    t->len = (size_t)(end - q - 1);
-    advance(L, (size_t)(end - L->p) + 1);
+    t->text = text;
+    t->len = dirlen + namelen;
+    advance_uncounted(L, (size_t)(end - L->p) + 1);
     return 1;
 }
 
@@ -316,8 +359,12 @@ int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, c
         char c = *L.p;
         scad_loc loc = {file, L.line, L.col};
         if (c == 0) break;
-        if (isspace((unsigned char)c)) {
-            advance(&L, 1);
+        if (isspace((unsigned char)c) || (unsigned char)c == 0xa0) {
+            advance(&L, 1); /* a Latin-1 no-break space too */
+            continue;
+        }
+        if ((unsigned char)c == 0xc2 && (unsigned char)L.p[1] == 0xa0) {
+            advance(&L, 2); /* and a UTF-8 one */
             continue;
         }
         if (c == '/' && L.p[1] == '/') {
@@ -328,9 +375,9 @@ int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, c
         if (c == '/' && L.p[1] == '*') {
             const char *end = strstr(L.p + 2, "*/");
             if (!end) {
-                scad_diag_syntax(d, loc);
-                scad_diag_error(d, loc, "unterminated comment");
                 advance(&L, strlen(L.p));
+                scad_diag_lex_error(d, loc, eof_line(&L), "Unterminated comment",
+                                    "unterminated comment");
                 break;
             }
             advance(&L, (size_t)(end - L.p) + 2);

@@ -38,6 +38,8 @@ int scad_parse_args(parser *P, scad_args *out, int is_def, int close)
     int cap = 0;
     out->v = NULL;
     out->n = 0;
+    while (is_def && is_ch(peek(P), ',')) /* f(,a) */
+        next(P);
     while (!at_close(P, close)) {
         scad_arg arg = {NULL, NULL, peek(P)->loc};
         if (peek(P)->kind == TK_ID && is_ch(peek2(P), '=')) {
@@ -61,6 +63,12 @@ int scad_parse_args(parser *P, scad_args *out, int is_def, int close)
         if (is_ch(peek(P), ',')) {
             while (is_ch(peek(P), ','))
                 next(P); /* optional_commas */
+            /* 2021.01's grammar: parameter lists may end in commas, calls
+             * (and let, echo, assert, for) may not */
+            if (!is_def && at_close(P, close)) {
+                scad_parse_syntax_error(P, "an argument");
+                return 0;
+            }
             continue;
         }
         if (!at_close(P, close)) {

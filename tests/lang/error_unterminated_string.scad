@@ -1,0 +1,4 @@
+// A string never closed
+a = "text;
+
+echo(a);

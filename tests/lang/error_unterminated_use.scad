@@ -1,0 +1,3 @@
+// A use never closed
+use <lib/library.scad
+echo(2);
