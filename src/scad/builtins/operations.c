@@ -15,143 +15,243 @@
 
 #include "builtins.h"
 
-/* Up to 3 numbers of a vector into out (others keep their value); returns
- * 1 when v is a vector of numbers with 1..3 elements … any size accepted. */
-static int vec3_of(scad_value v, double out[3])
+/* OpenSCAD 2021.01's Value::getVec3, quirks and all: a vector of 3 is
+ * read in order and stored as read, so a bad element leaves the earlier
+ * ones set (mirror and scale use them), 1 when all were numbers; a vector
+ * of 2 sets x and y only when both are numbers, z = dflt, and gives 1
+ * either way. */
+static int get_vec3(scad_value v, double out[3], double dflt)
 {
-    if (v.kind != SV_VEC) return 0;
-    const scad_vec *p = v.u.vec;
-    if (p->n < 2 || p->n > 3) return 0;
-    for (int i = 0; i < p->n; i++)
-        if (p->v[i].kind != SV_NUM) return 0;
-    for (int i = 0; i < p->n; i++)
-        out[i] = p->v[i].u.num;
+    if (v.kind != SV_VEC || v.u.vec->n < 2 || v.u.vec->n > 3) return 0;
+    const scad_value *e = v.u.vec->v;
+    if (v.u.vec->n == 2) {
+        if (e[0].kind == SV_NUM && e[1].kind == SV_NUM) {
+            out[0] = e[0].u.num;
+            out[1] = e[1].u.num;
+        }
+        out[2] = dflt;
+        return 1;
+    }
+    for (int i = 0; i < 3; i++) {
+        if (e[i].kind != SV_NUM) return 0;
+        out[i] = e[i].u.num;
+    }
     return 1;
 }
 
-static void identity(csg_affine m)
+/* The call's matrix as OpenSCAD keeps it: a full 4x4, row-major. */
+typedef struct transform_args {
+    double m[16];
+} transform_args;
+
+static void identity4(double m[16])
 {
-    memcpy(m, csg_affine_identity, sizeof(csg_affine));
+    for (int i = 0; i < 16; i++)
+        m[i] = i % 5 == 0 ? 1 : 0;
 }
 
-static void translate_matrix(scad_call *c, csg_affine m)
+/* m = the identity transform with its linear part times r (row-major
+ * 3x3), summed as a matrix product as Eigen composes it, so an infinite or
+ * NaN entry spreads NaN through its column exactly as openscad prints it. */
+static void linear_onto_identity(double m[16], const double r[9])
+{
+    identity4(m);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double sum = 0;
+            for (int k = 0; k < 3; k++)
+                sum += (i == k ? 1.0 : 0.0) * r[k * 3 + j];
+            m[i * 4 + j] = sum;
+        }
+}
+
+/* "<name>(<value>)" for a warning, the value as echo prints it. */
+static void conversion_warning(scad_call *c, const char *fmt, scad_value v)
+{
+    scad_buf b = {0};
+    scad_value_format(&b, v, 1);
+    scad_diag_warning(c->ev->d, c->st->loc, fmt, scad_buf_str(&b));
+    scad_buf_free(&b);
+}
+
+static void translate_matrix(scad_call *c, double m[16])
 {
     double v[3] = {0, 0, 0};
-    identity(m);
-    if (vec3_of(c->arg[0], v)) {
+    identity4(m);
+    if (get_vec3(c->arg[0], v, 0.0) && isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2])) {
         m[3] = v[0];
         m[7] = v[1];
         m[11] = v[2];
+    } else {
+        conversion_warning(
+            c, "Unable to convert translate(%s) parameter to a vec3 or vec2 of numbers", c->arg[0]);
     }
 }
 
-static void rotate_matrix(scad_call *c, csg_affine m)
+/* OpenSCAD's angle_axis_degrees: the rotation by a degrees about v (not
+ * normalized first; none for a zero v), row-major 3x3. */
+static void angle_axis(double a, const double v[3], double r[9])
 {
-    identity(m);
-    scad_value av = c->arg[0];
-    scad_value vv = c->arg[1];
+    double s = iv_sin_degrees(a), co = iv_cos_degrees(a);
+    double m = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    for (int i = 0; i < 9; i++)
+        r[i] = i % 4 == 0 ? 1 : 0;
+    if (!(m > 0)) return;
+    double k = (1 - co) / m, len = sqrt(m);
+    double cv[3] = {v[0] * k, v[1] * k, v[2] * k};
+    double us[3] = {v[0] / len * s, v[1] / len * s, v[2] / len * s};
+    double out[9] = {cv[0] * v[0] + co,    cv[1] * v[0] - us[2], cv[2] * v[0] + us[1],
+                     cv[0] * v[1] + us[2], cv[1] * v[1] + co,    cv[2] * v[1] - us[0],
+                     cv[0] * v[2] - us[1], cv[1] * v[2] + us[0], cv[2] * v[2] + co};
+    memcpy(r, out, sizeof out);
+}
+
+/* rotate(a = [x, y, z]) or rotate(a, v), with 2021.01's conversions: the
+ * angles read z, y, x, a bad one taking the value read before it; more
+ * than three warn and use the first three. */
+static void rotate_matrix(scad_call *c, double m[16])
+{
+    scad_value av = c->arg[0], vv = c->arg[1];
+    scad_buf b = {0}, bv = {0};
+    scad_value_format(&b, av, 1);
+    scad_value_format(&bv, vv, 1);
+    double r[9];
     if (av.kind == SV_VEC) {
-        double ang[3] = {0, 0, 0};
-        for (int i = 0; i < av.u.vec->n && i < 3; i++)
-            scad_arg_num(av.u.vec->v[i], &ang[i]);
-        double sx = iv_sin_degrees(ang[0]), cx = iv_cos_degrees(ang[0]);
-        double sy = iv_sin_degrees(ang[1]), cy = iv_cos_degrees(ang[1]);
-        double sz = iv_sin_degrees(ang[2]), cz = iv_cos_degrees(ang[2]);
-        csg_affine r = {cy * cz,
-                        cz * sx * sy - cx * sz,
-                        cx * cz * sy + sx * sz,
-                        0,
-                        cy * sz,
-                        cx * cz + sx * sy * sz,
-                        -cz * sx + cx * sy * sz,
-                        0,
-                        -sy,
-                        cy * sx,
-                        cx * cy,
-                        0};
-        memcpy(m, r, sizeof r);
+        const scad_vec *va = av.u.vec;
+        double sx = 0, sy = 0, sz = 0, cx = 1, cy = 1, cz = 1, a = 0;
+        int ok = va->n <= 3;
+        int n = va->n > 3 ? 3 : va->n;
+        for (int k = n - 1; k >= 0; k--) {
+            if (va->v[k].kind == SV_NUM)
+                a = va->v[k].u.num;
+            else
+                ok = 0;
+            if (!isfinite(a)) ok = 0;
+            double sn = iv_sin_degrees(a), cs = iv_cos_degrees(a);
+            if (k == 2) sz = sn, cz = cs;
+            if (k == 1) sy = sn, cy = cs;
+            if (k == 0) sx = sn, cx = cs;
+        }
+        if (ok && vv.kind != SV_UNDEF)
+            scad_diag_warning(c->ev->d, c->st->loc,
+                              "When parameter a is supplied as vector, v is ignored rotate(a=%s, "
+                              "v=%s)",
+                              scad_buf_str(&b), scad_buf_str(&bv));
+        else if (!ok && vv.kind != SV_UNDEF)
+            scad_diag_warning(c->ev->d, c->st->loc,
+                              "Problem converting rotate(a=%s, v=%s) parameter", scad_buf_str(&b),
+                              scad_buf_str(&bv));
+        else if (!ok)
+            scad_diag_warning(c->ev->d, c->st->loc, "Problem converting rotate(a=%s) parameter",
+                              scad_buf_str(&b));
+        double out[9] = {cy * cz,
+                         cz * sx * sy - cx * sz,
+                         cx * cz * sy + sx * sz,
+                         cy * sz,
+                         cx * cz + sx * sy * sz,
+                         -cz * sx + cx * sy * sz,
+                         -sy,
+                         cy * sx,
+                         cx * cy};
+        memcpy(r, out, sizeof out);
     } else {
-        double ang;
-        if (scad_arg_num(av, &ang) && isfinite(ang)) {
-            double ax[3] = {0, 0, 1};
-            if (vv.kind == SV_VEC) {
-                double v[3] = {0, 0, 0};
-                if (vec3_of(vv, v) && isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2])) {
-                    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-                    if (n > 0) {
-                        ax[0] = v[0] / n;
-                        ax[1] = v[1] / n;
-                        ax[2] = v[2] / n;
-                    } else {
-                        ax[0] = ax[1] = ax[2] = 0;
-                    }
-                }
-            }
-            double s = iv_sin_degrees(ang), co = iv_cos_degrees(ang), t = 1 - co;
-            double x = ax[0], y = ax[1], z = ax[2];
-            if (x == 0 && y == 0 && z == 0) {
-                /* OpenSCAD 2021.01 skips the rotation for a zero axis */
-            } else {
-                csg_affine r = {t * x * x + co,    t * x * y - s * z, t * x * z + s * y, 0,
-                                t * x * y + s * z, t * y * y + co,    t * y * z - s * x, 0,
-                                t * x * z - s * y, t * y * z + s * x, t * z * z + co,    0};
-                memcpy(m, r, sizeof r);
-            }
+        double a = 0, v[3] = {0, 0, 1};
+        int a_ok = av.kind == SV_NUM && isfinite(av.u.num);
+        if (a_ok) a = av.u.num;
+        int v_ok = get_vec3(vv, v, 0.0);
+        angle_axis(a_ok ? a : 0, v, r);
+        if (vv.kind != SV_UNDEF && !v_ok) {
+            if (a_ok)
+                scad_diag_warning(c->ev->d, c->st->loc,
+                                  "Problem converting rotate(..., v=%s) parameter",
+                                  scad_buf_str(&bv));
+            else
+                scad_diag_warning(c->ev->d, c->st->loc,
+                                  "Problem converting rotate(a=%s, v=%s) parameter",
+                                  scad_buf_str(&b), scad_buf_str(&bv));
+        } else if (!a_ok) {
+            scad_diag_warning(c->ev->d, c->st->loc, "Problem converting rotate(a=%s) parameter",
+                              scad_buf_str(&b));
         }
     }
+    scad_buf_free(&b);
+    scad_buf_free(&bv);
+    linear_onto_identity(m, r);
 }
 
-static void scale_matrix(scad_call *c, csg_affine m)
+static void scale_matrix(scad_call *c, double m[16])
 {
-    double v[3] = {1, 1, 1}, x;
+    double v[3] = {1, 1, 1};
     scad_value sv = c->arg[0];
-    if (scad_arg_num(sv, &x))
-        v[0] = v[1] = v[2] = x;
-    else
-        vec3_of(sv, v);
-    csg_affine r = {v[0], 0, 0, 0, 0, v[1], 0, 0, 0, 0, v[2], 0};
+    if (!get_vec3(sv, v, 1.0)) {
+        if (sv.kind == SV_NUM)
+            v[0] = v[1] = v[2] = sv.u.num;
+        else
+            conversion_warning(c,
+                               "Unable to convert scale(%s) parameter to a number, a vec3 or vec2 "
+                               "of numbers or a number",
+                               sv);
+    }
+    double r[9] = {v[0], 0, 0, 0, v[1], 0, 0, 0, v[2]};
+    linear_onto_identity(m, r);
+}
+
+/* mirror(v): the reflection across the plane through the origin normal to
+ * v, (1, 0, 0) when v is no vector of 2 or 3 numbers (what was read of it
+ * kept), none for a zero v; set, not composed, as OpenSCAD does. */
+static void mirror_matrix(scad_call *c, double m[16])
+{
+    double v[3] = {1, 0, 0};
+    identity4(m);
+    if (!get_vec3(c->arg[0], v, 0.0))
+        conversion_warning(c, "Unable to convert mirror(%s) parameter to a vec3 or vec2 of numbers",
+                           c->arg[0]);
+    double x = v[0], y = v[1], z = v[2];
+    if (x == 0 && y == 0 && z == 0) return;
+    double a = x * x + y * y + z * z;
+    double r[16] = {1 - 2 * x * x / a,
+                    -2 * y * x / a,
+                    -2 * z * x / a,
+                    0,
+                    -2 * x * y / a,
+                    1 - 2 * y * y / a,
+                    -2 * z * y / a,
+                    0,
+                    -2 * x * z / a,
+                    -2 * y * z / a,
+                    1 - 2 * z * z / a,
+                    0,
+                    0,
+                    0,
+                    0,
+                    1};
     memcpy(m, r, sizeof r);
 }
 
-static void mirror_matrix(scad_call *c, csg_affine m)
+/* multmatrix(m): up to 4x4 numbers over the identity (others ignored),
+ * divided by m[3][3] when that is not 1. */
+static void multmatrix_matrix(scad_call *c, double m[16])
 {
-    double v[3] = {0, 0, 0};
-    identity(m);
-    if (vec3_of(c->arg[0], v)) {
-        double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        if (n > 0 && isfinite(n)) {
-            double x = v[0] / n, y = v[1] / n, z = v[2] / n;
-            csg_affine r = {1 - 2 * x * x, -2 * y * x,    -2 * z * x,    0,
-                            -2 * x * y,    1 - 2 * y * y, -2 * z * y,    0,
-                            -2 * x * z,    -2 * y * z,    1 - 2 * z * z, 0};
-            memcpy(m, r, sizeof r);
-        }
-    }
-}
-
-static void multmatrix_matrix(scad_call *c, csg_affine m)
-{
-    identity(m);
+    identity4(m);
     scad_value mv = c->arg[0];
-    if (mv.kind == SV_VEC) {
-        for (int i = 0; i < 3 && i < mv.u.vec->n; i++) {
-            scad_value row = mv.u.vec->v[i];
-            if (row.kind != SV_VEC) continue;
-            for (int j = 0; j < 4 && j < row.u.vec->n; j++)
-                scad_arg_num(row.u.vec->v[j], &m[i * 4 + j]);
-        }
+    if (mv.kind != SV_VEC) return;
+    for (int i = 0; i < 4 && i < mv.u.vec->n; i++) {
+        scad_value row = mv.u.vec->v[i];
+        if (row.kind != SV_VEC) continue;
+        for (int j = 0; j < 4 && j < row.u.vec->n; j++)
+            if (row.u.vec->v[j].kind == SV_NUM) m[i * 4 + j] = row.u.vec->v[j].u.num;
     }
+    double w = m[15];
+    if (w != 1.0)
+        for (int i = 0; i < 16; i++)
+            m[i] /= w;
 }
-
-typedef struct transform_args {
-    csg_affine m;
-} transform_args;
 
 static void transform_read(scad_call *c, void *out)
 {
     static const struct {
         const char *name;
-        void (*fn)(scad_call *, csg_affine);
+        void (*fn)(scad_call *, double[16]);
     } kinds[] = {{"translate", translate_matrix},
                  {"rotate", rotate_matrix},
                  {"scale", scale_matrix},
@@ -171,7 +271,7 @@ static int transform_print(scad_call *c, const void *args, scad_buf *b)
         scad_buf_puts(b, i ? ", [" : "[");
         for (int j = 0; j < 4; j++) {
             char t[32];
-            scad_format_number(i < 3 ? p->m[i * 4 + j] : (j == 3 ? 1 : 0), t);
+            scad_format_number(p->m[i * 4 + j], t);
             if (j) scad_buf_puts(b, ", ");
             scad_buf_puts(b, t);
         }
@@ -181,6 +281,8 @@ static int transform_print(scad_call *c, const void *args, scad_buf *b)
     return 1;
 }
 
+/* The affine part builds: a projective bottom row (multmatrix's) is kept
+ * for .csg only. */
 static scad_geom *transform_build(scad_call *c, const void *args)
 {
     const transform_args *p = args;
