@@ -303,6 +303,7 @@ int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_arg
     out->v = NULL;
     out->names = NULL;
     out->locs = NULL;
+    out->pending = NULL;
     if (args->n == 0) return 0;
     out->v = malloc(sizeof *out->v * (size_t)args->n);
     out->names = malloc(sizeof *out->names * (size_t)args->n);
@@ -373,13 +374,56 @@ int scad_args_eval(scad_eval *ev, scad_env *env, const scad_args *args, scad_arg
     return scad_args_bind(ev, env, args, out, 0, NULL, 0, (scad_loc){0});
 }
 
+int scad_args_lazy(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out)
+{
+    memset(out, 0, sizeof *out);
+    if (args->n == 0) return 0;
+    out->v = malloc(sizeof *out->v * (size_t)args->n);
+    out->names = malloc(sizeof *out->names * (size_t)args->n);
+    out->locs = malloc(sizeof *out->locs * (size_t)args->n);
+    out->pending = malloc((size_t)args->n);
+    if (!out->v || !out->names || !out->locs || !out->pending) {
+        scad_argv_free(out);
+        scad_eval_error(ev, args->v[0].loc, "out of memory");
+        return -1;
+    }
+    for (int i = 0; i < args->n; i++) {
+        out->v[i] = scad_undef();
+        out->names[i] = args->v[i].name;
+        out->locs[i] = args->v[i].loc;
+        out->pending[i] = args->v[i].value != NULL;
+    }
+    out->n = args->n;
+    out->src = args;
+    out->env = env;
+    out->ev = ev;
+    return 0;
+}
+
+scad_value scad_arg_at(const scad_argv *a, int i)
+{
+    if (a->pending && a->pending[i]) {
+        a->pending[i] = 0;
+        a->v[i] = scad_eval_expr(a->ev, a->env, a->src->v[i].value);
+    }
+    return a->v[i];
+}
+
+scad_value scad_arg_again(const scad_argv *a, int i)
+{
+    if (!a->src || !a->src->v[i].value) return scad_value_ref(scad_arg_at(a, i));
+    return scad_eval_expr(a->ev, a->env, a->src->v[i].value);
+}
+
 void scad_argv_free(scad_argv *a)
 {
-    for (int i = 0; i < a->n; i++)
-        scad_value_drop(a->v[i]);
+    for (int i = 0; a->v && i < a->n; i++)
+        if (!a->pending || !a->pending[i]) scad_value_drop(a->v[i]);
     free(a->v);
     free(a->names);
     free(a->locs);
+    free(a->pending);
+    a->pending = NULL;
     a->n = 0;
 }
 
@@ -387,12 +431,12 @@ scad_value scad_argv_get(const scad_argv *a, const char *name, int pos)
 {
     if (name)
         for (int i = a->n - 1; i >= 0; i--)
-            if (a->names[i] && strcmp(a->names[i], name) == 0) return a->v[i];
+            if (a->names[i] && strcmp(a->names[i], name) == 0) return scad_arg_at(a, i);
     if (pos >= 0) {
         int k = 0;
         for (int i = 0; i < a->n; i++) {
             if (a->names[i]) continue;
-            if (k++ == pos) return a->v[i];
+            if (k++ == pos) return scad_arg_at(a, i);
         }
     }
     return scad_undef();

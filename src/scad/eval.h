@@ -143,7 +143,21 @@ typedef struct scad_argv {
     const char **names;
     scad_loc *locs;
     int n;
+    /* A builtin function's arguments are evaluated when first read
+     * (scad_arg_at), as OpenSCAD 2021.01 evaluates them: an argument a
+     * function never reads is never evaluated (nor warned about).
+     * pending[i] != 0 until v[i] is; NULL when all are. */
+    unsigned char *pending;
+    const scad_args *src;
+    scad_env *env;
+    scad_eval *ev;
 } scad_argv;
+
+/* Argument i of a (evaluated now if it is pending), borrowed. */
+scad_value scad_arg_at(const scad_argv *a, int i);
+/* Argument i of a lazy argv evaluated once more (OpenSCAD reads some
+ * twice, warnings and all), owned. */
+scad_value scad_arg_again(const scad_argv *a, int i);
 
 scad_value scad_eval_expr(scad_eval *ev, scad_env *env, const scad_expr *e);
 /* A call expression (eval_call.c): a user function, a function literal or
@@ -191,6 +205,8 @@ const scad_moddef *scad_find_module(scad_eval *ev, scad_env *env, const char *na
 int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out, int resolve,
                    const scad_args *params, int npositional, scad_loc loc);
 int scad_args_eval(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out);
+/* The same, each argument evaluated only when first read (scad_arg_at). */
+int scad_args_lazy(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out);
 void scad_argv_free(scad_argv *a);
 /* The assignments of scope s, in order, into env (eval_stmt.c). */
 void scad_run_assignments(scad_eval *ev, scad_env *env, const scad_scope *s);

@@ -289,7 +289,7 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
             const scad_function_def *b = scad_registry_function(callee->str);
             if (b) {
                 scad_argv argv;
-                if (scad_args_eval(ev, env, &e->args, &argv)) return scad_undef();
+                if (scad_args_lazy(ev, env, &e->args, &argv)) return scad_undef();
                 scad_value r = b->fn(ev, &argv, e->loc, callee->str);
                 scad_argv_free(&argv);
                 return r;

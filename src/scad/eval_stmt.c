@@ -424,7 +424,7 @@ static scad_geom *call_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st
                                const scad_state *state, const scad_module_def *d, int id)
 {
     scad_call c = {ev, env, st, state, d, NULL, {{0}}};
-    scad_argv a = {NULL, NULL, NULL, 0};
+    scad_argv a = {0};
     scad_env *dollar = NULL;
     if (d->npositional >= 0) {
         const scad_args *params = builtin_params(ev, d, id);

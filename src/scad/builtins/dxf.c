@@ -85,7 +85,7 @@ static void read_args(scad_eval *ev, const scad_argv *a, scad_loc loc, const cha
     d->scale = 1;
     for (int i = 0; i < a->n; i++) {
         const char *n = a->names[i] ? a->names[i] : "";
-        scad_value v = a->v[i];
+        scad_value v = scad_arg_at(a, i);
         scad_buf *into = NULL;
         if (!strcmp(n, "file")) {
             into = &d->raw;

@@ -35,12 +35,14 @@ static int nums(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *nam
         count_warning(ev, loc, name);
         return 0;
     }
+    for (int i = 0; i < n; i++) /* all read, then checked */
+        scad_arg_at(a, i);
     for (int i = 0; i < n; i++) {
-        if (a->v[i].kind != SV_NUM) {
+        if (scad_arg_at(a, i).kind != SV_NUM) {
             conv_warning(ev, loc, name);
             return 0;
         }
-        x[i] = a->v[i].u.num;
+        x[i] = scad_arg_at(a, i).u.num;
     }
     return 1;
 }
@@ -91,68 +93,76 @@ static scad_value f_pow(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
     return scad_num(pow(x[0], x[1]));
 }
 
+/* log(x) is log base 10, log(b, x) base b; both as log(x) / log(b). */
 static scad_value f_log(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    double x[2];
-    if (a->n == 2) {
-        if (!nums(ev, a, loc, name, 2, x)) return scad_undef();
-        return scad_num(log(x[1]) / log(x[0]));
+    if (a->n != 1 && a->n != 2) {
+        count_warning(ev, loc, name);
+        return scad_undef();
     }
-    if (!nums(ev, a, loc, name, 1, x)) return scad_undef();
-    return scad_num(log10(x[0]));
+    scad_value v0 = scad_arg_at(a, 0);
+    if (v0.kind != SV_NUM) {
+        conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    double b = 10.0, x = v0.u.num;
+    if (a->n == 2) {
+        scad_value v1 = scad_arg_at(a, 1);
+        if (v1.kind != SV_NUM) {
+            conv_warning(ev, loc, name);
+            return scad_undef();
+        }
+        b = x;
+        x = v1.u.num;
+    }
+    return scad_num(log(x) / log(b));
 }
 
 static scad_value f_minmax(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     int is_max = name[1] == 'a';
-    const scad_value *v = a->v;
-    int n = a->n;
-    if (n == 1 && a->v[0].kind == SV_VEC) {
-        v = a->v[0].u.vec->v;
-        n = a->v[0].u.vec->n;
-    }
-    if (n == 0) {
-        if (a->n == 0)
-            count_warning(ev, loc, name);
-        else
-            conv_warning(ev, loc, name);
+    if (a->n == 0) {
+        count_warning(ev, loc, name);
         return scad_undef();
     }
-    if (a->n == 1 && a->v[0].kind == SV_VEC) {
-        int all_num = 1;
-        for (int i = 0; i < n; i++)
-            if (v[i].kind != SV_NUM) all_num = 0;
-        if (!all_num) {
-            int best = 0;
-            for (int i = 1; i < n; i++) {
-                int c = scad_value_compare(v[i], v[best]);
-                if (c == 2) {
-                    conv_warning(ev, loc, name);
-                    return scad_undef();
-                }
-                if (is_max ? c > 0 : c < 0) best = i;
-            }
-            return scad_value_ref(v[best]);
+    scad_value v0 = scad_arg_at(a, 0);
+    if (a->n == 1 && v0.kind == SV_VEC && v0.u.vec->n > 0) {
+        /* std::min_element / max_element by OpenSCAD's "<": the first
+         * extreme wins, values it cannot order never replace it */
+        const scad_vec *v = v0.u.vec;
+        int best = 0;
+        for (int i = 1; i < v->n; i++) {
+            int c = scad_value_compare(v->v[i], v->v[best]);
+            if (c != 2 && (is_max ? c > 0 : c < 0)) best = i;
         }
+        return scad_value_ref(v->v[best]);
     }
-    double best = 0;
-    for (int i = 0; i < n; i++) {
-        if (v[i].kind != SV_NUM) {
+    if (v0.kind != SV_NUM) {
+        conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    double best = v0.u.num;
+    for (int i = 1; i < a->n; i++) { /* stops at the first non-number */
+        scad_value x = scad_arg_at(a, i);
+        if (x.kind != SV_NUM) {
             conv_warning(ev, loc, name);
             return scad_undef();
         }
-        double x = v[i].u.num;
-        if (i == 0 || (is_max ? x > best : x < best)) best = x;
+        if (is_max ? x.u.num > best : x.u.num < best) best = x.u.num;
     }
     return scad_num(best);
 }
 
 static scad_value f_norm(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    (void)name;
-    if (a->n != 1 || a->v[0].kind != SV_VEC) return scad_undef();
+    if (a->n != 1) {
+        count_warning(ev, loc, name);
+        return scad_undef();
+    }
+    scad_value v0 = scad_arg_at(a, 0);
+    if (v0.kind != SV_VEC) return scad_undef();
     double s = 0;
-    const scad_vec *v = a->v[0].u.vec;
+    const scad_vec *v = v0.u.vec;
     for (int i = 0; i < v->n; i++) {
         if (v->v[i].kind != SV_NUM) {
             scad_diag_warning(ev->d, loc, "Incorrect arguments to norm()");
@@ -163,28 +173,49 @@ static scad_value f_norm(scad_eval *ev, const scad_argv *a, scad_loc loc, const 
     return scad_num(sqrt(s));
 }
 
+/* A number's value, 0 for anything else (Value::toDouble). */
+static double to_double(scad_value v)
+{
+    return v.kind == SV_NUM ? v.u.num : 0.0;
+}
+
 static scad_value f_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     (void)name;
-    if (a->n != 2 || a->v[0].kind != SV_VEC || a->v[1].kind != SV_VEC) {
-        scad_diag_warning(ev->d, loc, "Invalid call of 'cross' function");
+    if (a->n != 2) {
+        scad_diag_warning(ev->d, loc, "Invalid number of parameters for cross()");
         return scad_undef();
     }
-    const scad_vec *p = a->v[0].u.vec, *q = a->v[1].u.vec;
-    if (p->n != q->n || (p->n != 2 && p->n != 3)) {
+    scad_value a0 = scad_arg_at(a, 0), a1 = scad_arg_at(a, 1);
+    if (a0.kind != SV_VEC || a1.kind != SV_VEC) {
+        scad_diag_warning(ev->d, loc, "Invalid type of parameters for cross()");
+        return scad_undef();
+    }
+    const scad_vec *p = a0.u.vec, *q = a1.u.vec;
+    if (p->n == 2 && q->n == 2)
+        return scad_num(to_double(p->v[0]) * to_double(q->v[1]) -
+                        to_double(p->v[1]) * to_double(q->v[0]));
+    if (p->n != 3 || q->n != 3) {
         scad_diag_warning(ev->d, loc, "Invalid vector size of parameter for cross()");
         return scad_undef();
     }
     double x[3], y[3];
-    for (int i = 0; i < p->n; i++) {
+    for (int i = 0; i < 3; i++) {
         if (p->v[i].kind != SV_NUM || q->v[i].kind != SV_NUM) {
-            scad_diag_warning(ev->d, loc, "Invalid value in call of 'cross' function");
+            scad_diag_warning(ev->d, loc, "Invalid value in parameter vector for cross()");
             return scad_undef();
         }
         x[i] = p->v[i].u.num;
         y[i] = q->v[i].u.num;
+        if (isnan(x[i]) || isnan(y[i])) {
+            scad_diag_warning(ev->d, loc, "Invalid value (NaN) in parameter vector for cross()");
+            return scad_undef();
+        }
+        if (isinf(x[i]) || isinf(y[i])) {
+            scad_diag_warning(ev->d, loc, "Invalid value (INF) in parameter vector for cross()");
+            return scad_undef();
+        }
     }
-    if (p->n == 2) return scad_num(x[0] * y[1] - x[1] * y[0]);
     scad_value r = scad_vec_new(3);
     if (r.kind != SV_VEC) return r;
     r.u.vec->v[0] = scad_num(x[1] * y[2] - x[2] * y[1]);
@@ -195,8 +226,9 @@ static scad_value f_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const
 
 static scad_value f_len(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    if (a->n == 1 && a->v[0].kind == SV_VEC) return scad_num(a->v[0].u.vec->n);
-    if (a->n == 1 && a->v[0].kind == SV_STR) return scad_num((double)a->v[0].u.str->nchars);
+    if (a->n == 1 && scad_arg_at(a, 0).kind == SV_VEC) return scad_num(scad_arg_at(a, 0).u.vec->n);
+    if (a->n == 1 && scad_arg_at(a, 0).kind == SV_STR)
+        return scad_num((double)scad_arg_at(a, 0).u.str->nchars);
     if (a->n != 1)
         count_warning(ev, loc, name);
     else
@@ -209,7 +241,7 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
     (void)name;
     long long total = 0;
     for (int i = 0; i < a->n; i++)
-        total += a->v[i].kind == SV_VEC ? a->v[i].u.vec->n : 1;
+        total += scad_arg_at(a, i).kind == SV_VEC ? scad_arg_at(a, i).u.vec->n : 1;
     if (total > ev->max_list) {
         scad_eval_error(ev, loc, "list longer than %d elements (concat)", ev->max_list);
         return scad_undef();
@@ -224,11 +256,11 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
     }
     int k = 0;
     for (int i = 0; i < a->n; i++) {
-        if (a->v[i].kind == SV_VEC)
-            for (int j = 0; j < a->v[i].u.vec->n; j++)
-                r.u.vec->v[k++] = scad_value_ref(a->v[i].u.vec->v[j]);
+        if (scad_arg_at(a, i).kind == SV_VEC)
+            for (int j = 0; j < scad_arg_at(a, i).u.vec->n; j++)
+                r.u.vec->v[k++] = scad_value_ref(scad_arg_at(a, i).u.vec->v[j]);
         else
-            r.u.vec->v[k++] = scad_value_ref(a->v[i]);
+            r.u.vec->v[k++] = scad_value_ref(scad_arg_at(a, i));
     }
     return r;
 }
@@ -238,7 +270,7 @@ static scad_value f_str(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
     (void)name;
     scad_buf b = {.limit = (size_t)ev->max_string};
     for (int i = 0; i < a->n && !b.oom && !b.too_deep; i++)
-        scad_value_format(&b, a->v[i], 0);
+        scad_value_format(&b, scad_arg_at(a, i), 0);
     if (b.too_deep) {
         scad_eval_error(ev, loc, "a vector nested %d deep cannot be printed (str)",
                         SCAD_MAX_NESTING);
@@ -305,27 +337,61 @@ static scad_value f_chr(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
     (void)ev, (void)loc, (void)name;
     scad_buf b = {0};
     for (int i = 0; i < a->n; i++)
-        chr_value(&b, a->v[i]);
+        chr_value(&b, scad_arg_at(a, i));
     scad_value r = scad_str_new(b.p ? b.p : "", b.oom ? 0 : b.n);
     scad_buf_free(&b);
     return r;
 }
 
+/* Whether s[0..n) is valid UTF-8 as glib's g_utf8_validate has it: no
+ * overlong forms, surrogates or code points past U+10FFFF, no NUL. */
+static int valid_utf8(const unsigned char *s, size_t n)
+{
+    for (size_t i = 0; i < n;) {
+        unsigned c = s[i];
+        size_t k = c < 0x80             ? 0
+                   : (c & 0xE0) == 0xC0 ? 1
+                   : (c & 0xF0) == 0xE0 ? 2
+                   : (c & 0xF8) == 0xF0 ? 3
+                                        : 9;
+        if (c == 0 || k == 9 || i + k >= n) return 0;
+        unsigned long cp = k == 0 ? c : c & (0x3Fu >> k);
+        for (size_t j = 1; j <= k; j++) {
+            if ((s[i + j] & 0xC0) != 0x80) return 0;
+            cp = (cp << 6) | (s[i + j] & 0x3F);
+        }
+        static const unsigned long least[4] = {0, 0x80, 0x800, 0x10000};
+        if (cp < least[k] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+        i += k + 1;
+    }
+    return 1;
+}
+
 static scad_value f_ord(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    if (a->n != 1) {
-        count_warning(ev, loc, name);
+    (void)name;
+    if (a->n == 0) return scad_undef();
+    if (a->n > 1) {
+        scad_diag_warning(ev->d, loc, "ord() called with %d arguments, only 1 argument expected",
+                          a->n);
         return scad_undef();
     }
-    if (a->v[0].kind != SV_STR) {
+    if (scad_arg_at(a, 0).kind == SV_STR &&
+        !valid_utf8((const unsigned char *)scad_arg_at(a, 0).u.str->s,
+                    scad_arg_at(a, 0).u.str->len)) {
+        scad_diag_warning(ev->d, loc, "ord() argument '%s' is not a valid utf8 string",
+                          scad_arg_at(a, 0).u.str->s);
+        return scad_undef();
+    }
+    if (scad_arg_at(a, 0).kind != SV_STR) {
         scad_buf b = {0};
-        scad_value_format(&b, a->v[0], 1);
+        scad_value_format(&b, scad_arg_at(a, 0), 1);
         scad_diag_warning(ev->d, loc, "ord() argument %s is not of type string", scad_buf_str(&b));
         scad_buf_free(&b);
         return scad_undef();
     }
-    const unsigned char *s = (const unsigned char *)a->v[0].u.str->s;
-    if (a->v[0].u.str->len == 0) return scad_undef();
+    const unsigned char *s = (const unsigned char *)scad_arg_at(a, 0).u.str->s;
+    if (scad_arg_at(a, 0).u.str->len == 0) return scad_undef();
     unsigned long cp = s[0];
     int extra = 0;
     if (cp >= 0xF0)
@@ -349,17 +415,23 @@ static int get_num(scad_value v, double *x)
 static scad_value f_lookup(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
     double p;
-    if (a->n < 2) return scad_undef();
-    if (!get_num(a->v[0], &p)) {
+    if (a->n != 2) {
+        count_warning(ev, loc, name);
+        return scad_undef();
+    }
+    if (!get_num(scad_arg_at(a, 0), &p) || !isfinite(p)) {
+        /* OpenSCAD evaluates the key again to print it */
+        scad_value again = scad_arg_again(a, 0);
         scad_buf b = {0};
-        scad_value_format(&b, a->v[0], 1);
+        scad_value_format(&b, again, 1);
+        scad_value_drop(again);
         scad_diag_warning(ev->d, loc, "lookup(%s, ...) first argument is not a number",
                           scad_buf_str(&b));
         scad_buf_free(&b);
         return scad_undef();
     }
-    if (a->v[1].kind != SV_VEC || a->v[1].u.vec->n == 0) return scad_undef();
-    const scad_vec *t = a->v[1].u.vec;
+    if (scad_arg_at(a, 1).kind != SV_VEC || scad_arg_at(a, 1).u.vec->n == 0) return scad_undef();
+    const scad_vec *t = scad_arg_at(a, 1).u.vec;
     double low_p, low_v, high_p, high_v;
     if (t->v[0].kind != SV_VEC || t->v[0].u.vec->n < 2 || !get_num(t->v[0].u.vec->v[0], &low_p) ||
         !get_num(t->v[0].u.vec->v[1], &low_v))
@@ -488,15 +560,15 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
         count_warning(ev, loc, name);
         return scad_undef();
     }
-    if (a->v[0].kind != SV_NUM) return scad_undef();
-    double lo = a->v[0].u.num;
+    if (scad_arg_at(a, 0).kind != SV_NUM) return scad_undef();
+    double lo = scad_arg_at(a, 0).u.num;
     if (!isfinite(lo)) {
         scad_diag_warning(ev->d, loc, "rands() range min cannot be infinite");
         lo = -DBL_MAX / 2;
         bare_warning(ev, "resetting to %f", lo);
     }
-    if (a->v[1].kind != SV_NUM) return scad_undef();
-    double hi = a->v[1].u.num;
+    if (scad_arg_at(a, 1).kind != SV_NUM) return scad_undef();
+    double hi = scad_arg_at(a, 1).u.num;
     if (!isfinite(hi)) {
         scad_diag_warning(ev->d, loc, "rands() range max cannot be infinite");
         hi = DBL_MAX / 2;
@@ -507,14 +579,14 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
         lo = hi;
         hi = t;
     }
-    if (a->v[2].kind != SV_NUM) return scad_undef();
-    double count = fabs(a->v[2].u.num);
+    if (scad_arg_at(a, 2).kind != SV_NUM) return scad_undef();
+    double count = fabs(scad_arg_at(a, 2).u.num);
     if (!isfinite(count)) {
         scad_diag_warning(ev->d, loc, "rands() cannot create an infinite number of results");
         scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, "WARNING: resetting number of results to 1");
         count = 1;
     }
-    if (a->n == 4 && a->v[3].kind != SV_NUM) return scad_undef();
+    if (a->n == 4 && scad_arg_at(a, 3).kind != SV_NUM) return scad_undef();
     /* every value is a step of work: a count past the limits stops there */
     if (count > ev->max_list ||
         scad_eval_steps(ev, (long)count, loc, "the values rands() makes") != 0) {
@@ -526,7 +598,7 @@ static scad_value f_rands(scad_eval *ev, const scad_argv *a, scad_loc loc, const
         scad_eval_error(ev, loc, "out of memory");
         return scad_undef();
     }
-    if (a->n == 4) mt_seed(m, seed_hash(a->v[3].u.num));
+    if (a->n == 4) mt_seed(m, seed_hash(scad_arg_at(a, 3).u.num));
     int n = (int)count;
     scad_value r = scad_vec_new(n);
     if (r.kind == SV_VEC)
@@ -573,11 +645,13 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
 {
     (void)name;
     if (a->n < 2) return scad_undef();
-    scad_value match = a->v[0], in = a->v[1];
+    scad_value match = scad_arg_at(a, 0), in = scad_arg_at(a, 1);
     double d;
     /* NaN and out-of-range counts clamp (a cast would be undefined) */
-    int nret = a->n > 2 && get_num(a->v[2], &d) ? (int)fmax(fmin(d, INT_MAX), INT_MIN + 1.0) : 1;
-    int col = a->n > 3 && get_num(a->v[3], &d) ? (int)fmax(fmin(d, INT_MAX), INT_MIN + 1.0) : 0;
+    int nret =
+        a->n > 2 && get_num(scad_arg_at(a, 2), &d) ? (int)fmax(fmin(d, INT_MAX), INT_MIN + 1.0) : 1;
+    int col =
+        a->n > 3 && get_num(scad_arg_at(a, 3), &d) ? (int)fmax(fmin(d, INT_MAX), INT_MIN + 1.0) : 0;
     scad_value hay = scad_value_ref(in);
     if (in.kind == SV_STR) {
         /* characters of the string, as a vector of one-character strings */
@@ -662,7 +736,7 @@ static scad_value f_is(scad_eval *ev, const scad_argv *a, scad_loc loc, const ch
         count_warning(ev, loc, name);
         return scad_undef();
     }
-    scad_value v = a->v[0];
+    scad_value v = scad_arg_at(a, 0);
     const char *t = name + 3;
     if (!strcmp(t, "undef")) return scad_bool(v.kind == SV_UNDEF);
     if (!strcmp(t, "num")) return scad_bool(v.kind == SV_NUM && !isnan(v.u.num));
@@ -676,12 +750,12 @@ static scad_value f_is(scad_eval *ev, const scad_argv *a, scad_loc loc, const ch
  * stack (1, the default, is the caller of the current one). */
 static scad_value f_parent_module(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    (void)name;
     double d = 1;
     if (a->n == 1) {
-        if (a->v[0].kind != SV_NUM) return scad_undef();
-        d = a->v[0].u.num;
+        if (scad_arg_at(a, 0).kind != SV_NUM) return scad_undef();
+        d = scad_arg_at(a, 0).u.num;
     } else if (a->n > 1) {
+        count_warning(ev, loc, name);
         return scad_undef();
     }
     int depth = ev->module_depth < ev->module_names_cap ? ev->module_depth : ev->module_names_cap;
@@ -701,16 +775,28 @@ static scad_value f_parent_module(scad_eval *ev, const scad_argv *a, scad_loc lo
     return scad_str_new(m, strlen(m));
 }
 
+/* version() is [2021, 1, 0]; version_num() 20210100, or of a given
+ * [y, m, d] (or [y, m]) y * 10000 + m * 100 + d. */
 static scad_value f_version(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    (void)ev, (void)a, (void)loc;
-    if (!strcmp(name, "version_num")) return scad_num(20210100);
-    scad_value r = scad_vec_new(3);
-    if (r.kind == SV_VEC) {
-        r.u.vec->v[0] = scad_num(2021);
-        r.u.vec->v[1] = scad_num(1);
-        r.u.vec->v[2] = scad_num(0);
+    (void)ev, (void)loc;
+    double ymd[3] = {2021, 1, 0};
+    if (!strcmp(name, "version_num")) {
+        if (a->n > 0) {
+            scad_value v = scad_arg_at(a, 0);
+            if (v.kind != SV_VEC || v.u.vec->n < 2 || v.u.vec->n > 3) return scad_undef();
+            ymd[2] = 0;
+            for (int i = 0; i < v.u.vec->n; i++) {
+                if (v.u.vec->v[i].kind != SV_NUM) return scad_undef();
+                ymd[i] = v.u.vec->v[i].u.num;
+            }
+        }
+        return scad_num(ymd[0] * 10000 + ymd[1] * 100 + ymd[2]);
     }
+    scad_value r = scad_vec_new(3);
+    if (r.kind == SV_VEC)
+        for (int i = 0; i < 3; i++)
+            r.u.vec->v[i] = scad_num(ymd[i]);
     return r;
 }
 
