@@ -279,8 +279,6 @@ scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *
 void scad_env_free(scad_env *e);
 /* Frees the environments closures kept alive; call once at the end. */
 void scad_eval_free_captured(scad_eval *ev);
-/* Values in a range, OpenSCAD's count (UINT32_MAX for endless ones). */
-double scad_range_steps(const scad_range *r);
 /* sin/cos in degrees, exact at multiples of 30 and 45 degrees. */
 
 /* ---- builtins --------------------------------------------------------------- */

@@ -267,20 +267,6 @@ void scad_vlist_free(scad_vlist *l)
 
 /* ---- iteration (for, each) --------------------------------------------------- */
 
-/* Number of values of a range as OpenSCAD counts them: the quotient is
- * nudged up by one ulp so that [0:0.1:0.3] has 4 values; a zero step or an
- * infinite end gives UINT32_MAX (which the loop limit then refuses). */
-double scad_range_steps(const scad_range *r)
-{
-    if (isnan(r->begin) || isnan(r->end) || isnan(r->step)) return 0;
-    if (r->step < 0 ? r->begin < r->end : r->begin > r->end) return 0;
-    if (r->begin == r->end || isinf(r->step)) return 1;
-    if (isinf(r->begin) || isinf(r->end) || r->step == 0) return 4294967295.0;
-    double q = floor(nextafter((r->end - r->begin) / r->step, INFINITY));
-    if (q >= 4294967295.0) return 4294967295.0;
-    return q + 1;
-}
-
 /* Expands v into the list of values a for loop visits.  Returns the count,
  * or -1 when refused (warned).  Borrowed items are referenced into out. */
 int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
@@ -296,7 +282,7 @@ int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
             return -1;
         }
         for (int i = 0; i < (int)n && !ev->aborted; i++)
-            scad_vlist_push(ev, out, scad_num(v.u.range->begin + i * v.u.range->step), loc);
+            scad_vlist_push(ev, out, scad_num(scad_range_at(v.u.range, i)), loc);
         return out->n;
     }
     case SV_VEC:

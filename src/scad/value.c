@@ -176,9 +176,13 @@ int scad_value_equal(scad_value a, scad_value b)
         for (int i = 0; i < a.u.vec->n; i++)
             if (!scad_value_equal(a.u.vec->v[i], b.u.vec->v[i])) return 0;
         return 1;
-    case SV_RANGE:
-        return a.u.range->begin == b.u.range->begin && a.u.range->step == b.u.range->step &&
-               a.u.range->end == b.u.range->end;
+    case SV_RANGE: {
+        /* OpenSCAD 2021.01's RangeType ==: empty ranges are equal, others
+         * by begin, step and number of values (so [0:1:3] == [0:1:3.5]) */
+        double n = scad_range_steps(a.u.range), m = scad_range_steps(b.u.range);
+        if (n == 0 || m == 0) return n == m;
+        return a.u.range->begin == b.u.range->begin && a.u.range->step == b.u.range->step && n == m;
+    }
     case SV_FUNC:
         return a.u.func == b.u.func;
     }
@@ -217,6 +221,25 @@ const char *scad_value_type_name(scad_value v)
     static const char *names[] = {"undefined", "bool",  "number",  "string",
                                   "vector",    "range", "function"};
     return names[v.kind];
+}
+
+/* Number of values of a range as OpenSCAD counts them: the quotient is
+ * nudged up by one ulp so that [0:0.1:0.3] has 4 values; a zero step or an
+ * infinite end gives UINT32_MAX (which the loop limit then refuses). */
+double scad_range_steps(const scad_range *r)
+{
+    if (isnan(r->begin) || isnan(r->end) || isnan(r->step)) return 0;
+    if (r->step < 0 ? r->begin < r->end : r->begin > r->end) return 0;
+    if (r->begin == r->end || isinf(r->step)) return 1;
+    if (isinf(r->begin) || isinf(r->end) || r->step == 0) return 4294967295.0;
+    double q = floor(nextafter((r->end - r->begin) / r->step, INFINITY));
+    if (q >= 4294967295.0) return 4294967295.0;
+    return q + 1;
+}
+
+double scad_range_at(const scad_range *r, double i)
+{
+    return i == 0 ? r->begin : r->begin + i * r->step;
 }
 
 double scad_range_count(const scad_range *r)

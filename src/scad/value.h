@@ -101,6 +101,11 @@ int scad_value_equal(scad_value a, scad_value b);
 int scad_value_compare(scad_value a, scad_value b);
 /* The type name in OpenSCAD's warnings: "undefined", "number" … */
 const char *scad_value_type_name(scad_value v);
+/* Values in a range, OpenSCAD's count (UINT32_MAX for endless ones). */
+double scad_range_steps(const scad_range *r);
+/* Its value number i: begin itself first (-0 stays -0, an infinite step
+ * does not make it NaN), then begin + i * step, as OpenSCAD's iterator. */
+double scad_range_at(const scad_range *r, double i);
 /* Number of elements a range yields, or -1 when infinite / invalid. */
 double scad_range_count(const scad_range *r);
 

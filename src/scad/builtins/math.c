@@ -328,7 +328,7 @@ static void chr_value(scad_buf *b, scad_value v)
     if (v.kind == SV_RANGE) {
         double n = scad_range_count(v.u.range);
         for (double i = 0; i < n && i < 1000000; i++)
-            put_code(b, v.u.range->begin + i * v.u.range->step);
+            put_code(b, scad_range_at(v.u.range, i));
     }
 }
 
