@@ -75,7 +75,7 @@ IMAGE_SO = $(BUILD)/rayscad-image.so
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare conformance meshcheck asan clean format bench fuzz hostile \
+.PHONY: all deps demo test unit cli compare conformance corpus meshcheck asan clean format bench fuzz hostile \
 	valgrind install uninstall installcheck format-check
 .DEFAULT_GOAL := all
 
@@ -253,6 +253,13 @@ valgrind: all
 
 conformance: all
 	tests/cli/conformance.sh $(BUILD)
+
+# Real OpenSCAD code against openscad 2021.01: the regression corpus (.echo,
+# .csg) and BOSL2's test scripts (.echo) of ../shared/corpora, where present
+# (tests/cli/corpus.py; about 8 minutes on 2 cores, openscad's outputs kept
+# in BUILD/corpus/ref).  CORPUS_UPDATE=1 rewrites tests/corpus/passing.txt.
+corpus: all
+	python3 tests/cli/corpus.py $(BUILD) $(if $(CORPUS_UPDATE),--update)
 
 meshcheck: all
 	tests/cli/mesh_compare.sh $(BUILD)

@@ -8,7 +8,9 @@ and of the render alone (rayscad's RAYSCAD_STATS line, POV-Ray's "Trace
 Time").  Meshing: rayscad -o x.stl against openscad -o x.stl (CGAL) and
 manifold-3d (bench/manifold_mesh.mjs), alternately, with each one's volume
 error against the exact value.  Scaling: rayscad's render time over unions
-of 10 … 10,000 primitives.
+of 10 … 10,000 primitives.  Evaluation (bench/eval_bench.py): CPU time of
+rayscad and openscad on BOSL2's whole test pass, on its 10 heaviest scripts
+(ratios rayscad / openscad: lower is better) and at start-up.
 
 Nothing here is a test: it prints medians and ratios and writes
 bench/results/<date>.json.  Usage:
@@ -27,6 +29,8 @@ import struct
 import subprocess
 import sys
 import time
+
+import eval_bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -263,8 +267,19 @@ def main():
                   f"{row['volume_error_pct']:+9.3f}")
         sys.stdout.flush()
 
+    # ---- evaluation: library code (BOSL2's test pass) ------------------------
+    if not a.quick:
+        result["evaluation"] = eval_bench.run(a.build, reps)
+        sys.stdout.flush()
+
     # ---- summary -------------------------------------------------------------
     S = result["summary"]
+    ev = result.get("evaluation")
+    if ev:
+        S["eval_bosl2_pass_cpu_ratio"] = ev["bosl2_pass"]["ratio"]
+        S["eval_heaviest_worst_cpu_ratio"] = ev["heaviest_worst_ratio"]
+        S["eval_startup_cpu_s"] = (f"rayscad {ev['startup']['rayscad_cpu_s']:.3f}, "
+                                   f"openscad {ev['startup']['openscad_cpu_s']:.3f}")
     S["render_whole_speedup_gmean"] = gmean([r["speedup_whole"] for r in result["render"]])
     S["render_only_speedup_gmean"] = gmean([r["speedup_render"] for r in result["render"]])
     big = [r for r in result["render"] if r["scene"] in ("union_1000", "union_10000")]

@@ -209,7 +209,7 @@ static int write_tree(const cli_options *o, const rayscad_eval_options *eo, mess
 {
     char err[512], *text = NULL;
     size_t len;
-    int failed = rayscad_csg_text(o->input, eo, &text, &len) != RAYSCAD_OK;
+    int failed = rayscad_csg_text(o->input, eo, echo ? NULL : &text, &len) != RAYSCAD_OK;
     rayscad_status rc = RAYSCAD_OK;
     if (echo)
         rc = rayscad_file_write(o->output, msgs->buf ? msgs->buf : "", msgs->len, err, sizeof err);

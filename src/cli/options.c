@@ -39,7 +39,7 @@ const char cli_usage[] =
     "  --facets=MODE           round primitives: auto (default; smooth unless\n"
     "                          $fn <= 16), smooth (exact), openscad (its facets)\n"
     "  --max-recursion N       nested calls before an error (default 10000)\n"
-    "  --max-steps N           calls and loop values before an error (default 1e7)\n"
+    "  --max-steps N           calls and loop values before an error (default 1e9)\n"
     "  --max-list N            elements of one list (default 2^26)\n"
     "  --max-string N          bytes of one string (default 2^28)\n"
     "  --max-pixels N          pixels of a rendered image (default 2^28; a side\n"

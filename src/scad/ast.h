@@ -184,7 +184,8 @@ typedef struct scad_token {
 } scad_token;
 
 /* Tokenise src.  Returns the number of tokens (the last is TK_EOF) and sets
- * *out to an array in the arena; reports lexical errors through d and keeps
+ * *out to a malloc'd array the caller frees (the token texts are in the
+ * arena); reports lexical errors through d and keeps
  * going (an unterminated string or comment ends the input).  Out of memory:
  * *out = NULL, 0. */
 int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, const char *src,

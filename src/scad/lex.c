@@ -1,15 +1,17 @@
 /*
  * lex.c — the OpenSCAD tokeniser.
  *
- * One pass over the source text turns it into an array of scad_token in the
- * parse's arena, ending with TK_EOF.  The array grows by doubling in the
- * arena (old copies are simply abandoned there).  Each token records the
+ * One pass over the source text turns it into an array of scad_token,
+ * ending with TK_EOF, grown by realloc (the caller frees it once the file
+ * is parsed: the syntax tree keeps none of it; token texts are in the
+ * arena).  Each token records the
  * line and column of its first character; columns count bytes from 1.
  * Like flex in OpenSCAD's lexer.l the longest match wins, so "2x" is an
  * identifier and "2e3" a number.  Errors (an unterminated string or comment,
  * a stray character) are reported and lexing goes on.
  */
 #include <ctype.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,12 +72,11 @@ static scad_token *push(lexer *L, scad_tok_kind kind, scad_loc loc)
 {
     if (L->n == L->cap) {
         int cap = L->cap ? L->cap * 2 : 256;
-        scad_token *v = scad_arena_alloc_raw(L->a, sizeof *v * (size_t)cap);
+        scad_token *v = L->cap < INT_MAX / 2 ? realloc(L->v, sizeof *v * (size_t)cap) : NULL;
         if (!v) {
             out_of_memory(L);
             return NULL;
         }
-        if (L->n) memcpy(v, L->v, sizeof *v * (size_t)L->n);
         L->v = v;
         L->cap = cap;
     }
@@ -453,6 +454,7 @@ int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, c
     }
     scad_loc loc = {file, L.line, L.col};
     if (L.oom || !push(&L, TK_EOF, loc)) {
+        free(L.v);
         *out = NULL;
         return 0;
     }

@@ -355,6 +355,7 @@ static void parse_file_into(parser *P, scad_scope *scope, scad_names *names, con
     sub.depth = depth;
     sub.include_depth++;
     parse_into(&sub, scope);
+    free(toks);
     P->errors = sub.errors;
     P->oom |= sub.oom;
 }
@@ -453,8 +454,9 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
         return NULL;
     }
     scad_scope *s = new_scope(&P);
+    if (s) parse_into(&P, s);
+    free(P.t);
     if (!s) return NULL;
-    parse_into(&P, s);
     for (int i = 0; i < sh.ndefining && !P.oom; i++)
         if (scad_scope_index(a, sh.defining[i]) != 0) P.oom = 1;
     if (P.oom) scad_diag_error(d, (scad_loc){file, 1, 1}, "out of memory");

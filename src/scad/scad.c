@@ -23,7 +23,10 @@
 #include "registry.h"
 
 enum { DEFAULT_MAX_RECURSION = 10000 };
-#define DEFAULT_MAX_STEPS 10000000L
+/* Calls and loop values before the evaluation stops: a guard for runaway
+ * input, set well above what real library code needs (BOSL2's
+ * fractal_tree example takes 5e7, its gaussian_rands test 3e7). */
+#define DEFAULT_MAX_STEPS 1000000000L
 #define EVAL_STACK ((size_t)1 << 30)
 #define STACK_MARGIN ((size_t)64 << 20)
 
@@ -80,6 +83,7 @@ typedef struct job {
     size_t stack_size;
     int status;
     scad_buf *dump; /* non-NULL: write the .csg text here, build no trees */
+    int dump_text;  /* 0: the .csg tree is evaluated, its text not written (.echo) */
 } job;
 
 static void set_value(scad_eval *ev, scad_env *e, const char *name, scad_value v)
@@ -212,7 +216,9 @@ static void run_job(job *j)
         if (vp && !ev.aborted)
             scad_diag_line(j->d, RAYSCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");
-        if (!ev.aborted && j->dump) {
+        if (!ev.aborted && j->dump && !j->dump_text) {
+            j->status = 0;
+        } else if (!ev.aborted && j->dump) {
             const scad_geom *failed = scad_dump_write(j->dump, ev.has_root ? ev.root : model);
             if (j->dump->oom)
                 scad_diag_error(j->d, failed ? failed->loc : ev.at, "out of memory");
@@ -310,7 +316,7 @@ static void *job_thread(void *p)
 /* ---- public ----------------------------------------------------------------------- */
 
 static int eval_source(const char *name, const char *src, scad_arena *a, const scad_options *opt,
-                       scad_result *out, scad_buf *dump)
+                       scad_result *out, scad_buf *dump, int dump_text)
 {
     scad_diag d;
     memset(&d, 0, sizeof d);
@@ -324,7 +330,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
         scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
         return -1;
     }
-    job j = {opt, &d, names, name, src, a, NULL, out, EVAL_STACK, -1, dump};
+    job j = {opt, &d, names, name, src, a, NULL, out, EVAL_STACK, -1, dump, dump_text};
     pthread_attr_t attr;
     pthread_t th;
     int started = 0;
@@ -355,12 +361,13 @@ int scad_eval_string(const char *name, const char *src, const scad_options *opt,
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
     if (!a) return -1;
-    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out, NULL);
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out, NULL, 0);
     scad_arena_free(a);
     return r;
 }
 
-static int eval_path(const char *path, const scad_options *opt, scad_result *out, scad_buf *dump)
+static int eval_path(const char *path, const scad_options *opt, scad_result *out, scad_buf *dump,
+                     int dump_text)
 {
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
@@ -375,18 +382,19 @@ static int eval_path(const char *path, const scad_options *opt, scad_result *out
         scad_arena_free(a);
         return -1;
     }
-    int r = eval_source(path, src, a, opt, out, dump);
+    int r = eval_source(path, src, a, opt, out, dump, dump_text);
     scad_arena_free(a);
     return r;
 }
 
 int scad_eval_file(const char *path, const scad_options *opt, scad_result *out)
 {
-    return eval_path(path, opt, out, NULL);
+    return eval_path(path, opt, out, NULL, 0);
 }
 
 static int dump_finish(int r, scad_buf *b, char **text, size_t *len)
 {
+    if (!text) return r; /* evaluated only */
     if (r != 0 || b->oom) {
         scad_buf_free(b);
         return -1;
@@ -405,9 +413,9 @@ int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, s
 {
     scad_buf b = {0};
     scad_result res;
-    *text = NULL;
+    if (text) *text = NULL;
     if (len) *len = 0;
-    return dump_finish(eval_path(path, opt, &res, &b), &b, text, len);
+    return dump_finish(eval_path(path, opt, &res, &b, text != NULL), &b, text, len);
 }
 
 int scad_dump_csg_string(const char *name, const char *src, const scad_options *opt, char **text,
@@ -415,12 +423,12 @@ int scad_dump_csg_string(const char *name, const char *src, const scad_options *
 {
     scad_buf b = {0};
     scad_result res;
-    *text = NULL;
+    if (text) *text = NULL;
     if (len) *len = 0;
     memset(&res, 0, sizeof res);
     scad_arena *a = scad_arena_new();
     if (!a) return -1;
-    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, &res, &b);
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, &res, &b, text != NULL);
     scad_arena_free(a);
     return dump_finish(r, &b, text, len);
 }

@@ -169,7 +169,8 @@ void scad_result_free(scad_result *r);
  * builds no csg trees.  On success returns 0 and sets *text to a
  * NUL-terminated string the caller frees with free(), and *len (may be
  * NULL) to its length; on failure returns -1 with *text NULL, having sent
- * at least one RAYSCAD_MSG_ERROR line. */
+ * at least one RAYSCAD_MSG_ERROR line.  text NULL: evaluated for its
+ * messages only (an .echo output), no text written. */
 int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, size_t *len);
 
 /* The same for source text in memory; `name` is used in messages and as

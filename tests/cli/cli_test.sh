@@ -413,11 +413,11 @@ else
     check "--max-memory: surface() of a PNG past it is an error at the call" sh -c "test $rc -eq 1 && grep -qx 'surface.scad:1:1: error: surface(): height.png: out of memory for a 8x6 image (more than --max-memory 20M)' err.txt"
     run surface.scad -o surface.png --imgsize=16,16 --max-memory 300M
     check "--max-memory 300M: surface() of a PNG renders" sh -c "test $rc -eq 0 && test -s surface.png && ! grep -q WARNING err.txt"
-    # children() doubling 30 times stops at the step limit (10^7) holding about
+    # children() doubling 30 times stops at a step limit of 10^7 holding about
     # 2 million cube leaves and as many unions: 256 and 48 bytes each since
     # operation nodes leave out the leaf's members (1.07 GB before, 0.66 GB).
     if [ -x /usr/bin/time ]; then
-        /usr/bin/time -f %M -o peak.txt "$rayscad" "$root/tests/hostile/children_deep_chain.scad" -o chain.png --imgsize=16,16 --threads=1 >/dev/null 2>err.txt
+        /usr/bin/time -f %M -o peak.txt "$rayscad" "$root/tests/hostile/children_deep_chain.scad" -o chain.png --imgsize=16,16 --threads=1 --max-steps 1e7 >/dev/null 2>err.txt
         rc=$?
         check "children() doubling stops at the step limit within 800 MB" sh -c "test $rc -eq 1 && grep -q 'more than 10000000 steps' err.txt && test \$(tail -n 1 peak.txt) -lt 800000"
     fi

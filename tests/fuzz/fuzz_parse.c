@@ -48,6 +48,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (names) {
         scad_token *toks;
         (void)scad_lex(a, &d, names, "fuzz.scad", src, &toks);
+        free(toks);
     }
     scad_arena_free(a);
     memset(&d, 0, sizeof d);
