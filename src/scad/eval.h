@@ -175,9 +175,11 @@ int scad_eval_step(scad_eval *ev, scad_loc loc);
 int scad_frame_push(scad_eval *ev, const char *name, scad_loc loc);
 void scad_frame_pop(scad_eval *ev, int pushed);
 /* On entry to every user function or module (what: "function" or
- * "module"): 0 to go on, or -1 after the recursion error; each 0 is paired
- * with a scad_call_leave. */
-int scad_call_enter(scad_eval *ev, scad_loc loc, const char *what, const char *name);
+ * "module"): 0 to go on, or -1 after the recursion error (at loc; openscad's
+ * echo line at echo_loc, a module's definition); each 0 is paired with a
+ * scad_call_leave. */
+int scad_call_enter(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const char *what,
+                    const char *name);
 void scad_call_leave(scad_eval *ev);
 
 /* ---- environments and binding (env.c) --------------------------------------- */
@@ -267,6 +269,9 @@ int scad_eval_steps(scad_eval *ev, long n, scad_loc loc, const char *what);
 /* Error: reports "file:line:col: error: …" and stops the evaluation. */
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The same, OpenSCAD's echo stream reading echo_msg (its own wording). */
+void scad_eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 /* Where the evaluation is: the module instantiation or function call
  * being evaluated (the innermost frame), else the top-level assignment or
  * statement (ev->at).  For errors such as running out of memory that

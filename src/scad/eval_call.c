@@ -27,19 +27,29 @@ enum { MAX_TAIL_CALLS = 1000000 };
 /* OpenSCAD 2021.01 prints at most this many "TRACE: called by" lines
  * (its default trace depth). */
 enum { TRACE_DEPTH = 12 };
+/* and at most this many after a recursion error (as measured: its stack
+ * unwinds through frames that do not print) */
+enum { RECURSION_TRACE_DEPTH = 5 };
 
-/* Report msg as the error that stops the evaluation; in OpenSCAD's echo
- * stream it reads echo_msg (its own wording, when ours says more). */
-static void eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *msg)
+/* Report msg at loc as the error that stops the evaluation; in OpenSCAD's
+ * echo stream it reads echo_msg at echo_loc (its own wording and place,
+ * when ours says more), then at most depth TRACE lines. */
+static void eval_error_at(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const char *echo_msg,
+                          const char *msg, int depth)
 {
     if (!ev->aborted) {
         scad_diag_error(ev->d, loc, "%s", msg);
-        scad_diag_trace(ev->d, loc, "ERROR: %s", echo_msg);
-        for (int i = ev->nframes - 1, k = 0; i >= 0 && k < TRACE_DEPTH; i--, k++)
+        scad_diag_trace(ev->d, echo_loc, "ERROR: %s", echo_msg);
+        for (int i = ev->nframes - 1, k = 0; i >= 0 && k < depth; i--, k++)
             scad_diag_trace(ev->d, ev->frames[i].loc, "TRACE: called by '%s'", ev->frames[i].name);
         ev->d->stopped = 1;
     }
     ev->aborted = 1;
+}
+
+static void eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *msg)
+{
+    eval_error_at(ev, loc, loc, echo_msg, msg, TRACE_DEPTH);
 }
 
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
@@ -50,6 +60,16 @@ void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     eval_error_worded(ev, loc, msg, msg);
+}
+
+void scad_eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *fmt, ...)
+{
+    char msg[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    eval_error_worded(ev, loc, echo_msg, msg);
 }
 
 scad_loc scad_eval_here(const scad_eval *ev)
@@ -105,7 +125,8 @@ int scad_eval_steps(scad_eval *ev, long n, scad_loc loc, const char *what)
 }
 
 /* Called on entry to every user function or module: 0 to go on. */
-int scad_call_enter(scad_eval *ev, scad_loc loc, const char *what, const char *name)
+int scad_call_enter(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const char *what,
+                    const char *name)
 {
     char here;
     if (ev->aborted) return -1;
@@ -122,7 +143,7 @@ int scad_call_enter(scad_eval *ev, scad_loc loc, const char *what, const char *n
                      "recursion deeper than the stack allows (%d calls, calling %s '%s')",
                      ev->depth, what, name);
         snprintf(echo_msg, sizeof echo_msg, "Recursion detected calling %s '%s'", what, name);
-        eval_error_worded(ev, loc, echo_msg, msg);
+        eval_error_at(ev, loc, echo_loc, echo_msg, msg, RECURSION_TRACE_DEPTH);
         return -1;
     }
     if (scad_eval_step(ev, loc)) return -1;
@@ -160,7 +181,7 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
     scad_argv argv;
     /* the defaults and arguments count as one level deeper too: a default
      * that calls the function (f(x = f())) never reaches its body */
-    if (scad_call_enter(ev, call->loc, "function", name)) return scad_undef();
+    if (scad_call_enter(ev, call->loc, call->loc, "function", name)) return scad_undef();
     scad_env *fe = scad_env_new(ev, def_env, env, NULL);
     if (fe) scad_bind_defaults(ev, fe, def_env, params);
     if (!fe || scad_args_bind(ev, env, &call->args, &argv, 1, params, params->n, call->loc)) {
@@ -169,7 +190,7 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
         return scad_undef();
     }
     scad_call_leave(ev);
-    if (scad_call_enter(ev, call->loc, "function", name)) {
+    if (scad_call_enter(ev, call->loc, call->loc, "function", name)) {
         scad_argv_free(&argv);
         scad_env_free(fe);
         return scad_undef();
@@ -216,10 +237,13 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
         scad_env *next = NULL;
         if (tail && !ev->aborted) {
             if (++tail_calls > MAX_TAIL_CALLS) {
-                scad_eval_error(ev, tail->loc,
-                                "recursion detected calling function '%s' (more than %d tail "
-                                "calls)",
-                                name, MAX_TAIL_CALLS);
+                char msg[512], echo_msg[512];
+                snprintf(msg, sizeof msg,
+                         "recursion detected calling function '%s' (more than %d tail calls)", name,
+                         MAX_TAIL_CALLS);
+                snprintf(echo_msg, sizeof echo_msg, "Recursion detected calling function '%s'",
+                         name);
+                eval_error_worded(ev, tail->loc, echo_msg, msg);
             } else if ((next = scad_env_new(ev, def_env, env, NULL))) {
                 /* the frame being left is the call's dynamic parent: its
                  * $-variables ($fn given to the first call) go on */

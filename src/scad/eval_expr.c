@@ -482,8 +482,9 @@ static void lc_eval(scad_eval *ev, scad_env *env, const scad_expr *e, scad_vlist
             scad_value_drop(c);
             if (!go || ev->aborted) break;
             if (++iterations > MAX_LOOP_ELEMENTS) {
-                scad_diag_warning(ev->d, e->loc, "for loop stopped after %d iterations",
-                                  MAX_LOOP_ELEMENTS);
+                scad_eval_error_worded(ev, e->loc, "For loop counter exceeded limit",
+                                       "for loop counter exceeded the limit of %d iterations",
+                                       MAX_LOOP_ELEMENTS);
                 break;
             }
             lc_eval(ev, ie, e->a[0], out);

@@ -215,7 +215,7 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
         scad_env_free(me);
         return NULL;
     }
-    if (scad_call_enter(ev, st->loc, "module", m->name)) {
+    if (scad_call_enter(ev, st->loc, m->loc, "module", m->name)) {
         scad_argv_free(&argv);
         scad_env_free(me);
         return NULL;
@@ -569,6 +569,8 @@ static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_st
         if (!ev->has_root) {
             ev->root = g;
             ev->has_root = 1;
+        } else {
+            scad_diag_warning(ev->d, st->loc, "More than one Root Modifier (!)");
         }
         return NULL;
     }

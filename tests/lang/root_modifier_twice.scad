@@ -1,0 +1,3 @@
+// Two root modifiers: the first wins, the second warns
+!sphere();
+!cube();
