@@ -100,7 +100,10 @@ typedef struct scad_diag {
     scad_loc first_syntax; /* file NULL until a syntax error */
     const char *lex_error; /* OpenSCAD's wording of the first lexer error
                               ("Unterminated string"), at first_syntax */
-    int stopped;           /* an error stopped the evaluation: later lines are dropped */
+    scad_arena *arena;     /* for the deprecations said (each is said once) */
+    const char **deprecated;
+    int ndeprecated, capdeprecated;
+    int stopped; /* an error stopped the evaluation: later lines are dropped */
 } scad_diag;
 
 /* "file:line:col: error: <fmt>" as a RAYSCAD_MSG_ERROR line. */
@@ -124,6 +127,8 @@ const char *scad_diag_file_key(const scad_diag *d, const char *file, char *buf, 
  * "Parser error: <what>" at openscad_line (where 2021.01 puts it). */
 void scad_diag_lex_error(scad_diag *d, scad_loc loc, int openscad_line, const char *what,
                          const char *msg);
+/* line ("DEPRECATED: …" said once, others always) as a warning. */
+void scad_diag_deprecated_line(scad_diag *d, const char *line);
 /* Record where the first syntax error was, for scad_diag_parse_failed. */
 void scad_diag_syntax(scad_diag *d, scad_loc loc);
 /* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in

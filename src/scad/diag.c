@@ -129,13 +129,38 @@ const char *scad_diag_file_key(const scad_diag *d, const char *file, char *buf, 
     return buf;
 }
 
+/* OpenSCAD says each deprecation once: a DEPRECATED line already sent is
+ * dropped (kept in the arena; without one, every line is sent). */
+static int said_before(scad_diag *d, const char *line)
+{
+    if (strncmp(line, "DEPRECATED: ", 12) != 0 || !d->arena) return 0;
+    for (int i = 0; i < d->ndeprecated; i++)
+        if (strcmp(d->deprecated[i], line) == 0) return 1;
+    if (d->ndeprecated == d->capdeprecated) {
+        int cap = d->capdeprecated ? 2 * d->capdeprecated : 16;
+        const char **v = scad_arena_alloc_raw(d->arena, sizeof *v * (size_t)cap);
+        if (!v) return 0;
+        if (d->ndeprecated) memcpy(v, d->deprecated, sizeof *v * (size_t)d->ndeprecated);
+        d->deprecated = v;
+        d->capdeprecated = cap;
+    }
+    const char *copy = scad_arena_strndup(d->arena, line, strlen(line));
+    if (copy) d->deprecated[d->ndeprecated++] = copy;
+    return 0;
+}
+
+void scad_diag_deprecated_line(scad_diag *d, const char *line)
+{
+    if (!said_before(d, line)) scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
+}
+
 static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];
     vsnprintf(msg, sizeof msg, fmt, ap);
     snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg,
              shown_file(d, loc.file, name, sizeof name), loc.line);
-    scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
+    scad_diag_deprecated_line(d, line);
 }
 
 void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)

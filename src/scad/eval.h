@@ -272,6 +272,9 @@ void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
 /* The same, OpenSCAD's echo stream reading echo_msg (its own wording). */
 void scad_eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
+/* "DEPRECATED: msg" without a place, once per evaluation (openscad's
+ * printDeprecation). */
+void scad_deprecated_once(scad_eval *ev, const char *msg);
 /* Where the evaluation is: the module instantiation or function call
  * being evaluated (the innermost frame), else the top-level assignment or
  * statement (ev->at).  For errors such as running out of memory that

@@ -72,6 +72,13 @@ void scad_eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, c
     eval_error_worded(ev, loc, echo_msg, msg);
 }
 
+void scad_deprecated_once(scad_eval *ev, const char *msg)
+{
+    char line[512];
+    snprintf(line, sizeof line, "DEPRECATED: %s", msg);
+    scad_diag_deprecated_line(ev->d, line);
+}
+
 scad_loc scad_eval_here(const scad_eval *ev)
 {
     return ev->nframes > 0 ? ev->frames[ev->nframes - 1].loc : ev->at;

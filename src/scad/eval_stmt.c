@@ -455,6 +455,56 @@ static scad_geom *call_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st
     return r;
 }
 
+/* child(n), deprecated: children(n) for one whole index (default 0), its
+ * deprecation said once per evaluation without a place, as openscad 2021.01. */
+static scad_geom *deprecated_child(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                   const scad_state *state)
+{
+    scad_deprecated_once(ev, "child() will be removed in future releases. Use children() instead.");
+    scad_argv a;
+    if (scad_args_eval(ev, env, &st->args, &a)) return NULL;
+    int k = 0;
+    if (a.n > 0 && a.v[0].kind == SV_NUM) {
+        double t = trunc(a.v[0].u.num);
+        k = x86_int(t);
+    }
+    scad_argv_free(&a);
+    if (k < 0) {
+        char line[96];
+        snprintf(line, sizeof line, "WARNING: Negative child index (%d) not allowed", k);
+        scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, line);
+        return NULL;
+    }
+    scad_env *m = env;
+    while (m && !m->is_module)
+        m = m->parent;
+    if (!m || !m->children || k >= m->children->nstmts) return NULL;
+    return child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, &k, 1);
+}
+
+/* assign(a = …, b = …) children, deprecated: the named arguments, each
+ * evaluated in the caller's scope (in parallel, not in sequence), seen by
+ * the children, which form a group. */
+static scad_geom *deprecated_assign(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                    const scad_state *state)
+{
+    scad_diag_deprecated(ev->d, st->loc,
+                         "The assign() module will be removed in future releases. Use a regular "
+                         "assignment instead.");
+    scad_argv a;
+    if (scad_args_eval(ev, env, &st->args, &a)) return NULL;
+    scad_env *ae = scad_env_new(ev, env, env, NULL);
+    scad_geom *r = NULL;
+    if (ae) {
+        for (int i = 0; i < a.n; i++)
+            if (a.names[i]) scad_env_set(ae, a.names[i], scad_value_ref(a.v[i]));
+        r = child_scope(ev, ae, ae, st->children, state, CSG_OP_UNION, NULL, 0);
+        scad_env_free(ae);
+    }
+    scad_argv_free(&a);
+    return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+}
+
 static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                     const scad_state *state)
 {
@@ -497,6 +547,8 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         int id;
         const scad_module_def *d = scad_registry_module(name, &id);
         if (d) return call_builtin(ev, env, st, state, d, id);
+        if (!strcmp(name, "child")) return deprecated_child(ev, env, st, state);
+        if (!strcmp(name, "assign")) return deprecated_assign(ev, env, st, state);
         scad_diag_warning(ev->d, st->loc, "Ignoring unknown module '%s'", name);
         return NULL;
     }

@@ -323,6 +323,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
     d.opt = opt;
     const char *slash = strrchr(name, '/');
     d.base_dir = slash ? scad_arena_strndup(a, name, (size_t)(slash - name + 1)) : "";
+    d.arena = a;
     char cwd[4096];
     if (getcwd(cwd, sizeof cwd)) d.cwd = scad_arena_strndup(a, cwd, strlen(cwd));
     scad_names *names = scad_names_new(a);

@@ -195,6 +195,9 @@ static void linear_read(scad_call *c, void *out)
 {
     linear_args *p = out;
     scad_file_arg_read(c, LX_FILE, LX_LAYER, LX_ORIGIN, -1, -1, "linear_extrude", &p->file);
+    if (c->arg[LX_FILE].kind == SV_STR)
+        scad_deprecated_once(c->ev, "Support for reading files in linear_extrude will be removed "
+                                    "in future releases. Use a child import() instead.");
     p->height = 100;
     /* OpenSCAD takes a first unnamed number for the height when none is
      * named; bound by position, it went to file */
@@ -403,6 +406,18 @@ static void rotate_read(scad_call *c, void *out)
 {
     rotate_args *p = out;
     scad_file_arg_read(c, RX_FILE, RX_LAYER, RX_ORIGIN, -1, -1, NULL, &p->file);
+    scad_value f = c->arg[RX_FILE];
+    if (f.kind != SV_UNDEF)
+        scad_deprecated_once(c->ev, "Support for reading files in rotate_extrude will be removed "
+                                    "in future releases. Use a child import() instead.");
+    if (f.kind != SV_UNDEF && f.kind != SV_STR) {
+        /* openscad 2021.01 takes any value as the file, as its text:
+         * rotate_extrude(45) reads a file named "45" */
+        scad_buf b = {0};
+        scad_value_format(&b, f, 0);
+        p->file.name = scad_arena_strndup(c->ev->arena, scad_buf_str(&b), strlen(scad_buf_str(&b)));
+        scad_buf_free(&b);
+    }
     p->scale = 1;
     scad_arg_num(c->arg[RX_SCALE], &p->scale);
     p->angle = 360;

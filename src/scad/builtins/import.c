@@ -63,6 +63,10 @@ static void import_read(scad_call *c, void *out)
     /* sic: 2021.01's import() names linear_extrude in its origin warning */
     scad_file_arg_read(c, IM_FILE, IM_LAYER, IM_ORIGIN, IM_FILENAME, IM_LAYERNAME, "linear_extrude",
                        &p->file);
+    if (c->arg[IM_FILE].kind == SV_UNDEF && c->arg[IM_FILENAME].kind != SV_UNDEF)
+        scad_deprecated_once(c->ev, "filename= is deprecated. Please use file=");
+    if (c->arg[IM_LAYER].kind == SV_UNDEF && c->arg[IM_LAYERNAME].kind != SV_UNDEF)
+        scad_deprecated_once(c->ev, "layername= is deprecated. Please use layer=");
     p->scale = 1;
     scad_arg_num(c->arg[IM_SCALE], &p->scale);
     if (p->scale <= 0) p->scale = 1;
