@@ -101,6 +101,8 @@ typedef struct scad_diag {
     const char *lex_error; /* OpenSCAD's wording of the first lexer error
                               ("Unterminated string"), at first_syntax */
     scad_arena *arena;     /* for the deprecations said (each is said once) */
+    uint64_t last_warning; /* the last warning line's hash, and how many */
+    int warning_repeats;   /* times in a row it came (5 are shown) */
     const char **deprecated;
     int ndeprecated, capdeprecated;
     int stopped; /* an error stopped the evaluation: later lines are dropped */

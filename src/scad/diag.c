@@ -8,16 +8,37 @@
  * say how many of each were sent; nothing here prints.
  */
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "ast.h"
 
-enum { LINE_MAX_BYTES = 4096 };
+enum { LINE_MAX_BYTES = 4096, REPEATS_SHOWN = 5 };
+
+/* FNV-1a of a line: repeats of one warning are told apart by it. */
+static uint64_t line_hash(const char *s)
+{
+    uint64_t h = 14695981039346656037ull;
+    for (; *s; s++)
+        h = (h ^ (unsigned char)*s) * 1099511628211ull;
+    return h;
+}
 
 void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
 {
     if (d->stopped) return;
+    if (kind == RAYSCAD_MSG_WARNING && strncmp(line, "WARNING: ", 9) == 0) {
+        /* OpenSCAD 2021.01 prints a warning at most 5 times in a row (other
+         * output between the repeats does not count; another warning does) */
+        uint64_t h = line_hash(line);
+        if (d->warning_repeats > 0 && h == d->last_warning) {
+            if (++d->warning_repeats > REPEATS_SHOWN) return;
+        } else {
+            d->last_warning = h;
+            d->warning_repeats = 1;
+        }
+    }
     if (kind == RAYSCAD_MSG_WARNING) d->warnings++;
     if (kind == RAYSCAD_MSG_ERROR) d->errors++;
     if (d->opt && d->opt->message) d->opt->message(d->opt->ud, kind, line);

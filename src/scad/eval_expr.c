@@ -196,8 +196,12 @@ static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_v
         break;
     }
     if (!defined)
-        scad_diag_warning(ev->d, e->loc, "undefined operation (%s %s %s)", scad_value_type_name(a),
-                          scad_op_text(op, one), scad_value_type_name(b));
+        scad_diag_warning(ev->d, e->loc,
+                          /* 2021.01 words it so for two undefs or two functions */
+                          a.kind == b.kind && (a.kind == SV_FUNC || a.kind == SV_UNDEF)
+                              ? "operation undefined (%s %s %s)"
+                              : "undefined operation (%s %s %s)",
+                          scad_value_type_name(a), scad_op_text(op, one), scad_value_type_name(b));
     return r;
 }
 

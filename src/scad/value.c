@@ -211,6 +211,16 @@ int scad_value_compare(scad_value a, scad_value b)
         }
         return (A->n > B->n) - (A->n < B->n);
     }
+    case SV_RANGE: {
+        /* OpenSCAD 2021.01's RangeType order: empty first, then begin,
+         * step and number of values */
+        const scad_range *A = a.u.range, *B = b.u.range;
+        double n = scad_range_steps(A), m = scad_range_steps(B);
+        if (n == 0 || m == 0) return (n != 0) - (m != 0);
+        if (A->begin != B->begin) return A->begin < B->begin ? -1 : 1;
+        if (A->step != B->step) return A->step < B->step ? -1 : 1;
+        return (n > m) - (n < m);
+    }
     default:
         return 2;
     }
