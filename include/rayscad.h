@@ -182,7 +182,8 @@ const char *rayscad_model_setting(const rayscad_model *m, int i, double *value);
  * geometry, as openscad's: its messages are exactly those of an .echo
  * output.  RAYSCAD_OK and *text (NUL-terminated, *len bytes, len may be
  * NULL; the caller frees it with free()), or RAYSCAD_ERROR after an error
- * message (*text NULL). */
+ * message (*text NULL).  text NULL: the evaluation for its messages only
+ * (an .echo output), no text made. */
 rayscad_status rayscad_csg_text(const char *path, const rayscad_eval_options *o, char **text,
                                 size_t *len);
 rayscad_status rayscad_csg_text_string(const char *name, const char *src,
