@@ -112,6 +112,9 @@ typedef struct scad_eval {
     struct scad_mt19937 *rng; /* rands()'s engine (math.c), made on first use */
     scad_geom *root;          /* the first '!' subtree */
     int has_root;
+    const scad_stmt *root_stmt; /* the statement of the first '!' */
+    scad_loc second_root;       /* where another '!' was, file NULL if none */
+    int in_root;                /* '!' statements being evaluated */
     scad_geom **highlights;
     int nhighlights, caphighlights;
     scad_geom **backgrounds;

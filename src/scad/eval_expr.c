@@ -197,8 +197,9 @@ static scad_value binary(scad_eval *ev, const scad_expr *e, scad_value a, scad_v
     }
     if (!defined)
         scad_diag_warning(ev->d, e->loc,
-                          /* 2021.01 words it so for two undefs or two functions */
-                          a.kind == b.kind && (a.kind == SV_FUNC || a.kind == SV_UNDEF)
+                          /* 2021.01 words it so for ordering two undefs or functions */
+                          a.kind == b.kind && (a.kind == SV_FUNC || a.kind == SV_UNDEF) &&
+                                  (op == '<' || op == '>' || op == TK_LE || op == TK_GE)
                               ? "operation undefined (%s %s %s)"
                               : "undefined operation (%s %s %s)",
                           scad_value_type_name(a), scad_op_text(op, one), scad_value_type_name(b));

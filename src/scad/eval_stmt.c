@@ -617,14 +617,22 @@ static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_st
         scad_state fresh;
         memcpy(fresh.xf, csg_affine_identity, sizeof fresh.xf);
         memset(&fresh.mat, 0, sizeof fresh.mat);
-        scad_geom *g = instantiate_plain(ev, env, st, &fresh);
-        if (!ev->has_root) {
+        /* the first '!' met (an outer one before those inside it) is the
+         * root; one of another statement is noted for the warning openscad
+         * gives once the tree is built (a '!' in a loop is one statement) */
+        int first = !ev->root_stmt, nested = ev->in_root;
+        if (first)
+            ev->root_stmt = st;
+        else if (st != ev->root_stmt && !nested && !ev->second_root.file)
+            ev->second_root = st->loc;
+        ev->in_root++;
+        scad_geom *g = instantiate_plain(ev, env, st, nested ? state : &fresh);
+        ev->in_root--;
+        if (first) {
             ev->root = g;
             ev->has_root = 1;
-        } else {
-            scad_diag_warning(ev->d, st->loc, "More than one Root Modifier (!)");
         }
-        return NULL;
+        return nested ? g : NULL; /* a '!' inside another is a plain part of it */
     }
     scad_geom *g = instantiate_plain(ev, env, st, state);
     if (g && st->background) {

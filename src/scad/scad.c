@@ -190,6 +190,8 @@ static void run_job(job *j)
     ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
     if (file) {
         scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
+        if (ev.second_root.file && !ev.aborted)
+            scad_diag_warning(j->d, ev.second_root, "More than one Root Modifier (!)");
         /* openscad's camera takes the file's own $vp* values over its
          * --viewall/--autocenter defaults, and says so */
         int vp = 0;
