@@ -380,7 +380,11 @@ int scad_check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_
 {
     scad_argv a;
     if (scad_args_eval(ev, env, args, &a)) return -1;
-    scad_value c = scad_argv_get(&a, "condition", 0);
+    /* without one, OpenSCAD 2021.01 looks a variable 'condition' up in the
+     * caller's scope (warning when there is none) */
+    scad_value c = scad_argv_given(&a, "condition", 0)
+                       ? scad_argv_get(&a, "condition", 0)
+                       : scad_env_lookup_cstr(ev, env, "condition", loc, 0, NULL);
     int ok = scad_value_truthy(c);
     if (!ok && !ev->aborted) {
         scad_buf b = {0};
@@ -390,9 +394,13 @@ int scad_check_assert(scad_eval *ev, scad_env *env, const scad_args *args, scad_
                 ce = args->v[i].value;
                 break;
             }
-        scad_buf_puts(&b, "Assertion '");
-        if (ce) scad_expr_format(&b, ce);
-        scad_buf_puts(&b, "' failed");
+        if (ce) {
+            scad_buf_puts(&b, "Assertion '");
+            scad_expr_format(&b, ce);
+            scad_buf_puts(&b, "' failed");
+        } else {
+            scad_buf_puts(&b, "Assertion failed");
+        }
         if (scad_argv_given(&a, "message", 1)) {
             scad_buf_puts(&b, ": ");
             scad_value_format(&b, scad_argv_get(&a, "message", 1), 1);

@@ -66,8 +66,20 @@ static double special(scad_call *c, const char *name)
 scad_facet_params scad_facets_read(scad_call *c)
 {
     scad_facet_params f = {special(c, "$fn"), special(c, "$fa"), special(c, "$fs")};
-    if (f.fa < 0.01) f.fa = 0.01;
-    if (f.fs < 0.01) f.fs = 0.01;
+    return f;
+}
+
+scad_facet_params scad_facets_read_clamped(scad_call *c)
+{
+    scad_facet_params f = scad_facets_read(c);
+    if (f.fs < 0.01) {
+        scad_diag_warning(c->ev->d, c->st->loc, "$fs too small - clamping to %f", 0.01);
+        f.fs = 0.01;
+    }
+    if (f.fa < 0.01) {
+        scad_diag_warning(c->ev->d, c->st->loc, "$fa too small - clamping to %f", 0.01);
+        f.fa = 0.01;
+    }
     return f;
 }
 

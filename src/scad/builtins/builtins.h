@@ -26,13 +26,16 @@ extern const scad_function_def scad_dxf_functions[];          /* dxf.c, ends wit
 /* ---- reading arguments (args.c): OpenSCAD 2021.01's conversions ------------ */
 
 /* $fn, $fa, $fs as a call sees them: its own $-arguments, else the dynamic
- * scope; a value that is not a number counts as 0 (Value::toDouble), and
- * $fa and $fs are then raised to 0.01, as OpenSCAD's nodes keep them. */
+ * scope; a value that is not a number counts as 0 (Value::toDouble).  Kept
+ * as they are, as OpenSCAD's nodes keep them (the fragment rule clamps). */
 typedef struct scad_facet_params {
     double fn, fa, fs;
 } scad_facet_params;
 
 scad_facet_params scad_facets_read(scad_call *c);
+/* The same with OpenSCAD's primitives' clamping: $fs and $fa below 0.01
+ * become 0.01, each with its warning (circle, sphere, cylinder). */
+scad_facet_params scad_facets_read_clamped(scad_call *c);
 /* OpenSCAD 2021.01's get_fragments_from_r: 3 below the finest radius or
  * for an infinite or NaN $fn, $fn itself (at least 3) when positive, else
  * from $fa and $fs; capped at 100000 (OpenSCAD has no cap; more would not

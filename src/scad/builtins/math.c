@@ -643,8 +643,10 @@ static scad_value search_one(scad_value match, scad_value in, int nret, int col,
 
 static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    (void)name;
-    if (a->n < 2) return scad_undef();
+    if (a->n < 2) {
+        count_warning(ev, loc, name);
+        return scad_undef();
+    }
     scad_value match = scad_arg_at(a, 0), in = scad_arg_at(a, 1);
     double d;
     /* NaN and out-of-range counts clamp (a cast would be undefined) */

@@ -104,7 +104,7 @@ static void round_read(scad_call *c, void *out)
     round_args *p = out;
     p->r = 1;
     scad_arg_radius(c, ROUND_D, ROUND_R, "d", "r", &p->r);
-    p->f = scad_facets_read(c);
+    p->f = scad_facets_read_clamped(c);
 }
 
 static int round_print(scad_call *c, const void *args, scad_buf *b)
@@ -218,11 +218,14 @@ static void cylinder_read(scad_call *c, void *out)
     p->h = p->r1 = p->r2 = 1;
     double r;
     scad_arg_num(c->arg[CYL_H], &p->h);
-    if (scad_arg_radius(c, CYL_D, CYL_R, "d", "r", &r)) p->r1 = p->r2 = r;
-    scad_arg_radius(c, CYL_D1, CYL_R1, "d1", "r1", &p->r1);
-    scad_arg_radius(c, CYL_D2, CYL_R2, "d2", "r2", &p->r2);
+    int has_r = scad_arg_radius(c, CYL_D, CYL_R, "d", "r", &r);
+    if (has_r) p->r1 = p->r2 = r;
+    int has_r1 = scad_arg_radius(c, CYL_D1, CYL_R1, "d1", "r1", &p->r1);
+    int has_r2 = scad_arg_radius(c, CYL_D2, CYL_R2, "d2", "r2", &p->r2);
+    if (has_r && (has_r1 || has_r2))
+        scad_diag_warning(c->ev->d, c->st->loc, "Cylinder parameters ambiguous");
     p->center = scad_arg_bool(c->arg[CYL_CENTER], 0);
-    p->f = scad_facets_read(c);
+    p->f = scad_facets_read_clamped(c);
 }
 
 static int cylinder_print(scad_call *c, const void *args, scad_buf *b)
