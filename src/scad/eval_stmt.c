@@ -420,12 +420,25 @@ static scad_geom *print_builtin(scad_call *c, const void *args)
  * OpenSCAD's rule, read once by the entry, then printed (dump mode) or
  * built.  Modules that take no arguments (union, group …) evaluate none,
  * as OpenSCAD's CSG modules ignore theirs. */
+/* The primitives OpenSCAD 2021.01 warns about when given children (which
+ * they ignore; text, import and surface ignore theirs silently). */
+static int is_leaf_primitive(const char *name)
+{
+    static const char *const leaves[] = {"cube",   "sphere", "cylinder", "polyhedron",
+                                         "square", "circle", "polygon"};
+    for (size_t i = 0; i < sizeof leaves / sizeof leaves[0]; i++)
+        if (strcmp(name, leaves[i]) == 0) return 1;
+    return 0;
+}
+
 static scad_geom *call_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                const scad_state *state, const scad_module_def *d, int id)
 {
     scad_call c = {ev, env, st, state, d, NULL, {{0}}};
     scad_argv a = {0};
     scad_env *dollar = NULL;
+    if (st->children && st->children->nstmts > 0 && is_leaf_primitive(d->name))
+        scad_diag_warning(ev->d, st->loc, "module %s() does not support child modules", d->name);
     if (d->npositional >= 0) {
         const scad_args *params = builtin_params(ev, d, id);
         if (!params) {

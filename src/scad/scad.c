@@ -132,6 +132,50 @@ static void take_vp(scad_result *out, char which, scad_value v)
     out->vp_set |= which == 'r' ? SCAD_VP_R : SCAD_VP_T;
 }
 
+/* OpenSCAD 2021.01's Camera::updateView, run when the file sets any $vp*:
+ * $vpr, $vpt (its getVec3: 2 or 3 numbers) and $vpd (a number) as the file
+ * sees them, each taken or warned about in that order ($vpf taken quietly);
+ * 1 when one was taken, which turns --viewall/--autocenter off. */
+static int file_camera(scad_eval *ev, scad_env *file, scad_result *out)
+{
+    int set = 0;
+    for (int i = 0; i < file->nvars; i++) {
+        const char *n = file->vars[i].name;
+        if (!strncmp(n, "$vp", 3) && strchr("drtf", n[3]) && !n[4] &&
+            file->vars[i].v.kind != SV_UNDEF)
+            set = 1;
+    }
+    if (!set) return 0;
+    int taken = 0;
+    static const char which[] = "rtdf";
+    for (int k = 0; k < 4; k++) {
+        char name[5] = {'$', 'v', 'p', which[k], 0};
+        scad_value v = scad_env_lookup_cstr(ev, file, name, ev->at, 1, NULL);
+        int ok;
+        if (which[k] == 'd' || which[k] == 'f') {
+            ok = v.kind == SV_NUM;
+        } else {
+            ok = v.kind == SV_VEC && (v.u.vec->n == 2 || v.u.vec->n == 3);
+            for (int i = 0; ok && v.u.vec->n == 3 && i < 3; i++)
+                ok = v.u.vec->v[i].kind == SV_NUM;
+        }
+        if (ok && out) take_vp(out, which[k], v);
+        if (which[k] == 'f') break;
+        if (ok) {
+            taken = 1;
+        } else {
+            scad_buf b = {0};
+            scad_value_format(&b, v, 1);
+            char line[600];
+            snprintf(line, sizeof line, "WARNING: Unable to convert %s=%.400s to %s", name,
+                     scad_buf_str(&b), which[k] == 'd' ? "a number" : "a vec3 or vec2 of numbers");
+            scad_buf_free(&b);
+            scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, line);
+        }
+    }
+    return taken;
+}
+
 static void run_job(job *j)
 {
     char base;
@@ -192,17 +236,7 @@ static void run_job(job *j)
         scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
         if (ev.second_root.file && !ev.aborted)
             scad_diag_warning(j->d, ev.second_root, "More than one Root Modifier (!)");
-        /* openscad's camera takes the file's own $vp* values over its
-         * --viewall/--autocenter defaults, and says so */
-        int vp = 0;
-        for (int i = 0; i < file->nvars; i++) {
-            const char *n = file->vars[i].name;
-            if (!strncmp(n, "$vp", 3) && strchr("drtf", n[3]) && !n[4] &&
-                file->vars[i].v.kind != SV_UNDEF) {
-                vp = 1;
-                if (j->out) take_vp(j->out, n[3], file->vars[i].v);
-            }
-        }
+        int vp = !ev.aborted && file_camera(&ev, file, j->out);
         if (j->out) j->out->vp_auto_off = vp;
         for (int i = 0; j->out && i < file->nvars; i++) {
             const char *n = file->vars[i].name;
