@@ -101,6 +101,11 @@ typedef struct scad_diag {
     const char *lex_error; /* OpenSCAD's wording of the first lexer error
                               ("Unterminated string"), at first_syntax */
     scad_arena *arena;     /* for the deprecations said (each is said once) */
+    /* each file's document folder, as OpenSCAD names files in messages
+     * relative to it: a used file's own, its includes' too, base_dir for
+     * the main file and its includes (scad_diag_document) */
+    const char **doc_files, **doc_dirs;
+    int ndocs, capdocs;
     uint64_t last_warning; /* the last warning line's hash, and how many */
     int warning_repeats;   /* times in a row it came (5 are shown) */
     const char **deprecated;
@@ -114,11 +119,19 @@ void scad_diag_error(scad_diag *d, scad_loc loc, const char *fmt, ...)
 /* "WARNING: <fmt> in file <relative path>, line N" (OpenSCAD's wording). */
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The same naming the file relative to its document folder (a used file's
+ * own), as openscad names it in "variable x not specified as parameter". */
+void scad_diag_warning_own_doc(scad_diag *d, scad_loc loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 /* "DEPRECATED: <fmt> in file <relative path>, line N", sent as a warning. */
 /* A line of OpenSCAD's own account of an error, as its echo stream holds
  * it (RAYSCAD_MSG_TRACE): "<fmt> in file x.scad, line N". */
 void scad_diag_trace(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* Record doc_dir (a folder with its '/', or "") as file's document folder;
+ * scad_diag_doc_dir gives it back (base_dir for a file not recorded). */
+void scad_diag_document(scad_diag *d, const char *file, const char *doc_dir);
+const char *scad_diag_doc_dir(const scad_diag *d, const char *file);
 /* file as OpenSCAD names it in messages: relative to the main file's
  * folder, lexically normalized, "../" where outside it; in buf (or file). */
 const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf, size_t size);

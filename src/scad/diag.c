@@ -99,20 +99,50 @@ static int components(const char *cwd, const char *path, const char **at, size_t
     return n;
 }
 
-/* A file name as OpenSCAD prints it: relative to the main file's folder,
- * with "../" where it lies outside, into buf. */
-static const char *shown_file(const scad_diag *d, const char *file, char *buf, size_t size)
+void scad_diag_document(scad_diag *d, const char *file, const char *doc_dir)
+{
+    if (!d->arena || scad_diag_doc_dir(d, file) != d->base_dir) return;
+    if (d->ndocs == d->capdocs) {
+        int cap = d->capdocs ? 2 * d->capdocs : 16;
+        const char **f = scad_arena_alloc_raw(d->arena, sizeof *f * (size_t)cap);
+        const char **g = scad_arena_alloc_raw(d->arena, sizeof *g * (size_t)cap);
+        if (!f || !g) return;
+        if (d->ndocs) {
+            memcpy(f, d->doc_files, sizeof *f * (size_t)d->ndocs);
+            memcpy(g, d->doc_dirs, sizeof *g * (size_t)d->ndocs);
+        }
+        d->doc_files = f;
+        d->doc_dirs = g;
+        d->capdocs = cap;
+    }
+    d->doc_files[d->ndocs] = file;
+    d->doc_dirs[d->ndocs++] = doc_dir;
+}
+
+const char *scad_diag_doc_dir(const scad_diag *d, const char *file)
+{
+    for (int i = 0; file && i < d->ndocs; i++)
+        if (d->doc_files[i] == file || strcmp(d->doc_files[i], file) == 0) return d->doc_dirs[i];
+    return d->base_dir;
+}
+
+/* A file name as OpenSCAD prints it: relative to the main file's folder
+ * (own_doc: to its own document folder), with "../" where it lies outside,
+ * into buf. */
+static const char *file_shown(const scad_diag *d, const char *file, int own_doc, char *buf,
+                              size_t size)
 {
     enum { MAXC = 256 };
     if (!file) return "?";
+    const char *base = own_doc ? scad_diag_doc_dir(d, file) : d->base_dir;
     if (!d->cwd) { /* no working directory known: the folder's prefix off */
-        size_t n = d->base_dir ? strlen(d->base_dir) : 0;
-        return n && strncmp(file, d->base_dir, n) == 0 ? file + n : file;
+        size_t n = base ? strlen(base) : 0;
+        return n && strncmp(file, base, n) == 0 ? file + n : file;
     }
     const char *fa[MAXC], *ba[MAXC];
     size_t fl[MAXC], bl[MAXC];
     int nf = components(d->cwd, file, fa, fl, MAXC);
-    int nb = components(d->cwd, d->base_dir ? d->base_dir : "", ba, bl, MAXC);
+    int nb = components(d->cwd, base ? base : "", ba, bl, MAXC);
     int common = 0;
     while (common < nf - 1 && common < nb && fl[common] == bl[common] &&
            memcmp(fa[common], ba[common], fl[common]) == 0)
@@ -127,6 +157,11 @@ static const char *shown_file(const scad_diag *d, const char *file, char *buf, s
     }
     buf[k] = 0;
     return buf;
+}
+
+static const char *shown_file(const scad_diag *d, const char *file, char *buf, size_t size)
+{
+    return file_shown(d, file, 0, buf, size);
 }
 
 const char *scad_diag_file_name(const scad_diag *d, const char *file, char *buf, size_t size)
@@ -229,6 +264,18 @@ void scad_diag_parse_failed(scad_diag *d, const char *main_file)
     snprintf(line, sizeof line, "Can't parse file '%s'!", main_file);
     scad_diag_line(d, RAYSCAD_MSG_TRACE, line);
     scad_diag_line(d, RAYSCAD_MSG_TRACE, ""); /* openscad ends it with an empty line */
+}
+
+void scad_diag_warning_own_doc(scad_diag *d, scad_loc loc, const char *fmt, ...)
+{
+    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(line, sizeof line, "WARNING: %s in file %s, line %d", msg,
+             file_shown(d, loc.file, 1, name, sizeof name), loc.line);
+    scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
 }
 
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)

@@ -346,7 +346,8 @@ int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_arg
             for (int k = 0; k < params->n && !known; k++)
                 known = params->v[k].name == name;
             if (!known)
-                scad_diag_warning(ev->d, loc, "variable %s not specified as parameter", name);
+                scad_diag_warning_own_doc(ev->d, loc, "variable %s not specified as parameter",
+                                          name);
         }
         int k = 0;
         while (name && k < nkeys && out->names[k] != name)

@@ -406,9 +406,15 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         u->scope[u->n] = scope;
         u->n++;
         const struct open_include *open = P->open;
-        P->open = NULL; /* a used file is a parse of its own */
+        const char *doc = P->doc;
+        P->open = NULL; /* a used file is a parse of its own, its folder its document's */
+        const char *slash = strrchr(path, '/');
+        P->doc = slash ? scad_arena_strndup(P->a, path, (size_t)(slash - path + 1)) : "";
+        if (!P->doc) P->doc = doc;
+        scad_diag_document(P->d, path, P->doc);
         parse_file_into(P, scope, u->names, path, src, 0);
         P->open = open;
+        P->doc = doc;
     }
     for (int i = 0; i < s->nuses; i++)
         if (s->uses[i] == scope) return;
@@ -438,6 +444,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
     }
     struct open_include here = {key, P->open};
     P->open = &here;
+    scad_diag_document(P->d, path, P->doc);
     parse_file_into(P, s, P->shared->names, path, src, P->depth);
     P->open = here.up;
 }
@@ -446,7 +453,7 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
                        const char *src)
 {
     shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file};
-    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, NULL, &sh};
+    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, NULL, d->base_dir, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);
     if (!P.t) {

@@ -26,6 +26,7 @@ typedef struct parser {
     /* the files being included (keys, innermost first): including one of
      * them again fails, as openscad 2021.01's circular-include check */
     const struct open_include *open;
+    const char *doc;       /* the document folder of the file being parsed */
     struct shared *shared; /* one for a parse and its includes and uses */
 } parser;
 

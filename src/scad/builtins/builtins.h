@@ -70,6 +70,10 @@ void scad_print_bool(scad_buf *b, int x);
 void scad_print_quoted(scad_buf *b, const char *s, size_t n);
 /* before, "$fn = …, $fa = …, $fs = …", after. */
 void scad_print_facets(scad_buf *b, scad_facet_params f, const char *before, const char *after);
+/* OpenSCAD 2021.01's lookup_file: name relative to the folder of the file
+ * `from` unless absolute or empty; where it is not there but in the main
+ * file's folder, that one, with its DEPRECATED line.  Appended to out. */
+void scad_lookup_file(scad_eval *ev, const char *from, const char *name, scad_buf *out);
 /* The path of `name` (as written in the file `from`) as OpenSCAD prints it:
  * relative to the main file's folder; *mtime gets its modification time
  * (0 when it does not exist). */
@@ -93,8 +97,7 @@ void scad_file_arg_read(scad_call *c, int file, int layer, int origin, int alt_f
  * path relative to the main file's folder); *mtime gets the file's
  * modification time, 0 when it does not exist. */
 void scad_file_arg_print(scad_call *c, const scad_file_arg *f, scad_buf *b, long long *mtime);
-/* The path OpenSCAD opens for name: relative to the calling file's folder
- * unless absolute. */
+/* The path OpenSCAD opens for name (scad_lookup_file from the call's file). */
 void scad_file_path(scad_call *c, const char *name, scad_buf *out);
 
 /* ---- geometry (shape.c, material.c) ---------------------------------------- */

@@ -46,18 +46,6 @@ static void to_string(scad_value v, scad_buf *out)
         scad_value_format(out, v, 0);
 }
 
-/* The file as OpenSCAD's lookup_file finds it: relative to the folder of
- * the calling file unless absolute or empty. */
-static void resolve(scad_loc loc, const char *name, scad_buf *out)
-{
-    const char *from = loc.file ? loc.file : "";
-    if (name[0] && name[0] != '/') {
-        const char *slash = strrchr(from, '/');
-        if (slash) scad_buf_put(out, from, (size_t)(slash - from + 1));
-    }
-    scad_buf_puts(out, name);
-}
-
 /* Value::getVec2: a list of two numbers, or nothing assigned. */
 static int vec2(scad_value v, double o[2])
 {
@@ -112,7 +100,7 @@ static void read_args(scad_eval *ev, const scad_argv *a, scad_loc loc, const cha
             to_string(v, into);
         }
     }
-    resolve(loc, scad_buf_str(&d->raw), &d->file);
+    scad_lookup_file(ev, loc.file ? loc.file : "", scad_buf_str(&d->raw), &d->file);
 }
 
 static void free_args(dxf_args *d)

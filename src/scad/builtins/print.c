@@ -96,15 +96,39 @@ static char *absolute(const char *path)
     return out;
 }
 
+void scad_lookup_file(scad_eval *ev, const char *from, const char *name, scad_buf *out)
+{
+    if (!name[0] || name[0] == '/') {
+        scad_buf_puts(out, name);
+        return;
+    }
+    const char *slash = strrchr(from, '/');
+    if (slash) scad_buf_put(out, from, (size_t)(slash - from + 1));
+    scad_buf_puts(out, name);
+    if (scad_file_stat(ev->d->opt, scad_buf_str(out), NULL)) return;
+    /* 2021.01 falls back on the main file's folder, and says so */
+    scad_buf root = {0};
+    scad_buf_puts(&root, ev->d->base_dir ? ev->d->base_dir : "");
+    scad_buf_puts(&root, name);
+    if (strcmp(scad_buf_str(&root), scad_buf_str(out)) != 0 &&
+        scad_file_stat(ev->d->opt, scad_buf_str(&root), NULL)) {
+        char line[700];
+        snprintf(line, sizeof line,
+                 "DEPRECATED: Imported file (%.500s) found in document root instead of relative to "
+                 "the importing module. This behavior is deprecated",
+                 name);
+        scad_diag_deprecated_line(ev->d, line);
+        out->n = 0;
+        scad_buf_puts(out, scad_buf_str(&root));
+    }
+    scad_buf_free(&root);
+}
+
 void scad_print_path(scad_eval *ev, const char *from, const char *name, scad_buf *out,
                      long long *mtime)
 {
     scad_buf full = {0};
-    if (name[0] != '/') {
-        const char *slash = strrchr(from, '/');
-        if (slash) scad_buf_put(&full, from, (size_t)(slash - from + 1));
-    }
-    scad_buf_puts(&full, name);
+    scad_lookup_file(ev, from, name, &full);
     scad_file_stat(ev->d->opt, scad_buf_str(&full), mtime);
     scad_buf base = {0};
     scad_buf_puts(&base, ev->d->base_dir && ev->d->base_dir[0] ? ev->d->base_dir : ".");
@@ -136,12 +160,7 @@ void scad_print_path(scad_eval *ev, const char *from, const char *name, scad_buf
 
 void scad_file_path(scad_call *c, const char *name, scad_buf *out)
 {
-    const char *from = c->st->loc.file ? c->st->loc.file : "";
-    if (name[0] != '/') {
-        const char *slash = strrchr(from, '/');
-        if (slash) scad_buf_put(out, from, (size_t)(slash - from + 1));
-    }
-    scad_buf_puts(out, name);
+    scad_lookup_file(c->ev, c->st->loc.file ? c->st->loc.file : "", name, out);
 }
 
 void scad_file_arg_read(scad_call *c, int file, int layer, int origin, int alt_file, int alt_layer,
