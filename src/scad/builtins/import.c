@@ -46,8 +46,7 @@ enum {
     IM_FILENAME,
     IM_LAYERNAME,
     IM_CENTER,
-    IM_DPI,
-    IM_ID
+    IM_DPI
 };
 
 typedef struct import_args {
@@ -55,6 +54,8 @@ typedef struct import_args {
     double scale;
     int convexity;
     scad_facet_params f;
+    int center; /* SVG's center and dpi (72 by default), printed for .svg */
+    double dpi;
 } import_args;
 
 static void import_read(scad_call *c, void *out)
@@ -73,6 +74,22 @@ static void import_read(scad_call *c, void *out)
     p->convexity = scad_arg_int(c->arg[IM_CONVEXITY], 1);
     if (p->convexity <= 0) p->convexity = 1;
     p->f = scad_facets_read(c);
+    p->center = c->arg[IM_CENTER].kind == SV_BOOL && c->arg[IM_CENTER].u.b;
+    p->dpi = 72;
+    if (c->arg[IM_DPI].kind == SV_NUM) {
+        if (c->arg[IM_DPI].u.num >= 0.001) {
+            p->dpi = c->arg[IM_DPI].u.num;
+        } else {
+            /* sic: 2021.01's message, its arguments misplaced as it prints them */
+            char shown[1024], line[2400];
+            const char *f = scad_diag_file_name(c->ev->d, c->st->loc.file, shown, sizeof shown);
+            snprintf(line, sizeof line,
+                     "WARNING: Invalid dpi value giving, using default of undef dpi. Value must be "
+                     "positive and >= 0.001, file %s, import() at line %s",
+                     f, f);
+            scad_diag_line(c->ev->d, RAYSCAD_MSG_WARNING, line);
+        }
+    }
 }
 
 static int import_print(scad_call *c, const void *args, scad_buf *b)
@@ -84,6 +101,12 @@ static int import_print(scad_call *c, const void *args, scad_buf *b)
         scad_file_arg_print(c, &p->file, b, &mtime);
     else
         scad_buf_puts(b, "file = \"\", layer = \"\", origin = [0, 0]");
+    char ext[8];
+    extension(p->file.name ? p->file.name : "", ext, sizeof ext);
+    if (!strcmp(ext, "svg")) {
+        scad_buf_printf(b, ", center = %s, dpi = ", p->center ? "true" : "false");
+        scad_print_g(b, p->dpi);
+    }
     scad_buf_puts(b, ", scale = ");
     scad_print_g(b, p->scale);
     scad_buf_printf(b, ", convexity = %d", p->convexity);
@@ -430,9 +453,9 @@ static scad_geom *surface_build(scad_call *c, const void *args)
     return g;
 }
 
-static const char *const import_params[] = {"file",  "layer",  "convexity", "origin",    "scale",
-                                            "width", "height", "filename",  "layername", "center",
-                                            "dpi",   "id",     NULL};
+static const char *const import_params[] = {"file",      "layer",  "convexity", "origin",
+                                            "scale",     "width",  "height",    "filename",
+                                            "layername", "center", "dpi",       NULL};
 static const scad_module_def import = {"import",    import_params, 5,           sizeof(import_args),
                                        import_read, import_print,  import_build};
 
