@@ -27,8 +27,23 @@ void scad_print_bool(scad_buf *b, int x)
 
 void scad_print_quoted(scad_buf *b, const char *s, size_t n)
 {
+    /* OpenSCAD's QuotedString: tab, newline, return, quote and backslash
+     * escaped */
     scad_buf_put(b, "\"", 1);
-    scad_buf_put(b, s, n);
+    size_t from = 0;
+    for (size_t i = 0; i < n; i++) {
+        const char *esc = s[i] == '\t'   ? "\\t"
+                          : s[i] == '\n' ? "\\n"
+                          : s[i] == '\r' ? "\\r"
+                          : s[i] == '"'  ? "\\\""
+                          : s[i] == '\\' ? "\\\\"
+                                         : NULL;
+        if (!esc) continue;
+        scad_buf_put(b, s + from, i - from);
+        scad_buf_puts(b, esc);
+        from = i + 1;
+    }
+    scad_buf_put(b, s + from, n - from);
     scad_buf_put(b, "\"", 1);
 }
 

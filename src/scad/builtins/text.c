@@ -106,11 +106,37 @@ static void text_read(scad_call *c, void *out)
     p->f = scad_facets_read(c);
 }
 
+/* text()'s strings in .csg: quoted as they are (2021.01 escapes nothing). */
+static void print_raw(scad_buf *b, const char *s, size_t n)
+{
+    scad_buf_put(b, "\"", 1);
+    scad_buf_put(b, s, n);
+    scad_buf_put(b, "\"", 1);
+}
+
 static void print_str(scad_buf *b, const char *label, const char *s, const char *dflt)
 {
     scad_buf_puts(b, label);
     if (!s) s = dflt;
-    scad_print_quoted(b, s, strlen(s));
+    print_raw(b, s, strlen(s));
+}
+
+/* hb_direction_from_string then _to_string: only the first letter counts
+ * ("ltl" is "ltr"); NULL when it names no direction. */
+static const char *direction_of(const char *s)
+{
+    switch (s && s[0] ? s[0] | 0x20 : 0) {
+    case 'l':
+        return "ltr";
+    case 'r':
+        return "rtl";
+    case 't':
+        return "ttb";
+    case 'b':
+        return "btt";
+    default:
+        return NULL;
+    }
 }
 
 static int text_print(scad_call *c, const void *args, scad_buf *b)
@@ -139,13 +165,13 @@ static int text_print(scad_call *c, const void *args, scad_buf *b)
         }
     }
     scad_buf_puts(b, "text(text = ");
-    scad_print_quoted(b, p->text ? p->text : "", p->text_len);
+    print_raw(b, p->text ? p->text : "", p->text_len);
     scad_buf_puts(b, ", size = ");
     scad_print_g(b, p->size);
     scad_buf_puts(b, ", spacing = ");
     scad_print_g(b, p->spacing);
     print_str(b, ", font = ", p->font, "");
-    print_str(b, ", direction = ", p->direction && p->direction[0] ? p->direction : NULL,
+    print_str(b, ", direction = ", direction_of(p->direction),
               script[0] && script_rtl(script) ? "rtl" : "ltr");
     print_str(b, ", language = ", p->language && p->language[0] ? p->language : NULL, "en");
     if (script[0]) print_str(b, ", script = ", script, "");
