@@ -302,16 +302,24 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
     scad_vlist idx = {0};
     if (sel.kind == SV_NUM) {
         scad_vlist_push(ev, &idx, scad_value_ref(sel), st->loc);
+    } else if (sel.kind == SV_RANGE && scad_range_steps(sel.u.range) > 10000) {
+        scad_diag_warning(ev->d, st->loc,
+                          "Bad range parameter for children: too many elements (%.0f)",
+                          scad_range_steps(sel.u.range));
+        return NULL;
     } else if (sel.kind == SV_VEC || sel.kind == SV_RANGE) {
         if (scad_iter_values(ev, sel, st->loc, &idx) < 0) {
             scad_vlist_free(&idx);
             return NULL;
         }
     } else {
+        scad_buf b = {0};
+        scad_value_format(&b, sel, 1);
         scad_diag_warning(
             ev->d, st->loc,
-            "Bad parameter type (%s) for children, only accept: empty, number, vector, range.",
-            scad_value_type_name(sel));
+            "Bad parameter type (%s) for children, only accept: empty, number, vector, range",
+            scad_buf_str(&b));
+        scad_buf_free(&b);
         return NULL;
     }
     if (ev->dump && sel.kind != SV_NUM) {
@@ -352,7 +360,10 @@ static void for_loop(scad_eval *ev, const scad_stmt *st, int k, scad_env *cur,
 {
     if (ev->aborted) return;
     if (k == st->args.n) {
-        gather_add(ev, out, child_scope(ev, cur, cur, st->children, state, CSG_OP_UNION, NULL, 0));
+        /* for () with no arguments instantiates nothing, as 2021.01's */
+        if (k > 0)
+            gather_add(ev, out,
+                       child_scope(ev, cur, cur, st->children, state, CSG_OP_UNION, NULL, 0));
         return;
     }
     const scad_arg *arg = &st->args.v[k];

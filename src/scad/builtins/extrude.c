@@ -210,12 +210,12 @@ static void linear_read(scad_call *c, void *out)
     if (p->convexity <= 0) p->convexity = 1;
     double x;
     p->scale[0] = p->scale[1] = 1;
-    if (scad_arg_num(c->arg[LX_SCALE], &x)) {
+    /* getVec2 and getFiniteDouble: infinite or NaN scales are no scale */
+    double s[2];
+    if (scad_arg_vec(c->arg[LX_SCALE], 2, s) && isfinite(s[0]) && isfinite(s[1]))
+        p->scale[0] = s[0], p->scale[1] = s[1];
+    else if (scad_arg_num(c->arg[LX_SCALE], &x) && isfinite(x))
         p->scale[0] = p->scale[1] = x;
-    } else {
-        double s[2];
-        if (scad_arg_vec(c->arg[LX_SCALE], 2, s)) p->scale[0] = s[0], p->scale[1] = s[1];
-    }
     for (int k = 0; k < 2; k++)
         if (p->scale[k] < 0) p->scale[k] = 0;
     p->twist = 0;
