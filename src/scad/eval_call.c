@@ -163,14 +163,22 @@ void scad_call_leave(scad_eval *ev)
     ev->depth--;
 }
 
-/* Is x a call of the named function def itself (not of a variable that
- * holds a function literal, nor of another definition)? */
-static int is_self_call(scad_eval *ev, scad_env *env, const scad_expr *x, const scad_funcdef *def)
+/* Is x a call of the function being called itself: of the named function
+ * def (not of a variable holding a function literal, nor of another
+ * definition), or, for a function literal (def NULL), of a variable that
+ * holds this same literal with this same closure? */
+static int is_self_call(scad_eval *ev, scad_env *env, const scad_expr *x, const scad_funcdef *def,
+                        const scad_expr *lit, const scad_env *closure)
 {
-    if (!def || x->kind != EX_CALL || x->a[0]->kind != EX_VAR) return 0;
-    if (x->a[0]->str != def->name) return 0;
+    if (x->kind != EX_CALL || x->a[0]->kind != EX_VAR) return 0;
+    const char *name = x->a[0]->str;
+    if (name[0] == '$') return 0;
     int found;
-    scad_value v = scad_env_lookup(ev, env, def->name, x->loc, 1, &found);
+    scad_value v = scad_env_lookup(ev, env, name, x->loc, 1, &found);
+    if (!def)
+        return lit && found && v.kind == SV_FUNC && v.u.func->lit->a[0] == lit &&
+               v.u.func->env == closure;
+    if (name != def->name) return 0;
     if (found && v.kind == SV_FUNC) return 0;
     return scad_find_function(ev, env, def->name, NULL, NULL) == def;
 }
@@ -232,7 +240,7 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
                 scad_assign_seq(ev, le, &x->args);
                 cur = le;
                 x = x->a[0];
-            } else if (is_self_call(ev, cur, x, def)) {
+            } else if (is_self_call(ev, cur, x, def, body, def_env)) {
                 tail = x;
                 break;
             } else {
@@ -296,6 +304,10 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
     const scad_expr *callee = e->a[0];
     scad_value fv = scad_undef();
     int owned = 0;
+    if (callee->kind == EX_VAR && callee->str[0] == '$') {
+        scad_diag_warning(ev->d, e->loc, "Can't call function on dynamically scoped variable");
+        return scad_undef();
+    }
     if (callee->kind == EX_VAR) {
         int found;
         fv = scad_env_lookup(ev, env, callee->str, callee->loc, 1, &found);
@@ -342,8 +354,9 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
     scad_value keep = scad_value_ref(fv);
     if (owned) scad_value_drop(fv);
     const scad_expr *lit = keep.u.func->lit;
-    scad_value r = call_user_function(ev, env, e, "function literal", &lit->args, lit->a[0],
-                                      keep.u.func->env, NULL);
+    scad_value r =
+        call_user_function(ev, env, e, callee->kind == EX_VAR ? callee->str : "function literal",
+                           &lit->args, lit->a[0], keep.u.func->env, NULL);
     scad_value_drop(keep);
     return r;
 }

@@ -17,14 +17,6 @@ enum { MAX_LOOP_ELEMENTS = 1000000 };
 
 /* ---- operators ---------------------------------------------------------------- */
 
-static int is_num_vec(scad_value v)
-{
-    if (v.kind != SV_VEC) return 0;
-    for (int i = 0; i < v.u.vec->n; i++)
-        if (v.u.vec->v[i].kind != SV_NUM) return 0;
-    return 1;
-}
-
 /* Elementwise +, - over the shorter length; non-matching elements give undef. */
 static scad_value arith(int op, scad_value a, scad_value b, int *defined)
 {
@@ -71,96 +63,170 @@ static scad_value arith(int op, scad_value a, scad_value b, int *defined)
     return scad_undef();
 }
 
-static scad_value dot(const scad_vec *a, const scad_vec *b)
+/* The products of two vectors, as OpenSCAD 2021.01's multiply_visitor
+ * (value.cc): the shape comes from each operand's first element; a failure
+ * returns undef with its reason in why (which the caller prints at the
+ * operator), and vector*matrix also prints its own reason first, without a
+ * place, as its multvecmat does. */
+
+static scad_value number_at(const scad_vec *v, int i, int *ok)
 {
-    double s = 0;
-    for (int i = 0; i < a->n; i++)
-        s += a->v[i].u.num * b->v[i].u.num;
-    return scad_num(s);
+    if (v->v[i].kind != SV_NUM) *ok = 0;
+    return v->v[i];
 }
 
-/* Vector and matrix products, with OpenSCAD's warnings. */
+/* The elements of a row, or none when it is no vector (toVector). */
+static const scad_vec *row_of(scad_value v)
+{
+    static const scad_vec empty = {0, 0};
+    return v.kind == SV_VEC ? v.u.vec : &empty;
+}
+
+static scad_value vec_times_mat(scad_eval *ev, const scad_vec *v, const scad_vec *m, char *why,
+                                size_t n)
+{
+    int cols = row_of(m->v[0])->n;
+    scad_value r = scad_vec_new(cols);
+    if (r.kind != SV_VEC) return r;
+    for (int i = 0; i < cols; i++) {
+        double s = 0;
+        for (int j = 0; j < v->n; j++) {
+            if (m->v[j].kind != SV_VEC || m->v[j].u.vec->n != cols)
+                snprintf(why, n, "Matrix must be rectangular. Problem at row %d", j);
+            else if (v->v[j].kind != SV_NUM)
+                snprintf(why, n, "Vector must contain only numbers. Problem at index %d", j);
+            else if (m->v[j].u.vec->v[i].kind != SV_NUM)
+                snprintf(why, n, "Matrix must contain only numbers. Problem at row %d, col %d", j,
+                         i);
+            if (why[0]) {
+                char line[300];
+                snprintf(line, sizeof line, "WARNING: %s", why);
+                scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, line);
+                scad_value_drop(r);
+                return scad_undef();
+            }
+            s += v->v[j].u.num * m->v[j].u.vec->v[i].u.num;
+        }
+        r.u.vec->v[i] = scad_num(s);
+    }
+    return r;
+}
+
+static scad_value vector_product(scad_eval *ev, const scad_vec *A, const scad_vec *B, char *why,
+                                 size_t n)
+{
+    if (A->n == 0 || B->n == 0) {
+        snprintf(why, n, "Multiplication is undefined on empty vectors");
+        return scad_undef();
+    }
+    scad_vkind t1 = A->v[0].kind, t2 = B->v[0].kind;
+    if (t1 == SV_NUM && t2 == SV_NUM) {
+        if (A->n != B->n) {
+            snprintf(why, n, "vector*vector requires matching lengths (%d != %d)", A->n, B->n);
+            return scad_undef();
+        }
+        double s = 0;
+        for (int i = 0; i < A->n; i++) {
+            int ok = 1;
+            scad_value x = number_at(A, i, &ok), y = number_at(B, i, &ok);
+            if (!ok) {
+                snprintf(why, n, "undefined operation (%s * %s)", scad_value_type_name(x),
+                         scad_value_type_name(y));
+                return scad_undef();
+            }
+            s += x.u.num * y.u.num;
+        }
+        return scad_num(s);
+    }
+    if (t1 == SV_NUM && t2 == SV_VEC) {
+        if (A->n != B->n) {
+            snprintf(why, n,
+                     "vector*matrix requires vector length to match matrix row count (%d != %d)",
+                     A->n, B->n);
+            return scad_undef();
+        }
+        return vec_times_mat(ev, A, B, why, n);
+    }
+    if (t1 == SV_VEC && t2 == SV_NUM) {
+        int cols = A->v[0].u.vec->n;
+        if (cols != B->n) {
+            snprintf(why, n,
+                     "matrix*vector requires matrix column count to match vector length (%d != %d)",
+                     cols, B->n);
+            return scad_undef();
+        }
+        scad_value r = scad_vec_new(A->n);
+        if (r.kind != SV_VEC) return r;
+        for (int i = 0; i < A->n; i++) {
+            if (A->v[i].kind != SV_VEC || A->v[i].u.vec->n != B->n) {
+                snprintf(why, n, "Matrix must be rectangular. Problem at row %d", i);
+            } else {
+                double s = 0;
+                for (int j = 0; j < B->n && !why[0]; j++) {
+                    if (A->v[i].u.vec->v[j].kind != SV_NUM)
+                        snprintf(why, n,
+                                 "Matrix must contain only numbers. Problem at row %d, col %d", i,
+                                 j);
+                    else if (B->v[j].kind != SV_NUM)
+                        snprintf(why, n, "Vector must contain only numbers. Problem at index %d",
+                                 j);
+                    else
+                        s += A->v[i].u.vec->v[j].u.num * B->v[j].u.num;
+                }
+                r.u.vec->v[i] = scad_num(s);
+            }
+            if (why[0]) {
+                scad_value_drop(r);
+                return scad_undef();
+            }
+        }
+        return r;
+    }
+    if (t1 == SV_VEC && t2 == SV_VEC) {
+        int cols = A->v[0].u.vec->n;
+        if (cols != B->n) {
+            snprintf(why, n,
+                     "matrix*matrix requires left operand column count to match right operand row "
+                     "count (%d != %d)",
+                     cols, B->n);
+            return scad_undef();
+        }
+        scad_value r = scad_vec_new(A->n);
+        if (r.kind != SV_VEC) return r;
+        for (int i = 0; i < A->n; i++) {
+            const scad_vec *row = row_of(A->v[i]);
+            if (row->n != B->n) {
+                snprintf(why, n,
+                         "matrix*matrix left operand row length does not match right operand row "
+                         "count (%d != %d) at row %d",
+                         row->n, B->n, i);
+                scad_value_drop(r);
+                return scad_undef();
+            }
+            scad_value t = vec_times_mat(ev, row, B, why, n);
+            if (why[0]) {
+                size_t k = strlen(why);
+                snprintf(why + k, n - k, "\n\twhile processing left operand at row %d", i);
+                scad_value_drop(r);
+                return scad_undef();
+            }
+            r.u.vec->v[i] = t;
+        }
+        return r;
+    }
+    snprintf(why, n,
+             "undefined vector*vector multiplication where first elements are types %s and %s",
+             scad_value_type_name(A->v[0]), scad_value_type_name(B->v[0]));
+    return scad_undef();
+}
+
 static scad_value multiply(scad_eval *ev, scad_loc loc, scad_value a, scad_value b, int *defined)
 {
     if (!(a.kind == SV_VEC && b.kind == SV_VEC)) return arith('*', a, b, defined);
     *defined = 1;
-    const scad_vec *A = a.u.vec, *B = b.u.vec;
-    if (A->n == 0 || B->n == 0) return scad_undef();
-    if (A->v[0].kind == SV_NUM) {
-        if (B->v[0].kind == SV_NUM) { /* dot product */
-            if (A->n != B->n) {
-                scad_diag_warning(ev->d, loc, "vector*vector requires matching lengths (%d != %d)",
-                                  A->n, B->n);
-                return scad_undef();
-            }
-            if (!is_num_vec(a) || !is_num_vec(b)) return scad_undef();
-            return dot(A, B);
-        }
-        /* vector * matrix */
-        if (A->n != B->n) {
-            scad_diag_warning(
-                ev->d, loc,
-                "vector*matrix requires vector length to match matrix row count (%d != %d)", A->n,
-                B->n);
-            return scad_undef();
-        }
-        if (!is_num_vec(a) || !is_num_vec(B->v[0])) return scad_undef();
-        int cols = B->v[0].u.vec->n;
-        for (int i = 0; i < B->n; i++)
-            if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != cols) return scad_undef();
-        scad_value r = scad_vec_new(cols);
-        if (r.kind != SV_VEC) return r;
-        for (int j = 0; j < cols; j++) {
-            double s = 0;
-            for (int i = 0; i < A->n; i++)
-                s += A->v[i].u.num * B->v[i].u.vec->v[j].u.num;
-            r.u.vec->v[j] = scad_num(s);
-        }
-        return r;
-    }
-    if (A->v[0].kind != SV_VEC) return scad_undef();
-    int acols = A->v[0].u.vec->n;
-    for (int i = 0; i < A->n; i++)
-        if (!is_num_vec(A->v[i]) || A->v[i].u.vec->n != acols) return scad_undef();
-    if (B->v[0].kind == SV_NUM) { /* matrix * vector */
-        if (acols != B->n) {
-            scad_diag_warning(
-                ev->d, loc,
-                "matrix*vector requires matrix column count to match vector length (%d != %d)",
-                acols, B->n);
-            return scad_undef();
-        }
-        if (!is_num_vec(b)) return scad_undef();
-        scad_value r = scad_vec_new(A->n);
-        if (r.kind != SV_VEC) return r;
-        for (int i = 0; i < A->n; i++)
-            r.u.vec->v[i] = dot(A->v[i].u.vec, B);
-        return r;
-    }
-    if (B->v[0].kind != SV_VEC) return scad_undef();
-    int bcols = B->v[0].u.vec->n;
-    for (int i = 0; i < B->n; i++)
-        if (!is_num_vec(B->v[i]) || B->v[i].u.vec->n != bcols) return scad_undef();
-    if (acols != B->n) {
-        scad_diag_warning(ev->d, loc,
-                          "matrix*matrix requires left operand column count to match right operand "
-                          "row count (%d != %d)",
-                          acols, B->n);
-        return scad_undef();
-    }
-    scad_value r = scad_vec_new(A->n);
-    if (r.kind != SV_VEC) return r;
-    for (int i = 0; i < A->n; i++) {
-        scad_value row = scad_vec_new(bcols);
-        if (row.kind != SV_VEC) break;
-        for (int j = 0; j < bcols; j++) {
-            double s = 0;
-            for (int k = 0; k < acols; k++)
-                s += A->v[i].u.vec->v[k].u.num * B->v[k].u.vec->v[j].u.num;
-            row.u.vec->v[j] = scad_num(s);
-        }
-        r.u.vec->v[i] = row;
-    }
+    char why[300] = "";
+    scad_value r = vector_product(ev, a.u.vec, b.u.vec, why, sizeof why);
+    if (why[0]) scad_diag_warning(ev->d, loc, "%s", why);
     return r;
 }
 
