@@ -352,7 +352,8 @@ int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
                               "Bad range parameter in for statement: too many elements (%.0f)", n);
             return -1;
         }
-        for (int i = 0; i < (int)n && !ev->aborted; i++)
+        /* a zero step ends at once, even [0:0:0] (2021.01's iterator) */
+        for (int i = 0; v.u.range->step != 0 && i < (int)n && !ev->aborted; i++)
             scad_vlist_push(ev, out, scad_num(scad_range_at(v.u.range, i)), loc);
         return out->n;
     }
@@ -364,9 +365,7 @@ int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
         const char *s = v.u.str->s;
         size_t i = 0;
         while (i < v.u.str->len && !ev->aborted) {
-            size_t k = 1;
-            while (i + k < v.u.str->len && ((unsigned char)s[i + k] & 0xC0) == 0x80)
-                k++;
+            size_t k = scad_utf8_char_len(s, i, v.u.str->len);
             scad_vlist_push(ev, out, scad_str_new(s + i, k), loc);
             i += k;
         }
@@ -391,17 +390,10 @@ static scad_value eval_index(scad_value v, scad_value i)
     if (v.kind == SV_STR) {
         if (k >= (double)v.u.str->nchars) return scad_undef();
         const char *s = v.u.str->s;
-        size_t pos = 0, c = 0;
-        while (c < (size_t)k) {
-            pos++;
-            while (pos < v.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80)
-                pos++;
-            c++;
-        }
-        size_t len = 1;
-        while (pos + len < v.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
-            len++;
-        return scad_str_new(s + pos, len);
+        size_t pos = 0;
+        for (size_t c = 0; c < (size_t)k; c++)
+            pos += scad_utf8_char_len(s, pos, v.u.str->len);
+        return scad_str_new(s + pos, scad_utf8_char_len(s, pos, v.u.str->len));
     }
     if (v.kind == SV_RANGE) {
         const scad_range *r = v.u.range;

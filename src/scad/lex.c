@@ -255,7 +255,8 @@ static void lex_string(lexer *L, scad_loc loc)
         case 'x': {
             int h1 = hexval(L->p[2]), h2 = h1 >= 0 ? hexval(L->p[3]) : -1;
             if (h1 >= 0 && h1 <= 7 && h2 >= 0) {
-                buf[n++] = (char)(h1 * 16 + h2);
+                int ch = h1 * 16 + h2;
+                buf[n++] = ch ? (char)ch : ' '; /* \x00 is a space, as in 2021.01 */
                 used = 4;
             } else {
                 buf[n++] = 'x';
@@ -271,8 +272,11 @@ static void lex_string(lexer *L, scad_loc loc)
                 if (h < 0) break;
                 cp = cp * 16 + (unsigned long)h;
             }
-            if (k == want && cp != 0 && cp <= 0x10FFFF) {
-                n += put_utf8(buf + n, cp);
+            if (k == want && cp <= 0x10FFFF) {
+                if (cp == 0)
+                    buf[n++] = ' '; /* \u0000 is a space, as in 2021.01 */
+                else
+                    n += put_utf8(buf + n, cp);
                 used = 2 + (size_t)want;
             } else {
                 buf[n++] = e;

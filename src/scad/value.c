@@ -16,11 +16,24 @@
 
 #include "value.h"
 
+size_t scad_utf8_char_len(const char *s, size_t pos, size_t len)
+{
+    unsigned char c = (unsigned char)s[pos];
+    size_t k = c < 0xC0   ? 1
+               : c < 0xE0 ? 2
+               : c < 0xF0 ? 3
+               : c < 0xF8 ? 4
+               : c < 0xFC ? 5
+               : c < 0xFE ? 6
+                          : 1;
+    return pos + k > len ? len - pos : k;
+}
+
 static size_t utf8_count(const char *s, size_t len)
 {
     size_t n = 0;
-    for (size_t i = 0; i < len; i++)
-        if (((unsigned char)s[i] & 0xC0) != 0x80) n++;
+    for (size_t i = 0; i < len; i += scad_utf8_char_len(s, i, len))
+        n++;
     return n;
 }
 

@@ -83,6 +83,10 @@ static inline scad_value scad_bool(int b)
 }
 
 /* Constructors return an owned value, or undef when out of memory. */
+/* Bytes of the character at s[pos] as glib steps over UTF-8 (the lead
+ * byte's length, valid or not, as OpenSCAD iterates and indexes strings),
+ * within len. */
+size_t scad_utf8_char_len(const char *s, size_t pos, size_t len);
 scad_value scad_str_new(const char *s, size_t len);
 /* A vector of n undef elements, to be filled in place before sharing. */
 scad_value scad_vec_new(int n);

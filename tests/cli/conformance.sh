@@ -86,8 +86,8 @@ check_one() {
         (cd "$dir" && timeout 120 "$rayscad" "$base" -o "$ours") >"$ours.log" 2>&1
         [ -f "$ours" ] || : >"$ours"
         if [ "$kind" = echo ]; then
-            why=$(diff <(grep -E "^(ECHO|WARNING|DEPRECATED|ERROR|TRACE|Can't parse)" "$ref") \
-                <(grep -E "^(ECHO|WARNING|DEPRECATED|ERROR|TRACE|Can't parse)" "$ours") |
+            why=$(diff <(grep -aE "^(ECHO|WARNING|DEPRECATED|ERROR|TRACE|Can't parse)" "$ref") \
+                <(grep -aE "^(ECHO|WARNING|DEPRECATED|ERROR|TRACE|Can't parse)" "$ours") |
                 head -n 4 | tr '\n' ' ')
         else
             why=$(csgcmp "$ref" "$ours")

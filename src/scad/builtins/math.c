@@ -663,15 +663,9 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
         for (int i = 0; hay.kind == SV_VEC && i < n; i++) {
             const char *s = in.u.str->s;
             size_t pos = 0;
-            for (int c = 0; c < i; c++) {
-                pos++;
-                while (pos < in.u.str->len && ((unsigned char)s[pos] & 0xC0) == 0x80)
-                    pos++;
-            }
-            size_t len = 1;
-            while (pos + len < in.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
-                len++;
-            hay.u.vec->v[i] = scad_str_new(s + pos, len);
+            for (int c = 0; c < i; c++)
+                pos += scad_utf8_char_len(s, pos, in.u.str->len);
+            hay.u.vec->v[i] = scad_str_new(s + pos, scad_utf8_char_len(s, pos, in.u.str->len));
         }
     }
     scad_value r;
@@ -702,9 +696,7 @@ static scad_value f_search(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
         for (int i = 0; r.kind == SV_VEC && i < n; i++) {
             scad_value m;
             if (s) {
-                size_t len = 1;
-                while (pos + len < match.u.str->len && ((unsigned char)s[pos + len] & 0xC0) == 0x80)
-                    len++;
+                size_t len = scad_utf8_char_len(s, pos, match.u.str->len);
                 m = scad_str_new(s + pos, len);
                 pos += len;
             } else {
