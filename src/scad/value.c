@@ -502,7 +502,10 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         scad_buf_puts(b, ")");
         break;
     case EX_CALL:
+        /* a callee other than a name is printed in parens, as 2021.01 */
+        if (e->a[0]->kind != EX_VAR) scad_buf_puts(b, "(");
         scad_expr_format(b, e->a[0]);
+        if (e->a[0]->kind != EX_VAR) scad_buf_puts(b, ")");
         scad_buf_puts(b, "(");
         format_params(b, &e->args);
         scad_buf_puts(b, ")");
@@ -541,10 +544,16 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         scad_expr_format(b, e->a[0]);
         break;
     case LC_FOR:
-        scad_buf_puts(b, "for(");
-        format_params(b, &e->args);
-        scad_buf_puts(b, ") ");
+        /* 2021.01 nests a for over several variables, each body in parens */
+        for (int i = 0; i < e->args.n; i++) {
+            scad_buf_puts(b, "for(");
+            if (e->args.v[i].name) scad_buf_printf(b, "%s = ", e->args.v[i].name);
+            if (e->args.v[i].value) scad_expr_format(b, e->args.v[i].value);
+            scad_buf_puts(b, ") (");
+        }
         scad_expr_format(b, e->a[0]);
+        for (int i = 0; i < e->args.n; i++)
+            scad_buf_puts(b, ")");
         break;
     case LC_CFOR:
         scad_buf_puts(b, "for(");
@@ -557,7 +566,7 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         scad_expr_format(b, e->a[0]);
         break;
     case LC_IF:
-        scad_buf_puts(b, "(if(");
+        scad_buf_puts(b, "if(");
         scad_expr_format(b, e->a[1]);
         scad_buf_puts(b, ") (");
         scad_expr_format(b, e->a[0]);
@@ -567,7 +576,6 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
             scad_expr_format(b, e->a[2]);
             scad_buf_puts(b, ")");
         }
-        scad_buf_puts(b, ")");
         break;
     case LC_EACH:
         scad_buf_puts(b, "each (");
