@@ -376,19 +376,10 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
     for (int i = 0; i < u->n; i++)
         if (strcmp(u->path[i], path) == 0) scope = u->scope[i];
     if (!scope) {
-        if (P->include_depth >= MAX_INCLUDE_DEPTH) {
-            scad_diag_error(P->d, t->loc, "includes nested deeper than %d files",
-                            MAX_INCLUDE_DEPTH);
-            P->errors++;
-            return;
-        }
+        /* parsed once the file that uses it is (drain_uses), as openscad
+         * 2021.01 parses used files after their user */
         scope = new_scope(P);
-        char err[256];
-        char *src = scope ? scad_read_file(P->a, P->shared->opt, path, err, sizeof err) : NULL;
-        if (!src) {
-            P->oom = 1;
-            return;
-        }
+        if (!scope) return;
         if (u->n == u->cap) {
             int cap = u->cap ? u->cap * 2 : 8;
             const char **np = scad_parse_alloc(P, sizeof *np * (size_t)cap);
@@ -405,6 +396,28 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         u->path[u->n] = path;
         u->scope[u->n] = scope;
         u->n++;
+    }
+    for (int i = 0; i < s->nuses; i++)
+        if (s->uses[i] == scope) return;
+    s->uses = scad_parse_grow(P, s->uses, s->nuses, &s->capuses, sizeof *s->uses);
+    if (s->uses) s->uses[s->nuses++] = scope;
+}
+
+/* Parse the used files registered from index start on, each followed at
+ * once by those it uses in turn (depth first, as 2021.01's
+ * handleDependencies). */
+static void drain_uses(parser *P, int start)
+{
+    shared *u = P->shared;
+    int end = u->n;
+    for (int i = start; i < end && !P->oom; i++) {
+        const char *path = u->path[i];
+        char err[256];
+        char *src = scad_read_file(P->a, P->shared->opt, path, err, sizeof err);
+        if (!src) {
+            P->oom = 1;
+            return;
+        }
         const struct open_include *open = P->open;
         const char *doc = P->doc;
         P->open = NULL; /* a used file is a parse of its own, its folder its document's */
@@ -412,14 +425,12 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         P->doc = slash ? scad_arena_strndup(P->a, path, (size_t)(slash - path + 1)) : "";
         if (!P->doc) P->doc = doc;
         scad_diag_document(P->d, path, P->doc);
-        parse_file_into(P, scope, u->names, path, src, 0);
+        int before = u->n;
+        parse_file_into(P, u->scope[i], u->names, path, src, 0);
         P->open = open;
         P->doc = doc;
+        drain_uses(P, before);
     }
-    for (int i = 0; i < s->nuses; i++)
-        if (s->uses[i] == scope) return;
-    s->uses = scad_parse_grow(P, s->uses, s->nuses, &s->capuses, sizeof *s->uses);
-    if (s->uses) s->uses[s->nuses++] = scope;
 }
 
 static void include_file(parser *P, scad_scope *s, scad_token *t)
@@ -463,6 +474,7 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
     scad_scope *s = new_scope(&P);
     if (s) parse_into(&P, s);
     free(P.t);
+    if (s) drain_uses(&P, 0);
     if (!s) return NULL;
     for (int i = 0; i < sh.ndefining && !P.oom; i++)
         if (scad_scope_index(a, sh.defining[i]) != 0) P.oom = 1;
