@@ -92,6 +92,8 @@ def run(argv, cwd, out):
     """Run argv in cwd writing out; (exit status, CPU seconds, peak bytes)."""
     env = dict(os.environ, OPENSCADPATH=CORPORA)
     env.pop("DISPLAY", None)
+    if os.path.exists(out):  # a failed run writes nothing: no stale output
+        os.unlink(out)
     with open(out + ".log", "wb") as log:
         p = subprocess.Popen(["timeout", "-k", "5", str(TIMEOUT)] + argv, cwd=cwd, env=env,
                              stdin=subprocess.DEVNULL, stdout=log, stderr=log,
