@@ -28,9 +28,11 @@ static uint64_t line_hash(const char *s)
 void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
 {
     if (d->stopped) return;
-    if (kind == RAYSCAD_MSG_WARNING && strncmp(line, "WARNING: ", 9) == 0) {
-        /* OpenSCAD 2021.01 prints a warning at most 5 times in a row (other
-         * output between the repeats does not count; another warning does) */
+    if ((kind == RAYSCAD_MSG_WARNING && strncmp(line, "WARNING: ", 9) == 0) ||
+        (kind == RAYSCAD_MSG_TRACE && strncmp(line, "TRACE: ", 7) == 0)) {
+        /* OpenSCAD 2021.01 prints a warning or trace line at most 5 times
+         * in a row (echo output between the repeats does not count; another
+         * warning or trace line does) */
         uint64_t h = line_hash(line);
         if (d->warning_repeats > 0 && h == d->last_warning) {
             if (++d->warning_repeats > REPEATS_SHOWN) return;

@@ -27,20 +27,18 @@ enum { MAX_TAIL_CALLS = 1000000 };
 /* OpenSCAD 2021.01 prints at most this many "TRACE: called by" lines
  * (its default trace depth). */
 enum { TRACE_DEPTH = 12 };
-/* and at most this many after a recursion error (as measured: its stack
- * unwinds through frames that do not print) */
-enum { RECURSION_TRACE_DEPTH = 5 };
 
 /* Report msg at loc as the error that stops the evaluation; in OpenSCAD's
  * echo stream it reads echo_msg at echo_loc (its own wording and place,
- * when ours says more), then at most depth TRACE lines. */
+ * when ours says more), then at most TRACE_DEPTH TRACE lines, the skip
+ * innermost frames left out. */
 static void eval_error_at(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const char *echo_msg,
-                          const char *msg, int depth)
+                          const char *msg, int skip)
 {
     if (!ev->aborted) {
         scad_diag_error(ev->d, loc, "%s", msg);
         scad_diag_trace(ev->d, echo_loc, "ERROR: %s", echo_msg);
-        for (int i = ev->nframes - 1, k = 0; i >= 0 && k < depth; i--, k++)
+        for (int i = ev->nframes - 1 - skip, k = 0; i >= 0 && k < TRACE_DEPTH; i--, k++)
             scad_diag_trace(ev->d, ev->frames[i].loc, "TRACE: called by '%s'", ev->frames[i].name);
         ev->d->stopped = 1;
     }
@@ -49,7 +47,7 @@ static void eval_error_at(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const 
 
 static void eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *msg)
 {
-    eval_error_at(ev, loc, loc, echo_msg, msg, TRACE_DEPTH);
+    eval_error_at(ev, loc, loc, echo_msg, msg, 0);
 }
 
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
@@ -150,7 +148,9 @@ int scad_call_enter(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const char *
                      "recursion deeper than the stack allows (%d calls, calling %s '%s')",
                      ev->depth, what, name);
         snprintf(echo_msg, sizeof echo_msg, "Recursion detected calling %s '%s'", what, name);
-        eval_error_at(ev, loc, echo_loc, echo_msg, msg, RECURSION_TRACE_DEPTH);
+        /* a function call too deep fails before its own frame would say
+         * "called by" (2021.01 checks the stack outside its try) */
+        eval_error_at(ev, loc, echo_loc, echo_msg, msg, !strcmp(what, "function"));
         return -1;
     }
     if (scad_eval_step(ev, loc)) return -1;
