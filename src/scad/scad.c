@@ -146,11 +146,14 @@ static int file_camera(scad_eval *ev, scad_env *file, scad_result *out)
             set = 1;
     }
     if (!set) return 0;
-    int taken = 0;
+    int taken = 0; /* (values the file does not set are its defaults: checked, not taken) */
     static const char which[] = "rtdf";
     for (int k = 0; k < 4; k++) {
         char name[5] = {'$', 'v', 'p', which[k], 0};
         scad_value v = scad_env_lookup_cstr(ev, file, name, ev->at, 1, NULL);
+        int own = 0;
+        for (int i = 0; i < file->nvars; i++)
+            if (!strcmp(file->vars[i].name, name)) own = 1;
         int ok;
         if (which[k] == 'd' || which[k] == 'f') {
             ok = v.kind == SV_NUM;
@@ -159,7 +162,7 @@ static int file_camera(scad_eval *ev, scad_env *file, scad_result *out)
             for (int i = 0; ok && v.u.vec->n == 3 && i < 3; i++)
                 ok = v.u.vec->v[i].kind == SV_NUM;
         }
-        if (ok && out) take_vp(out, which[k], v);
+        if (ok && own && out) take_vp(out, which[k], v);
         if (which[k] == 'f') break;
         if (ok) {
             taken = 1;
