@@ -347,7 +347,7 @@ int scad_iter_values(scad_eval *ev, scad_value v, scad_loc loc, scad_vlist *out)
         return 0;
     case SV_RANGE: {
         double n = scad_range_steps(v.u.range);
-        if (n > MAX_LOOP_ELEMENTS) {
+        if (n >= MAX_LOOP_ELEMENTS) { /* 2021.01 refuses a million already */
             scad_diag_warning(ev->d, loc,
                               "Bad range parameter in for statement: too many elements (%.0f)", n);
             return -1;

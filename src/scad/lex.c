@@ -12,6 +12,7 @@
  */
 #include <ctype.h>
 #include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -404,11 +405,18 @@ int scad_lex(scad_arena *a, scad_diag *d, scad_names *names, const char *file, c
                 il++;
         }
         if (nl > 0 && nl >= il) {
-            scad_token *t = push(&L, TK_NUMBER, loc);
-            if (!t) break;
-            if (number_value(a, L.p, nl, &t->num) != 0) {
+            double x;
+            if (number_value(a, L.p, nl, &x) != 0) {
                 out_of_memory(&L);
                 break;
+            }
+            /* a numeral too large for a double makes no token at all in
+             * 2021.01 (its lexical_cast fails and the text is dropped):
+             * echo(1e400) echoes nothing, -1e400 is a syntax error */
+            if (!isinf(x)) {
+                scad_token *t = push(&L, TK_NUMBER, loc);
+                if (!t) break;
+                t->num = x;
             }
             advance(&L, nl);
             continue;
