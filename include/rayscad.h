@@ -72,7 +72,7 @@ typedef enum rayscad_message_kind {
     RAYSCAD_MSG_ECHO,    /* "ECHO: …" as OpenSCAD prints it */
     RAYSCAD_MSG_WARNING, /* "WARNING: … in file x.scad, line 3", "DEPRECATED: …" */
     RAYSCAD_MSG_ERROR,   /* "file:line:col: error: …": the evaluation failed */
-    RAYSCAD_MSG_NOTE,    /* "file:line:col: warning: …": rayscad's own, about input
+    RAYSCAD_MSG_NOTE,    /* "file:line:col: note: …": rayscad's own, about input
                             OpenSCAD accepts but rayscad does not fully build; never
                             part of OpenSCAD's .echo stream */
     RAYSCAD_MSG_TRACE    /* after an error, OpenSCAD's own account of it ("ERROR: …

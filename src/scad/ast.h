@@ -149,7 +149,7 @@ void scad_diag_syntax(scad_diag *d, scad_loc loc);
 /* After a failed parse: OpenSCAD's "ERROR: Parser error: syntax error in
  * file x, line N" and "Can't parse file 'main.scad'!" (RAYSCAD_MSG_TRACE). */
 void scad_diag_parse_failed(scad_diag *d, const char *main_file);
-/* A rayscad-only warning (RAYSCAD_MSG_NOTE): "file:line:col: warning: …",
+/* A rayscad-only remark (RAYSCAD_MSG_NOTE): "file:line:col: note: …",
  * for what OpenSCAD accepts but rayscad does not build; not counted. */
 void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));

@@ -69,7 +69,7 @@ void scad_diag_note(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    compiler_style(d, RAYSCAD_MSG_NOTE, "warning", loc, fmt, ap);
+    compiler_style(d, RAYSCAD_MSG_NOTE, "note", loc, fmt, ap);
     va_end(ap);
 }
 

@@ -192,14 +192,14 @@ static scad_geom *import_build(scad_call *c, const void *args)
             iv_shape s;
             int rc = iv_shape_mesh(&s, (const double(*)[3])V, nv, idx, start, nt);
             if (rc < 0) {
-                scad_diag_warning(ev->d, st->loc, "import(): '%s' is not a valid mesh",
-                                  scad_buf_str(&path));
+                scad_diag_note(ev->d, st->loc, "import(): '%s' is not a valid mesh",
+                               scad_buf_str(&path));
             } else {
                 if (rc == 1)
-                    scad_diag_warning(ev->d, st->loc,
-                                      "import(): '%s' is not closed (an edge is not shared by "
-                                      "exactly two faces); it is rendered best effort",
-                                      scad_buf_str(&path));
+                    scad_diag_note(ev->d, st->loc,
+                                   "import(): '%s' is not closed (an edge is not shared by "
+                                   "exactly two faces); it is rendered best effort",
+                                   scad_buf_str(&path));
                 g = scad_geometry_leaf(ev, &s, state);
             }
         } else {

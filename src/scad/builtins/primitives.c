@@ -497,9 +497,9 @@ static scad_geom *polyhedron_build(scad_call *c, const void *args)
         iv_shape s;
         int rc = iv_shape_mesh(&s, (const double(*)[3])P, n, idx, start, nf);
         if (rc == 1)
-            scad_diag_warning(ev->d, c->st->loc,
-                              "polyhedron() is not closed (an edge is not shared by exactly "
-                              "two faces); it is rendered best effort");
+            scad_diag_note(ev->d, c->st->loc,
+                           "polyhedron() is not closed (an edge is not shared by exactly two "
+                           "faces); it is rendered best effort");
         if (rc >= 0 && scad_geom_keep(ev, &s) == 0) g = scad_leaf_at(ev, &s, c->state, NULL);
     }
     free(idx);
