@@ -1,2 +1,2 @@
-x = [for (i = [0:999999]) i];
+x = [for (i = [0:999998]) i];
 echo(len(concat(x, x, x, x, x, x, x, x)));

@@ -1,2 +1,2 @@
-echo(len(str([for (i = [0:999999]) i])));
-echo(len(str([for (i = [0:999999]) "abcdefghij"])));
+echo(len(str([for (i = [0:999998]) i])));
+echo(len(str([for (i = [0:999998]) "abcdefghij"])));
