@@ -212,12 +212,15 @@ void scad_diag_deprecated_line(scad_diag *d, const char *line)
     if (!said_before(d, line)) scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
 }
 
-static void located(scad_diag *d, scad_loc loc, const char *prefix, const char *fmt, va_list ap)
+/* "<prefix>: <message> in file <name>, line N", the file named relative to
+ * the main file's folder (own_doc: to its own document folder). */
+static void located(scad_diag *d, scad_loc loc, const char *prefix, int own_doc, const char *fmt,
+                    va_list ap)
 {
     char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];
     vsnprintf(msg, sizeof msg, fmt, ap);
     snprintf(line, sizeof line, "%s: %s in file %s, line %d", prefix, msg,
-             shown_file(d, loc.file, name, sizeof name), loc.line);
+             file_shown(d, loc.file, own_doc, name, sizeof name), loc.line);
     scad_diag_deprecated_line(d, line);
 }
 
@@ -270,21 +273,17 @@ void scad_diag_parse_failed(scad_diag *d, const char *main_file)
 
 void scad_diag_warning_own_doc(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
-    char msg[LINE_MAX_BYTES], line[LINE_MAX_BYTES + 256], name[1024];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    located(d, loc, "WARNING", 1, fmt, ap);
     va_end(ap);
-    snprintf(line, sizeof line, "WARNING: %s in file %s, line %d", msg,
-             file_shown(d, loc.file, 1, name, sizeof name), loc.line);
-    scad_diag_line(d, RAYSCAD_MSG_WARNING, line);
 }
 
 void scad_diag_warning(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    located(d, loc, "WARNING", fmt, ap);
+    located(d, loc, "WARNING", 0, fmt, ap);
     va_end(ap);
 }
 
@@ -292,6 +291,6 @@ void scad_diag_deprecated(scad_diag *d, scad_loc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    located(d, loc, "DEPRECATED", fmt, ap);
+    located(d, loc, "DEPRECATED", 0, fmt, ap);
     va_end(ap);
 }

@@ -45,29 +45,29 @@ static void eval_error_at(scad_eval *ev, scad_loc loc, scad_loc echo_loc, const 
     ev->aborted = 1;
 }
 
-static void eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *msg)
+/* The error fmt/ap at loc, in the echo stream as echo_msg (NULL: the same). */
+static void eval_verror(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *fmt,
+                        va_list ap)
 {
-    eval_error_at(ev, loc, loc, echo_msg, msg, 0);
+    char msg[1024];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    eval_error_at(ev, loc, loc, echo_msg ? echo_msg : msg, msg, 0);
 }
 
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
 {
-    char msg[1024];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    eval_verror(ev, loc, NULL, fmt, ap);
     va_end(ap);
-    eval_error_worded(ev, loc, msg, msg);
 }
 
 void scad_eval_error_worded(scad_eval *ev, scad_loc loc, const char *echo_msg, const char *fmt, ...)
 {
-    char msg[1024];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    eval_verror(ev, loc, echo_msg, fmt, ap);
     va_end(ap);
-    eval_error_worded(ev, loc, echo_msg, msg);
 }
 
 void scad_deprecated_once(scad_eval *ev, const char *msg)
@@ -252,13 +252,13 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
         scad_env *next = NULL;
         if (tail && !ev->aborted) {
             if (++tail_calls > MAX_TAIL_CALLS) {
-                char msg[512], echo_msg[512];
-                snprintf(msg, sizeof msg,
-                         "recursion detected calling function '%s' (more than %d tail calls)", name,
-                         MAX_TAIL_CALLS);
+                char echo_msg[512];
                 snprintf(echo_msg, sizeof echo_msg, "Recursion detected calling function '%s'",
                          name);
-                eval_error_worded(ev, tail->loc, echo_msg, msg);
+                scad_eval_error_worded(
+                    ev, tail->loc, echo_msg,
+                    "recursion detected calling function '%s' (more than %d tail calls)", name,
+                    MAX_TAIL_CALLS);
             } else if ((next = scad_env_new(ev, def_env, env, NULL))) {
                 /* the frame being left is the call's dynamic parent: its
                  * $-variables ($fn given to the first call) go on */
