@@ -9,9 +9,7 @@ openscad's CPU time in that pass) again, alternately, REPS times, medians.
 And start-up: an empty file to .echo, both programs, alternately.
 """
 import os
-import resource
 import statistics
-import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
@@ -22,16 +20,13 @@ import corpus  # noqa: E402  (tests/cli/corpus.py: the scratch copy of BOSL2)
 
 
 def cpu_of(argv, cwd, out):
-    """Run argv; its CPU seconds (user + system, children included)."""
-    env = dict(os.environ, OPENSCADPATH=corpus.CORPORA)
-    env.pop("DISPLAY", None)
-    p = subprocess.Popen(["timeout", "-k", "5", "300"] + argv, cwd=cwd, env=env,
-                         stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.DEVNULL, preexec_fn=corpus.limit_memory)
-    _, _, ru = os.wait4(p.pid, 0)
-    if os.path.exists(out):
-        os.unlink(out)
-    return ru.ru_utime + ru.ru_stime
+    """Run argv as make corpus runs it; its CPU seconds (user + system,
+    children included).  Its output and log are not kept."""
+    cpu = corpus.run(argv, cwd, out)[1]
+    for f in (out, out + ".log"):
+        if os.path.exists(f):
+            os.unlink(f)
+    return cpu
 
 
 def both(rayscad, path, scratch, tag):

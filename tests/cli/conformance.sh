@@ -31,25 +31,17 @@ else
     for f in tests/lang/*.scad; do files+=("$f"); done
 fi
 
-# Token-wise comparison of two .csg files; exit 0 when they agree.
+# Token-wise comparison of two .csg files (the rule of tests/cli/corpus.py);
+# exit 0 when they agree, else prints where they differ.
 csgcmp() {
-    "$py" - "$1" "$2" <<'EOF'
-import re, sys
-num = re.compile(r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?(?:inf|nan)')
-tok = re.compile(r'"(?:[^"\\\n]|\\.)*"|' + num.pattern + r'|\w+|\S')
-def toks(path):
-    with open(path, encoding='utf-8', errors='replace') as f:
-        return tok.findall(f.read())
-a, b = toks(sys.argv[1]), toks(sys.argv[2])
-if len(a) != len(b):
-    print("token count %d != %d" % (len(a), len(b))); sys.exit(1)
-for i, (x, y) in enumerate(zip(a, b)):
-    if x == y: continue
-    if num.fullmatch(x) and num.fullmatch(y):
-        fx, fy = float(x), float(y)
-        if fx == fy or (fx != fx and fy != fy): continue
-        if abs(fx - fy) <= max(1e-12, 1e-9 * max(abs(fx), abs(fy))): continue
-    print("token %d: %r != %r" % (i, x, y)); sys.exit(1)
+    "$py" - "$1" "$2" "$top/tests/cli" <<'EOF'
+import sys
+sys.path.insert(0, sys.argv[3])
+from corpus import csg_diff, read
+why = csg_diff(read(sys.argv[1]), read(sys.argv[2]))
+if why:
+    print(why)
+    sys.exit(1)
 EOF
 }
 

@@ -22,15 +22,16 @@ import fnmatch
 import hashlib
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
-import tomllib
 from concurrent.futures import ThreadPoolExecutor
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+import corpus  # noqa: E402  (tests/cli/corpus.py: the BOSL2 test scripts)
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-CORPORA = os.path.abspath(os.path.join(ROOT, "..", "shared", "corpora"))
+CORPORA = corpus.CORPORA
 EXAMPLES = "/usr/share/openscad/examples"
 SCRATCH = os.path.join(tempfile.gettempdir(), "rayscad-snapshot-corpora")
 KINDS = ["echo", "csg", "png", "stl"]
@@ -39,27 +40,11 @@ STDERR_KEEP = 1 << 16  # characters of stderr kept in the manifest
 
 
 def bosl2_scratch():
-    """A scratch copy of BOSL2 whose tests/ holds one .scad per [[test]]."""
-    src = os.path.join(CORPORA, "BOSL2")
-    if not os.path.isdir(src):
+    """A scratch copy of BOSL2 whose tests/ holds one .scad per [[test]]
+    (written as make corpus writes them)."""
+    if not os.path.isdir(os.path.join(CORPORA, "BOSL2")):
         return []
-    dst = os.path.join(SCRATCH, "BOSL2")
-    if not os.path.isdir(dst):
-        shutil.copytree(src, dst)
-    files = []
-    for t in sorted(os.listdir(os.path.join(src, "tests"))):
-        if not t.endswith(".scadtest"):
-            continue
-        with open(os.path.join(src, "tests", t), "rb") as f:
-            doc = tomllib.load(f)
-        for i, test in enumerate(doc.get("test", [])):
-            name = "%s__%03d_%s.scad" % (t[:-9], i, test.get("name", "x"))
-            path = os.path.join(dst, "tests", name)
-            if not os.path.exists(path):
-                with open(path, "w") as f:
-                    f.write(test["script"])
-            files.append(path)
-    return files
+    return [path for _, path in corpus.bosl2_tests(SCRATCH)]
 
 
 def all_files():
