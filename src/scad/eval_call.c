@@ -304,13 +304,15 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
     const scad_expr *callee = e->a[0];
     scad_value fv = scad_undef();
     int owned = 0;
-    if (callee->kind == EX_VAR && callee->str[0] == '$') {
-        scad_diag_warning(ev->d, e->loc, "Can't call function on dynamically scoped variable");
-        return scad_undef();
-    }
     if (callee->kind == EX_VAR) {
         int found;
         fv = scad_env_lookup(ev, env, callee->str, callee->loc, 1, &found);
+        /* 2021.01 refuses a function value only when its name is a
+         * $-variable's; other $-names go on to "Ignoring unknown function" */
+        if (fv.kind == SV_FUNC && callee->str[0] == '$') {
+            scad_diag_warning(ev->d, e->loc, "Can't call function on dynamically scoped variable");
+            return scad_undef();
+        }
         if (fv.kind != SV_FUNC && !strcmp(callee->str, "is_undef") && e->args.n == 1 &&
             e->args.v[0].value->kind == EX_VAR &&
             !scad_find_function(ev, env, callee->str, NULL, NULL)) {
