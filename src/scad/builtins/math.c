@@ -226,13 +226,14 @@ static scad_value f_cross(scad_eval *ev, const scad_argv *a, scad_loc loc, const
 
 static scad_value f_len(scad_eval *ev, const scad_argv *a, scad_loc loc, const char *name)
 {
-    if (a->n == 1 && scad_arg_at(a, 0).kind == SV_VEC) return scad_num(scad_arg_at(a, 0).u.vec->n);
-    if (a->n == 1 && scad_arg_at(a, 0).kind == SV_STR)
-        return scad_num((double)scad_arg_at(a, 0).u.str->nchars);
-    if (a->n != 1)
+    if (a->n != 1) {
         count_warning(ev, loc, name);
-    else
-        conv_warning(ev, loc, name);
+        return scad_undef();
+    }
+    scad_value v = scad_arg_at(a, 0);
+    if (v.kind == SV_VEC) return scad_num(v.u.vec->n);
+    if (v.kind == SV_STR) return scad_num((double)v.u.str->nchars);
+    conv_warning(ev, loc, name);
     return scad_undef();
 }
 
@@ -240,8 +241,10 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
 {
     (void)name;
     long long total = 0;
-    for (int i = 0; i < a->n; i++)
-        total += scad_arg_at(a, i).kind == SV_VEC ? scad_arg_at(a, i).u.vec->n : 1;
+    for (int i = 0; i < a->n; i++) {
+        scad_value v = scad_arg_at(a, i);
+        total += v.kind == SV_VEC ? v.u.vec->n : 1;
+    }
     if (total > ev->max_list) {
         scad_eval_error(ev, loc, "list longer than %d elements (concat)", ev->max_list);
         return scad_undef();
@@ -256,11 +259,12 @@ static scad_value f_concat(scad_eval *ev, const scad_argv *a, scad_loc loc, cons
     }
     int k = 0;
     for (int i = 0; i < a->n; i++) {
-        if (scad_arg_at(a, i).kind == SV_VEC)
-            for (int j = 0; j < scad_arg_at(a, i).u.vec->n; j++)
-                r.u.vec->v[k++] = scad_value_ref(scad_arg_at(a, i).u.vec->v[j]);
+        scad_value v = scad_arg_at(a, i); /* evaluated above: no evaluation here */
+        if (v.kind == SV_VEC)
+            for (int j = 0; j < v.u.vec->n; j++)
+                r.u.vec->v[k++] = scad_value_ref(v.u.vec->v[j]);
         else
-            r.u.vec->v[k++] = scad_value_ref(scad_arg_at(a, i));
+            r.u.vec->v[k++] = scad_value_ref(v);
     }
     return r;
 }
@@ -376,22 +380,20 @@ static scad_value f_ord(scad_eval *ev, const scad_argv *a, scad_loc loc, const c
                           a->n);
         return scad_undef();
     }
-    if (scad_arg_at(a, 0).kind == SV_STR &&
-        !valid_utf8((const unsigned char *)scad_arg_at(a, 0).u.str->s,
-                    scad_arg_at(a, 0).u.str->len)) {
-        scad_diag_warning(ev->d, loc, "ord() argument '%s' is not a valid utf8 string",
-                          scad_arg_at(a, 0).u.str->s);
-        return scad_undef();
-    }
-    if (scad_arg_at(a, 0).kind != SV_STR) {
+    scad_value v = scad_arg_at(a, 0);
+    if (v.kind != SV_STR) {
         scad_buf b = {0};
-        scad_value_format(&b, scad_arg_at(a, 0), 1);
+        scad_value_format(&b, v, 1);
         scad_diag_warning(ev->d, loc, "ord() argument %s is not of type string", scad_buf_str(&b));
         scad_buf_free(&b);
         return scad_undef();
     }
-    const unsigned char *s = (const unsigned char *)scad_arg_at(a, 0).u.str->s;
-    if (scad_arg_at(a, 0).u.str->len == 0) return scad_undef();
+    const unsigned char *s = (const unsigned char *)v.u.str->s;
+    if (!valid_utf8(s, v.u.str->len)) {
+        scad_diag_warning(ev->d, loc, "ord() argument '%s' is not a valid utf8 string", v.u.str->s);
+        return scad_undef();
+    }
+    if (v.u.str->len == 0) return scad_undef();
     unsigned long cp = s[0];
     int extra = 0;
     if (cp >= 0xF0)
