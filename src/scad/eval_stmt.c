@@ -266,6 +266,15 @@ static int x86_int(double k)
     return isnan(k) || k >= 2147483648.0 || k < -2147483648.0 ? INT_MIN : (int)k;
 }
 
+/* The environment of the user module whose body env is in (lexically), or
+ * NULL at file level: whose children children() and child() take. */
+static scad_env *module_env(scad_env *env)
+{
+    while (env && !env->is_module)
+        env = env->parent;
+    return env;
+}
+
 /* children(k)'s index check, with OpenSCAD's two warnings (no location). */
 static int children_index_bad(scad_eval *ev, int k, int n)
 {
@@ -284,9 +293,7 @@ static int children_index_bad(scad_eval *ev, int k, int n)
 static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st, const scad_argv *a,
                               const scad_state *state)
 {
-    scad_env *m = env;
-    while (m && !m->is_module)
-        m = m->parent;
+    scad_env *m = module_env(env);
     if (!m) return NULL;
     int n = m->children ? m->children->nstmts : 0;
     /* instantiating the caller's children is a call of their scope, and
@@ -499,9 +506,7 @@ static scad_geom *deprecated_child(scad_eval *ev, scad_env *env, const scad_stmt
         scad_diag_line(ev->d, RAYSCAD_MSG_WARNING, line);
         return NULL;
     }
-    scad_env *m = env;
-    while (m && !m->is_module)
-        m = m->parent;
+    scad_env *m = module_env(env);
     if (!m || !m->children || k >= m->children->nstmts) return NULL;
     return child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, &k, 1);
 }
