@@ -1,16 +1,20 @@
 #!/usr/bin/env python3
 """Real OpenSCAD code against the real openscad 2021.01 (`make corpus`).
 
-  corpus.py BUILD [--only GLOB] [--jobs N] [--update]
+  corpus.py BUILD [--only GLOB] [--kind echo|csg|png] [--jobs N] [--update]
 
 The two corpora of ../shared/corpora (see its README):
-  openscad-tests/data/scad/**.scad  .echo and .csg
+  openscad-tests/data/scad/**.scad  .echo, .csg and .png
   BOSL2 tests/*.scadtest             .echo of every [[test]] script, written
                                      into a scratch copy of BOSL2 so that its
                                      include <../std.scad> resolves
 Each file runs in its own folder with OPENSCADPATH at the corpora root, under
 both programs, 2 jobs at a time.  .echo is compared byte for byte, .csg token
 by token as tests/cli/conformance.sh does (numbers within 1e-9 relative).
+.png is openscad's preview at 320x240 with its default camera (under one Xvfb
+for the whole run) against ours with --facets=openscad: the silhouettes must
+agree to IoU >= 0.99 outside a one-pixel band (BUILD/tools/maskcmp), and where
+openscad draws nothing we must draw nothing.
 openscad's outputs are kept in BUILD/corpus/ref and reused while newer than
 their input.
 
@@ -88,10 +92,12 @@ def limit_memory():
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY_CAP, MEMORY_CAP))
 
 
-def run(argv, cwd, out):
+def run(argv, cwd, out, display=None):
     """Run argv in cwd writing out; (exit status, CPU seconds, peak bytes)."""
     env = dict(os.environ, OPENSCADPATH=CORPORA)
     env.pop("DISPLAY", None)
+    if display:
+        env["DISPLAY"] = display
     if os.path.exists(out):  # a failed run writes nothing: no stale output
         os.unlink(out)
     with open(out + ".log", "wb") as log:
@@ -142,12 +148,52 @@ def echo_diff(a, b):
     return "line %d: only %s has %r" % (i + 1, who, more[:160])
 
 
+IMG = ["--imgsize=320,240"]
+MIN_IOU = 0.99
+
+
+def mask_pixels(maskcmp, img):
+    """Pixels off the background in img (0 where there is no image: a run
+    that stops with an error draws nothing, as openscad's empty preview)."""
+    if os.path.getsize(img) == 0:
+        return 0
+    p = subprocess.run([maskcmp, img, img], capture_output=True, text=True)
+    m = re.search(r"mask_px=(\d+) band_px=(\d+)", p.stdout)
+    return int(m.group(1)) + int(m.group(2)) if m else -1
+
+
+def png_diff(maskcmp, ref, ours):
+    """Why two previews' silhouettes differ, or None; also the IoU (None
+    where openscad draws nothing)."""
+    if os.path.getsize(ref) == 0 or os.path.getsize(ours) == 0 or mask_pixels(maskcmp, ref) == 0:
+        theirs, mine = mask_pixels(maskcmp, ref), mask_pixels(maskcmp, ours)
+        if theirs == 0 and mine == 0:
+            return None, None
+        if theirs == 0:
+            return "openscad draws nothing, rayscad %d pixels" % mine, None
+        return "rayscad draws nothing, openscad %d pixels" % theirs, 0.0
+    p = subprocess.run([maskcmp, ours, ref, "--min-iou", str(MIN_IOU),
+                        "--diff", ours + ".diff.png"], capture_output=True, text=True)
+    m = re.search(r"iou=([0-9.]+) mask_px=(\d+)", p.stdout)
+    if not m:
+        return "maskcmp failed: %s" % (p.stderr.strip() or p.stdout.strip()), None
+    iou = float(m.group(1))
+    return (None if iou >= MIN_IOU else "silhouette IoU %.4f" % iou), iou
+
+
 def read(path):
     with open(path, "rb") as f:
         return f.read().decode("utf-8", "replace")
 
 
-def check(rayscad, outdir, key, path, kind):
+def compare(kind, ref, ours, maskcmp):
+    if kind == "png":
+        return png_diff(maskcmp, ref, ours)
+    a, b = read(ref), read(ours)
+    return (echo_diff(a, b) if kind == "echo" else csg_diff(a, b)), None
+
+
+def check(rayscad, outdir, key, path, kind, display=None):
     stem = key.replace("/", "__")
     ref = os.path.join(outdir, "ref", stem + "." + kind)
     ours = os.path.join(outdir, "ours", stem + "." + kind)
@@ -157,28 +203,43 @@ def check(rayscad, outdir, key, path, kind):
     if fresh:
         with open(meta) as f:
             theirs = json.load(f)
-    else:
-        rc, cpu, mem = run(["openscad", "-o", ref, base], cwd, ref)
+    img = IMG if kind == "png" else []
+    if not fresh:
+        rc, cpu, mem = run(["openscad", "-o", ref] + img + [base], cwd, ref, display)
         theirs = {"rc": rc, "cpu": cpu, "mem": mem}
         with open(meta, "w") as f:
             json.dump(theirs, f)
-    rc, cpu, mem = run([rayscad, base, "-o", ours], cwd, ours)
-    a, b = read(ref), read(ours)
-    why = echo_diff(a, b) if kind == "echo" else csg_diff(a, b)
-    if why is not None:
+    facets = ["--facets=openscad"] if kind == "png" else []
+    rc, cpu, mem = run([rayscad, base, "-o", ours] + img + facets, cwd, ours)
+    maskcmp = os.path.join(os.path.dirname(rayscad), "tools", "maskcmp")
+    why, iou = compare(kind, ref, ours, maskcmp)
+    if why is not None and kind != "png":
         # openscad once more before calling it a difference: one of its runs
         # has been seen to differ from the next (misc/include-recursive-test)
         orc, ocpu, omem = run(["openscad", "-o", ref, base], cwd, ref)
         theirs = {"rc": orc, "cpu": ocpu, "mem": omem}
         with open(meta, "w") as f:
             json.dump(theirs, f)
-        a = read(ref)
-        why = echo_diff(a, b) if kind == "echo" else csg_diff(a, b)
+        why, iou = compare(kind, ref, ours, maskcmp)
     if why is None and rc in (124, 137) + tuple(range(-64, 0)):
         why = "rayscad stopped (exit %d)" % rc
     slow = (cpu > SLOW and theirs["cpu"] <= SLOW) or (mem > HEAVY and theirs["mem"] <= HEAVY)
-    return {"key": key, "kind": kind, "why": why, "slow": slow,
+    return {"key": key, "kind": kind, "why": why, "slow": slow, "iou": iou,
             "openscad": theirs, "rayscad": {"rc": rc, "cpu": cpu, "mem": mem}}
+
+
+def start_xvfb():
+    """One X server for every openscad preview of the run: (process, DISPLAY)."""
+    r, w = os.pipe()
+    p = subprocess.Popen(["Xvfb", "-displayfd", str(w), "-screen", "0", "1024x768x24",
+                          "-nolisten", "tcp"], pass_fds=(w,), stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL)
+    os.close(w)
+    with os.fdopen(r) as f:
+        number = f.readline().strip()
+    if not number:
+        raise SystemExit("corpus: Xvfb did not start (make deps installs it)")
+    return p, ":" + number
 
 
 def read_known():
@@ -203,11 +264,13 @@ def main(argv):
     if not argv or argv[0].startswith("-"):
         print(__doc__)
         return 2
-    build, only, jobs, update = argv[0], None, 2, False
+    build, only, kind, jobs, update = argv[0], None, None, 2, False
     i = 1
     while i < len(argv):
         if argv[i] == "--only":
             only, i = argv[i + 1], i + 2
+        elif argv[i] == "--kind":
+            kind, i = argv[i + 1], i + 2
         elif argv[i] == "--jobs":
             jobs, i = int(argv[i + 1]), i + 2
         elif argv[i] == "--update":
@@ -226,17 +289,26 @@ def main(argv):
     for d in ("ref", "ours", "scratch"):
         os.makedirs(os.path.join(outdir, d), exist_ok=True)
 
-    jobs_list = [(k, p, kind) for k, p in openscad_tests() for kind in ("echo", "csg")]
+    jobs_list = [(k, p, kind) for k, p in openscad_tests() for kind in ("echo", "csg", "png")]
     jobs_list += [(k, p, "echo") for k, p in bosl2_tests(os.path.join(outdir, "scratch"))]
     if only:
         jobs_list = [j for j in jobs_list if fnmatch.fnmatch(j[0], only)]
+    if kind:
+        jobs_list = [j for j in jobs_list if j[2] == kind]
 
     results = []
-    with ThreadPoolExecutor(max_workers=jobs) as pool:
-        for n, r in enumerate(pool.map(lambda j: check(rayscad, outdir, *j), jobs_list), 1):
-            results.append(r)
-            if n % 100 == 0:
-                print("corpus: %d of %d" % (n, len(jobs_list)), flush=True)
+    xvfb, display = start_xvfb() if any(j[2] == "png" for j in jobs_list) else (None, None)
+    try:
+        with ThreadPoolExecutor(max_workers=jobs) as pool:
+            for n, r in enumerate(pool.map(lambda j: check(rayscad, outdir, *j, display=display),
+                                           jobs_list), 1):
+                results.append(r)
+                if n % 100 == 0:
+                    print("corpus: %d of %d" % (n, len(jobs_list)), flush=True)
+    finally:
+        if xvfb:
+            xvfb.terminate()
+            xvfb.wait()
     with open(os.path.join(outdir, "results.json"), "w") as f:
         json.dump(results, f, indent=1)
 
@@ -267,12 +339,19 @@ def main(argv):
         print("NEW %s matches openscad (not yet in tests/corpus/passing.txt)" % name)
     for corpus in sorted(counts):
         ok, total, k = counts[corpus]
-        print("corpus: %s: %d of %d identical to openscad's, %d known differences" % (
-            corpus, ok, total, k))
+        print("corpus: %s: %d of %d %s openscad's, %d known differences" % (
+            corpus, ok, total, "agree with" if corpus.endswith("png") else "identical to", k))
+    ious = [r["iou"] for r in results if r["kind"] == "png" and r["iou"] is not None]
+    if ious:
+        print("corpus: .png where openscad draws: %d files, IoU >= 0.99: %d, 0.95-0.99: %d, "
+              "below: %d" % (len(ious), sum(i >= 0.99 for i in ious),
+                             sum(0.95 <= i < 0.99 for i in ious), sum(i < 0.95 for i in ious)))
     for f in failed:
         print("FAIL %s" % f)
     if update:
-        keep = {n for n in passing if only and not fnmatch.fnmatch(n.split(":")[0], only)}
+        keep = {n for n in passing
+                if (only and not fnmatch.fnmatch(n.split(":")[0], only))
+                or (kind and n.rsplit(":", 1)[1] != kind)}
         now = keep | {"%s:%s" % (r["key"], r["kind"]) for r in results if r["why"] is None}
         os.makedirs(os.path.dirname(PASSING), exist_ok=True)
         with open(PASSING, "w", encoding="utf-8") as f:
