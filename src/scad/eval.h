@@ -312,6 +312,9 @@ void scad_geometry_release(scad_eval *ev);
 /* Geometry in the eval arena. */
 scad_geom *scad_geom_leaf(scad_eval *ev, const iv_shape *s, const scad_state *state);
 scad_geom *scad_geom_op(scad_eval *ev, csg_op op);
+/* The empty set as an operand (eval_stmt.c): an op node without children. */
+scad_geom *scad_geom_empty(scad_eval *ev);
+int scad_geom_is_empty(const scad_geom *g);
 void scad_geom_add(scad_eval *ev, scad_geom *parent, scad_geom *child);
 
 /* Looks up a named or positional argument: index pos (or -1 for named

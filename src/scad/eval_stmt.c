@@ -121,9 +121,35 @@ static void gather_add(scad_eval *ev, gather *g, scad_geom *x)
     g->v[g->n++] = x;
 }
 
-/* Empty children are skipped (as OpenSCAD's CSG tree drops them); a single
- * child stands for itself.  In dump mode the result is a bare list of all
- * of them (NULL when none). */
+/* The empty set as an operand: an op node without children.  OpenSCAD
+ * 2021.01 makes a node of every module instantiation (a union(), a for
+ * over nothing, a cube(0), a missing import), and such a node is an
+ * operand even when it holds nothing: an intersection() with it is empty,
+ * and so is a difference() whose first operand it is.  Only echo(),
+ * assert(), an if() whose branch is absent and children() of no child
+ * make no node (NULL here), as .csg shows. */
+scad_geom *scad_geom_empty(scad_eval *ev)
+{
+    return scad_geom_op(ev, CSG_OP_UNION);
+}
+
+int scad_geom_is_empty(const scad_geom *g)
+{
+    return g && !g->is_leaf && g->n == 0;
+}
+
+/* g, or the empty set where g is no node: what a construct that always
+ * makes a node returns. */
+static scad_geom *node_of(scad_eval *ev, scad_geom *g)
+{
+    return g || ev->dump ? g : scad_geom_empty(ev);
+}
+
+/* The children combined by op: NULL when there are none (no node), a
+ * single child standing for itself, and the empty set where an empty
+ * operand decides (an intersection with one, a difference whose first
+ * operand is one, a union of nothing else).  In dump mode the result is a
+ * bare list of all of them (NULL when none). */
 static scad_geom *finish(scad_eval *ev, gather *g, csg_op op)
 {
     scad_geom *r = NULL;
@@ -131,11 +157,21 @@ static scad_geom *finish(scad_eval *ev, gather *g, csg_op op)
         if (g->n > 0) r = scad_geom_op(ev, op);
         for (int i = 0; r && i < g->n; i++)
             scad_geom_add(ev, r, g->v[i]);
-    } else if (g->n == 1) {
-        r = g->v[0];
-    } else if (g->n > 1) {
-        r = scad_geom_op(ev, op);
-        for (int i = 0; i < g->n; i++)
+    } else if (g->n > 0) {
+        int n = 0, empty = 0;
+        for (int i = 0; i < g->n; i++) {
+            if (!scad_geom_is_empty(g->v[i]))
+                g->v[n++] = g->v[i];
+            else if (op == CSG_OP_INTERSECTION || (op == CSG_OP_DIFFERENCE && i == 0))
+                empty = 1;
+        }
+        if (empty || n == 0)
+            r = scad_geom_empty(ev);
+        else if (n == 1)
+            r = g->v[0];
+        else
+            r = scad_geom_op(ev, op);
+        for (int i = 0; r && !empty && n > 1 && i < n; i++)
             scad_geom_add(ev, r, g->v[i]);
     }
     free(g->v);
@@ -249,7 +285,7 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     gather g = {0};
     scad_run_assignments(ev, me, m->body);
     run_stmts(ev, me, m->body, state, &g, NULL, 0);
-    r = finish(ev, &g, CSG_OP_UNION);
+    r = node_of(ev, finish(ev, &g, CSG_OP_UNION));
     if (ev->dump) r = scad_dump_node(ev, "group()", r);
     scad_env_free(me);
     ev->module_depth--;
@@ -303,7 +339,7 @@ static scad_geom *do_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
         scad_geom *r =
             n ? child_scope(ev, m->children_env, env, m->children, state, CSG_OP_UNION, NULL, 0)
               : NULL;
-        return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+        return ev->dump ? scad_dump_node(ev, "group()", r) : node_of(ev, r);
     }
     scad_value sel = scad_argv_get(a, "index", 0);
     scad_vlist idx = {0};
@@ -480,7 +516,7 @@ static scad_geom *call_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st
     memset(args, 0, d->size);
     scad_geom *r = NULL;
     if (d->read && !ev->aborted) d->read(&c, args);
-    if (!ev->aborted) r = ev->dump ? print_builtin(&c, args) : d->build(&c, args);
+    if (!ev->aborted) r = ev->dump ? print_builtin(&c, args) : node_of(ev, d->build(&c, args));
     scad_argv_free(&a);
     scad_env_free(dollar);
     return r;
@@ -531,7 +567,7 @@ static scad_geom *deprecated_assign(scad_eval *ev, scad_env *env, const scad_stm
         scad_env_free(ae);
     }
     scad_argv_free(&a);
-    return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+    return ev->dump ? scad_dump_node(ev, "group()", r) : node_of(ev, r);
 }
 
 static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stmt *st,
@@ -545,7 +581,8 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_value_drop(c);
         scad_geom *r = child_scope(ev, env, env, t ? st->children : st->else_children, state,
                                    CSG_OP_UNION, NULL, 0);
-        if (ev->dump && (t || st->else_children)) r = scad_dump_node(ev, "group()", r);
+        if (t || st->else_children)
+            r = ev->dump ? scad_dump_node(ev, "group()", r) : node_of(ev, r);
         return r;
     }
     scad_env *def_env;
@@ -563,7 +600,7 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         scad_assign_seq(ev, le, &st->args);
         scad_geom *r = child_scope(ev, le, le, st->children, state, CSG_OP_UNION, NULL, 0);
         scad_env_free(le);
-        return ev->dump ? scad_dump_node(ev, "group()", r) : r;
+        return ev->dump ? scad_dump_node(ev, "group()", r) : node_of(ev, r);
     }
     if (keyword == TK_ASSERT) {
         if (scad_check_assert(ev, env, &st->args, st->loc)) return NULL;
@@ -585,7 +622,8 @@ static scad_geom *instantiate_plain(scad_eval *ev, scad_env *env, const scad_stm
         gather g = {0};
         for_loop(ev, st, 0, env, state, &g);
         scad_geom *r = finish(ev, &g, is_for ? CSG_OP_UNION : CSG_OP_INTERSECTION);
-        return ev->dump ? scad_dump_node(ev, is_for ? "group()" : "intersection()", r) : r;
+        return ev->dump ? scad_dump_node(ev, is_for ? "group()" : "intersection()", r)
+                        : node_of(ev, r);
     }
     scad_argv a;
     if (scad_args_eval(ev, env, &st->args, &a)) return NULL;

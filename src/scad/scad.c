@@ -32,11 +32,12 @@ enum { DEFAULT_MAX_RECURSION = 10000 };
 
 /* ---- geometry → csg ------------------------------------------------------------ */
 
-/* The csg tree of g.  Out of memory, *oom is set to the node that could
- * not be made or take a child (its location goes into the error). */
+/* The csg tree of g (NULL for the empty set).  Out of memory, *oom is set
+ * to the node that could not be made or take a child (its location goes
+ * into the error). */
 static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
 {
-    if (!g || *oom) return NULL;
+    if (!g || *oom || scad_geom_is_empty(g)) return NULL;
     if (g->is_leaf) {
         csg_node *n = csg_node_shape(&g->shape, g->xf, &g->mat);
         if (!n) *oom = g;
