@@ -191,7 +191,8 @@ typedef struct iv_shape {
         struct {
             iv_region *g;
             double angle;
-        } revolve; /* angle in degrees, (0, 360] */
+            int fragments; /* OpenSCAD's steps over angle; 0 unknown (rays ignore it) */
+        } revolve;         /* angle in degrees, (0, 360] */
     } u;
 } iv_shape;
 

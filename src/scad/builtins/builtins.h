@@ -9,6 +9,7 @@
 #define RAYSCAD_SCAD_BUILTINS_H
 
 #include "../registry.h"
+#include "../../geom/bsp.h"
 
 /* ---- the families (NULL-terminated lists for registry.c) ------------------ */
 
@@ -157,6 +158,17 @@ int scad_geom_dims(const scad_geom *g);
  * failed). */
 int scad_flatten_2d(scad_eval *ev, const scad_geom *g, const csg_affine local_from_world,
                     scad_facet_params f, scad_loc loc, const char *who, scad_paths *out);
+
+/* The boundary of the 3D subtree g as OpenSCAD tessellates it, in the
+ * frame local_from_world: convex polygons facing out, its booleans
+ * resolved (solid.c); 2D leaves count as empty.  Returns 0, or -1 after
+ * reporting an error at loc (out of memory, the work bound hit). */
+int scad_solid_polys(scad_eval *ev, scad_loc loc, const char *who, const scad_geom *g,
+                     const double local_from_world[12], scad_facet_params f, geom_polys *out);
+/* The faces of leaf g alone (nothing for a 2D leaf).  0, or -1 out of
+ * memory. */
+int scad_leaf_polys(const scad_geom *g, const double local_from_world[12], scad_facet_params f,
+                    geom_polys *out);
 
 /* import() of a DXF file (dxf.c): the drawing as one 2D leaf, read with the
  * call's layer, origin, scale and $fn/$fa/$fs. */

@@ -312,6 +312,7 @@ typedef struct revolve_ctx {
     double sign; /* -1: the profile is on the negative side, mirrored */
     int disc_fragments_smooth;
     scad_facet_params f;
+    int fragments; /* OpenSCAD's steps over the angle (solid.c tessellates by them) */
 } revolve_ctx;
 
 /* The region of a 2D leaf in the extrusion's frame (a new reference), with
@@ -384,6 +385,7 @@ static void revolve_tree(revolve_ctx *c, scad_geom *g)
     }
     iv_shape s;
     iv_shape_revolve(&s, r, c->angle);
+    s.u.revolve.fragments = c->fragments;
     iv_region_release(r);
     if (scad_geom_keep(c->ev, &s) != 0) {
         make_empty(g);
@@ -458,7 +460,7 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
-    revolve_ctx r = {ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, p->f};
+    revolve_ctx r = {ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, p->f, 0};
     revolve_scan(&r, kids, &r.xmin, &r.xmax);
     if (!(r.xmin <= r.xmax)) return NULL;
     if (r.xmin < 0 && r.xmax > 0) {
@@ -468,6 +470,9 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
                           r.xmin, r.xmax);
         return NULL;
     }
+    /* 2021.01's GeometryEvaluator::rotatePolygon, truncating */
+    r.fragments =
+        (int)fmax(scad_fragments(fmax(fabs(r.xmin), fabs(r.xmax)), p->f) * fabs(angle) / 360, 1);
     /* A profile on the negative side is the mirrored profile turned by
      * 180°; a negative angle sweeps clockwise: the mirror image in y. */
     csg_affine place = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};

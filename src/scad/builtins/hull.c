@@ -29,8 +29,8 @@ static int pts_steps(pts *P, long n)
     return scad_eval_steps(P->ev, n, P->loc, P->who);
 }
 
-static void pts_add(pts *P, const double local_from_world[12], const double xf[12], double x,
-                    double y, double z)
+/* Appends point q (already in the hull's frame). */
+static void pts_put(pts *P, const double q[3])
 {
     if (P->n == P->cap) {
         if (P->cap > INT_MAX / 2 / (int)sizeof *P->p) return;
@@ -40,21 +40,67 @@ static void pts_add(pts *P, const double local_from_world[12], const double xf[1
         P->p = v;
         P->cap = cap;
     }
-    double o[3] = {x, y, z}, w[3];
-    csg_affine_point(xf, o, w);
-    csg_affine_point(local_from_world, w, P->p[P->n++]);
+    memcpy(P->p[P->n++], q, sizeof *P->p);
 }
 
-/* The points whose hull is the leaf's solid as OpenSCAD tessellates it. */
+static void pts_add(pts *P, const double local_from_world[12], const double xf[12], double x,
+                    double y, double z)
+{
+    double o[3] = {x, y, z}, w[3], q[3];
+    csg_affine_point(xf, o, w);
+    csg_affine_point(local_from_world, w, q);
+    pts_put(P, q);
+}
+
+/* The vertices of the polygons (in the hull's frame). */
+static void pts_polys(pts *P, geom_polys *s)
+{
+    for (int i = 0; i < s->nv; i++)
+        pts_put(P, s->v[i]);
+    geom_polys_free(s);
+}
+
+/* The vertices of a 3D leaf's faces (extrusions and revolves). */
+static void pts_faces(pts *P, const scad_geom *g, const double lfw[12], scad_facet_params f)
+{
+    geom_polys q = {0};
+    P->any3d = 1;
+    if (scad_leaf_polys(g, lfw, f, &q) == 0)
+        pts_polys(P, &q);
+    else
+        geom_polys_free(&q);
+}
+
+/* The points of a 2D subtree's boolean result (Clipper, as OpenSCAD). */
+static void pts_flat(pts *P, const scad_geom *g, const double lfw[12], scad_facet_params f)
+{
+    scad_paths r = {0};
+    if (scad_flatten_2d(P->ev, g, lfw, f, P->loc, P->who, &r) != 0) return;
+    P->any2d = 1;
+    int n = r.npaths > 0 ? r.start[r.npaths] : 0;
+    for (int i = 0; i < n; i++)
+        pts_put(P, (const double[3]){r.pts[i][0], r.pts[i][1], 0});
+    scad_paths_free(&r);
+}
+
+/* Points whose hull is the subtree's solid as OpenSCAD tessellates it:
+ * the points of each leaf, the union of its operands' for a union, and
+ * the vertices of the result for an intersection or a difference (2D
+ * through Clipper, 3D through BSP: solid.c). */
 static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_facet_params f)
 {
     if (!g || P->ev->aborted) return;
     if (!g->is_leaf) {
-        /* The hull of a difference is at most the hull of its first
-         * operand; of an intersection, at most the hull of all. */
-        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
-        for (int i = 0; i < n; i++)
-            hull_points(P, g->kids[i], lfw, f);
+        if (g->op == CSG_OP_UNION) {
+            for (int i = 0; i < g->n; i++)
+                hull_points(P, g->kids[i], lfw, f);
+        } else if (scad_geom_dims(g) == 1) {
+            pts_flat(P, g, lfw, f);
+        } else {
+            geom_polys s = {0};
+            P->any3d = 1;
+            if (scad_solid_polys(P->ev, P->loc, P->who, g, lfw, f, &s) == 0) pts_polys(P, &s);
+        }
         return;
     }
     const iv_shape *s = &g->shape;
@@ -69,7 +115,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
     case IV_SHAPE_SPHERE: {
         P->any3d = 1;
         double r = s->u.sphere.r;
-        int n = scad_fragments(r, f), rings = (n + 1) / 2;
+        int n = g->cap >= 3 ? g->cap : scad_fragments(r, f), rings = (n + 1) / 2;
         if (pts_steps(P, (long)n * rings)) return;
         for (int i = 0; i < rings; i++) {
             double phi = 180.0 * (i + 0.5) / rings;
@@ -83,7 +129,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
     }
     case IV_SHAPE_CONE: {
         P->any3d = 1;
-        int n = scad_fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
+        int n = g->cap >= 3 ? g->cap : scad_fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
         if (pts_steps(P, 2L * n)) return;
         for (int k = 0; k < 2; k++)
             for (int j = 0; j < n; j++) {
@@ -103,31 +149,29 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
             pts_add(P, lfw, g->xf, V[i][0], V[i][1], V[i][2]);
         return;
     }
-    case IV_SHAPE_PRISM: {
-        P->any2d = 1;
-        if (!s->u.prism.g) {
-            int n = scad_fragments(s->u.prism.r, f);
-            if (pts_steps(P, n)) return;
-            for (int j = 0; j < n; j++) {
-                double c[2];
-                scad_circle_point(s->u.prism.r, j, n, c);
-                pts_add(P, lfw, g->xf, c[0], c[1], 0);
+    case IV_SHAPE_PRISM:
+        if (scad_geom_is_flat(g)) {
+            P->any2d = 1;
+            if (!s->u.prism.g) {
+                int n = g->cap >= 3 ? g->cap : scad_fragments(s->u.prism.r, f);
+                if (pts_steps(P, n)) return;
+                for (int j = 0; j < n; j++) {
+                    double c[2];
+                    scad_circle_point(s->u.prism.r, j, n, c);
+                    pts_add(P, lfw, g->xf, c[0], c[1], 0);
+                }
+            } else {
+                int n;
+                const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
+                for (int i = 0; i < n; i++)
+                    pts_add(P, lfw, g->xf, V[i][0], V[i][1], 0);
             }
-        } else {
-            int n;
-            const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
-            for (int i = 0; i < n; i++)
-                pts_add(P, lfw, g->xf, V[i][0], V[i][1], 0);
+            return;
         }
+        pts_faces(P, g, lfw, f); /* an extrusion */
         return;
-    }
-    default:
-        P->any3d = 1; /* a revolve: its bounds' corners, an over-estimate */
-        double lo[3], hi[3];
-        if (iv_shape_bounds(s, lo, hi) != 0) return;
-        for (int i = 0; i < 8; i++)
-            pts_add(P, lfw, g->xf, (i & 1) ? hi[0] : lo[0], (i & 2) ? hi[1] : lo[1],
-                    (i & 4) ? hi[2] : lo[2]);
+    default: /* a revolve */
+        pts_faces(P, g, lfw, f);
         return;
     }
 }

@@ -144,7 +144,9 @@ static scad_geom *sphere_build(scad_call *c, const void *args)
     if (!scad_facets_shown(c->ev, p->f, r)) {
         sh.kind = IV_SHAPE_SPHERE;
         sh.u.sphere.r = r;
-        return scad_optics_leaf(c, &sh, NULL);
+        scad_geom *g = scad_optics_leaf(c, &sh, NULL);
+        if (g && g->is_leaf) g->cap = scad_fragments(r, p->f); /* for hull() and minkowski() */
+        return g;
     }
     int n = scad_fragments(r, p->f), rings = (n + 1) / 2;
     /* each point a step: a $fn of 10^9 would make 5·10^9 */
@@ -260,7 +262,9 @@ static scad_geom *cylinder_build(scad_call *c, const void *args)
         sh.u.cone.r1 = r1;
         sh.u.cone.r2 = r2;
         sh.u.cone.h = h;
-        return scad_optics_leaf(c, &sh, t);
+        scad_geom *g = scad_optics_leaf(c, &sh, t);
+        if (g && g->is_leaf) g->cap = scad_fragments(fmax(r1, r2), p->f);
+        return g;
     }
     int n = scad_fragments(fmax(r1, r2), p->f), np = 0;
     double(*P)[3] = malloc((size_t)(2 * n) * sizeof *P);
