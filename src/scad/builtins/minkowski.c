@@ -8,17 +8,23 @@
  *
  * 3D children: the sum distributes over union, (A ∪ B) ⊕ C = (A ⊕ C) ∪
  * (B ⊕ C), and the sum of two convex sets is the convex hull of the sums of
- * their points.  So each child is read as a union of convex parts — cubes,
- * hull() results, extrusions of convex polygons and discs, and OpenSCAD-faceted spheres and
- * cylinders (polytopes), smooth spheres and cylinders tessellated OpenSCAD's way with the call's
- * $fn/$fa/$fs but at least SMOOTH_FRAGMENTS around (a smooth leaf no longer
- * knows its own $fn), and closed polyhedra whose every vertex is a vertex of their
- * hull (taken as convex) — and the result is the union of the hulls of the
- * pairwise vertex sums over every choice of one part per child: exactly
- * OpenSCAD's result for such children.  A child that is a difference, an
- * intersection, a solid of revolution or a non-convex polyhedron is not
- * decomposed: the call reports an error at its location and builds nothing.
- * The number of part combinations is capped (MAX_PARTS).
+ * their points.  So each child is read as a union of parts.  Convex parts
+ * are cubes, hull() results, extrusions of convex polygons and discs,
+ * spheres and cylinders (OpenSCAD's tessellation; a smooth one at least
+ * SMOOTH_FRAGMENTS around) and polyhedra whose every vertex is a vertex of
+ * their hull.  Anything else — a difference, an intersection, a revolve, a
+ * non-convex polyhedron or extrusion — is a solid part S, known by its
+ * subtree and its boundary polygons ∂S (solid.c, booleans resolved), and is
+ * summed by two identities that hold for closed sets:
+ *   S ⊕ Q = (S + q) ∪ ⋃_{f ∈ ∂S} hull(f ⊕ Q)        Q convex, q a point of Q
+ *                                                  (its centroid here)
+ *   S ⊕ T = (S + V(T)) ∪ (T + V(S)) ∪ ⋃_{f, g} hull(f ⊕ g)
+ * (a point a + b of the sum: move b within its part towards q; either a
+ * stays in S or it crosses ∂S on the way, and likewise once more for T).
+ * The result is the union of those hulls and of translated copies of the
+ * solid subtrees: exact, as OpenSCAD's convex decomposition is, and drawn
+ * by rays like any union.  The number of parts is capped (MAX_PARTS), and
+ * every sum counts against the evaluation's steps.
  */
 #include "builtins.h"
 #include "../../geom/hull3d.h"
@@ -29,21 +35,74 @@
 #include <string.h>
 
 enum {
-    MAX_PARTS = 4096,
+    MAX_PARTS = 1 << 18,
     /* Fewest fragments of a smooth sphere or cylinder: a smooth leaf no
      * longer knows its own $fn, so it gets the call's fragments but at
      * least this many (chords within 0.12 % of the radius). */
     SMOOTH_FRAGMENTS = 64
 };
 
+/* A solid part: subtree tree moved by t (the call's frame), its boundary
+ * faces (moved too). */
+typedef struct msolid {
+    const scad_geom *tree;
+    double t[3];
+    geom_polys faces;
+} msolid;
+
+/* One operand, or a partial sum: convex parts and solid parts. */
+typedef struct mparts {
+    geom_convex_set convex;
+    msolid *solid;
+    int nsolid, capsolid;
+} mparts;
+
 typedef struct mctx {
     scad_eval *ev;
     scad_loc loc;
     const double *lfw;
     scad_facet_params f;
-    const char *why; /* first reason a child cannot be decomposed */
+    const char *why; /* first reason a child cannot be summed */
     int oom;
+    mparts *solids; /* where decompose puts the operand's solid parts */
 } mctx;
+
+static void mparts_free(mparts *m)
+{
+    geom_convex_set_free(&m->convex);
+    for (int i = 0; i < m->nsolid; i++)
+        geom_polys_free(&m->solid[i].faces);
+    free(m->solid);
+    memset(m, 0, sizeof *m);
+}
+
+/* Appends solid part tree + t with faces (taken over); -1 out of memory. */
+static int solid_add(mparts *m, const scad_geom *tree, const double t[3], geom_polys *faces)
+{
+    if (m->nsolid == m->capsolid) {
+        int cap = m->capsolid ? 2 * m->capsolid : 8;
+        msolid *v = realloc(m->solid, (size_t)cap * sizeof *v);
+        if (!v) return -1;
+        m->solid = v;
+        m->capsolid = cap;
+    }
+    msolid *s = &m->solid[m->nsolid++];
+    s->tree = tree;
+    memcpy(s->t, t, sizeof s->t);
+    s->faces = *faces;
+    memset(faces, 0, sizeof *faces);
+    return 0;
+}
+
+/* g as a solid part of the operand: its faces in the call's frame. */
+static void solid_part(mctx *c, const scad_geom *g)
+{
+    geom_polys faces = {0};
+    if (scad_solid_polys(c->ev, c->loc, "minkowski", g, c->lfw, c->f, &faces) != 0) return;
+    if (faces.n == 0) return; /* nothing there */
+    if (solid_add(c->solids, g, (const double[3]){0, 0, 0}, &faces) != 0) c->oom = 1;
+    geom_polys_free(&faces);
+}
 
 static void put(const mctx *c, geom_convex *q, const double xf[12], double x, double y, double z)
 {
@@ -84,7 +143,7 @@ static void decompose(mctx *c, const scad_geom *g, geom_convex_set *P)
     if (!g || c->why || c->oom || c->ev->aborted) return;
     if (!g->is_leaf) {
         if (g->op != CSG_OP_UNION && g->n > 1) {
-            c->why = g->op == CSG_OP_DIFFERENCE ? "a difference" : "an intersection";
+            solid_part(c, g);
             return;
         }
         for (int i = 0; i < g->n; i++)
@@ -136,7 +195,7 @@ static void decompose(mctx *c, const scad_geom *g, geom_convex_set *P)
         int n;
         const double(*V)[3] = iv_mesh_vertices(s, &n);
         if (!geom_points_convex(V, n)) {
-            c->why = "a polyhedron that is not convex";
+            solid_part(c, g);
             return;
         }
         if (!(q = parts_new(c, P, n))) return;
@@ -162,7 +221,7 @@ static void decompose(mctx *c, const scad_geom *g, geom_convex_set *P)
         const double(*V)[2] = iv_region_points(s->u.prism.g, &n);
         iv_region_paths(s->u.prism.g, &np);
         if (np != 1 || !geom_polygon_convex(V, n)) {
-            c->why = "an extrusion of a shape that is not convex";
+            solid_part(c, g);
             return;
         }
         if (!(q = parts_new(c, P, 2 * n))) return;
@@ -172,54 +231,204 @@ static void decompose(mctx *c, const scad_geom *g, geom_convex_set *P)
         }
         return;
     }
-    default:
-        c->why = "a solid of revolution";
+    default: /* a revolve */
+        solid_part(c, g);
         return;
     }
+}
+
+/* Polygon i of faces as a convex part; -1 out of memory. */
+static int face_part(const geom_polys *faces, int i, geom_convex *q)
+{
+    int k = faces->start[i + 1] - faces->start[i];
+    q->p = malloc((size_t)k * sizeof *q->p);
+    if (!q->p) return -1;
+    memcpy(q->p, faces->v + faces->start[i], (size_t)k * sizeof *q->p);
+    q->n = k;
+    return 0;
+}
+
+/* Appends solid s moved by d to out. */
+static int solid_moved(mparts *out, const msolid *s, const double d[3])
+{
+    geom_polys f = {0};
+    double t[3] = {s->t[0] + d[0], s->t[1] + d[1], s->t[2] + d[2]};
+    if (geom_polys_append(&f, &s->faces) != 0) return -1;
+    for (int i = 0; i < f.nv; i++)
+        for (int k = 0; k < 3; k++)
+            f.v[i][k] += d[k];
+    int rc = solid_add(out, s->tree, t, &f);
+    geom_polys_free(&f);
+    return rc;
+}
+
+/* hull(f ⊕ Q) for every face f of s into out. */
+static int faces_sum(mctx *c, const msolid *s, const geom_convex *q, geom_convex_set *out)
+{
+    for (int i = 0; i < s->faces.n; i++) {
+        geom_convex f;
+        if (face_part(&s->faces, i, &f) != 0) return -1;
+        int rc = scad_eval_steps(c->ev, (long)f.n * q->n, c->loc, "minkowski")
+                     ? 0
+                     : geom_minkowski_pair(&f, q, out);
+        free(f.p);
+        if (rc != 0) return -1;
+        if (c->ev->aborted) return 0;
+    }
+    return 0;
+}
+
+/* The distinct vertices of s's faces as points to move copies by. */
+static int solid_vertices(const msolid *s, geom_convex *q)
+{
+    q->p = malloc((size_t)(s->faces.nv ? s->faces.nv : 1) * sizeof *q->p);
+    q->n = 0;
+    if (!q->p) return -1;
+    for (int i = 0; i < s->faces.nv; i++) {
+        int seen = 0;
+        for (int j = 0; j < q->n && !seen; j++)
+            seen = !memcmp(q->p[j], s->faces.v[i], sizeof q->p[0]);
+        if (!seen) memcpy(q->p[q->n++], s->faces.v[i], sizeof q->p[0]);
+    }
+    return 0;
+}
+
+/* a ⊕ b into next (every pair of parts, by the identities above). */
+static int sum_parts(mctx *c, const mparts *a, const mparts *b, mparts *next)
+{
+    scad_eval *ev = c->ev;
+    long parts = (long)(a->convex.n + a->nsolid) * (b->convex.n + b->nsolid);
+    if (parts > MAX_PARTS) return 1;
+    for (int x = 0; x < a->convex.n && !ev->aborted; x++)
+        for (int y = 0; y < b->convex.n && !ev->aborted; y++) {
+            if (scad_eval_steps(ev, (long)a->convex.v[x].n * b->convex.v[y].n, c->loc, "minkowski"))
+                break;
+            if (geom_minkowski_pair(&a->convex.v[x], &b->convex.v[y], &next->convex) != 0)
+                return -1;
+        }
+    for (int side = 0; side < 2; side++) { /* solids of one with convex parts of the other */
+        const mparts *s = side ? b : a, *q = side ? a : b;
+        for (int i = 0; i < s->nsolid && !ev->aborted; i++)
+            for (int j = 0; j < q->convex.n && !ev->aborted; j++) {
+                /* q: the part's centroid, deep inside it, so that the copy
+                 * also covers where a smooth solid's facets differ from it */
+                const geom_convex *Q = &q->convex.v[j];
+                double m[3] = {0, 0, 0};
+                for (int k = 0; k < Q->n; k++)
+                    for (int a3 = 0; a3 < 3; a3++)
+                        m[a3] += Q->p[k][a3] / Q->n;
+                if (solid_moved(next, &s->solid[i], m) != 0 ||
+                    faces_sum(c, &s->solid[i], &q->convex.v[j], &next->convex) != 0)
+                    return -1;
+            }
+    }
+    for (int i = 0; i < a->nsolid && !ev->aborted; i++)
+        for (int j = 0; j < b->nsolid && !ev->aborted; j++) {
+            const msolid *s = &a->solid[i], *t = &b->solid[j];
+            geom_convex vs, vt;
+            if (solid_vertices(s, &vs) != 0) return -1;
+            if (solid_vertices(t, &vt) != 0) {
+                free(vs.p);
+                return -1;
+            }
+            long copies = next->nsolid + (long)vs.n + vt.n;
+            int rc = copies > MAX_PARTS ? 1 : 0;
+            for (int k = 0; rc == 0 && k < vt.n; k++)
+                rc = solid_moved(next, s, vt.p[k]);
+            for (int k = 0; rc == 0 && k < vs.n; k++)
+                rc = solid_moved(next, t, vs.p[k]);
+            free(vs.p);
+            free(vt.p);
+            for (int f = 0; rc == 0 && f < s->faces.n && !ev->aborted; f++) {
+                geom_convex g;
+                if (face_part(&s->faces, f, &g) != 0) return -1;
+                rc = faces_sum(c, t, &g, &next->convex);
+                free(g.p);
+            }
+            if (rc != 0) return rc;
+        }
+    return next->convex.n + next->nsolid > MAX_PARTS ? 1 : 0;
+}
+
+/* A copy of subtree g moved by t (world from world). */
+static scad_geom *moved_copy(scad_eval *ev, const scad_geom *g, const csg_affine t)
+{
+    if (g->is_leaf) {
+        scad_state st;
+        csg_affine_mul(t, g->xf, st.xf);
+        st.mat = g->mat;
+        scad_geom *k = scad_geom_leaf(ev, &g->shape, &st);
+        if (k) k->cap = g->cap;
+        return k;
+    }
+    scad_geom *k = scad_geom_op(ev, g->op);
+    for (int i = 0; k && i < g->n; i++)
+        scad_geom_add(ev, k, moved_copy(ev, g->kids[i], t));
+    return k;
 }
 
 static scad_geom *sum_3d(scad_eval *ev, scad_geom **ops, int nops, const scad_stmt *st,
                          const scad_state *state, mctx *c)
 {
-    geom_convex_set acc = {NULL, 0, 0};
-    decompose(c, ops[0], &acc);
-    for (int i = 1; i < nops && !c->why && !c->oom; i++) {
-        geom_convex_set b = {NULL, 0, 0}, next = {NULL, 0, 0};
-        decompose(c, ops[i], &b);
-        if (!c->why && (long)acc.n * b.n > MAX_PARTS) c->why = "too many convex parts";
-        for (int x = 0; x < acc.n && !c->why && !c->oom && !ev->aborted; x++)
-            for (int y = 0; y < b.n && !c->oom; y++) {
-                /* each pairwise sum is a step of work */
-                if (scad_eval_steps(ev, (long)acc.v[x].n * b.v[y].n, st->loc, "minkowski")) break;
-                if (geom_minkowski_pair(&acc.v[x], &b.v[y], &next) != 0) c->oom = 1;
+    mparts acc = {0};
+    c->solids = &acc;
+    decompose(c, ops[0], &acc.convex);
+    int too_many = 0;
+    for (int i = 1; i < nops && !c->why && !c->oom && !ev->aborted && !too_many; i++) {
+        mparts b = {0}, next = {0};
+        c->solids = &b;
+        decompose(c, ops[i], &b.convex);
+        if (b.convex.n + b.nsolid == 0 || acc.convex.n + acc.nsolid == 0) {
+            /* an empty operand is passed over, as 2021.01 does */
+            if (acc.convex.n + acc.nsolid == 0) {
+                mparts_free(&acc);
+                acc = b;
+            } else {
+                mparts_free(&b);
             }
-        geom_convex_set_free(&b);
-        geom_convex_set_free(&acc);
+            continue;
+        }
+        if (!c->why && !c->oom && !ev->aborted) {
+            int rc = sum_parts(c, &acc, &b, &next);
+            if (rc < 0) c->oom = 1;
+            too_many = rc > 0;
+        }
+        mparts_free(&b);
+        mparts_free(&acc);
         acc = next;
     }
     scad_geom *u = NULL;
     if (ev->aborted) {
         /* the step limit, reported */
     } else if (c->why) {
-        scad_eval_error(ev, st->loc,
-                        "minkowski() of %s is not supported: each child must be a convex shape "
-                        "or a union of convex shapes; nothing is drawn",
+        scad_eval_error(ev, st->loc, "minkowski() of %s is not supported; nothing is drawn",
                         c->why);
+    } else if (too_many) {
+        scad_eval_error(ev, st->loc,
+                        "minkowski(): the sum has more than %d convex parts; nothing is drawn",
+                        MAX_PARTS);
     } else if (c->oom) {
         scad_eval_error(ev, st->loc, "minkowski(): out of memory");
     } else {
-        u = acc.n > 1 ? scad_geom_op(ev, CSG_OP_UNION) : NULL;
-        scad_geom *one = NULL;
-        for (int i = 0; i < acc.n; i++) {
+        u = scad_geom_op(ev, CSG_OP_UNION);
+        for (int i = 0; u && i < acc.convex.n; i++) {
             iv_shape h;
-            if (geom_hull3d(&h, (const double(*)[3])acc.v[i].p, acc.v[i].n) != 0) continue;
+            if (geom_hull3d(&h, (const double(*)[3])acc.convex.v[i].p, acc.convex.v[i].n) != 0)
+                continue;
             if (scad_geom_keep(ev, &h) != 0) continue;
-            one = scad_geom_leaf(ev, &h, state);
-            if (u) scad_geom_add(ev, u, one);
+            scad_geom_add(ev, u, scad_geom_leaf(ev, &h, state));
         }
-        if (!u) u = one;
+        for (int i = 0; u && i < acc.nsolid; i++) {
+            /* the move, from the call's frame to the world */
+            const double *t = acc.solid[i].t, *w = state->xf;
+            csg_affine m = {1, 0, 0, w[0] * t[0] + w[1] * t[1] + w[2] * t[2],
+                            0, 1, 0, w[4] * t[0] + w[5] * t[1] + w[6] * t[2],
+                            0, 0, 1, w[8] * t[0] + w[9] * t[1] + w[10] * t[2]};
+            scad_geom_add(ev, u, moved_copy(ev, acc.solid[i].tree, m));
+        }
+        if (u && u->n == 1) u = u->kids[0];
     }
-    geom_convex_set_free(&acc);
+    mparts_free(&acc);
     return u;
 }
 
@@ -295,7 +504,7 @@ static scad_geom *minkowski_build(scad_call *c, const void *args)
     if (csg_affine_invert(state->xf, inv) != 0) return NULL;
     scad_facet_params f = ((const minkowski_args *)args)->f;
     if (scad_geom_dims(kids) == 1) return sum_2d(ev, ops, nops, st, state, inv, f);
-    mctx m = {ev, st->loc, inv, f, NULL, 0};
+    mctx m = {ev, st->loc, inv, f, NULL, 0, NULL};
     return sum_3d(ev, ops, nops, st, state, &m);
 }
 
