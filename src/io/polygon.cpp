@@ -147,8 +147,11 @@ extern "C" int io_polygon_clip(io_clip_op op, const io_paths *a, int a_evenodd, 
                                                      ClipperLib::ctIntersection,
                                                      ClipperLib::ctDifference, ClipperLib::ctXor};
         ClipperLib::Clipper c;
-        c.AddPaths(to_clipper(a), ClipperLib::ptSubject, true);
-        c.AddPaths(to_clipper(b), ClipperLib::ptClip, true);
+        bool any = c.AddPaths(to_clipper(a), ClipperLib::ptSubject, true);
+        any = c.AddPaths(to_clipper(b), ClipperLib::ptClip, true) || any;
+        /* Clipper 6.4's Execute fails on no edges at all (paths of one
+         * repeated point, or that all collapse): the result is empty */
+        if (!any) return true;
         return c.Execute(types[op], tree, fill(a_evenodd), fill(b_evenodd));
     });
 }
