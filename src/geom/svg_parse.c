@@ -78,6 +78,27 @@ static int visit(walk *w, xmlNode *n, const double *m)
     return 0;
 }
 
+/* libxml2's structured error channel: the first error is kept (the last,
+ * which xmlCtxtGetLastError keeps, is often "Premature end of data"). */
+typedef struct first_error {
+    int set, line, col;
+    char msg[200];
+} first_error;
+
+static void on_error(void *ud, xmlErrorPtr e)
+{
+    xmlParserCtxtPtr ctxt = ud;
+    first_error *f = ctxt ? ctxt->_private : NULL;
+    if (!f || f->set || !e || e->level < XML_ERR_ERROR) return;
+    f->set = 1;
+    f->line = e->line;
+    f->col = e->int2;
+    size_t l = e->message ? strlen(e->message) : 0;
+    while (l > 0 && (e->message[l - 1] == '\n' || e->message[l - 1] == ' '))
+        l--;
+    snprintf(f->msg, sizeof f->msg, "%.*s", (int)l, e->message ? e->message : "");
+}
+
 int geom_svg_read(const char *bytes, size_t len, geom_svg *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
@@ -88,18 +109,16 @@ int geom_svg_read(const char *bytes, size_t len, geom_svg *out, char *err, size_
     }
     xmlParserCtxtPtr ctxt = xmlNewParserCtxt();
     if (!ctxt) return -1;
+    first_error first = {0, 0, 0, ""};
+    ctxt->_private = &first;
+    if (ctxt->sax) ctxt->sax->serror = on_error;
     xmlDocPtr doc = xmlCtxtReadMemory(ctxt, bytes, (int)len, NULL, NULL,
                                       XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
     if (!doc) {
-        const xmlError *e = xmlCtxtGetLastError(ctxt);
-        if (e && e->message) {
-            size_t l = strlen(e->message);
-            while (l > 0 && (e->message[l - 1] == '\n' || e->message[l - 1] == ' '))
-                l--;
-            snprintf(err, errlen, "%d:%d: %.*s", e->line, e->int2, (int)l, e->message);
-        } else {
+        if (first.set)
+            snprintf(err, errlen, "%d:%d: %s", first.line, first.col, first.msg);
+        else
             snprintf(err, errlen, "not well-formed XML");
-        }
         xmlFreeParserCtxt(ctxt);
         return 1;
     }

@@ -84,9 +84,11 @@ static void paths_free(scad_paths *p)
 }
 
 /* Shape k's outlines in world user units into s (cleared first): its
- * closed paths as they are, its open ones stroked.  0, or -1 after an
- * error reported at loc. */
-static int shape_outlines(scad_eval *ev, scad_loc loc, const geom_svg *d, int k, pathset *s)
+ * closed paths as they are, its open ones stroked.  0; 1 when the stroke
+ * failed (coordinates out of Clipper's range: why in err); -1 when out of
+ * memory. */
+static int shape_outlines(scad_eval *ev, const geom_svg *d, int k, pathset *s, char *err,
+                          size_t errlen)
 {
     const scad_services *sv = ev->services;
     const geom_svg_shape *sh = &d->shapes[k];
@@ -101,12 +103,9 @@ static int shape_outlines(scad_eval *ev, scad_loc loc, const geom_svg *d, int k,
         }
         if (n == 0) continue;
         scad_paths r = {0};
-        char err[256];
         if (sv->paths_stroke(sv->ud, (const double(*)[2])d->pts + a, n, sh->stroke_width, sh->cap,
-                             &r, err, sizeof err) != 0) {
-            scad_eval_error(ev, loc, "import(): SVG stroke failed: %s", err);
-            return -1;
-        }
+                             &r, err, errlen) != 0)
+            return strstr(err, "out of memory") ? -1 : 1;
         int rc = set_append(s, &r);
         paths_free(&r);
         if (rc) return -1;
@@ -121,9 +120,10 @@ static int shape_outlines(scad_eval *ev, scad_loc loc, const geom_svg *d, int k,
 }
 
 /* The drawing's region: each shape filled even-odd, all unioned, placed on
- * the page.  0 and *out, or -1 after an error reported at loc. */
-static int drawing(scad_eval *ev, scad_loc loc, const geom_svg *d, double dpi, int center,
-                   scad_paths *out)
+ * the page.  0 and *out; 1 when Clipper refused it (coordinates out of its
+ * range: why in err); -1 when out of memory. */
+static int drawing(scad_eval *ev, const geom_svg *d, double dpi, int center, scad_paths *out,
+                   char *err, size_t errlen)
 {
     const scad_services *sv = ev->services;
     memset(out, 0, sizeof *out);
@@ -134,8 +134,8 @@ static int drawing(scad_eval *ev, scad_loc loc, const geom_svg *d, double dpi, i
     int rc = first ? 0 : -1;
     for (int k = 0; k < d->nshapes && rc == 0; k++) {
         first[k] = all.p.npaths;
-        rc = shape_outlines(ev, loc, d, k, &one);
-        if (rc == 0 && one.oom) rc = -1;
+        rc = shape_outlines(ev, d, k, &one, err, errlen);
+        if (one.oom) rc = -1;
         if (rc == 0) {
             double sc[2];
             geom_svg_scale(d, d->shapes[k].page, dpi, sc);
@@ -150,8 +150,7 @@ static int drawing(scad_eval *ev, scad_loc loc, const geom_svg *d, double dpi, i
         }
     }
     if (rc == 0) first[d->nshapes] = all.p.npaths;
-    if (rc == 0 && (all.oom || one.oom)) rc = -1;
-    if (rc != 0 && !ev->d->stopped) scad_eval_error(ev, loc, "out of memory");
+    if (all.oom || one.oom) rc = -1;
     if (rc == 0) {
         geom_svg_frame f;
         geom_svg_frame_of(d, dpi, center, bbox, &f);
@@ -164,25 +163,20 @@ static int drawing(scad_eval *ev, scad_loc loc, const geom_svg *d, double dpi, i
     /* each shape even-odd (ClipperUtils::sanitize), then the union */
     pathset filled = {0};
     scad_paths none = {0};
-    char err[256];
     for (int k = 0; k < d->nshapes && rc == 0; k++) {
         scad_paths shape = {all.p.pts, all.p.start + first[k], first[k + 1] - first[k]};
         if (shape.npaths == 0) continue;
         scad_paths r = {0};
-        if (sv->paths_clip(sv->ud, CSG_OP_UNION, &shape, 1, &none, 0, &r, err, sizeof err) != 0) {
-            scad_eval_error(ev, loc, "import(): %s", err);
-            rc = -1;
+        if (sv->paths_clip(sv->ud, CSG_OP_UNION, &shape, 1, &none, 0, &r, err, errlen) != 0) {
+            rc = strstr(err, "out of memory") ? -1 : 1;
             break;
         }
         rc = set_append(&filled, &r);
         paths_free(&r);
-        if (rc) scad_eval_error(ev, loc, "out of memory");
     }
     if (rc == 0 && filled.p.npaths > 0 &&
-        sv->paths_clip(sv->ud, CSG_OP_UNION, &filled.p, 0, &none, 0, out, err, sizeof err) != 0) {
-        scad_eval_error(ev, loc, "import(): %s", err);
-        rc = -1;
-    }
+        sv->paths_clip(sv->ud, CSG_OP_UNION, &filled.p, 0, &none, 0, out, err, errlen) != 0)
+        rc = strstr(err, "out of memory") ? -1 : 1;
     free(first);
     paths_free(&all.p);
     paths_free(&one.p);
@@ -223,7 +217,12 @@ scad_geom *scad_svg_import(scad_call *c, const char *path, double dpi, int cente
                            "import(): '%s' has more than %d points; the rest is left out", path,
                            GEOM_SVG_MAX_POINTS);
         scad_paths r;
-        if (drawing(ev, st->loc, &d, dpi, center, &r) == 0 && r.npaths > 0) {
+        rc = drawing(ev, &d, dpi, center, &r, err, sizeof err);
+        if (rc < 0)
+            scad_eval_error(ev, st->loc, "out of memory");
+        else if (rc > 0)
+            scad_diag_note(ev->d, st->loc, "import(): '%s': %s: nothing imported", path, err);
+        if (rc == 0 && r.npaths > 0) {
             iv_region *reg = iv_region_new((const double(*)[2])r.pts, r.start, r.npaths);
             if (!reg) {
                 scad_eval_error(ev, st->loc, "out of memory");
