@@ -41,19 +41,20 @@ endif
 # so an installed binary or library says nothing of the tree it came from.
 PREFIX_MAP = -ffile-prefix-map=$(CURDIR)=.
 
-CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP
+CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP \
+	$(shell pkg-config --cflags libxml-2.0 2>/dev/null)
 CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP \
 	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
 	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
 LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
-	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
+	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig libxml-2.0 2>/dev/null) \
 	-lpthread -lm
 
 DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenmesh-dev \
 	libcriterion-dev pkg-config g++ make \
-	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
+	libpolyclipping-dev libxml2-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
 	clang libclang-rt-dev man-db
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
@@ -307,7 +308,8 @@ FUZZ_OBJ  = $(FUZZ_C:%.c=$(FUZZ)/obj/%.o) $(IO_SRC:%.cpp=$(FUZZ)/obj/%.o)
 
 $(FUZZ)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
-	clang -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
+	clang -std=c11 -D_POSIX_C_SOURCE=200809L -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link -MMD -MP \
+		$(shell pkg-config --cflags libxml-2.0 2>/dev/null) -c $< -o $@
 
 $(FUZZ)/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)

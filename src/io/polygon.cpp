@@ -147,8 +147,11 @@ extern "C" int io_polygon_clip(io_clip_op op, const io_paths *a, int a_evenodd, 
                                                      ClipperLib::ctIntersection,
                                                      ClipperLib::ctDifference, ClipperLib::ctXor};
         ClipperLib::Clipper c;
-        c.AddPaths(to_clipper(a), ClipperLib::ptSubject, true);
-        c.AddPaths(to_clipper(b), ClipperLib::ptClip, true);
+        bool any = c.AddPaths(to_clipper(a), ClipperLib::ptSubject, true);
+        any = c.AddPaths(to_clipper(b), ClipperLib::ptClip, true) || any;
+        /* Clipper 6.4's Execute fails on no edges at all (paths of one
+         * repeated point, or that all collapse): the result is empty */
+        if (!any) return true;
         return c.Execute(types[op], tree, fill(a_evenodd), fill(b_evenodd));
     });
 }
@@ -168,6 +171,65 @@ extern "C" int io_polygon_offset(const io_paths *a, double delta, io_join join, 
         co.Execute(tree, delta * SCALE);
         return true;
     });
+}
+
+extern "C" int io_polygon_stroke(const double (*pts)[2], int n, double width, io_cap cap,
+                                 io_paths *out, char *err, size_t errlen)
+{
+    out->pts = nullptr;
+    out->start = nullptr;
+    out->npaths = 0;
+    const double scale = 10000.0; /* libsvg's, not CLIPPER_SCALE */
+    try {
+        Path line;
+        for (int i = 0; i < n; i++) {
+            double x = pts[i][0] * scale, y = pts[i][1] * scale;
+            if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > 4.0e18 ||
+                std::fabs(y) > 4.0e18)
+                throw std::range_error("stroke coordinate out of range");
+            /* libsvg truncates toward zero (IntPoint of a double) */
+            line.emplace_back((cInt)x, (cInt)y);
+        }
+        if (!std::isfinite(width) || std::fabs(width * scale) > 4.0e18)
+            throw std::range_error("stroke width out of range");
+        static const ClipperLib::EndType ends[] = {ClipperLib::etOpenButt, ClipperLib::etOpenRound,
+                                                   ClipperLib::etOpenSquare};
+        ClipperLib::ClipperOffset co;
+        co.AddPath(line, ClipperLib::jtMiter, ends[cap]);
+        Paths result;
+        co.Execute(result, width * scale / 2);
+        size_t total = 0;
+        for (const Path &p : result)
+            total += p.size();
+        if (result.empty()) return 0;
+        out->pts = static_cast<double(*)[2]>(std::malloc(total * sizeof *out->pts));
+        out->start = static_cast<int *>(std::malloc((result.size() + 1) * sizeof *out->start));
+        if (!out->pts || !out->start) {
+            io_paths_free(out);
+            set_err(err, errlen, "out of memory");
+            return -1;
+        }
+        size_t k = 0;
+        for (size_t i = 0; i < result.size(); i++) {
+            out->start[i] = (int)k;
+            for (const IntPoint &q : result[i]) {
+                out->pts[k][0] = (double)q.X / scale;
+                out->pts[k][1] = (double)q.Y / scale;
+                k++;
+            }
+        }
+        out->start[result.size()] = (int)k;
+        out->npaths = (int)result.size();
+        return 0;
+    } catch (const std::bad_alloc &) {
+        set_err(err, errlen, "out of memory");
+    } catch (const std::exception &e) {
+        set_err(err, errlen, e.what());
+    } catch (...) {
+        set_err(err, errlen, "stroke failed");
+    }
+    io_paths_free(out);
+    return -1;
 }
 
 namespace

@@ -49,6 +49,17 @@ typedef enum io_join { IO_JOIN_ROUND, IO_JOIN_MITER, IO_JOIN_SQUARE } io_join;
 int io_polygon_offset(const io_paths *a, double delta, io_join join, double miter_limit,
                       double arc_tolerance, io_paths *out, char *err, size_t errlen);
 
+typedef enum io_cap { IO_CAP_BUTT, IO_CAP_ROUND, IO_CAP_SQUARE } io_cap;
+
+/* An SVG stroke as OpenSCAD 2021.01's libsvg draws it: the open polyline
+ * pts[0 .. n) (n >= 1) widened by width / 2 each side with ClipperOffset
+ * at libsvg's 10^4 units per model unit, mitre joins (Clipper's default
+ * limit 2), ends cut by cap; arcs of round caps within Clipper's default
+ * 0.25 units.  *out holds the offset's paths as it gives them (outlines
+ * and holes, not cleaned).  Returns 0 and *out, or -1 with a message. */
+int io_polygon_stroke(const double (*pts)[2], int n, double width, io_cap cap, io_paths *out,
+                      char *err, size_t errlen);
+
 /* The Minkowski sum a ⊕ b of two normalised sets, any shapes: the union of
  * every edge of a swept along every edge of b (parallelograms), plus a
  * moved to a point of each outline of b and b to a point of each outline of

@@ -231,6 +231,17 @@ static int offset_paths(void *ud, const scad_paths *a, double delta, int join, d
     return 0;
 }
 
+static int stroke_paths(void *ud, const double (*pts)[2], int n, double width, int cap,
+                        scad_paths *out, char *err, size_t errlen)
+{
+    (void)ud;
+    io_cap c = cap == 0 ? IO_CAP_BUTT : cap == 1 ? IO_CAP_ROUND : IO_CAP_SQUARE;
+    io_paths r;
+    if (io_polygon_stroke(pts, n, width, c, &r, err, errlen) != 0) return -1;
+    from_io(&r, out);
+    return 0;
+}
+
 static int minkowski_paths(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out,
                            char *err, size_t errlen)
 {
@@ -337,6 +348,7 @@ void rayscad_scad_services(const rayscad_services *caller, scad_services *out)
         .read_image = read_image_via,
         .paths_clip = clip_paths,
         .paths_offset = offset_paths,
+        .paths_stroke = stroke_paths,
         .paths_minkowski = minkowski_paths,
         .mesh_tree = mesh_tree,
         .text = text_outlines,

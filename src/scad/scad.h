@@ -80,6 +80,12 @@ typedef struct scad_services {
      * is the largest distance of a round join's chords from the arc. */
     int (*paths_offset)(void *ud, const scad_paths *a, double delta, int join, double miter_limit,
                         double arc_tolerance, scad_paths *out, char *err, size_t errlen);
+    /* An SVG stroke (libsvg's offset_path): the open polyline pts[0 .. n)
+     * widened by width / 2 each side, mitre joins, ends by cap (0 butt, 1
+     * round, 2 square); out holds outlines and holes, as Clipper gives
+     * them. */
+    int (*paths_stroke)(void *ud, const double (*pts)[2], int n, double width, int cap,
+                        scad_paths *out, char *err, size_t errlen);
     /* The Minkowski sum of two sets (each filled nonzero), any shapes. */
     int (*paths_minkowski)(void *ud, const scad_paths *a, const scad_paths *b, scad_paths *out,
                            char *err, size_t errlen);

@@ -230,8 +230,7 @@ Test(import, missing_and_unsupported_files_warn, .init = arena_setup, .fini = ar
                  0);
     cr_expect_str_eq(m.text,
                      "WARNING: Can't open import file 'nowhere.stl' in file t.scad, line 1\n"
-                     "t.scad:2:1: note: import() of svg files is not supported by "
-                     "rayscad: 'a.svg' shows nothing\n"
+                     "t.scad:2:1: note: import(): Can't open file 'a.svg': nothing imported\n"
                      "WARNING: The file 'nowhere.dat' couldn't be opened. in file t.scad, line 3\n"
                      "WARNING: Unsupported file format while trying to import file "
                      "'\"x.abc\"' in file t.scad, line 4\n");

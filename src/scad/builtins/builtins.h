@@ -175,6 +175,10 @@ int scad_leaf_polys(const scad_geom *g, const double local_from_world[12], scad_
 scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,
                            const double origin[2], double scale, scad_facet_params f);
 
+/* import() of an SVG file (svg.c): the drawing as one 2D leaf at dpi
+ * (user units per inch), centred on its bounding box when center. */
+scad_geom *scad_svg_import(scad_call *c, const char *path, double dpi, int center);
+
 /* Web colour by lower-case name (colors.c); returns 1 and fills rgba
  * (0..1) or 0. */
 int scad_color_by_name(const char *name, float rgba[4]);

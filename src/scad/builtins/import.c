@@ -1,7 +1,8 @@
 /*
  * import.c — import() and surface(): geometry read from files, as
- * closed triangle meshes (iv_shape_mesh); a .dxf drawing is a 2D region
- * (dxf.c reads it, builtin_dxf.c builds the leaf).
+ * closed triangle meshes (iv_shape_mesh); a .dxf or .svg drawing is a 2D
+ * region (geom/dxf.c and geom/svg.c read them, builtins/dxf.c and
+ * builtins/svg.c build the leaf).
  *
  * Files are named relative to the folder of the .scad file that makes the
  * call, as OpenSCAD resolves them.  Reading goes through the injected
@@ -143,7 +144,18 @@ static scad_geom *import_build(scad_call *c, const void *args)
         scad_buf_free(&layer);
         return g;
     }
-    if (!strcmp(ext, "svg") || !strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
+    if (!strcmp(ext, "svg")) {
+        scad_buf path = {0};
+        scad_file_path(c, name, &path);
+        scad_geom *g = NULL;
+        if (path.oom)
+            scad_eval_error(ev, st->loc, "out of memory");
+        else
+            g = scad_svg_import(c, scad_buf_str(&path), p->dpi, p->center);
+        scad_buf_free(&path);
+        return g;
+    }
+    if (!strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
         scad_diag_note(ev->d, st->loc,
                        "import() of %s files is not supported by rayscad: '%s' shows nothing", ext,
                        name);
