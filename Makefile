@@ -35,6 +35,8 @@ endif
 SANFLAGS =
 ifeq ($(SAN),1)
 SANFLAGS = -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=undefined,float-cast-overflow
+# lib3mf's own leaks (tests/lsan.supp says which)
+export LSAN_OPTIONS ?= suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 endif
 
 # No build path in what is built (debug information names files from here),

@@ -152,7 +152,9 @@ bool node(Reader &r, xmlTextReaderPtr xr)
          * one level deeper than its pattern and matches nothing */
         if (xmlTextReaderIsEmptyElement(xr) && r.empty_element.empty()) {
             r.empty_element = name ? (const char *)name : "--";
-            r.empty_element_line = xmlTextReaderGetParserLineNumber(xr);
+            xmlNodePtr at = xmlTextReaderCurrentNode(xr);
+            long line = at ? xmlGetLineNo(at) : -1;
+            r.empty_element_line = line > 0 ? (int)line : xmlTextReaderGetParserLineNumber(xr);
         }
         return true;
     }
