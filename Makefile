@@ -35,6 +35,8 @@ endif
 SANFLAGS =
 ifeq ($(SAN),1)
 SANFLAGS = -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=undefined,float-cast-overflow
+# lib3mf's own leaks (tests/lsan.supp says which)
+export LSAN_OPTIONS ?= suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 endif
 
 # No build path in what is built (debug information names files from here),
@@ -45,17 +47,27 @@ CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) $(PREFI
 	$(shell pkg-config --cflags libxml-2.0 2>/dev/null)
 CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP \
 	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
-	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null)
+	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
+	$(MESH_IMPORT_CFLAGS)
+# AMF (libxml2, libzip) and 3MF (lib3mf 1.8, whose .pc is named lib3MF)
+# import; -l3MF when its .pc is missing.
+MESH_IMPORT_CFLAGS := $(shell pkg-config --cflags libxml-2.0 libzip 2>/dev/null) \
+	$(or $(shell pkg-config --cflags lib3MF 2>/dev/null),-I/usr/include/lib3mf)
+MESH_IMPORT_LIBS := $(or $(shell pkg-config --libs libxml-2.0 2>/dev/null),-lxml2) \
+	$(or $(shell pkg-config --libs lib3MF 2>/dev/null),-l3MF -lzip -lz) \
+	$(or $(shell pkg-config --libs libzip 2>/dev/null),-lzip)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
 LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
-	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig libxml-2.0 2>/dev/null) \
+	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
+	$(MESH_IMPORT_LIBS) \
 	-lpthread -lm
 
 DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenmesh-dev \
 	libcriterion-dev pkg-config g++ make \
-	libpolyclipping-dev libxml2-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
-	clang libclang-rt-dev man-db
+	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
+	clang libclang-rt-dev man-db \
+	libxml2-dev libzip-dev lib3mf-dev
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
 	src/rayscad/*.c \

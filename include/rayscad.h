@@ -100,8 +100,11 @@ typedef struct rayscad_services {
      * (may be NULL) gets its modification time in seconds (.csg prints
      * it). */
     int (*stat_file)(void *ud, const char *path, long long *mtime);
-    /* import() of stl, off, obj, ply: 3 floats per vertex, 3 indices per
-     * triangle, counter-clockwise seen from outside. */
+    /* import() of stl, off, obj, ply, amf, 3mf: 3 floats per vertex, 3
+     * indices per triangle, counter-clockwise seen from outside.  err holds
+     * "" when called; a reader may leave warnings in it even when it
+     * returns 0 (lines separated by '\n'; one that starts "note: " is a
+     * remark rather than a warning), and import() shows them. */
     int (*read_mesh)(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
                      char *err, size_t errlen);
     /* surface() of a PNG: channels floats per pixel, row-major from the

@@ -1,6 +1,7 @@
 /*
- * io.h — the C face of the C++ adapters: images through OpenImageIO
- * (meshes through OpenMesh come with the mesh exporter).  Nothing here prints
+ * io.h — the C face of the C++ adapters: images through OpenImageIO,
+ * meshes through OpenMesh (with the mesh exporter), AMF through libxml2 and
+ * 3MF through lib3mf (for import()).  Nothing here prints
  * or throws: every C++ exception is caught at this boundary and becomes a
  * status with a message.
  */
@@ -69,6 +70,26 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
  * memory on those.  Returns 0, or -1 with a message (then *v = *t = NULL). */
 int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char *err,
                  size_t errlen);
+
+/* ---- AMF and 3MF import (src/io/amf.cpp, src/io/3mf.cpp) ---------------- */
+
+/* Read the meshes of an AMF file (libxml2; a ZIP-compressed AMF through
+ * libzip) or of a 3MF file (lib3mf 1.8) as OpenSCAD 2021.01's import()
+ * reads them: every object's triangles, objects concatenated into one
+ * mesh (their union under the nonzero winding rule), in the arrays' usual
+ * conventions: *v and *t malloc'ed for the caller, *nv = *nt = 0 when
+ * the file holds no triangle.  msg (msglen bytes) receives lines separated
+ * by '\n', each a warning worded as OpenSCAD words it ("Failed to parse
+ * file '…'", "Could not read file '…'", "Can't open import file '…'"),
+ * with rayscad's reason appended after a colon, or, starting with "note: ",
+ * a remark of rayscad's own; "" when there are none.  Returns 0 (msg may
+ * still hold warnings: an AMF that fails to parse after complete objects
+ * keeps them, as in 2021.01), or -1 when nothing could be read (then the
+ * last line of msg says why and *v = *t = NULL). */
+int io_amf_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char *msg,
+                size_t msglen);
+int io_3mf_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char *msg,
+                size_t msglen);
 
 /* Simplify a closed manifold mesh with OpenMesh's decimater (quadric error
  * metric, ModQuadricT, plus ModNormalFlippingT so no face turns over more

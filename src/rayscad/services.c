@@ -10,7 +10,8 @@
  * 0"), which OpenMesh 9.0's reader takes for something else and runs out of
  * memory on (REFERENCE.md).  read_mesh gives such a file to io_mesh_read as
  * a copy in a private temporary folder with the header split into "OFF" and
- * a line of counts — the form OpenMesh reads.
+ * a line of counts — the form OpenMesh reads.  AMF and 3MF files go to
+ * their own readers (io_amf_read, io_3mf_read), by extension.
  */
 #include "services.h"
 
@@ -118,19 +119,23 @@ static size_t off_counts_on_header(const char *b, size_t n)
     return j > i && j < n && isdigit((unsigned char)b[j]) ? i : 0;
 }
 
-static int has_off_extension(const char *path)
+/* 1 when path ends in "." and the three letters ext (lower case), in any case. */
+static int has_extension(const char *path, const char *ext)
 {
     size_t n = strlen(path);
     if (n < 4 || path[n - 4] != '.') return 0;
-    return tolower((unsigned char)path[n - 3]) == 'o' &&
-           tolower((unsigned char)path[n - 2]) == 'f' && tolower((unsigned char)path[n - 1]) == 'f';
+    for (int i = 0; i < 3; i++)
+        if (tolower((unsigned char)path[n - 3 + i]) != ext[i]) return 0;
+    return 1;
 }
 
 static int read_mesh(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
                      char *err, size_t errlen)
 {
     (void)ud;
-    if (!has_off_extension(path)) return io_mesh_read(path, v, nv, t, nt, err, errlen);
+    if (has_extension(path, "amf")) return io_amf_read(path, v, nv, t, nt, err, errlen);
+    if (has_extension(path, "3mf")) return io_3mf_read(path, v, nv, t, nt, err, errlen);
+    if (!has_extension(path, "off")) return io_mesh_read(path, v, nv, t, nt, err, errlen);
     size_t n = 0;
     char *b = NULL, msg[64];
     if (read_file(NULL, path, MAX_MESH_BYTES, &b, &n, msg, sizeof msg) != 0) b = NULL;

@@ -57,9 +57,10 @@ typedef struct scad_services {
     int (*read_file)(void *ud, const char *path, size_t max, char **data, size_t *len, char *err,
                      size_t errlen);
     int (*stat_file)(void *ud, const char *path, long long *mtime);
-    /* import(): a triangle mesh file (stl, off, obj, ply) as 3 floats per
-     * vertex and 3 indices per triangle, counter-clockwise seen from
-     * outside. */
+    /* import(): a triangle mesh file (stl, off, obj, ply, amf, 3mf) as 3
+     * floats per vertex and 3 indices per triangle, counter-clockwise seen
+     * from outside; err may hold warnings after a success, as
+     * rayscad_services.read_mesh says. */
     int (*read_mesh)(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
                      char *err, size_t errlen);
     /* surface() from an image: channels floats per pixel, row-major from

@@ -67,6 +67,89 @@ def main():
     put("data/garbage.dat", "1 2 x\n# c\nnan inf -inf\n1e999 3 4\n")
     put("data/ragged.dat", "1 2 3\n4\n5 6 7 8 9\n\n")
     put("data/garbage.png", b"\x89PNG\r\n\x1a\n" + bytes(rng.randrange(256) for _ in range(500)))
+    mesh_import_files(random.Random(20261202))
+
+
+def zipped(entries):
+    """A ZIP archive (bytes) of (name, data) entries, deflated, fixed dates."""
+    import io
+    import zipfile
+    b = io.BytesIO()
+    with zipfile.ZipFile(b, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in entries:
+            z.writestr(zipfile.ZipInfo(name, (2024, 1, 1, 0, 0, 0)), data)
+    return b.getvalue()
+
+
+def amf(objects, head="", tail="</amf>\n"):
+    """An AMF document: objects as (vertices, triangles) of raw strings."""
+    s = '<?xml version="1.0"?>\n<amf unit="millimeter">\n' + head
+    for verts, tris in objects:
+        s += "<object><mesh><vertices>\n"
+        for x, y, z in verts:
+            s += "<vertex><coordinates><x>%s</x><y>%s</y><z>%s</z></coordinates></vertex>\n" % (
+                x, y, z)
+        s += "</vertices><volume>\n"
+        for a, b, c in tris:
+            s += "<triangle><v1>%s</v1><v2>%s</v2><v3>%s</v3></triangle>\n" % (a, b, c)
+        s += "</volume></mesh></object>\n"
+    return s + tail
+
+
+def model_3mf(body):
+    """A 3MF package around a 3D/3dmodel.model of the given text."""
+    types = ('<?xml version="1.0" encoding="UTF-8"?>\n<Types xmlns="http://schemas.'
+             'openxmlformats.org/package/2006/content-types"><Default Extension="rels" '
+             'ContentType="application/vnd.openxmlformats-package.relationships+xml"/>'
+             '<Default Extension="model" ContentType="application/vnd.ms-package.'
+             '3dmanufacturing-3dmodel+xml"/></Types>\n')
+    rels = ('<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.'
+            'openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/'
+            '3dmodel.model" Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/'
+            '2013/01/3dmodel"/></Relationships>\n')
+    return zipped([("[Content_Types].xml", types), ("_rels/.rels", rels),
+                   ("3D/3dmodel.model", body)])
+
+
+def mesh_import_files(rng):
+    """The AMF and 3MF files import_amf_3mf.scad reads."""
+    tet_v = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    tet_t = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+    put("data/garbage.amf", bytes(rng.randrange(256) for _ in range(2000)))
+    put("data/empty.amf", "")
+    put("data/not_a_number.amf", amf([([(0, "1e", 0)] + tet_v[1:], tet_t)]))
+    put("data/index_out_of_range.amf", amf([(tet_v, [(0, 2, 7), (0, -1, 3)] + tet_t)]))
+    put("data/index_overflow.amf", amf([(tet_v, [(0, 2, 99999999999)] + tet_t)]))
+    put("data/nan_inf.amf", amf([([("nan", 0, 0), ("inf", 0, 0)] + tet_v[2:], tet_t)]))
+    put("data/truncated.amf", amf([(tet_v, tet_t)] * 2)[:-200])
+    put("data/second_object_broken.amf", amf([(tet_v, tet_t), (tet_v, [(0, 1, "x")])]))
+    put("data/empty_element.amf", amf([(tet_v, tet_t)], head="<metadata type='x'/>\n"))
+    put("data/no_triangles.amf", amf([(tet_v, [])]))
+    put("data/entities.amf", '<?xml version="1.0"?>\n<!DOCTYPE amf [\n'
+        '<!ENTITY a "0000000000">\n<!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;">\n'
+        '<!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">\n'
+        '<!ENTITY d "&c;&c;&c;&c;&c;&c;&c;&c;&c;&c;">\n'
+        '<!ENTITY e SYSTEM "file:///etc/passwd">\n]>\n'
+        + amf([([("&d;", "&e;", 0)] + tet_v[1:], tet_t)])[len('<?xml version="1.0"?>\n'):])
+    put("data/deep.amf", "<amf>" + "<object>" * 5000 + "</object>" * 5000 + "</amf>\n")
+    put("data/zip_two_entries.amf", zipped([("a.amf", amf([(tet_v, tet_t)])),
+                                            ("b.amf", amf([(tet_v, tet_t)]))]))
+    put("data/zip_garbage.amf", zipped([("zip_garbage.amf",
+                                         bytes(rng.randrange(256) for _ in range(3000)))]))
+    put("data/garbage.3mf", bytes(rng.randrange(256) for _ in range(2000)))
+    put("data/empty.3mf", "")
+    put("data/no_model.3mf", zipped([("x.txt", "nothing")]))
+    put("data/index_out_of_range.3mf", model_3mf(
+        '<?xml version="1.0"?>\n<model unit="millimeter" xmlns="http://schemas.microsoft.com/'
+        '3dmanufacturing/core/2015/02"><resources><object id="1" type="model"><mesh>'
+        '<vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/>'
+        '<vertex x="0" y="1" z="0"/></vertices><triangles><triangle v1="0" v2="1" v3="9"/>'
+        '</triangles></mesh></object></resources><build><item objectid="1"/></build>'
+        '</model>\n'))
+    put("data/truncated.3mf", model_3mf(
+        '<?xml version="1.0"?>\n<model unit="millimeter" xmlns="http://schemas.microsoft.com/'
+        '3dmanufacturing/core/2015/02"><resources><object id="1" type="model"><mesh>'
+        '<vertices><vertex x="0" y="0" z="0"/><vertex x='))
 
 
 if __name__ == "__main__":

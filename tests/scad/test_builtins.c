@@ -238,6 +238,36 @@ Test(import, missing_and_unsupported_files_warn, .init = arena_setup, .fini = ar
     scad_result_free(&r);
 }
 
+Test(import, amf_and_3mf_warnings_as_openscad_words_them, .init = arena_setup,
+     .fini = arena_teardown)
+{
+    msgs m = {""};
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.message = on_msg;
+    o.ud = &m;
+    o.services = test_services();
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad",
+                                  "import(\"tests/hostile/data/zip_two_entries.amf\");\n"
+                                  "import(\"nowhere.3mf\");\n"
+                                  "  import(\"tests/hostile/data/no_triangles.amf\");\n"
+                                  "import(\"tests/hostile/data/second_object_broken.amf\");",
+                                  &o, &r),
+                 0);
+    cr_expect_str_eq(m.text,
+                     "WARNING: Can't read file 'zip_two_entries.amf' from zipped AMF "
+                     "'tests/hostile/data/zip_two_entries.amf' in file t.scad, line 1\n"
+                     "WARNING: Can't open import file 'tests/hostile/data/zip_two_entries.amf' "
+                     "in file t.scad, line 1\n"
+                     "WARNING: Could not read file 'nowhere.3mf' in file t.scad, line 2\n"
+                     "WARNING: Failed to parse file 'tests/hostile/data/second_object_broken.amf': "
+                     "line 20: <v3> 'x' is not an index in file t.scad, line 4\n");
+    /* the complete first object of the last file is drawn */
+    cr_expect_not_null(r.model);
+    scad_result_free(&r);
+}
+
 Test(resize, box_auto_and_2d, .init = arena_setup, .fini = arena_teardown)
 {
     msgs m = {""};

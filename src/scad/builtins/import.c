@@ -6,8 +6,9 @@
  *
  * Files are named relative to the folder of the .scad file that makes the
  * call, as OpenSCAD resolves them.  Reading goes through the injected
- * services (scad_services: read_mesh for mesh files, read_image for PNG
- * heightmaps), so src/scad needs no file-format library; the text .dat
+ * services (scad_services: read_mesh for mesh files — stl, off, obj,
+ * ply, amf, 3mf — read_image for PNG heightmaps), so src/scad needs no
+ * file-format library; the text .dat
  * heightmaps are parsed here.  A file that is missing or unreadable is a
  * warning worded as OpenSCAD words it, and builds nothing, as OpenSCAD does.
  * surface()'s polyhedron is geom_heightmap_mesh's.
@@ -116,6 +117,22 @@ static int import_print(scad_call *c, const void *args, scad_buf *b)
     return 0;
 }
 
+/* The reader's messages in err: '\n'-separated lines, each a warning
+ * (prefix before it) or, starting "note: ", a note. */
+static void show_messages(scad_call *c, const char *err, const char *prefix)
+{
+    const char *line = err;
+    while (*line) {
+        const char *nl = strchr(line, '\n');
+        int n = nl ? (int)(nl - line) : (int)strlen(line);
+        if (n >= 6 && !strncmp(line, "note: ", 6))
+            scad_diag_note(c->ev->d, c->st->loc, "%.*s", n - 6, line + 6);
+        else if (n > 0)
+            scad_diag_warning(c->ev->d, c->st->loc, "%s%.*s", prefix, n, line);
+        line += n + (nl != NULL);
+    }
+}
+
 static scad_geom *import_build(scad_call *c, const void *args)
 {
     const import_args *p = args;
@@ -125,8 +142,9 @@ static scad_geom *import_build(scad_call *c, const void *args)
     const char *name = p->file.name ? p->file.name : "";
     char ext[16];
     extension(name, ext, sizeof ext);
-    int mesh =
-        !strcmp(ext, "stl") || !strcmp(ext, "off") || !strcmp(ext, "obj") || !strcmp(ext, "ply");
+    int amf_3mf = !strcmp(ext, "amf") || !strcmp(ext, "3mf");
+    int mesh = amf_3mf || !strcmp(ext, "stl") || !strcmp(ext, "off") || !strcmp(ext, "obj") ||
+               !strcmp(ext, "ply");
     if (!strcmp(ext, "dxf")) {
         scad_buf path = {0}, layer = {0};
         scad_file_path(c, name, &path);
@@ -155,12 +173,6 @@ static scad_geom *import_build(scad_call *c, const void *args)
         scad_buf_free(&path);
         return g;
     }
-    if (!strcmp(ext, "amf") || !strcmp(ext, "3mf")) {
-        scad_diag_note(ev->d, st->loc,
-                       "import() of %s files is not supported by rayscad: '%s' shows nothing", ext,
-                       name);
-        return NULL;
-    }
     if (!mesh) {
         scad_diag_warning(ev->d, st->loc,
                           "Unsupported file format while trying to import file '\"%s\"'", name);
@@ -175,16 +187,25 @@ static scad_geom *import_build(scad_call *c, const void *args)
     float *v = NULL;
     int32_t *t = NULL;
     int nv = 0, nt = 0;
-    char err[512];
+    char err[2048];
+    err[0] = 0;
     scad_geom *g = NULL;
+    int read = -1;
     if (path.oom) {
         scad_eval_error(ev, st->loc, "out of memory");
     } else if (!scad_file_stat(ev->d->opt, scad_buf_str(&path), NULL)) {
-        scad_diag_warning(ev->d, st->loc, "Can't open import file '%s'", scad_buf_str(&path));
-    } else if (ev->services->read_mesh(ev->services->ud, scad_buf_str(&path), &v, &nv, &t, &nt, err,
-                                       sizeof err) != 0) {
-        scad_diag_warning(ev->d, st->loc, "import(): %s", err);
-    } else if (nt > 0) {
+        /* 2021.01's 3MF reader words it its own way */
+        scad_diag_warning(ev->d, st->loc,
+                          strcmp(ext, "3mf") ? "Can't open import file '%s'"
+                                             : "Could not read file '%s'",
+                          scad_buf_str(&path));
+    } else {
+        read = ev->services->read_mesh(ev->services->ud, scad_buf_str(&path), &v, &nv, &t, &nt, err,
+                                       sizeof err);
+        /* the AMF and 3MF readers word their warnings as OpenSCAD does */
+        show_messages(c, err, read != 0 && !amf_3mf ? "import(): " : "");
+    }
+    if (read == 0 && nt > 0) {
         /* the service's triangles turn counter-clockwise seen from
          * outside; iv_shape_mesh takes OpenSCAD's clockwise faces */
         double(*V)[3] = malloc((size_t)nv * sizeof *V);
