@@ -25,6 +25,9 @@ typedef enum csg_op {
 typedef struct csg_material {
     float rgba[4]; /* sRGB-encoded colour and alpha, each in [0, 1] */
     int has_color; /* 0: no color() applied; the renderer uses its scheme */
+    int highlight; /* under a '#': the highlight colour wherever it is drawn, as
+                      OpenSCAD's preview colours the flagged leaves in its main
+                      pass too (its own colour unseen) */
     /* Optics for the renderer's opt-in light model (all 0: none, which is
      * OpenSCAD's look).  Set from $rs_ variables (src/scad/material.c). */
     float reflect;  /* mirror reflectivity in [0, 1] */

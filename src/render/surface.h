@@ -25,13 +25,12 @@
 
 /* The sRGB colour of boundary b of root `root` (RAYSCAD_ROOT_*) into c and
  * its material (csg_scene_material, borrowed from s) into *m: the highlight
- * colour for the '#' root (OpenSCAD's Renderer::setColor ignores the
- * object's own there), else the material's colour, else the '%' root's
- * background modifier colour, else the scheme's face colour, or its back
- * colour for a subtracted surface (b->flip), opaque.  Alpha is capped at 1
- * and at opt->xray when that is > 0.  Returns the alpha; c[3] holds it
- * rounded to float, as the preview composites with its float colours (the
- * two differ only where the x-ray cap is not a float).  Inline, as is
+ * colour for the '#' root and for every leaf under a '#' (OpenSCAD's
+ * Renderer::setColor ignores the object's own there), else the material's colour, else the '%'
+ * root's background modifier colour, else the scheme's face colour, or its back colour for a
+ * subtracted surface (b->flip), opaque.  Alpha is capped at 1 and at opt->xray when that is > 0.
+ * Returns the alpha; c[3] holds it rounded to float, as the preview composites with its float
+ * colours (the two differ only where the x-ray cap is not a float).  Inline, as is
  * render_ray_spawn: as calls across files the two cost the path tracer's
  * loop 0.6 % more instructions (callgrind, few.scad). */
 static inline double render_surface_color(const csg_scene *s, const render_options *opt, int root,
@@ -39,7 +38,7 @@ static inline double render_surface_color(const csg_scene *s, const render_optio
 {
     const render_colors *cs = &opt->colors;
     *m = csg_scene_material(s, b->prim);
-    if (root == RAYSCAD_ROOT_HIGHLIGHT) {
+    if (root == RAYSCAD_ROOT_HIGHLIGHT || (*m)->highlight) {
         memcpy(c, cs->highlight, sizeof cs->highlight);
     } else if ((*m)->has_color) {
         memcpy(c, (*m)->rgba, sizeof(*m)->rgba);

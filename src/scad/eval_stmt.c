@@ -701,6 +701,12 @@ static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_st
         }
         return nested ? g : NULL; /* a '!' inside another is a plain part of it */
     }
+    scad_state marked;
+    if (st->highlight) { /* its leaves drawn in the highlight colour, in the model too */
+        marked = *state;
+        marked.mat.highlight = 1;
+        state = &marked;
+    }
     scad_geom *g = instantiate_plain(ev, env, st, state);
     if (g && st->background) {
         list_add(ev, &ev->backgrounds, &ev->nbackgrounds, &ev->capbackgrounds, g);

@@ -170,6 +170,10 @@ int scad_solid_polys(scad_eval *ev, scad_loc loc, const char *who, const scad_ge
 int scad_leaf_polys(const scad_geom *g, const double local_from_world[12], scad_facet_params f,
                     geom_polys *out);
 
+/* The polygons as a mesh leaf's shape (repeated points merged), in *out.
+ * 0, or -1 when out of memory or empty. */
+int scad_polys_mesh(const geom_polys *p, iv_shape *out);
+
 /* import() of a DXF file (dxf.c): the drawing as one 2D leaf, read with the
  * call's layer, origin, scale and $fn/$fa/$fs. */
 scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,

@@ -313,6 +313,7 @@ typedef struct revolve_ctx {
     int disc_fragments_smooth;
     scad_facet_params f;
     int fragments; /* OpenSCAD's steps over the angle (solid.c tessellates by them) */
+    int faceted;   /* build OpenSCAD's polyhedron instead of the exact revolve */
 } revolve_ctx;
 
 /* The region of a 2D leaf in the extrusion's frame (a new reference), with
@@ -387,6 +388,19 @@ static void revolve_tree(revolve_ctx *c, scad_geom *g)
     iv_shape_revolve(&s, r, c->angle);
     s.u.revolve.fragments = c->fragments;
     iv_region_release(r);
+    if (c->faceted) { /* OpenSCAD's polyhedron, as its preview draws it */
+        scad_geom tmp = *g;
+        tmp.shape = s;
+        memcpy(tmp.xf, csg_affine_identity, sizeof tmp.xf);
+        geom_polys faces = {0};
+        iv_shape m;
+        if (scad_leaf_polys(&tmp, csg_affine_identity, c->f, &faces) == 0 &&
+            scad_polys_mesh(&faces, &m) == 0) {
+            iv_shape_release(&s);
+            s = m;
+        }
+        geom_polys_free(&faces);
+    }
     if (scad_geom_keep(c->ev, &s) != 0) {
         make_empty(g);
         return;
@@ -460,7 +474,7 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
-    revolve_ctx r = {ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, p->f, 0};
+    revolve_ctx r = {ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, p->f, 0, 0};
     revolve_scan(&r, kids, &r.xmin, &r.xmax);
     if (!(r.xmin <= r.xmax)) return NULL;
     if (r.xmin < 0 && r.xmax > 0) {
@@ -471,8 +485,9 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
         return NULL;
     }
     /* 2021.01's GeometryEvaluator::rotatePolygon, truncating */
-    r.fragments =
-        (int)fmax(scad_fragments(fmax(fabs(r.xmin), fabs(r.xmax)), p->f) * fabs(angle) / 360, 1);
+    double rmax = fmax(fabs(r.xmin), fabs(r.xmax));
+    r.fragments = (int)fmax(scad_fragments(rmax, p->f) * fabs(angle) / 360, 1);
+    r.faceted = scad_facets_shown(ev, p->f, rmax);
     /* A profile on the negative side is the mirrored profile turned by
      * 180°; a negative angle sweeps clockwise: the mirror image in y. */
     csg_affine place = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
