@@ -42,5 +42,32 @@ for m in "${models[@]}"; do
         failed=$((failed + 1))
     fi
 done
+# Framing: a model clipped by a huge box (a common idiom) must be framed as
+# what is drawn.  openscad frames the box and draws a speck or nothing, so
+# the truth is openscad's picture of the drawn part alone.
+if [ $# -eq 0 ]; then
+    while IFS='|' read -r name clipped alone; do
+        printf '%s\n' "$clipped" >"$out/$name.scad"
+        printf '%s\n' "$alone" >"$out/$name.alone.scad"
+        if ! timeout 300 xvfb-run -a openscad -o "$out/$name.ref.png" --imgsize=320,240 \
+                "$out/$name.alone.scad" >"$out/$name.openscad.log" 2>&1 ||
+            ! "$rayscad" "$out/$name.scad" -o "$out/$name.png" --imgsize=320,240 \
+                >"$out/$name.rayscad.log" 2>&1; then
+            echo "FAIL $name: a run failed (see $out/$name.*.log)"
+            failed=$((failed + 1))
+        elif res=$("$maskcmp" "$out/$name.png" "$out/$name.ref.png" --min-iou 0.99 \
+                --diff "$out/$name.diff.png"); then
+            echo "ok   $name: $res"
+            passed=$((passed + 1))
+        else
+            echo "FAIL $name: $res"
+            failed=$((failed + 1))
+        fi
+    done <<'CASES'
+frame_clip_3d|intersection() { sphere(5, $fn = 24); cube(1e10, center = true); }|sphere(5, $fn = 24);
+frame_clip_half|intersection() { union() { cylinder(r = 10, h = 5); translate([30, 0, 0]) cube(8); } translate([-1e6, -1e6, 0]) cube([2e6, 2e6, 2]); }|cylinder(r = 10, h = 2); translate([30, 0, 0]) cube([8, 8, 2]);
+frame_clip_2d|linear_extrude(3) intersection() { circle(4, $fn = 30); square(1e9, center = true); }|linear_extrude(3) circle(4, $fn = 30);
+CASES
+fi
 echo "compare: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
