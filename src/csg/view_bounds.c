@@ -32,6 +32,33 @@ static double largest_side(const double lo[3], const double hi[3])
 
 static int openscad_bounds(const csg_scene *s, int r, double lo[3], double hi[3]);
 
+/* OpenSCAD frames a 2D object flat (its tessellated polygon at z = 0),
+ * though its preview draws a slab: a prism leaf over that slab, z in
+ * [-FLAT_SLAB, FLAT_SLAB] (src/scad's SCAD_SLAB), is boxed at z = 0. */
+#define FLAT_SLAB 0.5
+
+static void leaf_box(const csg_scene *s, const csg_fnode *f, double lo[3], double hi[3])
+{
+    const csg_prim *p = &s->prims[f->prim];
+    const iv_shape *sh = &p->shape;
+    double olo[3], ohi[3];
+    csg_affine w;
+    memcpy(lo, f->lo, 3 * sizeof *lo);
+    memcpy(hi, f->hi, 3 * sizeof *hi);
+    if (sh->kind != IV_SHAPE_PRISM || sh->u.prism.z0 != -FLAT_SLAB || sh->u.prism.z1 != FLAT_SLAB ||
+        iv_shape_bounds(sh, olo, ohi) != 0 || csg_affine_invert(p->object_from_world, w) != 0)
+        return;
+    olo[2] = ohi[2] = 0;
+    for (int c = 0; c < 8; c++) {
+        double o[3] = {c & 1 ? ohi[0] : olo[0], c & 2 ? ohi[1] : olo[1], 0}, x[3];
+        csg_affine_point(w, o, x);
+        for (int k = 0; k < 3; k++) {
+            lo[k] = c && lo[k] < x[k] ? lo[k] : x[k];
+            hi[k] = c && hi[k] > x[k] ? hi[k] : x[k];
+        }
+    }
+}
+
 int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
 {
     double tlo[3], thi[3];
@@ -59,9 +86,11 @@ static int openscad_bounds(const csg_scene *s, int r, double lo[3], double hi[3]
         int ni = neg[i - first];
         if (f->op == FNODE_LEAF) {
             if (ni) continue;
+            double a[3], b[3];
+            leaf_box(s, f, a, b);
             for (int k = 0; k < 3; k++) {
-                lo[k] = found && lo[k] < f->lo[k] ? lo[k] : f->lo[k];
-                hi[k] = found && hi[k] > f->hi[k] ? hi[k] : f->hi[k];
+                lo[k] = found && lo[k] < a[k] ? lo[k] : a[k];
+                hi[k] = found && hi[k] > b[k] ? hi[k] : b[k];
             }
             found = 1;
             continue;

@@ -441,9 +441,33 @@ static int render_print(scad_call *c, const void *args, scad_buf *b)
     return 1;
 }
 
+/* render(): OpenSCAD's rendered geometry of the children, one object.  A
+ * 2D subtree becomes the one region its booleans make (Clipper, as
+ * OpenSCAD's), which also bounds it exactly (a difference from a huge
+ * square, the usual way to invert a shape, bounds the view by what is
+ * left, not by the square); 3D stays exact CSG. */
+static scad_geom *render_build(scad_call *c, const void *args)
+{
+    (void)args;
+    scad_eval *ev = c->ev;
+    scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
+    if (!kids || scad_geom_dims(kids) != 1 || (kids->is_leaf && scad_geom_is_flat(kids)))
+        return kids;
+    csg_affine inv;
+    if (csg_affine_invert(c->state->xf, inv) != 0) return kids;
+    scad_paths r = {0};
+    if (scad_flatten_2d(ev, kids, inv, scad_facets_read(c), c->st->loc, "render", &r) != 0)
+        return NULL;
+    scad_state st = *c->state;
+    st.mat = kids->is_leaf ? kids->mat : st.mat;
+    scad_geom *g = scad_region_geom(ev, &r, &st);
+    scad_paths_free(&r);
+    return g ? g : scad_geom_empty(ev);
+}
+
 static const char *const render_params[] = {"convexity", NULL};
-static const scad_module_def render = {"render",    render_params, 1,          sizeof(render_args),
-                                       render_read, render_print,  group_build};
+static const scad_module_def render = {"render",    render_params, 1,           sizeof(render_args),
+                                       render_read, render_print,  render_build};
 
 const scad_module_def *const scad_operation_modules[] = {
     &translate, &rotate, &scale,      &mirror,       &multmatrix, &color,
