@@ -37,6 +37,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -133,13 +134,22 @@ void release_fonts()
     FcFini();
 }
 
-bool find_font(const char *name, std::string &file, int &index)
+/* The font files added to the configuration (FontCache::register_font_file). */
+std::set<std::string> added_fonts;
+
+bool find_font(const char *name, const io_text_params *p, std::string &file, int &index)
 {
     if (!config) {
         config = FcInitLoadConfigAndFonts();
         if (config) std::atexit(release_fonts);
     }
     if (!config) return false;
+    for (int i = 0; i < p->nfont_files; i++) {
+        const char *f = p->font_files[i];
+        if (added_fonts.count(f)) continue;
+        added_fonts.insert(f);
+        FcConfigAppFontAddFile(config, reinterpret_cast<const FcChar8 *>(f));
+    }
     FcPattern *pat = FcNameParse(reinterpret_cast<const FcChar8 *>(name));
     if (!pat) return false;
     FcConfigSubstitute(config, pat, FcMatchPattern);
@@ -220,7 +230,7 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
 
     std::string file;
     int index = 0;
-    if (!find_font(font.c_str(), file, index)) {
+    if (!find_font(font.c_str(), p, file, index)) {
         set_err(err, errlen, "no font found for '" + font + "'");
         return 1;
     }

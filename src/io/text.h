@@ -26,6 +26,8 @@ typedef struct io_text_params {
     const char *language;  /* default "en" */
     const char *script;    /* ISO 15924 ("latn"); "": from the text */
     int segments;          /* points per Bézier segment (OpenSCAD: fragments/8 + 1, >= 2) */
+    const char *const *font_files; /* added to fontconfig's fonts first (a */
+    int nfont_files;               /* script's use <font.ttf>, as OpenSCAD's) */
 } io_text_params;
 
 /* The outlines of the shaped text in model units, each glyph filled by the

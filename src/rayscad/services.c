@@ -298,8 +298,9 @@ static int text_outlines(void *ud, const scad_text_params *p, scad_paths *out, c
                          size_t errlen)
 {
     (void)ud;
-    io_text_params q = {p->text,    p->size,      p->font,     p->halign, p->valign,
-                        p->spacing, p->direction, p->language, p->script, p->segments};
+    io_text_params q = {p->text,   p->size,     p->font,       p->halign,
+                        p->valign, p->spacing,  p->direction,  p->language,
+                        p->script, p->segments, p->font_files, p->nfont_files};
     io_paths r;
     int rc = io_text_render(&q, &r, err, errlen);
     if (rc != 0) return rc;

@@ -331,6 +331,10 @@ struct scad_scope {
     int nfuncs, capfuncs;
     scad_scope **uses; /* top scopes of the files `use`d here, in order */
     int nuses, capuses;
+    /* the top scope of a parse: the font files any of its files `use`
+     * (use <font.ttf>, as openscad registers them with its font cache) */
+    const char **fonts;
+    int nfonts, capfonts;
     /* funcs and mods by name (scope.c), built when the parse ends */
     int *fslot, *mslot;
     uint32_t fmask, mmask;

@@ -90,7 +90,8 @@ struct scad_env {
 
 typedef struct scad_eval {
     scad_diag *d;
-    scad_names *names; /* the parse's; names set from C are interned here */
+    const scad_scope *top; /* the main file's scope: the fonts the files `use` */
+    scad_names *names;     /* the parse's; names set from C are interned here */
     /* interned names the evaluator compares with: "$children",
      * "$parent_modules", and the control modules that are no keywords */
     const char *sym_children, *sym_parent_modules, *sym_children_module, *sym_intersection_for;

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "parse.h"
 
@@ -362,6 +363,14 @@ static void parse_file_into(parser *P, scad_scope *scope, scad_names *names, con
 
 enum { MAX_INCLUDE_DEPTH = 64 };
 
+/* 1 when path names a font file (.ttf, .otf), which `use` registers. */
+static int is_font_file(const char *path)
+{
+    size_t n = strlen(path);
+    return n > 4 && path[n - 4] == '.' &&
+           (strcasecmp(path + n - 3, "ttf") == 0 || strcasecmp(path + n - 3, "otf") == 0);
+}
+
 static void use_file(parser *P, scad_scope *s, scad_token *t)
 {
     char *path = scad_find_library(P->a, P->shared->opt, t->loc.file, t->text);
@@ -372,6 +381,16 @@ static void use_file(parser *P, scad_scope *s, scad_token *t)
         return;
     }
     shared *u = P->shared;
+    if (is_font_file(path)) { /* a font for text(), not a library */
+        scad_scope *top = u->top;
+        for (int i = 0; top && i < top->nfonts; i++)
+            if (strcmp(top->fonts[i], path) == 0) return;
+        if (top)
+            top->fonts =
+                scad_parse_grow(P, top->fonts, top->nfonts, &top->capfonts, sizeof *top->fonts);
+        if (top && top->fonts) top->fonts[top->nfonts++] = path;
+        return;
+    }
     scad_scope *scope = NULL;
     for (int i = 0; i < u->n; i++)
         if (strcmp(u->path[i], path) == 0) scope = u->scope[i];
@@ -463,7 +482,7 @@ static void include_file(parser *P, scad_scope *s, scad_token *t)
 scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const char *file,
                        const char *src)
 {
-    shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file};
+    shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file, NULL};
     parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, NULL, d->base_dir, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);
@@ -472,6 +491,7 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
         return NULL;
     }
     scad_scope *s = new_scope(&P);
+    sh.top = s;
     if (s) parse_into(&P, s);
     free(P.t);
     if (s) drain_uses(&P, 0);

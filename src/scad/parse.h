@@ -43,6 +43,7 @@ typedef struct shared {
     scad_scope **defining;
     int ndefining, capdefining;
     const char *main_file; /* the file the parse began with */
+    scad_scope *top;       /* where the fonts that files `use` are listed */
 } shared;
 
 /* Raised by a failing rule: the whole statement is abandoned. */

@@ -233,6 +233,7 @@ static void run_job(job *j)
     }
     scad_env *file = builtins ? scad_env_new(&ev, builtins, builtins, j->top) : NULL;
     ev.builtins = builtins;
+    ev.top = j->top;
     ev.facets = j->opt ? j->opt->facets : RAYSCAD_FACETS_AUTO;
     static const scad_services no_services;
     ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;

@@ -47,6 +47,8 @@ typedef struct scad_text_params {
     double spacing;                            /* default 1 */
     const char *direction, *language, *script; /* language default "en" */
     int segments;                              /* points per Bézier curve */
+    const char *const *font_files;             /* fonts the files `use`, to be */
+    int nfont_files;                           /* found before the system's */
 } scad_text_params;
 
 typedef struct scad_services {

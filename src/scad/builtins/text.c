@@ -198,6 +198,8 @@ static scad_geom *text_build(scad_call *c, const void *args)
     p.spacing = a->spacing;
     int n = scad_fragments(p.size, a->f);
     p.segments = (int)fmax(floor(n / 8.0) + 1, 2);
+    p.font_files = ev->top ? ev->top->fonts : NULL;
+    p.nfont_files = ev->top ? ev->top->nfonts : 0;
     if (!*p.text || !isfinite(p.size) || !isfinite(p.spacing)) return NULL;
     const scad_services *s = ev->services;
     if (!s->text) {
