@@ -268,9 +268,9 @@ conformance: all
 	tests/cli/conformance.sh $(BUILD)
 
 # Real OpenSCAD code against openscad 2021.01: the regression corpus (.echo,
-# .csg) and BOSL2's test scripts (.echo) of ../shared/corpora, where present
-# (tests/cli/corpus.py; about 8 minutes on 2 cores, openscad's outputs kept
-# in BUILD/corpus/ref).  CORPUS_UPDATE=1 rewrites tests/corpus/passing.txt.
+# .csg, .png silhouettes) and BOSL2's test scripts (.echo) of ../shared/corpora,
+# where present (tests/cli/corpus.py; about 20 minutes on 2 cores, openscad's
+# outputs kept in BUILD/corpus/ref).  CORPUS_UPDATE=1 rewrites tests/corpus/passing.txt.
 corpus: all
 	python3 tests/cli/corpus.py $(BUILD) $(if $(CORPUS_UPDATE),--update)
 
