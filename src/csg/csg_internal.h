@@ -101,6 +101,14 @@ int csg_scene_set_avx(csg_scene *s, int on);
 unsigned csg_scene_wide_entry(const csg_scene *s, int32_t w, const double o[3], const double d[3],
                               double t0, double t1, iv_arena *a, double te[WIDE]);
 
+/* World bounds of the object box lo..hi under m: the AABB of the transformed
+ * box, per axis t_i + Σ_j m_ij·[lo_j, hi_j] (Arvo 1990), which equals the
+ * box of the 8 transformed corners; a zero coefficient contributes exactly
+ * 0, so an infinite object extent only spreads to the world axes it maps
+ * onto (scene.c). */
+void csg_box_transform(const csg_affine m, const double lo[3], const double hi[3], double wlo[3],
+                       double whi[3]);
+
 /* Whether this CPU and OS run AVX code (csg_trace_first's box tests). */
 int csg_cpu_has_avx(void);
 

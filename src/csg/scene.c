@@ -43,13 +43,8 @@ static void pad_bounds(double lo[3], double hi[3])
     }
 }
 
-/* World bounds of a leaf: the AABB of the transformed object box, computed
- * per axis as t_i + Σ_j m_ij·[lo_j, hi_j] (Arvo 1990), which equals the box
- * of the 8 transformed corners.  A zero coefficient contributes exactly 0, so
- * an infinite object extent only spreads to the world axes it maps onto
- * (no 0·inf = NaN). */
-static void leaf_bounds(const csg_affine m, const double lo[3], const double hi[3], double wlo[3],
-                        double whi[3])
+void csg_box_transform(const csg_affine m, const double lo[3], const double hi[3], double wlo[3],
+                       double whi[3])
 {
     for (int i = 0; i < 3; i++) {
         double a = m[4 * i + 3], b = m[4 * i + 3];
@@ -202,7 +197,7 @@ static csg_node *finish_leaf(csg_node *x)
         csg_node_free(x);
         return NULL;
     }
-    leaf_bounds(x->world_from_object, lo, hi, x->lo, x->hi);
+    csg_box_transform(x->world_from_object, lo, hi, x->lo, x->hi);
     pad_bounds(x->lo, x->hi);
     x->size = x->leaves = x->depth = 1;
     return x;

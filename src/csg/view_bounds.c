@@ -49,14 +49,7 @@ static void leaf_box(const csg_scene *s, const csg_fnode *f, double lo[3], doubl
         iv_shape_bounds(sh, olo, ohi) != 0 || csg_affine_invert(p->object_from_world, w) != 0)
         return;
     olo[2] = ohi[2] = 0;
-    for (int c = 0; c < 8; c++) {
-        double o[3] = {c & 1 ? ohi[0] : olo[0], c & 2 ? ohi[1] : olo[1], 0}, x[3];
-        csg_affine_point(w, o, x);
-        for (int k = 0; k < 3; k++) {
-            lo[k] = c && lo[k] < x[k] ? lo[k] : x[k];
-            hi[k] = c && hi[k] > x[k] ? hi[k] : x[k];
-        }
-    }
+    csg_box_transform(w, olo, ohi, lo, hi);
 }
 
 int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
