@@ -165,8 +165,9 @@ def mask_pixels(maskcmp, img):
 def png_diff(maskcmp, ref, ours):
     """Why two previews' silhouettes differ, or None; also the IoU (None
     where openscad draws nothing)."""
-    if os.path.getsize(ref) == 0 or os.path.getsize(ours) == 0 or mask_pixels(maskcmp, ref) == 0:
-        theirs, mine = mask_pixels(maskcmp, ref), mask_pixels(maskcmp, ours)
+    theirs = mask_pixels(maskcmp, ref)
+    if theirs == 0 or os.path.getsize(ours) == 0:
+        mine = mask_pixels(maskcmp, ours)
         if theirs == 0 and mine == 0:
             return None, None
         if theirs == 0:
