@@ -130,6 +130,13 @@ scad_geom *scad_call_children(scad_call *c, const scad_state *state);
 scad_geom *scad_with_optics(scad_call *c, scad_geom *g);
 /* Circle point i of n at radius r, OpenSCAD's generate_circle. */
 void scad_circle_point(double r, int i, int n, double out[2]);
+/* Ring i of the `rings` of OpenSCAD's sphere of radius r: its radius *rr
+ * at height *z (primitives.cc's ring at phi = 180°·(i + ½)/rings). */
+void scad_sphere_ring(double r, int i, int rings, double *rr, double *z);
+/* OpenSCAD's fragment count of a round leaf (a sphere, a cone or a disc):
+ * the one recorded when it was made (g->cap), else what f gives its
+ * radius. */
+int scad_leaf_fragments(const scad_geom *g, scad_facet_params f);
 
 /* Fill the optical fields of *m (reflect, absorb, ior, emit, light) for a
  * leaf of shape s placed by world_from_object xf, from the $rs_ variables

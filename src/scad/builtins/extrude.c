@@ -91,13 +91,6 @@ static iv_region *shadow_region(const double *local_from_world, const scad_geom 
     return out;
 }
 
-/* OpenSCAD's fragment count for a disc leaf: the one m_circle recorded, or
- * (a disc made elsewhere) the count the enclosing module's facets give. */
-static int disc_fragments(const scad_geom *g, scad_facet_params f)
-{
-    return g->cap >= 3 ? g->cap : scad_fragments(g->shape.u.prism.r, f);
-}
-
 typedef struct twist_ctx {
     scad_eval *ev;
     scad_loc loc;
@@ -122,7 +115,7 @@ static void twist_scan(twist_ctx *c, const scad_geom *g)
         return;
     }
     if (g->shape.kind != IV_SHAPE_PRISM) return;
-    iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
+    iv_region *r = shadow_region(c->local_from_world, g, scad_leaf_fragments(g, c->f), 1);
     if (!r) return;
     int n;
     const double(*P)[2] = iv_region_points(r, &n);
@@ -147,7 +140,7 @@ static void twist_tree(twist_ctx *c, scad_geom *g)
         make_empty(g);
         return;
     }
-    iv_region *r = shadow_region(c->local_from_world, g, disc_fragments(g, c->f), 1);
+    iv_region *r = shadow_region(c->local_from_world, g, scad_leaf_fragments(g, c->f), 1);
     iv_shape s;
     int n = 0, rc = -1;
     if (r) iv_region_points(r, &n);

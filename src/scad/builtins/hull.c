@@ -115,21 +115,22 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
     case IV_SHAPE_SPHERE: {
         P->any3d = 1;
         double r = s->u.sphere.r;
-        int n = g->cap >= 3 ? g->cap : scad_fragments(r, f), rings = (n + 1) / 2;
+        int n = scad_leaf_fragments(g, f), rings = (n + 1) / 2;
         if (pts_steps(P, (long)n * rings)) return;
         for (int i = 0; i < rings; i++) {
-            double phi = 180.0 * (i + 0.5) / rings;
+            double rr, z;
+            scad_sphere_ring(r, i, rings, &rr, &z);
             for (int j = 0; j < n; j++) {
                 double c[2];
-                scad_circle_point(r * iv_sin_degrees(phi), j, n, c);
-                pts_add(P, lfw, g->xf, c[0], c[1], r * iv_cos_degrees(phi));
+                scad_circle_point(rr, j, n, c);
+                pts_add(P, lfw, g->xf, c[0], c[1], z);
             }
         }
         return;
     }
     case IV_SHAPE_CONE: {
         P->any3d = 1;
-        int n = g->cap >= 3 ? g->cap : scad_fragments(fmax(s->u.cone.r1, s->u.cone.r2), f);
+        int n = scad_leaf_fragments(g, f);
         if (pts_steps(P, 2L * n)) return;
         for (int k = 0; k < 2; k++)
             for (int j = 0; j < n; j++) {
@@ -153,7 +154,7 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
         if (scad_geom_is_flat(g)) {
             P->any2d = 1;
             if (!s->u.prism.g) {
-                int n = g->cap >= 3 ? g->cap : scad_fragments(s->u.prism.r, f);
+                int n = scad_leaf_fragments(g, f);
                 if (pts_steps(P, n)) return;
                 for (int j = 0; j < n; j++) {
                     double c[2];

@@ -167,11 +167,12 @@ static void decompose(mctx *c, const scad_geom *g, geom_convex_set *P)
         if (scad_eval_steps(c->ev, (long)n * rings, c->loc, "minkowski")) return;
         if (!(q = parts_new(c, P, n * rings))) return;
         for (int i = 0; i < rings; i++) {
-            double phi = 180.0 * (i + 0.5) / rings;
-            double rr = r * iv_sin_degrees(phi), z = r * iv_cos_degrees(phi);
+            double rr, z;
+            scad_sphere_ring(r, i, rings, &rr, &z);
             for (int j = 0; j < n; j++) {
-                double a = 360.0 * j / n;
-                put(c, q, g->xf, rr * iv_cos_degrees(a), rr * iv_sin_degrees(a), z);
+                double p[2];
+                scad_circle_point(rr, j, n, p);
+                put(c, q, g->xf, p[0], p[1], z);
             }
         }
         return;

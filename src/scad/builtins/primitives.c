@@ -158,8 +158,8 @@ static scad_geom *sphere_build(scad_call *c, const void *args)
     double(*P)[3] = malloc((size_t)n * (size_t)rings * sizeof *P);
     if (!P) return NULL;
     for (int i = 0; i < rings; i++) {
-        double phi = 180.0 * (i + 0.5) / rings;
-        double rr = r * iv_sin_degrees(phi), z = r * iv_cos_degrees(phi);
+        double rr, z;
+        scad_sphere_ring(r, i, rings, &rr, &z);
         for (int j = 0; j < n; j++) {
             double q[2];
             scad_circle_point(rr, j, n, q);

@@ -69,6 +69,23 @@ void scad_circle_point(double r, int i, int n, double out[2])
     out[1] = r * iv_sin_degrees(a);
 }
 
+void scad_sphere_ring(double r, int i, int rings, double *rr, double *z)
+{
+    double phi = 180.0 * (i + 0.5) / rings;
+    *rr = r * iv_sin_degrees(phi);
+    *z = r * iv_cos_degrees(phi);
+}
+
+int scad_leaf_fragments(const scad_geom *g, scad_facet_params f)
+{
+    if (g->cap >= 3) return g->cap;
+    const iv_shape *s = &g->shape;
+    double r = s->kind == IV_SHAPE_SPHERE ? s->u.sphere.r
+               : s->kind == IV_SHAPE_CONE ? fmax(s->u.cone.r1, s->u.cone.r2)
+                                          : s->u.prism.r;
+    return scad_fragments(r, f);
+}
+
 iv_region *scad_circle_region(double r, int n)
 {
     double(*P)[2] = malloc((size_t)n * sizeof *P);

@@ -86,8 +86,9 @@ static void sphere_faces(leaf_out *o, double r, int n)
         o->failed = 1;
     } else {
         for (int i = 0; i < rings; i++) {
-            double phi = 180.0 * (i + 0.5) / rings;
-            ring(r * iv_sin_degrees(phi), n, r * iv_cos_degrees(phi), b);
+            double rr, z;
+            scad_sphere_ring(r, i, rings, &rr, &z);
+            ring(rr, n, z, b);
             if (i == 0 || i == rings - 1) put(o, (const double(*)[3])b, n);
             for (int j = 0; i > 0 && j < n; j++) {
                 double q[4][3];
@@ -106,14 +107,15 @@ static void sphere_faces(leaf_out *o, double r, int n)
     free(b);
 }
 
-static void cone_faces(leaf_out *o, double r1, double r2, double h, int n)
+/* A cone or cylinder from radius r1 at z0 to r2 at z1, n-gons. */
+static void cone_faces(leaf_out *o, double r1, double r2, double z0, double z1, int n)
 {
     double(*a)[3] = malloc((size_t)n * sizeof *a), (*b)[3] = malloc((size_t)n * sizeof *b);
     if (!a || !b) {
         o->failed = 1;
     } else {
-        ring(r1, n, 0, a);
-        ring(r2, n, h, b);
+        ring(r1, n, z0, a);
+        ring(r2, n, z1, b);
         if (r1 > 0) put(o, (const double(*)[3])a, n);
         if (r2 > 0) put(o, (const double(*)[3])b, n);
         for (int j = 0; j < n; j++) {
@@ -251,14 +253,7 @@ static void prism_faces(leaf_out *o, const scad_geom *g, scad_facet_params f)
     if (!s->u.prism.g) { /* a disc: OpenSCAD's n-gon */
         o->c[0] = o->c[1] = 0;
         o->c[2] = 0.5 * (z0 + z1);
-        int n = g->cap >= 3 ? g->cap : scad_fragments(s->u.prism.r, f);
-        double h = z1 - z0;
-        leaf_out shifted = *o;
-        shifted.c[2] -= z0;
-        double t[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, z0};
-        csg_affine_mul(o->m, t, shifted.m);
-        cone_faces(&shifted, s->u.prism.r, s->u.prism.r, h, n);
-        o->failed |= shifted.failed;
+        cone_faces(o, s->u.prism.r, s->u.prism.r, z0, z1, scad_leaf_fragments(g, f));
         return;
     }
     const iv_region *r = s->u.prism.g;
@@ -337,14 +332,12 @@ int scad_leaf_polys(const scad_geom *g, const double local_from_world[12], scad_
         break;
     case IV_SHAPE_SPHERE:
         o.c[0] = o.c[1] = o.c[2] = 0;
-        sphere_faces(&o, s->u.sphere.r, g->cap >= 3 ? g->cap : scad_fragments(s->u.sphere.r, f));
+        sphere_faces(&o, s->u.sphere.r, scad_leaf_fragments(g, f));
         break;
     case IV_SHAPE_CONE: {
         o.c[0] = o.c[1] = 0;
         o.c[2] = 0.5 * s->u.cone.h;
-        double r = fmax(s->u.cone.r1, s->u.cone.r2);
-        cone_faces(&o, s->u.cone.r1, s->u.cone.r2, s->u.cone.h,
-                   g->cap >= 3 ? g->cap : scad_fragments(r, f));
+        cone_faces(&o, s->u.cone.r1, s->u.cone.r2, 0, s->u.cone.h, scad_leaf_fragments(g, f));
         break;
     }
     case IV_SHAPE_POLYTOPE: {
