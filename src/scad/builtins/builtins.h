@@ -177,6 +177,10 @@ int scad_solid_polys(scad_eval *ev, scad_loc loc, const char *who, const scad_ge
 int scad_leaf_polys(const scad_geom *g, const double local_from_world[12], scad_facet_params f,
                     geom_polys *out);
 
+/* The distinct vertices of the polygons, sorted, into *V (malloc'ed, *nv of
+ * them); map (may be NULL; p->nv entries) gets each polygon vertex's index
+ * in *V.  0, or -1 out of memory. */
+int scad_polys_vertices(const geom_polys *p, double (**V)[3], int *nv, int *map);
 /* The polygons as a mesh leaf's shape (repeated points merged), in *out.
  * 0, or -1 when out of memory or empty. */
 int scad_polys_mesh(const geom_polys *p, iv_shape *out);

@@ -282,16 +282,7 @@ static int faces_sum(mctx *c, const msolid *s, const geom_convex *q, geom_convex
 /* The distinct vertices of s's faces as points to move copies by. */
 static int solid_vertices(const msolid *s, geom_convex *q)
 {
-    q->p = malloc((size_t)(s->faces.nv ? s->faces.nv : 1) * sizeof *q->p);
-    q->n = 0;
-    if (!q->p) return -1;
-    for (int i = 0; i < s->faces.nv; i++) {
-        int seen = 0;
-        for (int j = 0; j < q->n && !seen; j++)
-            seen = !memcmp(q->p[j], s->faces.v[i], sizeof q->p[0]);
-        if (!seen) memcpy(q->p[q->n++], s->faces.v[i], sizeof q->p[0]);
-    }
-    return 0;
+    return scad_polys_vertices(&s->faces, &q->p, &q->n, NULL);
 }
 
 /* a ⊕ b into next (every pair of parts, by the identities above). */

@@ -380,31 +380,44 @@ static int cmp_vkey(const void *a, const void *b)
     return 0;
 }
 
+int scad_polys_vertices(const geom_polys *p, double (**V)[3], int *nv, int *map)
+{
+    int n = p->nv;
+    vkey *K = malloc((size_t)(n ? n : 1) * sizeof *K);
+    *V = malloc((size_t)(n ? n : 1) * sizeof **V);
+    *nv = 0;
+    if (!K || !*V) {
+        free(K);
+        free(*V);
+        *V = NULL;
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        memcpy(K[i].p, p->v[i], sizeof K[i].p);
+        K[i].i = i;
+    }
+    qsort(K, (size_t)n, sizeof *K, cmp_vkey);
+    for (int i = 0; i < n; i++) {
+        if (i == 0 || cmp_vkey(&K[i - 1], &K[i]) != 0) memcpy((*V)[(*nv)++], K[i].p, sizeof **V);
+        if (map) map[K[i].i] = *nv - 1;
+    }
+    free(K);
+    return 0;
+}
+
 int scad_polys_mesh(const geom_polys *p, iv_shape *out)
 {
-    int n = p->nv, rc = -1;
-    vkey *K = malloc((size_t)(n ? n : 1) * sizeof *K);
+    int n = p->nv, nv, rc = -1;
     int *map = malloc((size_t)(n ? n : 1) * sizeof *map);
-    double(*V)[3] = malloc((size_t)(n ? n : 1) * sizeof *V);
     int *idx = malloc((size_t)(n ? n : 1) * sizeof *idx);
-    if (K && map && V && idx && p->n > 0) {
-        for (int i = 0; i < n; i++) {
-            memcpy(K[i].p, p->v[i], sizeof K[i].p);
-            K[i].i = i;
-        }
-        qsort(K, (size_t)n, sizeof *K, cmp_vkey);
-        int nv = 0;
-        for (int i = 0; i < n; i++) {
-            if (i == 0 || cmp_vkey(&K[i - 1], &K[i]) != 0) memcpy(V[nv++], K[i].p, sizeof V[0]);
-            map[K[i].i] = nv - 1;
-        }
+    double(*V)[3] = NULL;
+    if (map && idx && p->n > 0 && scad_polys_vertices(p, &V, &nv, map) == 0) {
         /* OpenSCAD's winding: clockwise seen from outside */
         for (int f = 0; f < p->n; f++)
             for (int i = p->start[f]; i < p->start[f + 1]; i++)
                 idx[i] = map[p->start[f + 1] - 1 - (i - p->start[f])];
         rc = iv_shape_mesh(out, (const double(*)[3])V, nv, idx, p->start, p->n) < 0 ? -1 : 0;
     }
-    free(K);
     free(map);
     free(V);
     free(idx);
