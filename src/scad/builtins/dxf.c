@@ -292,15 +292,8 @@ scad_geom *scad_dxf_import(scad_call *c, const char *path, const char *layer,
     if (geom_dxf_outlines(&dxf, &pts, &start, &n) != 0) {
         scad_eval_error(ev, st->loc, "out of memory");
     } else if (n > 0) {
-        iv_region *reg = iv_region_new((const double(*)[2])pts, start, n);
-        if (!reg) {
-            scad_eval_error(ev, st->loc, "out of memory");
-        } else {
-            iv_shape sh;
-            iv_shape_prism(&sh, reg, -SCAD_SLAB, SCAD_SLAB);
-            iv_region_release(reg); /* the shape holds it */
-            g = scad_geometry_leaf(ev, &sh, c->state);
-        }
+        scad_paths outlines = {pts, start, n};
+        g = scad_region_geom(ev, &outlines, c->state);
     }
     free(pts);
     free(start);

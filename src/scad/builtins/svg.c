@@ -76,13 +76,6 @@ static void set_clear(pathset *s)
     s->npts = 0;
 }
 
-static void paths_free(scad_paths *p)
-{
-    free(p->pts);
-    free(p->start);
-    memset(p, 0, sizeof *p);
-}
-
 /* Shape k's outlines in world user units into s (cleared first): its
  * closed paths as they are, its open ones stroked.  0; 1 when the stroke
  * failed (coordinates out of Clipper's range: why in err); -1 when out of
@@ -107,7 +100,7 @@ static int shape_outlines(scad_eval *ev, const geom_svg *d, int k, pathset *s, c
                              &r, err, errlen) != 0)
             return strstr(err, "out of memory") ? -1 : 1;
         int rc = set_append(s, &r);
-        paths_free(&r);
+        scad_paths_free(&r);
         if (rc) return -1;
     }
     const double *m = sh->world_from_local;
@@ -172,15 +165,15 @@ static int drawing(scad_eval *ev, const geom_svg *d, double dpi, int center, sca
             break;
         }
         rc = set_append(&filled, &r);
-        paths_free(&r);
+        scad_paths_free(&r);
     }
     if (rc == 0 && filled.p.npaths > 0 &&
         sv->paths_clip(sv->ud, CSG_OP_UNION, &filled.p, 0, &none, 0, out, err, errlen) != 0)
         rc = strstr(err, "out of memory") ? -1 : 1;
     free(first);
-    paths_free(&all.p);
-    paths_free(&one.p);
-    paths_free(&filled.p);
+    scad_paths_free(&all.p);
+    scad_paths_free(&one.p);
+    scad_paths_free(&filled.p);
     return rc;
 }
 
@@ -223,16 +216,8 @@ scad_geom *scad_svg_import(scad_call *c, const char *path, double dpi, int cente
         else if (rc > 0)
             scad_diag_note(ev->d, st->loc, "import(): '%s': %s: nothing imported", path, err);
         if (rc == 0 && r.npaths > 0) {
-            iv_region *reg = iv_region_new((const double(*)[2])r.pts, r.start, r.npaths);
-            if (!reg) {
-                scad_eval_error(ev, st->loc, "out of memory");
-            } else {
-                iv_shape sh;
-                iv_shape_prism(&sh, reg, -SCAD_SLAB, SCAD_SLAB);
-                iv_region_release(reg); /* the shape holds it */
-                g = scad_geometry_leaf(ev, &sh, c->state);
-            }
-            paths_free(&r);
+            g = scad_region_geom(ev, &r, c->state);
+            scad_paths_free(&r);
         }
     }
     geom_svg_free(&d);
