@@ -58,16 +58,10 @@ Paths to_clipper(const io_paths *p)
     return out;
 }
 
-/* A PolyTree's outlines, cleaned, into a malloc'ed io_paths. */
-int from_tree(const ClipperLib::PolyTree &tree, io_paths *out)
+/* Paths at Clipper's scale into a malloc'ed io_paths (empty for none).
+ * 0, or -1 out of memory. */
+int from_paths(const Paths &all, double scale, io_paths *out)
 {
-    Paths all;
-    for (ClipperLib::PolyNode *n = tree.GetFirst(); n; n = n->GetNext()) {
-        if (n->IsOpen()) continue;
-        Path c;
-        ClipperLib::CleanPolygon(n->Contour, c, CLEAN_DISTANCE * SCALE);
-        if (c.size() >= 3) all.push_back(c);
-    }
     size_t total = 0;
     for (const Path &p : all)
         total += p.size();
@@ -85,14 +79,27 @@ int from_tree(const ClipperLib::PolyTree &tree, io_paths *out)
     for (size_t i = 0; i < all.size(); i++) {
         out->start[i] = (int)k;
         for (const IntPoint &q : all[i]) {
-            out->pts[k][0] = (double)q.X / SCALE;
-            out->pts[k][1] = (double)q.Y / SCALE;
+            out->pts[k][0] = (double)q.X / scale;
+            out->pts[k][1] = (double)q.Y / scale;
             k++;
         }
     }
     out->start[all.size()] = (int)k;
     out->npaths = (int)all.size();
     return 0;
+}
+
+/* A PolyTree's outlines, cleaned, into a malloc'ed io_paths. */
+int from_tree(const ClipperLib::PolyTree &tree, io_paths *out)
+{
+    Paths all;
+    for (ClipperLib::PolyNode *n = tree.GetFirst(); n; n = n->GetNext()) {
+        if (n->IsOpen()) continue;
+        Path c;
+        ClipperLib::CleanPolygon(n->Contour, c, CLEAN_DISTANCE * SCALE);
+        if (c.size() >= 3) all.push_back(c);
+    }
+    return from_paths(all, SCALE, out);
 }
 
 ClipperLib::PolyFillType fill(int evenodd)
@@ -198,29 +205,9 @@ extern "C" int io_polygon_stroke(const double (*pts)[2], int n, double width, io
         co.AddPath(line, ClipperLib::jtMiter, ends[cap]);
         Paths result;
         co.Execute(result, width * scale / 2);
-        size_t total = 0;
-        for (const Path &p : result)
-            total += p.size();
-        if (result.empty()) return 0;
-        out->pts = static_cast<double(*)[2]>(std::malloc(total * sizeof *out->pts));
-        out->start = static_cast<int *>(std::malloc((result.size() + 1) * sizeof *out->start));
-        if (!out->pts || !out->start) {
-            io_paths_free(out);
-            set_err(err, errlen, "out of memory");
-            return -1;
-        }
-        size_t k = 0;
-        for (size_t i = 0; i < result.size(); i++) {
-            out->start[i] = (int)k;
-            for (const IntPoint &q : result[i]) {
-                out->pts[k][0] = (double)q.X / scale;
-                out->pts[k][1] = (double)q.Y / scale;
-                k++;
-            }
-        }
-        out->start[result.size()] = (int)k;
-        out->npaths = (int)result.size();
-        return 0;
+        if (from_paths(result, scale, out) == 0) return 0;
+        set_err(err, errlen, "out of memory");
+        return -1;
     } catch (const std::bad_alloc &) {
         set_err(err, errlen, "out of memory");
     } catch (const std::exception &e) {
