@@ -16,6 +16,17 @@ if [ $# -gt 0 ]; then models=("$@"); else models=(tests/models/*.scad models/*.s
 
 passed=0
 failed=0
+# Judge $out/NAME.png against $out/NAME.ref.png: mask IoU >= 0.99.
+judge() {
+    local res
+    if res=$("$maskcmp" "$out/$1.png" "$out/$1.ref.png" --min-iou 0.99 --diff "$out/$1.diff.png"); then
+        echo "ok   $1: $res"
+        passed=$((passed + 1))
+    else
+        echo "FAIL $1: $res"
+        failed=$((failed + 1))
+    fi
+}
 for m in "${models[@]}"; do
     name=$(basename "$m" .scad)
     args=$(sed -n 's|^// args: *||p' "$m" | head -n 1)
@@ -33,14 +44,7 @@ for m in "${models[@]}"; do
         failed=$((failed + 1))
         continue
     fi
-    if res=$("$maskcmp" "$out/$name.png" "$out/$name.ref.png" --min-iou 0.99 \
-            --diff "$out/$name.diff.png"); then
-        echo "ok   $name: $res"
-        passed=$((passed + 1))
-    else
-        echo "FAIL $name: $res"
-        failed=$((failed + 1))
-    fi
+    judge "$name"
 done
 # Framing: a model clipped by a huge box (a common idiom) must be framed as
 # what is drawn.  openscad frames the box and draws a speck or nothing, so
@@ -55,13 +59,8 @@ if [ $# -eq 0 ]; then
                 >"$out/$name.rayscad.log" 2>&1; then
             echo "FAIL $name: a run failed (see $out/$name.*.log)"
             failed=$((failed + 1))
-        elif res=$("$maskcmp" "$out/$name.png" "$out/$name.ref.png" --min-iou 0.99 \
-                --diff "$out/$name.diff.png"); then
-            echo "ok   $name: $res"
-            passed=$((passed + 1))
         else
-            echo "FAIL $name: $res"
-            failed=$((failed + 1))
+            judge "$name"
         fi
     done <<'CASES'
 frame_clip_3d|intersection() { sphere(5, $fn = 24); cube(1e10, center = true); }|sphere(5, $fn = 24);
