@@ -36,9 +36,10 @@
 
 enum {
     MAX_PARTS = 1 << 18,
-    /* Fewest fragments of a smooth sphere or cylinder: a smooth leaf no
-     * longer knows its own $fn, so it gets the call's fragments but at
-     * least this many (chords within 0.12 % of the radius). */
+    /* Fewest fragments of a smooth sphere or cylinder taken as a convex
+     * part: it gets the call's fragments (not yet its own, which
+     * scad_leaf_fragments now knows and solid parts use) but at least this
+     * many (chords within 0.12 % of the radius). */
     SMOOTH_FRAGMENTS = 64
 };
 
