@@ -228,6 +228,16 @@ const double (*iv_polytope_planes(const iv_shape *s, int *n))[4];
  * non-finite values or out of memory (then s is untouched). */
 int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                   const int *face_start, int nfaces);
+/* A mesh from faces as a user wrote them (polyhedron(), an imported file),
+ * read as OpenSCAD reads them: a closed surface is a solid whatever its
+ * faces' winding (they are turned as needed, a cavity kept a cavity); one
+ * cracked only at T-junctions is a solid all the same; one with holes, or
+ * one-sided, is a sheet with no inside — each face drawn, as OpenSCAD's
+ * preview draws it — whose crossings are spans a billionth of its size
+ * thick.  Returns 0 (closed as wound), 1 (faces turned), 2 (cracked),
+ * 3 (a sheet), or -1 as iv_shape_mesh. */
+int iv_shape_polyhedron(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                        const int *face_start, int nfaces);
 /* Vertices of a mesh (borrowed) or NULL. */
 const double (*iv_mesh_vertices(const iv_shape *s, int *n))[3];
 /* Triangles of a mesh as vertex index triples (borrowed; wound as the input

@@ -61,6 +61,7 @@ struct iv_mesh {
     bnode *node;
     double lo[3], hi[3];
     double volume;
+    int sheet; /* open (iv_shape_polyhedron): each crossing is a thin span */
 };
 
 void iv_mesh_retain(iv_mesh *m)
@@ -105,81 +106,6 @@ static int build_node(iv_mesh *m, iv_bvh_item *items, int start, int count, int 
     return ni;
 }
 
-static int cmp_edge(const void *a, const void *b)
-{
-    const unsigned long long *x = a, *y = b;
-    return (*x > *y) - (*x < *y);
-}
-
-/* Sorts e[0..n) with the help of tmp[0..n): least significant digit first,
- * 11 bits a pass, as many passes as the largest key needs (4 for the edges
- * of 2·10^5 vertices) — a qsort of a million edges spends its time in
- * comparator calls. */
-static void sort_keys(unsigned long long *e, unsigned long long *tmp, size_t n)
-{
-    unsigned long long max = 0, *src = e, *dst = tmp;
-    for (size_t i = 0; i < n; i++)
-        max = e[i] > max ? e[i] : max;
-    for (int shift = 0; shift < 64 && (max >> shift) != 0; shift += 11) {
-        size_t at[2048] = {0};
-        for (size_t i = 0; i < n; i++)
-            at[(src[i] >> shift) & 2047]++;
-        size_t sum = 0;
-        for (int b = 0; b < 2048; b++) {
-            size_t c = at[b];
-            at[b] = sum;
-            sum += c;
-        }
-        for (size_t i = 0; i < n; i++)
-            dst[at[(src[i] >> shift) & 2047]++] = src[i];
-        unsigned long long *x = src;
-        src = dst;
-        dst = x;
-    }
-    if (src != e) memcpy(e, src, n * sizeof *e);
-}
-
-/* 1 when every directed edge is matched by exactly one reverse edge. */
-static int is_closed(const iv_mesh *m)
-{
-    unsigned long long *e = malloc((size_t)m->nt * 3 * sizeof *e);
-    if (!e) return 1;
-    size_t ne = 0;
-    for (int i = 0; i < m->nt; i++)
-        for (int j = 0; j < 3; j++) {
-            unsigned long long a = (unsigned)m->tri[i][j], b = (unsigned)m->tri[i][(j + 1) % 3];
-            if (a == b) continue;
-            /* key: unordered pair, and direction in the low bit (< 2^63,
-             * as nv < 2^31) */
-            unsigned long long lo = a < b ? a : b, hi = a < b ? b : a;
-            e[ne++] = ((lo * (unsigned long long)m->nv + hi) << 1) | (a < b);
-        }
-    unsigned long long *tmp = malloc(ne * sizeof *tmp);
-    if (tmp)
-        sort_keys(e, tmp, ne);
-    else
-        qsort(e, ne, sizeof *e, cmp_edge);
-    free(tmp);
-    int closed = 1;
-    for (size_t i = 0; i < ne;) {
-        size_t j = i;
-        int fw = 0, bw = 0;
-        while (j < ne && (e[j] >> 1) == (e[i] >> 1)) {
-            if (e[j] & 1)
-                fw++;
-            else
-                bw++;
-            j++;
-        }
-        /* Fan diagonals are used once each way inside one face, like any
-         * manifold edge. */
-        if (fw != bw) closed = 0;
-        i = j;
-    }
-    free(e);
-    return closed;
-}
-
 /* Triangles of the polygon F[a..b] closed by the edge F[b]F[a] (b - a >= 2),
  * appended at tri[*t]: the triangle (a, mid, b) and the two polygons it
  * leaves.  Any diagonal splits a polygon's winding number into the sum of
@@ -207,15 +133,154 @@ static void split_face(const int *F, int a, int b, int (*tri)[3], int *t)
 #define MESH_SPLIT_EXTRA 2.0
 enum { MESH_REF_MAX = 1 << 22 };
 
+static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                 const int *face_start, int nfaces, double extra_per_triangle, long *nref,
+                 int as_written);
+
 int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                   const int *face_start, int nfaces)
 {
-    return iv_shape_mesh_budget(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA,
-                                NULL);
+    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 0);
 }
 
 int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                          const int *face_start, int nfaces, double extra_per_triangle, long *nref)
+{
+    return build(s, verts, nverts, faces, face_start, nfaces, extra_per_triangle, nref, 0);
+}
+
+int iv_shape_polyhedron(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                        const int *face_start, int nfaces)
+{
+    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 1);
+}
+
+/* Turns the planes of the triangles flip[] marks (which read_edges turned).
+ * Returns 0, or 1 when a plane's triangles do not all agree (a face the
+ * turning would split: then nothing is turned back, and the caller reads
+ * the mesh as open). */
+static int turn_planes(double (*pl)[4], int np, const int *face, const unsigned char *flip, int nt)
+{
+    signed char *st = calloc((size_t)np, 1);
+    if (!st) return 1;
+    int bad = 0;
+    for (int i = 0; i < nt && !bad; i++) {
+        signed char want = flip[i] ? 1 : -1;
+        if (st[face[i]] == 0) st[face[i]] = want;
+        bad = st[face[i]] != want;
+    }
+    if (!bad)
+        for (int p = 0; p < np; p++)
+            if (st[p] == 1)
+                for (int k = 0; k < 4; k++)
+                    pl[p][k] = -pl[p][k];
+    free(st);
+    return bad;
+}
+
+/* 1 when OpenSCAD cuts the non-planar quadrilateral F by the diagonal
+ * F[1]F[3] rather than F[0]F[2].  2021.01 tessellates a polyhedron's faces
+ * with libtess2 (constrained Delaunay, no normal given): libtess2 finds a
+ * normal from the two vertices farthest apart along the widest axis and the
+ * vertex making the largest triangle with them, drops the normal's largest
+ * coordinate, and the Delaunay diagonal of the projected quadrilateral is
+ * the one whose opposite corner lies outside the circle through the other
+ * three. */
+static int quad_turns(const double (*v)[3], const int *F)
+{
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int j = 1; j < 4; j++)
+        for (int k = 0; k < 3; k++) {
+            if (v[F[j]][k] < v[F[lo[k]]][k]) lo[k] = j;
+            if (v[F[j]][k] > v[F[hi[k]]][k]) hi[k] = j;
+        }
+    int w = 0;
+    for (int k = 1; k < 3; k++)
+        if (v[F[hi[k]]][k] - v[F[lo[k]]][k] > v[F[hi[w]]][w] - v[F[lo[w]]][w]) w = k;
+    const double *a = v[F[lo[w]]], *b = v[F[hi[w]]];
+    double d1[3], n[3] = {0, 0, 0}, best = 0;
+    for (int k = 0; k < 3; k++)
+        d1[k] = a[k] - b[k];
+    for (int j = 0; j < 4; j++) {
+        const double *p = v[F[j]];
+        double d2[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]};
+        double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
+                       d1[0] * d2[1] - d1[1] * d2[0]};
+        double l2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        if (l2 > best) {
+            best = l2;
+            memcpy(n, c, sizeof n);
+        }
+    }
+    int ax = 0;
+    for (int k = 1; k < 3; k++)
+        if (fabs(n[k]) > fabs(n[ax])) ax = k;
+    double P[4][2];
+    for (int j = 0; j < 4; j++) {
+        P[j][0] = v[F[j]][(ax + 1) % 3];
+        P[j][1] = v[F[j]][(ax + 2) % 3];
+    }
+    /* in-circle of P3 against (P0, P1, P2), signed by their orientation */
+    double m[3][3];
+    for (int j = 0; j < 3; j++) {
+        double x = P[j][0] - P[3][0], y = P[j][1] - P[3][1];
+        m[j][0] = x;
+        m[j][1] = y;
+        m[j][2] = x * x + y * y;
+    }
+    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                 m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    double orient =
+        (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[1][1] - P[0][1]) * (P[2][0] - P[0][0]);
+    return orient * det > 0;
+}
+
+/* Keeps in m->v (a copy of the input's m->nv points) only the points the
+ * triangles use, in their order, and renumbers tri to match: a point no
+ * face uses is no part of the shape, nor of hull() of it, as in OpenSCAD.
+ * Returns 0, or -1 when out of memory. */
+static int keep_used_points(iv_mesh *m, int (*tri)[3])
+{
+    int *to = malloc((size_t)m->nv * sizeof *to);
+    if (!to) return -1;
+    for (int i = 0; i < m->nv; i++)
+        to[i] = -1;
+    for (int i = 0; i < m->nt; i++)
+        for (int j = 0; j < 3; j++)
+            to[tri[i][j]] = 0;
+    int n = 0;
+    for (int i = 0; i < m->nv; i++)
+        if (to[i] == 0) {
+            memmove(m->v[n], m->v[i], sizeof *m->v);
+            to[i] = n++;
+        }
+    for (int i = 0; i < m->nt; i++)
+        for (int j = 0; j < 3; j++)
+            tri[i][j] = to[tri[i][j]];
+    m->nv = n;
+    free(to);
+    return 0;
+}
+
+/* The signed volume of the triangles, positive when they wind as OpenSCAD's
+ * faces: clockwise from outside, so the right-handed triple product is
+ * negative for a proper solid; negate it. */
+static double signed_volume(const double (*v)[3], const int (*tri)[3], int nt)
+{
+    double vol = 0;
+    for (int i = 0; i < nt; i++) {
+        const double *a = v[tri[i][0]], *p = v[tri[i][1]], *q = v[tri[i][2]];
+        vol -= (a[0] * (p[1] * q[2] - p[2] * q[1]) - a[1] * (p[0] * q[2] - p[2] * q[0]) +
+                a[2] * (p[0] * q[1] - p[1] * q[0])) /
+               6;
+    }
+    return vol;
+}
+
+static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                 const int *face_start, int nfaces, double extra_per_triangle, long *nref,
+                 int as_written)
 {
     if (nverts <= 0 || nfaces <= 0) return -1;
     for (int i = 0; i < nverts; i++)
@@ -250,12 +315,15 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
         m->lo[k] = INFINITY;
         m->hi[k] = -INFINITY;
     }
-    for (int i = 0; i < nverts; i++)
-        for (int k = 0; k < 3; k++) {
-            m->lo[k] = fmin(m->lo[k], verts[i][k]);
-            m->hi[k] = fmax(m->hi[k], verts[i][k]);
-        }
-    double vol = 0;
+    /* the box of the points the faces use: a point no face uses is not
+     * part of the shape (nor of OpenSCAD's box, which frames the view) */
+    for (int f = 0; f < nfaces; f++)
+        for (int j = face_start[f]; face_start[f + 1] - face_start[f] >= 3 && j < face_start[f + 1];
+             j++)
+            for (int k = 0; k < 3; k++) {
+                m->lo[k] = fmin(m->lo[k], verts[faces[j]][k]);
+                m->hi[k] = fmax(m->hi[k], verts[faces[j]][k]);
+            }
     int t = 0, np = 0;
     for (int f = 0; f < nfaces; f++) {
         const int *F = faces + face_start[f];
@@ -288,6 +356,14 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
         int t0 = t;
         if (planar) {
             split_face(F, 0, len - 1, tri, &t);
+        } else if (as_written && len == 4 && quad_turns(verts, F)) {
+            /* the other diagonal, as OpenSCAD's tessellation picks it */
+            const int G[4] = {F[1], F[2], F[3], F[0]};
+            for (int j = 1; j + 1 < len; j++, t++) {
+                tri[t][0] = G[0];
+                tri[t][1] = G[j];
+                tri[t][2] = G[j + 1];
+            }
         } else {
             /* each fan triangle its own plane, as OpenSCAD triangulates */
             for (int j = 1; j + 1 < len; j++, t++) {
@@ -298,12 +374,6 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
         }
         for (t = t0; t < t0 + len - 2; t++) {
             const double *a = verts[tri[t][0]], *p = verts[tri[t][1]], *q = verts[tri[t][2]];
-            /* signed volume: OpenSCAD's winding is clockwise from outside,
-             * so the right-handed triple product is negative for a proper
-             * solid; negate it. */
-            vol -= (a[0] * (p[1] * q[2] - p[2] * q[1]) - a[1] * (p[0] * q[2] - p[2] * q[0]) +
-                    a[2] * (p[0] * q[1] - p[1] * q[0])) /
-                   6;
             if (!planar) {
                 double u[3], w[3], tn[3];
                 for (int k = 0; k < 3; k++) {
@@ -332,6 +402,20 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
     }
     m->nt = t;
     m->nf = np;
+    if (keep_used_points(m, tri) != 0) goto done;
+    const double(*V)[3] = (const double(*)[3])m->v;
+    iv_mesh_reading reading = IV_MESH_CLOSED;
+    if (as_written) {
+        unsigned char *flip = malloc((size_t)t);
+        if (!flip) goto done;
+        reading = iv_mesh_read_edges(V, m->nv, tri, t, flip);
+        if (reading == IV_MESH_TURNED && turn_planes(m->pl, np, face, flip, t))
+            reading = IV_MESH_OPEN;
+        free(flip);
+        if (reading == IV_MESH_READ_FAILED) goto done;
+        m->sheet = reading == IV_MESH_OPEN;
+    }
+    double vol = m->sheet ? 0 : signed_volume(V, (const int(*)[3])tri, t);
     if (vol < 0) {
         /* Wound the other way round as a whole: turn it inside out rather
          * than render an inverted solid (OpenSCAD's preview shows it
@@ -352,8 +436,7 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
         extra = (long)fmin(extra_per_triangle * t, (double)(MESH_REF_MAX - t));
     long nr = 0;
     for (;;) {
-        items =
-            iv_bvh_clip_triangles((const double(*)[3])verts, (const int(*)[3])tri, t, extra, &nr);
+        items = iv_bvh_clip_triangles(V, (const int(*)[3])tri, t, extra, &nr);
         m->node = malloc((size_t)(2 * nr) * sizeof *m->node);
         m->ref = malloc((size_t)nr * sizeof *m->ref);
         if ((items && m->node && m->ref) || extra == 0) break;
@@ -404,7 +487,13 @@ int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, cons
     memset(s, 0, sizeof *s);
     s->kind = IV_SHAPE_MESH;
     s->u.mesh.m = m;
-    rc = is_closed(m) ? 0 : 1;
+    if (as_written)
+        rc = reading == IV_MESH_CLOSED    ? 0
+             : reading == IV_MESH_TURNED  ? 1
+             : reading == IV_MESH_CRACKED ? 2
+                                          : 3;
+    else
+        rc = iv_mesh_edges_closed((const int(*)[3])m->tri, m->nt, m->nv) == 0 ? 1 : 0;
 done:
     free(tri);
     free(face);
@@ -438,7 +527,7 @@ double iv_mesh_volume(const iv_shape *s)
 
 int iv_mesh_max_spans(const iv_mesh *m)
 {
-    return m->nt / 2 + 1;
+    return m->sheet ? m->nt + 1 : m->nt / 2 + 1;
 }
 
 int iv_mesh_bounds(const iv_mesh *m, double lo[3], double hi[3])
@@ -507,6 +596,42 @@ static long sort_hits(iv_bound *hit, long nh, int dedup)
     for (long i = 1; i < nh; i++)
         if (hit[i].t != hit[w - 1].t || hit[i].prim != hit[w - 1].prim) hit[w++] = hit[i];
     return w;
+}
+
+/* The spans of an open mesh (a surface without an inside) from its sorted
+ * crossings hit[0..nh): each crossing is a span a billionth of the mesh's
+ * size thick — the face itself in a picture, and thick enough that merges
+ * keep it — and crossings closer than that are one span.  The hits move
+ * to the back of the room (nh <= triangles < room / 2, as
+ * iv_mesh_max_spans leaves room for a span per triangle) so that the spans
+ * written from the front never overtake them. */
+static int sheet_spans(const iv_mesh *m, const double d[3], iv_bound *hit, long nh, long room,
+                       iv_list *out)
+{
+    double ext = 0;
+    for (int k = 0; k < 3; k++)
+        ext = fmax(ext, m->hi[k] - m->lo[k]);
+    double thin = 1e-9 * ext / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    iv_bound *src = hit + room - nh;
+    memmove(src, hit, (size_t)nh * sizeof *hit);
+    iv_span *sp = out->v + out->n;
+    int ns = 0;
+    for (long i = 0; i < nh; i++) {
+        iv_bound b = src[i];
+        b.flip = 0;
+        double end = b.t + fmax(thin, 1e-12 * fabs(b.t));
+        if (!(end > b.t)) end = nextafter(b.t, INFINITY);
+        if (ns > 0 && b.t <= sp[ns - 1].exit.t) {
+            if (end > sp[ns - 1].exit.t) sp[ns - 1].exit.t = end;
+            continue;
+        }
+        sp[ns].enter = b;
+        sp[ns].exit = b;
+        sp[ns].exit.t = end;
+        ns++;
+    }
+    out->n += ns;
+    return ns;
 }
 
 int iv_mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], int32_t prim,
@@ -606,6 +731,7 @@ int iv_mesh_intersect(const iv_mesh *m, const double o[3], const double d[3], in
     if (clipped)
         for (long i = 0; i < nh; i++)
             hit[i].prim = prim;
+    if (m->sheet) return sheet_spans(m, d, hit, nh, room, out);
     /* Sweep: sum the signs at each distinct t, emit on state changes.  The
      * write index never passes the read index. */
     long w = 0;

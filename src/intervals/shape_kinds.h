@@ -83,6 +83,23 @@ int iv_mesh_max_spans(const iv_mesh *m);
 void iv_mesh_retain(iv_mesh *m);
 void iv_mesh_release(iv_mesh *m);
 
+/* What a mesh's edges say about it (mesh_orient.c). */
+typedef enum iv_mesh_reading {
+    IV_MESH_READ_FAILED = -1, /* out of memory */
+    IV_MESH_CLOSED,           /* every edge used once each way */
+    IV_MESH_TURNED,           /* so once the triangles flip[] marks were turned */
+    IV_MESH_CRACKED,          /* every edge used once is a T-junction's */
+    IV_MESH_OPEN              /* it has holes, or is one-sided */
+} iv_mesh_reading;
+/* 1 when every directed edge of the triangles is matched by exactly one
+ * reverse edge, 0 when not, -1 when out of memory. */
+int iv_mesh_edges_closed(const int (*tri)[3], int nt, int nv);
+/* Reads the triangles' edges as mesh_orient.c says; for IV_MESH_TURNED the
+ * triangles flip[t] marks have been turned in tri (flip: nt bytes, all 0
+ * otherwise). */
+iv_mesh_reading iv_mesh_read_edges(const double (*v)[3], int nv, int (*tri)[3], int nt,
+                                   unsigned char *flip);
+
 int iv_prism_intersect(const iv_shape *s, const double o[3], const double d[3], int32_t prim,
                        iv_list *out);
 void iv_prism_normal(const iv_shape *s, const double p[3], int part, double n[3]);

@@ -4,12 +4,6 @@
  * point classifier, watertightness on lines through vertices and edges, and
  * reference counting.  Property tests print their seed.
  */
-/*
- * test_geometry.c — the shapes with shared data (polytope, hull, mesh,
- * prism, revolve): their interval lists along random lines against an
- * independent point classifier, watertightness on lines through vertices and
- * edges, and reference counting.  Property tests print their seed.
- */
 #include <criterion/criterion.h>
 
 #include <math.h>
@@ -147,6 +141,152 @@ Test(mesh, open_and_bad_input, .init = arena_setup, .fini = arena_teardown)
     int bad[] = {0, 1, 9};
     int bs[] = {0, 3};
     cr_expect_eq(iv_shape_mesh(&s, cube_pts, 8, bad, bs, 1), -1);
+}
+
+/* The manual cube with the faces listed in `turn` wound the other way. */
+static void cube_turned(const int *turn, int nturn, int *F)
+{
+    memcpy(F, cube_faces, sizeof cube_faces);
+    for (int i = 0; i < nturn; i++)
+        for (int j = 0; j < 4; j++)
+            F[4 * turn[i] + j] = cube_faces[4 * turn[i] + 3 - j];
+}
+
+Test(polyhedron, faces_wound_inconsistently_are_turned, .init = arena_setup, .fini = arena_teardown)
+{
+    /* one face, then three, turned: CGAL reads the closed surface as the
+     * box whatever the winding; so must we (the signed count alone made a
+     * hole where the turned face is) */
+    const int one[] = {2}, three[] = {0, 3, 4};
+    const int *turns[] = {one, three};
+    const int counts[] = {1, 3};
+    double box[6] = {0, 0, 0, 10, 7, 5};
+    for (int c = 0; c < 2; c++) {
+        int F[24];
+        cube_turned(turns[c], counts[c], F);
+        iv_shape s;
+        cr_assert_eq(iv_shape_polyhedron(&s, cube_pts, 8, F, cube_start, 6), 1);
+        cr_expect_float_eq(iv_mesh_volume(&s), 350, 1e-9);
+        cr_expect_eq(check_shape(&s, in_box, box, 12, 1000, 31 + c), 0);
+        iv_shape_release(&s);
+    }
+    /* wound consistently: untouched */
+    iv_shape s;
+    cr_assert_eq(iv_shape_polyhedron(&s, cube_pts, 8, cube_faces, cube_start, 6), 0);
+    iv_shape_release(&s);
+}
+
+/* A 10×7×5 box with a 4×3×1 cavity at [3,7]×[2,5]×[2,3]. */
+static int in_hollow(const double p[3], const void *ud)
+{
+    (void)ud;
+    int outer = p[0] >= 0 && p[0] <= 10 && p[1] >= 0 && p[1] <= 7 && p[2] >= 0 && p[2] <= 5;
+    int cavity = p[0] > 3 && p[0] < 7 && p[1] > 2 && p[1] < 5 && p[2] > 2 && p[2] < 3;
+    return outer && !cavity;
+}
+
+Test(polyhedron, a_cavity_stays_a_cavity_when_faces_are_turned, .init = arena_setup,
+     .fini = arena_teardown)
+{
+    /* the outer box with a face turned, and the cavity's box wound as a
+     * solid (outward) but for one face: the turning makes each piece
+     * consistent and the inner one, inside the outer, a cavity */
+    double P[16][3];
+    int F[48], S[13];
+    memcpy(P, cube_pts, sizeof cube_pts);
+    for (int i = 0; i < 8; i++) {
+        P[8 + i][0] = cube_pts[i][0] ? 7 : 3;
+        P[8 + i][1] = cube_pts[i][1] ? 5 : 2;
+        P[8 + i][2] = cube_pts[i][2] ? 3 : 2;
+    }
+    const int turn_outer[] = {1}, turn_inner[] = {4};
+    cube_turned(turn_outer, 1, F);
+    cube_turned(turn_inner, 1, F + 24);
+    for (int j = 24; j < 48; j++)
+        F[j] += 8;
+    for (int f = 0; f <= 12; f++)
+        S[f] = 4 * f;
+    iv_shape s;
+    cr_assert_eq(iv_shape_polyhedron(&s, (const double(*)[3])P, 16, F, S, 12), 1);
+    cr_expect_float_eq(iv_mesh_volume(&s), 350 - 12, 1e-9);
+    cr_expect_eq(check_shape(&s, in_hollow, NULL, 12, 2000, 33), 0);
+    iv_shape_release(&s);
+}
+
+Test(polyhedron, t_junction_cracks_are_closed, .init = arena_setup, .fini = arena_teardown)
+{
+    /* the top face cut in two at x = 4 by points 8 and 9 on the long
+     * edges, which the side faces do not have: their top edges are used
+     * once, covered by the two halves' edges the other way */
+    double P[10][3];
+    memcpy(P, cube_pts, sizeof cube_pts);
+    P[8][0] = 4, P[8][1] = 0, P[8][2] = 5;
+    P[9][0] = 4, P[9][1] = 7, P[9][2] = 5;
+    /* top (z = 5) from above is 4 5 6 7 counter-clockwise; OpenSCAD's
+     * clockwise from outside is 7 6 5 4: halves 7 9 8 4 and 9 6 5 8 */
+    int F[] = {0, 1, 2, 3, 7, 9, 8, 4, 9, 6, 5, 8, 5, 1, 0, 4, 5, 6, 2, 1, 6, 7, 3, 2, 7, 4, 0, 3};
+    int S[] = {0, 4, 8, 12, 16, 20, 24, 28};
+    /* the input's faces: 0 1 2 3 is the bottom as cube_faces has it */
+    iv_shape s;
+    cr_assert_eq(iv_shape_polyhedron(&s, (const double(*)[3])P, 10, F, S, 7), 2);
+    double box[6] = {0, 0, 0, 10, 7, 5};
+    cr_expect_eq(check_shape(&s, in_box, box, 12, 1000, 34), 0);
+    iv_shape_release(&s);
+}
+
+/* The span of l holding t, or -1. */
+static int span_at(const iv_list *l, double t)
+{
+    for (int i = 0; i < l->n; i++)
+        if (l->v[i].enter.t <= t && t <= l->v[i].exit.t) return i;
+    return -1;
+}
+
+Test(polyhedron, an_open_surface_is_a_sheet, .init = arena_setup, .fini = arena_teardown)
+{
+    /* the box without its x = 0 face (the last of six): OpenSCAD's
+     * preview draws the other five, and a line meets each face it crosses
+     * as a thin span */
+    iv_shape s;
+    cr_assert_eq(iv_shape_polyhedron(&s, cube_pts, 8, cube_faces, cube_start, 5), 3);
+    iv_list l;
+    cr_assert_eq(iv_list_init(&l, iv_shape_max_spans(&s), arena), 0);
+    /* down: the top at z = 5 and the bottom at z = 0, nothing between */
+    cr_assert_eq(iv_shape_intersect(&s, (double[3]){3, 3, 9}, (double[3]){0, 0, -1}, 0, &l), 2);
+    cr_expect_float_eq(l.v[0].enter.t, 4, 1e-12);
+    cr_expect_float_eq(l.v[1].enter.t, 9, 1e-12);
+    cr_expect(l.v[0].exit.t - l.v[0].enter.t < 1e-6);
+    cr_expect_eq(span_at(&l, 6), -1);
+    /* across x: the missing face lets the line in; only x = 10 */
+    l.n = 0;
+    cr_assert_eq(iv_shape_intersect(&s, (double[3]){-5, 3, 2}, (double[3]){1, 0, 0}, 0, &l), 1);
+    cr_expect_float_eq(l.v[0].enter.t, 15, 1e-12);
+    iv_shape_release(&s);
+}
+
+Test(polyhedron, a_non_planar_quadrilateral_is_cut_as_openscad_cuts_it, .init = arena_setup,
+     .fini = arena_teardown)
+{
+    /* openscad 2021.01 exports this face as the triangles (4,-3,1) (4,3,1)
+     * (8,0,0) and (4,3,1) (4,-3,1) (0,0,0): the diagonal between the two
+     * raised corners, so the surface over (4, 0) is at z = 1, not 0 */
+    const double P[4][3] = {{0, 0, 0}, {4, -3, 1}, {8, 0, 0}, {4, 3, 1}};
+    const int F[] = {0, 1, 2, 3}, S[] = {0, 4};
+    iv_shape s;
+    cr_assert_eq(iv_shape_polyhedron(&s, P, 4, F, S, 1), 3);
+    iv_list l;
+    cr_assert_eq(iv_list_init(&l, iv_shape_max_spans(&s), arena), 0);
+    cr_assert_eq(iv_shape_intersect(&s, (double[3]){4, 0, 5}, (double[3]){0, 0, -1}, 0, &l), 1);
+    cr_expect_float_eq(l.v[0].enter.t, 4, 1e-12);
+    iv_shape_release(&s);
+    /* the same corners in a quadrilateral whose projection has two
+     * coincident corners: openscad keeps the first diagonal, (0,0,0)-(8,0,0) */
+    const double Q[4][3] = {{0, 0, 0}, {4, -1, 1}, {8, 0, 0}, {4, 1, 1}};
+    cr_assert_eq(iv_shape_polyhedron(&s, Q, 4, F, S, 1), 3);
+    l.n = 0;
+    cr_assert_eq(iv_shape_intersect(&s, (double[3]){4, 0, 5}, (double[3]){0, 0, -1}, 0, &l), 1);
+    cr_expect_float_eq(l.v[0].enter.t, 5, 1e-12);
+    iv_shape_release(&s);
 }
 
 Test(mesh, concave_faces_by_fans, .init = arena_setup, .fini = arena_teardown)

@@ -177,6 +177,66 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
     }
 }
 
+/* The hull of n >= 3 points that lie in one plane (geom_hull3d found no
+ * volume): the convex polygon they span, as a sheet — CGAL's hull of
+ * coplanar points, which OpenSCAD's preview draws, is that polygon.
+ * Returns 0 with *s made, or -1 when they lie on one line or memory ran
+ * out. */
+static int flat_hull(const double (*p)[3], int n, iv_shape *s)
+{
+    int b = 0, c = 0;
+    double far = 0, u[3], w[3], nrm[3] = {0, 0, 0};
+    for (int i = 1; i < n; i++) {
+        double d = 0;
+        for (int k = 0; k < 3; k++)
+            d += (p[i][k] - p[0][k]) * (p[i][k] - p[0][k]);
+        if (d > far) far = d, b = i;
+    }
+    if (!(far > 0)) return -1;
+    for (int k = 0; k < 3; k++)
+        u[k] = (p[b][k] - p[0][k]) / sqrt(far);
+    double best = 0;
+    for (int i = 1; i < n; i++) {
+        double a[3] = {p[i][0] - p[0][0], p[i][1] - p[0][1], p[i][2] - p[0][2]};
+        double x[3] = {u[1] * a[2] - u[2] * a[1], u[2] * a[0] - u[0] * a[2],
+                       u[0] * a[1] - u[1] * a[0]};
+        double l = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+        if (l > best) best = l, c = i, memcpy(nrm, x, sizeof nrm);
+    }
+    if (!(best > 1e-24 * far) || c == 0) return -1;
+    double l = sqrt(best);
+    for (int k = 0; k < 3; k++)
+        nrm[k] /= l;
+    w[0] = nrm[1] * u[2] - nrm[2] * u[1];
+    w[1] = nrm[2] * u[0] - nrm[0] * u[2];
+    w[2] = nrm[0] * u[1] - nrm[1] * u[0];
+    double(*Q)[3] = malloc((size_t)n * sizeof *Q), (*H)[2] = malloc((size_t)(n + 1) * sizeof *H);
+    double(*V)[3] = malloc((size_t)(n + 1) * sizeof *V);
+    int *idx = malloc((size_t)(n + 1) * sizeof *idx), rc = -1;
+    if (Q && H && V && idx) {
+        for (int i = 0; i < n; i++) {
+            double a[3] = {p[i][0] - p[0][0], p[i][1] - p[0][1], p[i][2] - p[0][2]};
+            Q[i][0] = a[0] * u[0] + a[1] * u[1] + a[2] * u[2];
+            Q[i][1] = a[0] * w[0] + a[1] * w[1] + a[2] * w[2];
+            Q[i][2] = 0;
+        }
+        int k = geom_hull2d(Q, n, H);
+        for (int i = 0; i < k; i++) {
+            for (int j = 0; j < 3; j++)
+                V[i][j] = p[0][j] + H[i][0] * u[j] + H[i][1] * w[j];
+            idx[i] = i;
+        }
+        int start[2] = {0, k};
+        if (k >= 3)
+            rc = iv_shape_polyhedron(s, (const double(*)[3])V, k, idx, start, 1) < 0 ? -1 : 0;
+    }
+    free(Q);
+    free(H);
+    free(V);
+    free(idx);
+    return rc;
+}
+
 typedef struct hull_args {
     scad_facet_params f;
 } hull_args;
@@ -199,9 +259,10 @@ static scad_geom *hull_build(scad_call *c, const void *args)
     hull_points(&P, kids, inv, ((const hull_args *)args)->f);
     scad_geom *g = NULL;
     if (ev->aborted) P.n = 0;
-    if (P.any3d && P.n >= 4) {
+    if (P.any3d && P.n >= 3) {
         iv_shape s;
         int rc = geom_hull3d(&s, (const double(*)[3])P.p, P.n);
+        if (rc == GEOM_HULL_FLAT) rc = flat_hull((const double(*)[3])P.p, P.n, &s);
         if (rc == 0 && scad_geom_keep(ev, &s) == 0) g = scad_leaf_at(ev, &s, state, NULL);
         if (rc == GEOM_HULL_TOO_MANY)
             scad_eval_error(ev, st->loc,

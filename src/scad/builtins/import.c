@@ -223,15 +223,15 @@ static scad_geom *import_build(scad_call *c, const void *args)
             }
             start[nt] = 3 * nt;
             iv_shape s;
-            int rc = iv_shape_mesh(&s, (const double(*)[3])V, nv, idx, start, nt);
+            int rc = iv_shape_polyhedron(&s, (const double(*)[3])V, nv, idx, start, nt);
             if (rc < 0) {
                 scad_diag_note(ev->d, st->loc, "import(): '%s' is not a valid mesh",
                                scad_buf_str(&path));
             } else {
-                if (rc == 1)
+                if (rc == 3)
                     scad_diag_note(ev->d, st->loc,
-                                   "import(): '%s' is not closed (an edge is not shared by "
-                                   "exactly two faces); it is rendered best effort",
+                                   "import(): '%s' is not closed (it has holes); it is drawn "
+                                   "as a surface without inside",
                                    scad_buf_str(&path));
                 g = scad_geometry_leaf(ev, &s, state);
             }

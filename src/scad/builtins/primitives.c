@@ -499,11 +499,11 @@ static scad_geom *polyhedron_build(scad_call *c, const void *args)
         scad_diag_warning(ev->d, c->st->loc, "polyhedron(): faces must be lists of point indices");
     } else {
         iv_shape s;
-        int rc = iv_shape_mesh(&s, (const double(*)[3])P, n, idx, start, nf);
-        if (rc == 1)
+        int rc = iv_shape_polyhedron(&s, (const double(*)[3])P, n, idx, start, nf);
+        if (rc == 3)
             scad_diag_note(ev->d, c->st->loc,
-                           "polyhedron() is not closed (an edge is not shared by exactly two "
-                           "faces); it is rendered best effort");
+                           "polyhedron() is not closed (it has holes); it is drawn as a surface "
+                           "without inside");
         if (rc >= 0 && scad_geom_keep(ev, &s) == 0) g = scad_leaf_at(ev, &s, c->state, NULL);
     }
     free(idx);
