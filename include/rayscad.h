@@ -137,6 +137,9 @@ typedef struct rayscad_eval_options {
     int max_list;      /* elements of one list, default 2^26 */
     int max_string;    /* bytes of one string, default 2^28 */
     rayscad_facets facets;
+    /* 1: evaluate as openscad does to export a mesh (its CGAL render):
+     * $preview is false.  0: as for its preview, $preview true. */
+    int for_mesh;
     /* Folders searched for use <…> and include <…> after the including
      * file's own, ':'-separated, before /usr/share/openscad/libraries, as
      * openscad's OPENSCADPATH; NULL: the OPENSCADPATH environment

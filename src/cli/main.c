@@ -268,6 +268,9 @@ int main(int argc, char **argv)
         .max_list = o.max_list,
         .max_string = o.max_string,
         .facets = o.facets,
+        /* openscad -o x.stl renders: $preview is false, 2D objects
+         * beside 3D ones are left out */
+        .for_mesh = kind == OUTPUT_MESH,
         .services = &services,
     };
     if (kind == OUTPUT_ECHO || kind == OUTPUT_CSG) {

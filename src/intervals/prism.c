@@ -100,6 +100,29 @@ int iv_region_contains(const iv_region *g, double x, double y)
     return contains_paths(g, 0, g->npaths, x, y);
 }
 
+/* 1 when the path's points lie on one line (each within 1e-12 of the
+ * path's extent of the line through the first point and the point
+ * farthest from it): it bounds nothing, as Clipper's cleaning in OpenSCAD
+ * finds, and its coincident sides would only meet a ray in rounding noise.
+ * (Not its signed area: a symmetric bow-tie's is 0 too.) */
+static int flat_path(const double (*pt)[2], int n)
+{
+    int far = 0;
+    double d2 = 0;
+    for (int i = 1; i < n; i++) {
+        double dx = pt[i][0] - pt[0][0], dy = pt[i][1] - pt[0][1];
+        if (dx * dx + dy * dy > d2) d2 = dx * dx + dy * dy, far = i;
+    }
+    if (!(d2 > 0)) return 1;
+    double ux = pt[far][0] - pt[0][0], uy = pt[far][1] - pt[0][1];
+    for (int i = 1; i < n; i++) {
+        double cross = ux * (pt[i][1] - pt[0][1]) - uy * (pt[i][0] - pt[0][0]);
+        /* cross / |u| is the distance; compare squared against 1e-12 |u| */
+        if (cross * cross > 1e-24 * d2 * d2) return 0;
+    }
+    return 1;
+}
+
 iv_region *iv_region_new(const double (*pts)[2], const int *path_start, int npaths)
 {
     iv_region *g = calloc(1, sizeof *g);
@@ -123,7 +146,7 @@ iv_region *iv_region_new(const double (*pts)[2], const int *path_start, int npat
         while (n - first > 1 && g->pt[n - 1][0] == g->pt[first][0] &&
                g->pt[n - 1][1] == g->pt[first][1])
             n--;
-        if (n - first < 3) {
+        if (n - first < 3 || flat_path((const double(*)[2])(g->pt + first), n - first)) {
             n = first;
             continue;
         }

@@ -27,6 +27,7 @@ static void scad_options_of(const rayscad_eval_options *o, scad_services *servic
     so->max_list = o->max_list;
     so->max_string = o->max_string;
     so->facets = (int)o->facets;
+    so->for_mesh = o->for_mesh;
     so->library_path = o->library_path;
 }
 

@@ -663,9 +663,26 @@ static scad_geom *instantiate(scad_eval *ev, scad_env *env, const scad_stmt *st,
     return g;
 }
 
+/* 1 when st is children(i) with a number i under a modifier: 2021.01 then
+ * returns the child's own node, and the statement's %, # or ! is lost with
+ * the node that would have carried it (children() and children([…]) make
+ * a node of their own, which keeps it).  The argument is evaluated here
+ * once more; children()'s arguments are plain expressions. */
+static int bare_child(scad_eval *ev, scad_env *env, const scad_stmt *st)
+{
+    if (!(st->highlight || st->background || st->root) || st->name != ev->sym_children_module)
+        return 0;
+    scad_argv a;
+    if (scad_args_eval(ev, env, &st->args, &a)) return 0;
+    int bare = a.n > 0 && scad_argv_get(&a, "index", 0).kind == SV_NUM;
+    scad_argv_free(&a);
+    return bare;
+}
+
 static scad_geom *instantiate_framed(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                      const scad_state *state)
 {
+    if (bare_child(ev, env, st)) return instantiate_plain(ev, env, st, state);
     if (ev->dump && (st->highlight || st->background) && !st->root) {
         scad_geom *g = instantiate_plain(ev, env, st, state);
         if (g && g->text) {

@@ -19,6 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "builtins/builtins.h"
 #include "eval.h"
 #include "registry.h"
 
@@ -53,6 +54,21 @@ static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
         if (k && csg_node_add(n, k) && !*oom) *oom = g;
     }
     return n;
+}
+
+/* What openscad's render (a mesh export) keeps of g: an operation with 3D
+ * operands ignores its 2D ones ("Ignoring 2D child object for 3D
+ * operation"), at every level and at the top.  In place. */
+static void solids_only(scad_geom *g)
+{
+    if (!g || g->is_leaf || !(scad_geom_dims(g) & 2)) return;
+    int n = 0;
+    for (int i = 0; i < g->n; i++)
+        if (scad_geom_dims(g->kids[i]) != 1) {
+            solids_only(g->kids[i]);
+            g->kids[n++] = g->kids[i];
+        }
+    g->n = n;
 }
 
 static csg_node *list_to_csg(scad_geom **v, int n, const scad_geom **oom)
@@ -225,7 +241,7 @@ static void run_job(job *j)
         set_num(&ev, builtins, "$fa", 12);
         set_num(&ev, builtins, "$fs", 2);
         set_num(&ev, builtins, "$t", 0);
-        set_value(&ev, builtins, "$preview", scad_bool(1));
+        set_value(&ev, builtins, "$preview", scad_bool(!(j->opt && j->opt->for_mesh)));
         set_num(&ev, builtins, "$vpd", 500);
         set_num(&ev, builtins, "$vpf", 22.5);
         set_vec3(&ev, builtins, "$vpr", 0, 0, 0);
@@ -265,9 +281,15 @@ static void run_job(job *j)
                 scad_diag_error(j->d, failed ? failed->loc : ev.at, "out of memory");
             else
                 j->status = 0;
+        } else if (!ev.aborted && j->opt && j->opt->for_mesh &&
+                   scad_geom_dims(ev.has_root ? ev.root : model) == 1) {
+            /* openscad's words; it too writes no mesh of a 2D model */
+            scad_diag_line(j->d, RAYSCAD_MSG_ERROR,
+                           "ERROR: Current top level object is not a 3D object.");
         } else if (!ev.aborted) {
             const scad_geom *oom = NULL;
             if (ev.has_root) model = ev.root;
+            if (j->opt && j->opt->for_mesh) solids_only(model);
             j->out->model = to_csg(model, &oom);
             j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, &oom);
             j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, &oom);

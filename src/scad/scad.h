@@ -124,6 +124,8 @@ typedef struct scad_options {
     long max_steps;
     /* How round primitives are built (a rayscad_facets; 0 is AUTO). */
     int facets;
+    /* $preview is false (rayscad_eval_options.for_mesh). */
+    int for_mesh;
     /* Folders searched for use and include (rayscad_eval_options). */
     const char *library_path;
     /* Outside services (may be NULL: none). */

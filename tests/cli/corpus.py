@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Real OpenSCAD code against the real openscad 2021.01 (`make corpus`).
 
-  corpus.py BUILD [--only GLOB] [--kind echo|csg|png] [--jobs N] [--update]
+  corpus.py BUILD [--only GLOB] [--kind echo|csg|png|stl] [--jobs N] [--update]
 
 The two corpora of ../shared/corpora (see its README):
-  openscad-tests/data/scad/**.scad  .echo, .csg and .png
+  openscad-tests/data/scad/**.scad  .echo, .csg, .png and .stl
   BOSL2 tests/*.scadtest             .echo of every [[test]] script, written
                                      into a scratch copy of BOSL2 so that its
                                      include <../std.scad> resolves
@@ -15,6 +15,11 @@ by token as tests/cli/conformance.sh does (numbers within 1e-9 relative).
 for the whole run) against ours with --facets=openscad: the silhouettes must
 agree to IoU >= 0.99 outside a one-pixel band (BUILD/tools/maskcmp), and where
 openscad draws nothing we must draw nothing.
+.stl is openscad's export (CGAL) against ours with --facets=openscad: where
+openscad exports a closed 2-manifold, ours must be one too, its volume within
+0.5 % of openscad's (BUILD/tools/meshcmp --volume-only); where openscad
+exports nothing (a 2D or empty model) or a mesh that is not closed (an open
+polyhedron written as given), there is no rule.
 openscad's outputs are kept in BUILD/corpus/ref and reused while newer than
 their input.
 
@@ -182,6 +187,39 @@ def png_diff(maskcmp, ref, ours):
     return (None if iou >= MIN_IOU else "silhouette IoU %.4f" % iou), iou
 
 
+MAX_DVOL = 0.005
+
+
+def stl_volume(meshcmp, ours, ref):
+    """(closed, our volume, openscad's) of two STL files, or None."""
+    p = subprocess.run([meshcmp, ours, ref, "--volume-only"], capture_output=True, text=True)
+    m = re.search(r"closed=(\d) volume=(\S+) ref_volume=(\S+)", p.stdout)
+    return (m.group(1) == "1", float(m.group(2)), float(m.group(3))) if m else None
+
+
+def stl_diff(meshcmp, ref, ours):
+    """Why our STL falls short of openscad's, or None; also the relative
+    volume difference (None where there is no rule: openscad exported
+    nothing, or a mesh that is not closed)."""
+    if os.path.getsize(ref) == 0:
+        return None, None
+    theirs = stl_volume(meshcmp, ref, ref)
+    if theirs is None or not theirs[0] or theirs[1] == 0:
+        return None, None
+    if os.path.getsize(ours) == 0:
+        return "rayscad exports nothing, openscad volume %.6g" % theirs[1], 1.0
+    mine = stl_volume(meshcmp, ours, ref)
+    if mine is None:
+        return "meshcmp could not read our STL", 1.0
+    dv = abs(mine[1] - mine[2]) / abs(mine[2])
+    if not mine[0]:
+        return "our mesh is not closed and 2-manifold", dv
+    if dv > MAX_DVOL:
+        return "volume %.6g vs openscad's %.6g (%+.2f %%)" % (
+            mine[1], mine[2], 100 * (mine[1] - mine[2]) / abs(mine[2])), dv
+    return None, dv
+
+
 def read(path):
     with open(path, "rb") as f:
         return f.read().decode("utf-8", "replace")
@@ -190,6 +228,8 @@ def read(path):
 def compare(kind, ref, ours, maskcmp):
     if kind == "png":
         return png_diff(maskcmp, ref, ours)
+    if kind == "stl":
+        return stl_diff(os.path.join(os.path.dirname(maskcmp), "meshcmp"), ref, ours)
     a, b = read(ref), read(ours)
     return (echo_diff(a, b) if kind == "echo" else csg_diff(a, b)), None
 
@@ -210,11 +250,11 @@ def check(rayscad, outdir, key, path, kind, display=None):
         theirs = {"rc": rc, "cpu": cpu, "mem": mem}
         with open(meta, "w") as f:
             json.dump(theirs, f)
-    facets = ["--facets=openscad"] if kind == "png" else []
+    facets = ["--facets=openscad"] if kind in ("png", "stl") else []
     rc, cpu, mem = run([rayscad, base, "-o", ours] + img + facets, cwd, ours)
     maskcmp = os.path.join(os.path.dirname(rayscad), "tools", "maskcmp")
     why, iou = compare(kind, ref, ours, maskcmp)
-    if why is not None and kind != "png":
+    if why is not None and kind in ("echo", "csg"):
         # openscad once more before calling it a difference: one of its runs
         # has been seen to differ from the next (misc/include-recursive-test)
         orc, ocpu, omem = run(["openscad", "-o", ref, base], cwd, ref)
@@ -225,7 +265,8 @@ def check(rayscad, outdir, key, path, kind, display=None):
     if why is None and rc in (124, 137) + tuple(range(-64, 0)):
         why = "rayscad stopped (exit %d)" % rc
     slow = (cpu > SLOW and theirs["cpu"] <= SLOW) or (mem > HEAVY and theirs["mem"] <= HEAVY)
-    return {"key": key, "kind": kind, "why": why, "slow": slow, "iou": iou,
+    return {"key": key, "kind": kind, "why": why, "slow": slow, "iou": iou if kind == "png" else None,
+            "dvol": iou if kind == "stl" else None,
             "openscad": theirs, "rayscad": {"rc": rc, "cpu": cpu, "mem": mem}}
 
 
@@ -290,7 +331,7 @@ def main(argv):
     for d in ("ref", "ours", "scratch"):
         os.makedirs(os.path.join(outdir, d), exist_ok=True)
 
-    jobs_list = [(k, p, kind) for k, p in openscad_tests() for kind in ("echo", "csg", "png")]
+    jobs_list = [(k, p, kind) for k, p in openscad_tests() for kind in ("echo", "csg", "png", "stl")]
     jobs_list += [(k, p, "echo") for k, p in bosl2_tests(os.path.join(outdir, "scratch"))]
     if only:
         jobs_list = [j for j in jobs_list if fnmatch.fnmatch(j[0], only)]
@@ -341,12 +382,20 @@ def main(argv):
     for corpus in sorted(counts):
         ok, total, k = counts[corpus]
         print("corpus: %s: %d of %d %s openscad's, %d known differences" % (
-            corpus, ok, total, "agree with" if corpus.endswith("png") else "identical to", k))
+            corpus, ok, total, "identical to" if corpus.endswith(("echo", "csg")) else "agree with",
+            k))
     ious = [r["iou"] for r in results if r["kind"] == "png" and r["iou"] is not None]
     if ious:
         print("corpus: .png where openscad draws: %d files, IoU >= 0.99: %d, 0.95-0.99: %d, "
               "below: %d" % (len(ious), sum(i >= 0.99 for i in ious),
                              sum(0.95 <= i < 0.99 for i in ious), sum(i < 0.95 for i in ious)))
+    dvols = [r["dvol"] for r in results if r["kind"] == "stl" and r["dvol"] is not None]
+    if dvols:
+        closed = sum(1 for r in results if r["kind"] == "stl" and r["dvol"] is not None
+                     and (r["why"] is None or "volume" in r["why"]))
+        print("corpus: .stl where openscad exports a closed mesh: %d files, ours closed: %d, "
+              "volume within 0.5 %%: %d" % (len(dvols), closed,
+                                             sum(1 for d in dvols if d <= MAX_DVOL)))
     for f in failed:
         print("FAIL %s" % f)
     if update:

@@ -3,6 +3,7 @@
  *
  *   meshcmp OURS REF --h H [--name NAME] [--times OURS_S,REF_S]
  *           [--vol-tol 0.005] [--hausdorff-cells 2]
+ *   meshcmp OURS REF --volume-only [--name NAME] [--vol-tol 0.005]
  *
  * Both files are read through OpenMesh (io_mesh_read; STL vertices that
  * coincide are merged).  Checks, each printed when it fails:
@@ -20,6 +21,8 @@
  * no unseen cell can hold anything nearer.  It is the sampled maximum: the
  * distance is 1-Lipschitz and every point of a triangle lies within
  * (H/2)/√3 of a sample, so the true value exceeds it by at most 0.29 H.
+ * --volume-only makes only the first two checks (the corpus's STL rule,
+ * tests/cli/corpus.py), and prints "closed=0|1 volume=V ref_volume=W".
  * Prints one table row and exits 0 when every check passes, 1 when one
  * fails, 2 on bad input.
  */
@@ -400,8 +403,11 @@ int main(int argc, char **argv)
 {
     const char *ours = NULL, *ref = NULL, *name = "", *times = NULL;
     double h = 0, vol_tol = 0.005, cells = 2;
+    int volume_only = 0;
     for (int i = 1; i < argc; i++) {
-        if (i + 1 < argc && strcmp(argv[i], "--h") == 0)
+        if (strcmp(argv[i], "--volume-only") == 0)
+            volume_only = 1;
+        else if (i + 1 < argc && strcmp(argv[i], "--h") == 0)
             h = atof(argv[++i]);
         else if (i + 1 < argc && strcmp(argv[i], "--name") == 0)
             name = argv[++i];
@@ -418,9 +424,10 @@ int main(int argc, char **argv)
         else
             ours = NULL, i = argc;
     }
-    if (!ours || !ref || !(h > 0)) {
+    if (!ours || !ref || !(h > 0 || volume_only)) {
         fprintf(stderr, "usage: meshcmp OURS REF --h H [--name NAME] [--times A,B] "
-                        "[--vol-tol X] [--hausdorff-cells N]\n");
+                        "[--vol-tol X] [--hausdorff-cells N]\n"
+                        "       meshcmp OURS REF --volume-only [--name NAME] [--vol-tol X]\n");
         return 2;
     }
     tmesh a, b;
@@ -440,6 +447,14 @@ int main(int argc, char **argv)
         fprintf(stderr, "FAIL %s: volume %.6g vs OpenSCAD's %.6g (%.3f %%, tolerance %.3f %%)\n",
                 name, va, vb, 100 * dv, 100 * vol_tol);
         fail = 1;
+    }
+    if (volume_only) {
+        printf("closed=%d volume=%.9g ref_volume=%.9g\n", mp == NULL, va, vb);
+        free(a.v);
+        free(a.t);
+        free(b.v);
+        free(b.t);
+        return fail;
     }
     double dbox = 0;
     for (int c = 0; c < 3; c++)

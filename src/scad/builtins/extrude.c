@@ -11,7 +11,8 @@
  * scale each 2D leaf becomes OpenSCAD's own polyhedron (src/geom/extrude.c)
  * and the booleans above the leaves stay exact CSG.  3D children are
  * ignored, as OpenSCAD ignores them.  Reading a drawing from file= (the
- * deprecated form) is printed in .csg but builds nothing.
+ * deprecated form) is printed in .csg but builds nothing — nor do the
+ * children then, which OpenSCAD ignores in favour of the file.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -257,7 +258,8 @@ static scad_geom *linear_build(scad_call *c, const void *args)
     const linear_args *p = args;
     scad_eval *ev = c->ev;
     double h = p->height;
-    if (!(h > 0)) return NULL;
+    /* with file= 2021.01 extrudes the drawing instead of the children */
+    if (!(h > 0) || p->file.name) return NULL;
     twist_ctx t = {.ev = ev,
                    .loc = c->st->loc,
                    .world_from_local = c->state->xf,
@@ -462,7 +464,9 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     const rotate_args *p = args;
     scad_eval *ev = c->ev;
     double angle = p->angle;
-    if (angle == 0) return NULL;
+    /* with file= (rotate_extrude(45) names a file "45") 2021.01 revolves
+     * the drawing instead of the children */
+    if (angle == 0 || p->file.name) return NULL;
     scad_geom *kids = scad_call_children(c, NULL);
     if (!kids) return NULL;
     csg_affine inv;

@@ -338,13 +338,21 @@ static int tree_box(scad_eval *ev, scad_loc loc, const scad_geom *g, scad_facet_
     return n > 0 ? 0 : -1;
 }
 
-static void place_tree(scad_geom *g, const csg_affine m)
+/* Moves every leaf of g by m; with `flat` (2D children), each leaf's own z
+ * scale and offset are dropped first: OpenSCAD resizes 2D children as 2D
+ * geometry, so what a scale([1, 1, 20]) below did to their preview slab is
+ * gone. */
+static void place_tree(scad_geom *g, const csg_affine m, int flat)
 {
     if (!g) return;
     if (!g->is_leaf) {
         for (int i = 0; i < g->n; i++)
-            place_tree(g->kids[i], m);
+            place_tree(g->kids[i], m, flat);
         return;
+    }
+    if (flat) {
+        g->xf[2] = g->xf[6] = g->xf[8] = g->xf[9] = g->xf[11] = 0;
+        g->xf[10] = 1;
     }
     csg_affine_mul(m, g->xf, g->xf);
 }
@@ -412,7 +420,9 @@ static scad_geom *resize_build(scad_call *c, const void *args)
     double lo[3], hi[3];
     int any3d = 0;
     double scale[3] = {1, 1, 1};
+    int flat = 0;
     if (tree_box(ev, st->loc, kids, p->f, lo, hi, &any3d) == 0) {
+        flat = !any3d;
         int dim = any3d ? 3 : 2, imax = 0;
         for (int i = 0; i < dim; i++) {
             if (ns[i] == 0) continue;
@@ -432,7 +442,7 @@ static scad_geom *resize_build(scad_call *c, const void *args)
     }
     csg_affine s = {scale[0], 0, 0, 0, 0, scale[1], 0, 0, 0, 0, scale[2], 0}, m;
     csg_affine_mul(state->xf, s, m);
-    place_tree(kids, m);
+    place_tree(kids, m, flat);
     return kids;
 }
 

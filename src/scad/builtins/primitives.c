@@ -461,7 +461,8 @@ static scad_geom *polygon_build(scad_call *c, const void *args)
     double *P = points_of(p->points, 2, &n);
     if (!P) return NULL;
     iv_region *g = NULL;
-    if (p->second.kind == SV_UNDEF) {
+    /* no paths, or an empty list of them: the points in order (2021.01) */
+    if (p->second.kind == SV_UNDEF || (p->second.kind == SV_VEC && p->second.u.vec->n == 0)) {
         int ps[2] = {0, n};
         g = iv_region_new((const double(*)[2])P, ps, 1);
     } else {
