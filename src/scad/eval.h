@@ -298,6 +298,12 @@ void scad_eval_free_captured(scad_eval *ev);
 /* Instantiate st's children in a fresh scope below env with the given state;
  * returns them as one node (union of several, NULL if none). op selects how
  * several children combine. */
+/* The children of st one by one, each child statement's result (empty
+ * sets included, statements that make no node left out): a malloc'd array
+ * of *n (the caller frees it; the geometry is the arena's), or NULL when
+ * there are none. */
+scad_geom **scad_eval_children_list(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                    const scad_state *state, int *n);
 scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state, csg_op op);
 

@@ -234,6 +234,21 @@ static scad_geom *child_scope(scad_eval *ev, scad_env *env, scad_env *dyn, const
     return finish(ev, &g, op);
 }
 
+scad_geom **scad_eval_children_list(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                    const scad_state *state, int *n)
+{
+    *n = 0;
+    if (!st->children || ev->aborted) return NULL;
+    scad_env *ce = scad_env_new(ev, env, env, st->children);
+    if (!ce) return NULL;
+    gather g = {0};
+    scad_run_assignments(ev, ce, st->children);
+    run_stmts(ev, ce, st->children, state, &g, NULL, 0);
+    scad_env_free(ce);
+    *n = g.n;
+    return g.v;
+}
+
 scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state, csg_op op)
 {

@@ -482,23 +482,33 @@ static scad_geom *minkowski_build(scad_call *c, const void *args)
     scad_eval *ev = c->ev;
     const scad_stmt *st = c->st;
     const scad_state *state = c->state;
-    scad_geom *kids = scad_call_children(c, NULL);
-    if (!kids) return NULL;
-    /* Several child statements come back as one union whose operands are
-     * the children; a single statement is one operand, whatever it is. */
-    scad_geom **ops = &kids;
-    int nops = 1;
-    if (st->children && st->children->nstmts > 1 && !kids->is_leaf && kids->op == CSG_OP_UNION &&
-        kids->n > 1) {
-        ops = kids->kids;
-        nops = kids->n;
+    /* each child statement one operand, whatever it is */
+    int nall = 0;
+    scad_geom **ops = scad_eval_children_list(ev, c->env, st, state, &nall);
+    int nops = 0, dims = 0, any_empty = 0;
+    for (int i = 0; i < nall; i++) {
+        if (scad_geom_is_empty(ops[i])) {
+            any_empty = 1;
+            continue;
+        }
+        dims |= scad_geom_dims(ops[i]);
+        ops[nops++] = ops[i];
     }
+    scad_geom *g = NULL;
     csg_affine inv;
-    if (csg_affine_invert(state->xf, inv) != 0) return NULL;
     scad_facet_params f = ((const minkowski_args *)args)->f;
-    if (scad_geom_dims(kids) == 1) return sum_2d(ev, ops, nops, st, state, inv, f);
-    mctx m = {ev, st->loc, inv, f, NULL, 0, NULL};
-    return sum_3d(ev, ops, nops, st, state, &m);
+    if (nops == 0 || csg_affine_invert(state->xf, inv) != 0) {
+        /* nothing */
+    } else if (dims == 1) {
+        /* 2021.01 sums an empty operand too (circle(0), union() {}), which
+         * empties a 2D sum; in 3D it is passed over (sum_3d) */
+        if (!any_empty) g = sum_2d(ev, ops, nops, st, state, inv, f);
+    } else {
+        mctx m = {ev, st->loc, inv, f, NULL, 0, NULL};
+        g = sum_3d(ev, ops, nops, st, state, &m);
+    }
+    free(ops);
+    return g;
 }
 
 static const char *const minkowski_params[] = {"convexity", NULL};
