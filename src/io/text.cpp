@@ -59,6 +59,7 @@ struct Pt {
 /* The outlines of one glyph being drawn (OpenSCAD's DrawingCallback). */
 struct Drawing {
     unsigned long fn;
+    double per; /* FreeType units per model unit: SCALE, over the size's reduction */
     Pt pen{0, 0}, offset{0, 0}, advance{0, 0};
     std::vector<std::vector<Pt>> contours;
 
@@ -68,16 +69,16 @@ struct Drawing {
     }
 };
 
-Pt scaled(const FT_Vector *v)
+Pt scaled(const Drawing *d, const FT_Vector *v)
 {
-    return {v->x / SCALE, v->y / SCALE};
+    return {v->x / d->per, v->y / d->per};
 }
 
 int move_to(const FT_Vector *to, void *user)
 {
     Drawing *d = static_cast<Drawing *>(user);
     d->contours.emplace_back();
-    d->pen = scaled(to);
+    d->pen = scaled(d, to);
     d->add(d->pen);
     return 0;
 }
@@ -86,7 +87,7 @@ int line_to(const FT_Vector *to, void *user)
 {
     Drawing *d = static_cast<Drawing *>(user);
     if (d->contours.empty()) d->contours.emplace_back();
-    d->pen = scaled(to);
+    d->pen = scaled(d, to);
     d->add(d->pen);
     return 0;
 }
@@ -95,7 +96,7 @@ int conic_to(const FT_Vector *c, const FT_Vector *to, void *user)
 {
     Drawing *d = static_cast<Drawing *>(user);
     if (d->contours.empty()) d->contours.emplace_back();
-    Pt p0 = d->pen, p1 = scaled(c), p2 = scaled(to);
+    Pt p0 = d->pen, p1 = scaled(d, c), p2 = scaled(d, to);
     for (unsigned long i = 1; i <= d->fn; i++) {
         double a = i * (1.0 / (double)d->fn), b = 1 - a;
         d->add({p0.x * b * b + p1.x * 2 * b * a + p2.x * a * a,
@@ -109,7 +110,7 @@ int cubic_to(const FT_Vector *c1, const FT_Vector *c2, const FT_Vector *to, void
 {
     Drawing *d = static_cast<Drawing *>(user);
     if (d->contours.empty()) d->contours.emplace_back();
-    Pt p0 = d->pen, p1 = scaled(c1), p2 = scaled(c2), p3 = scaled(to);
+    Pt p0 = d->pen, p1 = scaled(d, c1), p2 = scaled(d, c2), p3 = scaled(d, to);
     for (unsigned long i = 1; i <= d->fn; i++) {
         double a = i * (1.0 / (double)d->fn), b = 1 - a;
         d->add({p0.x * b * b * b + p1.x * 3 * b * b * a + p2.x * 3 * b * a * a + p3.x * a * a * a,
@@ -256,10 +257,22 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
         /* A size whose 26.6 value is no long is one FreeType cannot take
          * either (converting it would be undefined). */
         double size = p->size * SCALE;
-        if (!(std::fabs(size) < 0x1p62) || FT_Set_Char_Size(face, 0, (FT_F26Dot6)size, 100, 100)) {
+        /* FreeType takes at most 65535 pixels per em (about size 3000
+         * here) and loads no glyph near that, where 2021.01 draws any
+         * size: a size over 2048 is set halved until it is below, and its
+         * outlines, advances and boxes (linear in the size) are doubled
+         * back, k times */
+        double k = 1;
+        while (std::fabs(size / k) > 2048 * SCALE && k < 0x1p60)
+            k *= 2;
+        int set = std::fabs(size) < 0x1p62
+                      ? FT_Set_Char_Size(face, 0, (FT_F26Dot6)(size / k), 100, 100)
+                      : 1;
+        if (set) {
             set_err(err, errlen, "cannot set font size for font " + font);
             throw 2; /* OpenSCAD 2021.01 draws nothing and goes on */
         }
+        const double hb_scale = HB_SCALE / k;
         hbf = hb_ft_font_create(face, nullptr);
         buf = hb_buffer_create();
         hb_buffer_set_direction(buf, hb_direction_from_string(direction.c_str(), -1));
@@ -283,12 +296,12 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
             FT_BBox box;
             FT_Glyph_Get_CBox(g.glyph, FT_GLYPH_BBOX_GRIDFIT, &box);
             if (horizontal) {
-                width += g.pos.x_advance / HB_SCALE * p->spacing;
-                ascend = std::max(ascend, std::max(0.0, box.yMax / HB_SCALE));
-                descend = std::max(descend, std::max(0.0, -box.yMin / HB_SCALE));
+                width += g.pos.x_advance / hb_scale * p->spacing;
+                ascend = std::max(ascend, std::max(0.0, box.yMax / hb_scale));
+                descend = std::max(descend, std::max(0.0, -box.yMin / hb_scale));
             } else {
-                width = std::max(width, (box.xMax - box.xMin) / HB_SCALE);
-                ascend += g.pos.y_advance / HB_SCALE * p->spacing;
+                width = std::max(width, (box.xMax - box.xMin) / hb_scale);
+                ascend += g.pos.y_advance / hb_scale * p->spacing;
             }
         }
         double xo = halign == "right" ? -width : halign == "center" ? -width / 2 : 0;
@@ -305,15 +318,16 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
         funcs.delta = 0;
         Drawing d;
         d.fn = (unsigned long)std::max(p->segments, 1);
+        d.per = SCALE / k;
         for (const Glyph &g : glyphs) {
             d.contours.clear();
-            d.offset = {xo + g.pos.x_offset / HB_SCALE, yo + g.pos.y_offset / HB_SCALE};
+            d.offset = {xo + g.pos.x_offset / hb_scale, yo + g.pos.y_offset / hb_scale};
             if (g.glyph->format == FT_GLYPH_FORMAT_OUTLINE) {
                 FT_Outline outline = reinterpret_cast<FT_OutlineGlyph>(g.glyph)->outline;
                 FT_Outline_Decompose(&outline, &funcs, &d);
             }
-            d.advance.x += g.pos.x_advance / HB_SCALE * p->spacing;
-            d.advance.y += g.pos.y_advance / HB_SCALE * p->spacing;
+            d.advance.x += g.pos.x_advance / hb_scale * p->spacing;
+            d.advance.y += g.pos.y_advance / hb_scale * p->spacing;
             /* one glyph, even-odd, normalised */
             std::vector<double> gp;
             std::vector<int> gs;
