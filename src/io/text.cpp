@@ -246,7 +246,15 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
         set_err(err, errlen, "cannot open font file " + file);
         return 1;
     }
-    FT_Select_Charmap(face, FT_ENCODING_UNICODE);
+    /* Unicode, else a Windows symbol charmap (platform 3, encoding 0), as
+     * 2021.01's FontCache::init_face: a symbol font such as MarVoSym has
+     * no other, and harfbuzz finds its glyphs at U+F000 + code too */
+    if (FT_Select_Charmap(face, FT_ENCODING_UNICODE))
+        for (int i = 0; i < face->num_charmaps; i++)
+            if (face->charmaps[i]->platform_id == 3 && face->charmaps[i]->encoding_id == 0) {
+                FT_Set_Charmap(face, face->charmaps[i]);
+                break;
+            }
     int rc = 0;
     std::vector<Glyph> glyphs;
     hb_font_t *hbf = nullptr;
