@@ -1,12 +1,10 @@
 /*
  * view_bounds.c — the box OpenSCAD frames.  OpenSCAD 2021.01 fits its view
- * (--viewall, --autocenter, the default view) to CSGProduct::getBoundingBox:
- * the union of the boxes of every leaf that is not subtracted, however the
- * intersections and differences above them trim the solid.  To line our
- * images up with OpenSCAD's we frame the same box, computed on the flattened
- * scene: in pre-order a parent precedes its children, so one forward pass
- * marks each node subtracted or not (a difference's operands after the first
- * are subtracted, and so is everything below a subtracted node).
+ * (--viewall, --autocenter, the default view) to CSGProducts::getBoundingBox:
+ * the union of the boxes of every leaf its normalised CSG products hold as a
+ * positive term, however the intersections and differences above them trim
+ * the solid (openscad_bounds says which those are).  To line our images up
+ * with OpenSCAD's we frame the same box, computed on the flattened scene.
  *
  * Where that box is more than LOOSE times the size of what is drawn (the
  * scene's own bounds: intersections meet their operands' boxes), OpenSCAD
@@ -17,6 +15,7 @@
  */
 #include "csg_internal.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -65,20 +64,58 @@ int csg_scene_view_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
     return 0;
 }
 
+/* 1 when the boxes of nodes a and b meet. */
+static int boxes_meet(const csg_scene *s, int a, int b)
+{
+    const csg_fnode *x = &s->nodes[a], *y = &s->nodes[b];
+    for (int k = 0; k < 3; k++)
+        if (x->lo[k] > y->hi[k] || y->lo[k] > x->hi[k]) return 0;
+    return 1;
+}
+
+/* 1 when the boxes of every operand of intersection node i have a point in
+ * common. */
+static int operands_meet(const csg_scene *s, int i)
+{
+    const csg_fnode *f = &s->nodes[i];
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        lo[k] = -INFINITY;
+        hi[k] = INFINITY;
+    }
+    for (int c = i + 1; c < f->next; c = s->nodes[c].next)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = s->nodes[c].lo[k] > lo[k] ? s->nodes[c].lo[k] : lo[k];
+            hi[k] = s->nodes[c].hi[k] < hi[k] ? s->nodes[c].hi[k] : hi[k];
+        }
+    for (int k = 0; k < 3; k++)
+        if (lo[k] > hi[k]) return 0;
+    return 1;
+}
+
+/* The union of the boxes of the leaves that OpenSCAD's normalised CSG
+ * products hold as positive terms (CSGProducts::getBoundingBox).  The
+ * normaliser rewrites x − (y − z) as (x − y) ∪ (x ∩ z), so a leaf is
+ * positive when it lies in an even number of subtracted operands (the
+ * second and later of a difference); and it prunes by boxes: a subtracted
+ * operand whose box misses the first operand's goes, and so does an
+ * intersection whose operands' boxes have no common point.  One forward
+ * pass over the pre-order nodes: a parent precedes its children. */
 static int openscad_bounds(const csg_scene *s, int r, double lo[3], double hi[3])
 {
     if (r < 0 || r >= s->nroots || s->roots[r] < 0) return -1;
     int first = s->roots[r], end = s->nodes[first].next;
-    unsigned char *neg = calloc((size_t)(end - first), 1);
-    if (!neg) { /* fall back to the exact bounds, which lie inside */
+    /* per node: bit 0 subtracted an odd number of times, bit 1 pruned */
+    unsigned char *st = calloc((size_t)(end - first), 1);
+    if (!st) { /* fall back to the exact bounds, which lie inside */
         return csg_scene_bounds(s, r, lo, hi);
     }
     int found = 0;
     for (int i = first; i < end; i++) {
         const csg_fnode *f = &s->nodes[i];
-        int ni = neg[i - first];
+        int si = st[i - first];
         if (f->op == FNODE_LEAF) {
-            if (ni) continue;
+            if (si) continue;
             double a[3], b[3];
             leaf_box(s, f, a, b);
             for (int k = 0; k < 3; k++) {
@@ -88,9 +125,13 @@ static int openscad_bounds(const csg_scene *s, int r, double lo[3], double hi[3]
             found = 1;
             continue;
         }
-        for (int c = i + 1; c < f->next; c = s->nodes[c].next)
-            neg[c - first] = (unsigned char)(ni || (f->op == CSG_OP_DIFFERENCE && c != i + 1));
+        int pruned = (si & 2) || (f->op == CSG_OP_INTERSECTION && !operands_meet(s, i));
+        for (int c = i + 1; c < f->next; c = s->nodes[c].next) {
+            int sub = f->op == CSG_OP_DIFFERENCE && c != i + 1;
+            int off = pruned || (sub && !boxes_meet(s, i + 1, c));
+            st[c - first] = (unsigned char)(((si & 1) ^ sub) | (off ? 2 : 0));
+        }
     }
-    free(neg);
+    free(st);
     return found ? 0 : -1;
 }
