@@ -7,9 +7,12 @@
  * scaled by 1 - (1 - scale)·j/slices about the origin, every quad between
  * two layers split along its shorter diagonal (ties broken as OpenSCAD
  * does: by the path's sign and the twist's direction), the caps flat.
- * OpenSCAD walks outer paths clockwise and holes counter-clockwise (then
- * emits its faces counter-clockwise seen from outside); the faces here are
- * the same triangles in iv_shape_mesh's opposite winding.
+ * OpenSCAD walks outer paths counter-clockwise and holes clockwise (as
+ * Clipper leaves them) and emits its triangles clockwise seen from outside,
+ * iv_shape_mesh's winding; the faces here are those triangles.  (The walk
+ * decides which diagonal a tie takes: an edge in line with the origin has
+ * two equal diagonals, and the twisted square at x = 10 of
+ * tests/mesh_models/twist_ties.scad differs by 10 % the other way.)
  */
 #include "extrude.h"
 
@@ -238,7 +241,8 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
         free(outer);
         return -1;
     }
-    /* outline order: outer paths (even nesting depth) clockwise */
+    /* outline order: outer paths (even nesting depth) counter-clockwise,
+     * holes clockwise, as Clipper's sanitising leaves them for 2021.01 */
     for (int p = 0; p < np; p++) {
         const double(*Q)[2] = P + ps[p];
         int k = ps[p + 1] - ps[p];
@@ -249,7 +253,7 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
         for (int q = 0; q < np; q++)
             if (q != p && in_path(P + ps[q], ps[q + 1] - ps[q], Q[0][0], Q[0][1])) depth++;
         outer[p] = depth % 2 == 0;
-        int reverse = outer[p] ? area > 0 : area < 0;
+        int reverse = outer[p] ? area < 0 : area > 0;
         base[p] = m.nv;
         for (int j = 0; j <= S; j++) {
             double rot = c->twist * j / S;
@@ -278,13 +282,13 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
                 int d = length_order(P1[0] - C2[0], P1[1] - C2[1], C1[0] - P2[0], C1[1] - P2[1]);
                 int split_first = d == -1 || (d == 0 && !flip);
                 int second = !any_zero || (any_non_zero && (P2[0] != C2[0] || P2[1] != C2[1]));
-                /* OpenSCAD's triangles, each written reversed */
+                /* OpenSCAD's triangles */
                 if (split_first ^ any_zero) {
-                    mb_face(&m, (int[3]){p1, c1, c2}, 3);
-                    if (second) mb_face(&m, (int[3]){c2, p2, p1}, 3);
+                    mb_face(&m, (int[3]){p1, c2, c1}, 3);
+                    if (second) mb_face(&m, (int[3]){c2, p1, p2}, 3);
                 } else {
-                    mb_face(&m, (int[3]){p1, c1, p2}, 3);
-                    if (second) mb_face(&m, (int[3]){p2, c1, c2}, 3);
+                    mb_face(&m, (int[3]){p1, p2, c1}, 3);
+                    if (second) mb_face(&m, (int[3]){p2, c2, c1}, 3);
                 }
             }
         }
@@ -300,11 +304,11 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
             break;
         }
         for (int i = 0; i < k; i++)
-            f[i] = b + (k - 1 - i);
+            f[i] = b + i;
         cap_face(&m, f, k, np == 1);
         if (top) {
             for (int i = 0; i < k; i++)
-                f[i] = b + S * k + i;
+                f[i] = b + S * k + (k - 1 - i);
             cap_face(&m, f, k, np == 1);
         }
         free(f);

@@ -178,64 +178,6 @@ static int turn_planes(double (*pl)[4], int np, const int *face, const unsigned 
     return bad;
 }
 
-/* 1 when OpenSCAD cuts the non-planar quadrilateral F by the diagonal
- * F[1]F[3] rather than F[0]F[2].  2021.01 tessellates a polyhedron's faces
- * with libtess2 (constrained Delaunay, no normal given): libtess2 finds a
- * normal from the two vertices farthest apart along the widest axis and the
- * vertex making the largest triangle with them, drops the normal's largest
- * coordinate, and the Delaunay diagonal of the projected quadrilateral is
- * the one whose opposite corner lies outside the circle through the other
- * three. */
-static int quad_turns(const double (*v)[3], const int *F)
-{
-    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    for (int j = 1; j < 4; j++)
-        for (int k = 0; k < 3; k++) {
-            if (v[F[j]][k] < v[F[lo[k]]][k]) lo[k] = j;
-            if (v[F[j]][k] > v[F[hi[k]]][k]) hi[k] = j;
-        }
-    int w = 0;
-    for (int k = 1; k < 3; k++)
-        if (v[F[hi[k]]][k] - v[F[lo[k]]][k] > v[F[hi[w]]][w] - v[F[lo[w]]][w]) w = k;
-    const double *a = v[F[lo[w]]], *b = v[F[hi[w]]];
-    double d1[3], n[3] = {0, 0, 0}, best = 0;
-    for (int k = 0; k < 3; k++)
-        d1[k] = a[k] - b[k];
-    for (int j = 0; j < 4; j++) {
-        const double *p = v[F[j]];
-        double d2[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]};
-        double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
-                       d1[0] * d2[1] - d1[1] * d2[0]};
-        double l2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-        if (l2 > best) {
-            best = l2;
-            memcpy(n, c, sizeof n);
-        }
-    }
-    int ax = 0;
-    for (int k = 1; k < 3; k++)
-        if (fabs(n[k]) > fabs(n[ax])) ax = k;
-    double P[4][2];
-    for (int j = 0; j < 4; j++) {
-        P[j][0] = v[F[j]][(ax + 1) % 3];
-        P[j][1] = v[F[j]][(ax + 2) % 3];
-    }
-    /* in-circle of P3 against (P0, P1, P2), signed by their orientation */
-    double m[3][3];
-    for (int j = 0; j < 3; j++) {
-        double x = P[j][0] - P[3][0], y = P[j][1] - P[3][1];
-        m[j][0] = x;
-        m[j][1] = y;
-        m[j][2] = x * x + y * y;
-    }
-    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                 m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    double orient =
-        (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[1][1] - P[0][1]) * (P[2][0] - P[0][0]);
-    return orient * det > 0;
-}
-
 /* Keeps in m->v (a copy of the input's m->nv points) only the points the
  * triangles use, in their order, and renumbers tri to match: a point no
  * face uses is no part of the shape, nor of hull() of it, as in OpenSCAD.
@@ -356,14 +298,9 @@ static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *f
         int t0 = t;
         if (planar) {
             split_face(F, 0, len - 1, tri, &t);
-        } else if (as_written && len == 4 && quad_turns(verts, F)) {
-            /* the other diagonal, as OpenSCAD's tessellation picks it */
-            const int G[4] = {F[1], F[2], F[3], F[0]};
-            for (int j = 1; j + 1 < len; j++, t++) {
-                tri[t][0] = G[0];
-                tri[t][1] = G[j];
-                tri[t][2] = G[j + 1];
-            }
+        } else if (as_written && iv_face_tessellate(verts, F, len, tri + t) == 0) {
+            /* as OpenSCAD's tessellation cuts it (face_tess.c) */
+            t += len - 2;
         } else {
             /* each fan triangle its own plane, as OpenSCAD triangulates */
             for (int j = 1; j + 1 < len; j++, t++) {

@@ -83,6 +83,12 @@ int iv_mesh_max_spans(const iv_mesh *m);
 void iv_mesh_retain(iv_mesh *m);
 void iv_mesh_release(iv_mesh *m);
 
+/* The non-planar face F[0..len) (4 <= len <= 256) cut into len - 2
+ * triangles in tri, wound as the face, as OpenSCAD 2021.01 cuts it
+ * (face_tess.c).  Returns 0, or -1 (too long, or its projection has no
+ * ear): then a fan will do. */
+int iv_face_tessellate(const double (*v)[3], const int *F, int len, int (*tri)[3]);
+
 /* What a mesh's edges say about it (mesh_orient.c). */
 typedef enum iv_mesh_reading {
     IV_MESH_READ_FAILED = -1, /* out of memory */

@@ -289,6 +289,54 @@ Test(polyhedron, a_non_planar_quadrilateral_is_cut_as_openscad_cuts_it, .init = 
     iv_shape_release(&s);
 }
 
+static int cmp_triple(const void *a, const void *b)
+{
+    const int *x = a, *y = b;
+    for (int k = 0; k < 3; k++)
+        if (x[k] != y[k]) return x[k] - y[k];
+    return 0;
+}
+
+/* The triangles of s as sorted triples, sorted, into T (room for n). */
+static int sorted_triangles(const iv_shape *s, int (*T)[3], int room)
+{
+    int n;
+    const int(*tri)[3] = iv_mesh_triangles(s, &n);
+    for (int i = 0; i < n && i < room; i++) {
+        int a = tri[i][0], b = tri[i][1], c = tri[i][2], x;
+        if (a > b) x = a, a = b, b = x;
+        if (b > c) x = b, b = c, c = x;
+        if (a > b) x = a, a = b, b = x;
+        T[i][0] = a, T[i][1] = b, T[i][2] = c;
+    }
+    qsort(T, (size_t)n, sizeof *T, cmp_triple);
+    return n;
+}
+
+Test(polyhedron, a_non_planar_hexagon_is_cut_as_openscad_cuts_it, .init = arena_setup,
+     .fini = arena_teardown)
+{
+    /* the base of the last solid of OpenSCAD's polyhedron-nonplanar-tests:
+     * openscad 2021.01 exports the face [6,5,4,3,2,1] as the triangles
+     * (3,1,2) (5,3,4) (3,5,1) (1,5,6) (a fan from 6 would give (6,5,4)
+     * (6,4,3) (6,3,2) (6,2,1)); point 0 is no part of it, so the mesh
+     * keeps points 1..6 as 0..5 */
+    const double P[7][3] = {{0.5, 0.326352, 1.08481},       {0.5, 0.828269, 0.157883},
+                            {1.36603, 0.992404, 0.186824},  {0.788675, 0.335865, 0.0710586},
+                            {0.5, -0.484808, -0.0736482},   {0.211325, 0.335865, 0.0710586},
+                            {-0.366025, 0.992404, 0.186824}};
+    const int F[] = {6, 5, 4, 3, 2, 1}, S[] = {0, 6};
+    iv_shape s;
+    cr_assert_eq(iv_shape_polyhedron(&s, P, 7, F, S, 1), 3);
+    int T[4][3], want[4][3] = {{0, 1, 2}, {0, 2, 4}, {0, 4, 5}, {2, 3, 4}};
+    cr_assert_eq(sorted_triangles(&s, T, 4), 4);
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 3; k++)
+            cr_expect_eq(T[i][k], want[i][k], "triangle %d: %d %d %d", i, T[i][0], T[i][1],
+                         T[i][2]);
+    iv_shape_release(&s);
+}
+
 Test(mesh, concave_faces_by_fans, .init = arena_setup, .fini = arena_teardown)
 {
     /* base outline counter-clockwise from above */
