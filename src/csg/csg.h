@@ -54,6 +54,11 @@ csg_node *csg_node_shape(const iv_shape *s, const csg_affine world_from_object,
 /* An operation with no children yet: an empty union, intersection or
  * difference is the empty set. */
 csg_node *csg_node_op(csg_op op);
+/* Mark op node n as one OpenSCAD's preview draws as a single piece of
+ * geometry (render(), resize(), an extrusion: a CGAL leaf of its CSG
+ * products), which its view framing boxes as a whole
+ * (csg_scene_view_bounds) rather than by the leaves inside. */
+void csg_node_frame_whole(csg_node *n);
 /* Append child to parent (an op node); the parent owns it from now on, also
  * when this fails.  Returns 0, or -1 when out of memory. */
 int csg_node_add(csg_node *parent, csg_node *child);

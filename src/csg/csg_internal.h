@@ -13,6 +13,7 @@
 struct csg_node {
     int is_leaf;
     csg_op op;
+    int whole; /* framed as one piece (csg_node_frame_whole) */
     iv_shape shape;
     csg_affine world_from_object;
     csg_material material;
@@ -36,9 +37,10 @@ enum { FNODE_LEAF = 3 }; /* `op` of a leaf; ops use their csg_op value */
 typedef struct csg_fnode {
     double lo[3], hi[3]; /* world AABB, padded outward; may be infinite */
     int32_t next;
-    int32_t prim; /* leaf: primitive index; op: -1 */
-    int32_t wide; /* union: its first csg_wide record; other nodes: -1 */
-    uint8_t op;   /* csg_op, or FNODE_LEAF */
+    int32_t prim;  /* leaf: primitive index; op: -1 */
+    int32_t wide;  /* union: its first csg_wide record; other nodes: -1 */
+    uint8_t op;    /* csg_op, or FNODE_LEAF */
+    uint8_t whole; /* op: framed as one piece (csg_node_frame_whole) */
 } csg_fnode;
 
 /* A union's operands, four to a record, as csg_trace_first reads them: the

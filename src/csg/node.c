@@ -33,6 +33,11 @@ csg_node *csg_node_op(csg_op op)
     return n;
 }
 
+void csg_node_frame_whole(csg_node *n)
+{
+    if (n && !n->is_leaf) n->whole = 1;
+}
+
 int csg_node_add(csg_node *parent, csg_node *child)
 {
     /* A NULL child is kept: it is an empty operand, which matters when it is

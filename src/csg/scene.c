@@ -76,7 +76,7 @@ static int overlaps(const csg_node *a, const csg_node *b)
 /* Whether kid's own children can replace it in an `op` node at position i. */
 static int splices(csg_op op, int i, const csg_node *kid)
 {
-    if (kid->is_leaf) return 0;
+    if (kid->is_leaf || kid->whole) return 0;
     switch (op) {
     case CSG_OP_UNION:
         return kid->op == CSG_OP_UNION;
@@ -174,6 +174,7 @@ static csg_node *finish_op(csg_node *x)
     }
     if (n == 1) {
         x->nkids = 0;
+        if (!first->is_leaf) first->whole |= x->whole;
         free_shell(x);
         return first;
     }
@@ -421,6 +422,7 @@ static void flatten(csg_scene *s, csg_node *root, int at, int *prim)
             cold->material = x->material;
         } else {
             f->op = (uint8_t)x->op;
+            f->whole = (uint8_t)x->whole;
             f->prim = -1;
             /* Push in reverse so the first child is laid out next. */
             for (int i = x->nkids - 1; i >= 0; i--) {

@@ -125,6 +125,17 @@ static int openscad_bounds(const csg_scene *s, int r, double lo[3], double hi[3]
             found = 1;
             continue;
         }
+        if (f->whole && !si) {
+            /* one piece of geometry in OpenSCAD's preview: its own box
+             * (the node's, which meets an intersection's operands and is a
+             * difference's first operand's), not its leaves' */
+            for (int k = 0; k < 3; k++) {
+                lo[k] = found && lo[k] < f->lo[k] ? lo[k] : f->lo[k];
+                hi[k] = found && hi[k] > f->hi[k] ? hi[k] : f->hi[k];
+            }
+            found = 1;
+            si = 2;
+        }
         int pruned = (si & 2) || (f->op == CSG_OP_INTERSECTION && !operands_meet(s, i));
         for (int c = i + 1; c < f->next; c = s->nodes[c].next) {
             int sub = f->op == CSG_OP_DIFFERENCE && c != i + 1;

@@ -32,6 +32,7 @@ struct scad_geom {
     scad_geom **kids;
     int n, cap;
     const char *text; /* dump mode only */
+    int whole;        /* op: one piece of geometry in the preview (csg_node_frame_whole) */
     scad_loc loc;     /* the statement that made it (scad_eval_here) */
     /* leaves only */
     iv_shape shape;

@@ -49,6 +49,7 @@ static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
         *oom = g;
         return NULL;
     }
+    if (g->whole) csg_node_frame_whole(n);
     for (int i = 0; i < g->n; i++) {
         csg_node *k = to_csg(g->kids[i], oom);
         if (k && csg_node_add(n, k) && !*oom) *oom = g;

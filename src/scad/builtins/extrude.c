@@ -280,6 +280,7 @@ static scad_geom *linear_build(scad_call *c, const void *args)
     if (t.e.twist == 0 && t.e.scale[0] == 1 && t.e.scale[1] == 1) {
         /* straight: the exact prism (more slices change nothing) */
         linear_tree(kids, inv, c->state->xf, t.e.h1, t.e.h2);
+        kids->whole = !kids->is_leaf;
         return kids;
     }
     t.local_from_world = inv;
@@ -287,6 +288,7 @@ static scad_geom *linear_build(scad_call *c, const void *args)
     if (t.e.slices == 0)
         t.e.slices = geom_extrusion_slices(&t.e, t.max_r2, t.max_d2, t.f.fn, t.f.fa, t.f.fs);
     twist_tree(&t, kids);
+    kids->whole = !kids->is_leaf;
     return kids;
 }
 
@@ -500,6 +502,7 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     csg_affine_mul(c->state->xf, place, world);
     r.world_place = world;
     revolve_tree(&r, kids);
+    kids->whole = !kids->is_leaf;
     return kids;
 }
 

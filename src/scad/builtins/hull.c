@@ -443,6 +443,7 @@ static scad_geom *resize_build(scad_call *c, const void *args)
     csg_affine s = {scale[0], 0, 0, 0, 0, scale[1], 0, 0, 0, 0, scale[2], 0}, m;
     csg_affine_mul(state->xf, s, m);
     place_tree(kids, m, flat);
+    kids->whole = !kids->is_leaf;
     return kids;
 }
 

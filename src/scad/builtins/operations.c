@@ -451,6 +451,7 @@ static scad_geom *render_build(scad_call *c, const void *args)
     (void)args;
     scad_eval *ev = c->ev;
     scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
+    if (kids && !kids->is_leaf && scad_geom_dims(kids) == 2) kids->whole = 1;
     if (!kids || scad_geom_dims(kids) != 1 || (kids->is_leaf && scad_geom_is_flat(kids)))
         return kids;
     csg_affine inv;
