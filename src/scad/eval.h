@@ -33,7 +33,9 @@ struct scad_geom {
     int n, cap;
     const char *text; /* dump mode only */
     int whole;        /* op: one piece of geometry in the preview (csg_node_frame_whole) */
-    scad_loc loc;     /* the statement that made it (scad_eval_here) */
+    int extruded; /* leaf: 3D though its prism may be the 2D slab (linear_extrude(1, center = true))
+                   */
+    scad_loc loc; /* the statement that made it (scad_eval_here) */
     /* leaves only */
     iv_shape shape;
     csg_affine xf;

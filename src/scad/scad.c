@@ -57,19 +57,38 @@ static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
     return n;
 }
 
-/* What openscad's render (a mesh export) keeps of g: an operation with 3D
- * operands ignores its 2D ones ("Ignoring 2D child object for 3D
- * operation"), at every level and at the top.  In place. */
-static void solids_only(scad_geom *g)
+/* What openscad's render (a mesh export) makes of g, in place; returns
+ * the dimension it gives g: 3, 2, or 0 (nothing).  As 2021.01's
+ * GeometryEvaluator: an operation takes the dimension of its first child
+ * that has one; in a 3D operation each 2D child is an empty operand
+ * ("Ignoring 2D child object for 3D operation"): passed over by a union,
+ * emptying an intersection, and a difference whose first operand it is.
+ * (A 2D operation's 3D children are left: the whole is 2D, and a 3D
+ * parent takes it as empty.) */
+static int render_dims(scad_geom *g)
 {
-    if (!g || g->is_leaf || !(scad_geom_dims(g) & 2)) return;
-    int n = 0;
-    for (int i = 0; i < g->n; i++)
-        if (scad_geom_dims(g->kids[i]) != 1) {
-            solids_only(g->kids[i]);
-            g->kids[n++] = g->kids[i];
+    if (!g) return 0;
+    if (g->is_leaf) return scad_geom_is_flat(g) ? 2 : 3;
+    if (g->n == 0) return 0;
+    int *d = malloc((size_t)g->n * sizeof *d), dim = 0;
+    if (!d) return scad_geom_dims(g) & 2 ? 3 : 2; /* out of memory: as it is */
+    for (int i = 0; i < g->n; i++) {
+        d[i] = render_dims(g->kids[i]);
+        if (!dim) dim = d[i];
+    }
+    if (dim == 3) {
+        int n = 0, empty = 0;
+        for (int i = 0; i < g->n; i++) {
+            if (d[i] != 2) {
+                g->kids[n++] = g->kids[i];
+            } else if (g->op == CSG_OP_INTERSECTION || (g->op == CSG_OP_DIFFERENCE && i == 0)) {
+                empty = 1;
+            }
         }
-    g->n = n;
+        g->n = empty ? 0 : n;
+    }
+    free(d);
+    return dim;
 }
 
 static csg_node *list_to_csg(scad_geom **v, int n, const scad_geom **oom)
@@ -274,6 +293,10 @@ static void run_job(job *j)
         if (vp && !ev.aborted)
             scad_diag_line(j->d, RAYSCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");
+        /* for a mesh, the model as openscad's render makes it (in place) */
+        int dims = !ev.aborted && !j->dump && j->opt && j->opt->for_mesh
+                       ? render_dims(ev.has_root ? ev.root : model)
+                       : 3;
         if (!ev.aborted && j->dump && !j->dump_text) {
             j->status = 0;
         } else if (!ev.aborted && j->dump) {
@@ -282,15 +305,13 @@ static void run_job(job *j)
                 scad_diag_error(j->d, failed ? failed->loc : ev.at, "out of memory");
             else
                 j->status = 0;
-        } else if (!ev.aborted && j->opt && j->opt->for_mesh &&
-                   scad_geom_dims(ev.has_root ? ev.root : model) == 1) {
+        } else if (!ev.aborted && dims == 2) {
             /* openscad's words; it too writes no mesh of a 2D model */
             scad_diag_line(j->d, RAYSCAD_MSG_ERROR,
                            "ERROR: Current top level object is not a 3D object.");
         } else if (!ev.aborted) {
             const scad_geom *oom = NULL;
             if (ev.has_root) model = ev.root;
-            if (j->opt && j->opt->for_mesh) solids_only(model);
             j->out->model = to_csg(model, &oom);
             j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, &oom);
             j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, &oom);

@@ -149,9 +149,9 @@ void scad_material_apply(scad_call *c, const iv_shape *s, const csg_affine xf, c
 scad_geom *scad_region_geom(scad_eval *ev, const scad_paths *p, const scad_state *state);
 void scad_paths_free(scad_paths *p);
 
-/* 1 when g is a 2D leaf: a prism over the preview slab z in [-½, ½] (an
- * extruded prism has its own z range; a linear_extrude(1, center = true)
- * is the one extrusion that reads as 2D). */
+/* 1 when g is a 2D leaf: a prism over the preview slab z in [-½, ½] that
+ * no linear_extrude() made (g->extruded: linear_extrude(1, center = true)
+ * makes that same prism, in 3D). */
 int scad_geom_is_flat(const scad_geom *g);
 /* Which kinds of leaves a subtree holds: bit 1 a 2D leaf, bit 2 a 3D one. */
 int scad_geom_dims(const scad_geom *g);

@@ -58,6 +58,7 @@ static void linear_tree(scad_geom *g, const csg_affine local_from_world,
     csg_affine_mul(world_from_local, t, g->xf);
     g->shape.u.prism.z0 = z0;
     g->shape.u.prism.z1 = z1;
+    g->extruded = 1;
 }
 
 /* The region of a 2D leaf in the extrusion's frame (a new reference), x

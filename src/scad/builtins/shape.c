@@ -202,8 +202,8 @@ int scad_geom_dims(const scad_geom *g)
 
 int scad_geom_is_flat(const scad_geom *g)
 {
-    return g->is_leaf && g->shape.kind == IV_SHAPE_PRISM && g->shape.u.prism.z0 == -SCAD_SLAB &&
-           g->shape.u.prism.z1 == SCAD_SLAB;
+    return g->is_leaf && !g->extruded && g->shape.kind == IV_SHAPE_PRISM &&
+           g->shape.u.prism.z0 == -SCAD_SLAB && g->shape.u.prism.z1 == SCAD_SLAB;
 }
 
 /* ---- flattening ------------------------------------------------------------------ */
