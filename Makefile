@@ -274,7 +274,7 @@ conformance: all
 	tests/cli/conformance.sh $(BUILD)
 
 # Real OpenSCAD code against openscad 2021.01: the regression corpus (.echo,
-# .csg, .png silhouettes) and BOSL2's test scripts (.echo) of ../shared/corpora,
+# .csg, .png silhouettes, .stl volumes) and BOSL2's test scripts (.echo) of ../shared/corpora,
 # where present (tests/cli/corpus.py; about 20 minutes on 2 cores, openscad's
 # outputs kept in BUILD/corpus/ref).  CORPUS_UPDATE=1 rewrites tests/corpus/passing.txt.
 corpus: all
