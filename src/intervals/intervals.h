@@ -125,7 +125,8 @@ typedef enum iv_shape_kind {
     IV_SHAPE_BOX,       /* lo <= x <= hi */
     IV_SHAPE_CONE,      /* 0 <= z <= h, x²+y² <= r(z)², r(z) = r1 + (r2-r1)·z/h */
     IV_SHAPE_POLYTOPE,  /* convex: n·x <= d for every plane of an iv_polytope */
-    IV_SHAPE_MESH,      /* inside a closed triangle mesh (iv_mesh), nonzero rule */
+    IV_SHAPE_MESH,      /* inside a closed triangle mesh (iv_mesh), nonzero rule; or
+                           an open one's faces as thin spans (iv_shape_polyhedron) */
     IV_SHAPE_PRISM,     /* z0 <= z <= z1 and (x, y) in a 2D region (or a disc) */
     IV_SHAPE_REVOLVE    /* (sqrt(x²+y²), z) in a 2D region, azimuth in [0, angle] */
 } iv_shape_kind;

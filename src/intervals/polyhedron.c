@@ -3,7 +3,11 @@
  * twisted extrusions): a BVH over the triangles and a watertight ray test.
  *
  * Faces arrive as polygons wound clockwise seen from outside (OpenSCAD) and
- * are cut into triangles by diagonals (a fan when the face is not planar).
+ * are cut into triangles by diagonals (a non-planar one as OpenSCAD cuts it,
+ * face_tess.c, for faces a user wrote; else a fan).  Faces a user wrote
+ * (iv_shape_polyhedron) are read first as OpenSCAD reads them
+ * (mesh_orient.c): turned where they wind inconsistently, and an open
+ * surface becomes a sheet whose every crossing is a thin span.
  * Inside-ness along a line is the nonzero winding rule: every triangle the
  * line crosses adds +1 when the line enters through it and -1 when it
  * leaves, hits at equal t are summed before the state is read, and the
