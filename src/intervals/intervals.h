@@ -239,6 +239,12 @@ int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *
  * 3 (a sheet), or -1 as iv_shape_mesh. */
 int iv_shape_polyhedron(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                         const int *face_start, int nfaces);
+/* As iv_shape_polyhedron, but a surface with holes is read best effort as
+ * a solid (the signed crossings) rather than as a sheet: for a mesh, which
+ * needs an inside (openscad's render of an open polyhedron exports its
+ * faces as given, which no mesh of ours can be).  Same returns. */
+int iv_shape_polyhedron_solid(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                              const int *face_start, int nfaces);
 /* Vertices of a mesh (borrowed) or NULL. */
 const double (*iv_mesh_vertices(const iv_shape *s, int *n))[3];
 /* Triangles of a mesh as vertex index triples (borrowed; wound as the input

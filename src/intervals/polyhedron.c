@@ -159,6 +159,12 @@ int iv_shape_polyhedron(iv_shape *s, const double (*verts)[3], int nverts, const
     return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 1);
 }
 
+int iv_shape_polyhedron_solid(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
+                              const int *face_start, int nfaces)
+{
+    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 2);
+}
+
 /* Turns the planes of the triangles flip[] marks (which read_edges turned).
  * Returns 0, or 1 when a plane's triangles do not all agree (a face the
  * turning would split: then nothing is turned back, and the caller reads
@@ -354,7 +360,7 @@ static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *f
             reading = IV_MESH_OPEN;
         free(flip);
         if (reading == IV_MESH_READ_FAILED) goto done;
-        m->sheet = reading == IV_MESH_OPEN;
+        m->sheet = reading == IV_MESH_OPEN && as_written != 2;
     }
     double vol = m->sheet ? 0 : signed_volume(V, (const int(*)[3])tri, t);
     if (vol < 0) {

@@ -137,6 +137,7 @@ typedef struct scad_eval {
      * innermost frame says it; see scad_eval_here). */
     scad_loc at;
     int facets;                    /* scad_facets, from the options */
+    int for_mesh;                  /* evaluated for a mesh (scad_options.for_mesh) */
     const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by
      * scad_geometry_release */

@@ -271,6 +271,7 @@ static void run_job(job *j)
     ev.builtins = builtins;
     ev.top = j->top;
     ev.facets = j->opt ? j->opt->facets : RAYSCAD_FACETS_AUTO;
+    ev.for_mesh = j->opt && j->opt->for_mesh;
     static const scad_services no_services;
     ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
     if (file) {

@@ -223,12 +223,13 @@ static scad_geom *import_build(scad_call *c, const void *args)
             }
             start[nt] = 3 * nt;
             iv_shape s;
-            int rc = iv_shape_polyhedron(&s, (const double(*)[3])V, nv, idx, start, nt);
+            int rc = (ev->for_mesh ? iv_shape_polyhedron_solid : iv_shape_polyhedron)(
+                &s, (const double(*)[3])V, nv, idx, start, nt);
             if (rc < 0) {
                 scad_diag_note(ev->d, st->loc, "import(): '%s' is not a valid mesh",
                                scad_buf_str(&path));
             } else {
-                if (rc == 3)
+                if (rc == 3 && !ev->for_mesh)
                     scad_diag_note(ev->d, st->loc,
                                    "import(): '%s' is not closed (it has holes); it is drawn "
                                    "as a surface without inside",

@@ -500,8 +500,9 @@ static scad_geom *polyhedron_build(scad_call *c, const void *args)
         scad_diag_warning(ev->d, c->st->loc, "polyhedron(): faces must be lists of point indices");
     } else {
         iv_shape s;
-        int rc = iv_shape_polyhedron(&s, (const double(*)[3])P, n, idx, start, nf);
-        if (rc == 3)
+        int rc = (ev->for_mesh ? iv_shape_polyhedron_solid
+                               : iv_shape_polyhedron)(&s, (const double(*)[3])P, n, idx, start, nf);
+        if (rc == 3 && !ev->for_mesh)
             scad_diag_note(ev->d, c->st->loc,
                            "polyhedron() is not closed (it has holes); it is drawn as a surface "
                            "without inside");
