@@ -150,17 +150,16 @@ static int join(int *up, unsigned char *par, int a, int b, int want)
     return 0;
 }
 
-/* Crossings of the ray from p along a fixed direction with the triangles of
- * piece `piece` (Möller–Trumbore), mod 2. */
-static int inside_piece(const double (*v)[3], const int (*tri)[3], int nt, const int *piece_of,
-                        int piece, const double p[3])
+/* The parity of the crossings of the ray from p along a fixed direction
+ * with each piece's triangles (Möller–Trumbore), into odd[piece]: one pass
+ * over the triangles for all pieces. */
+static void crossings(const double (*v)[3], const int (*tri)[3], int nt, const int *piece_of,
+                      const double p[3], unsigned char *odd)
 {
     /* an irrational-looking direction: no edge or vertex of real data lies
      * on the ray but by a coincidence of about 1e-16 */
     static const double d[3] = {0.5773502691896258, 0.5345224838248488, 0.6172133998483676};
-    int n = 0;
     for (int i = 0; i < nt; i++) {
-        if (piece_of[i] != piece) continue;
         const double *a = v[tri[i][0]], *b = v[tri[i][1]], *c = v[tri[i][2]];
         double e1[3], e2[3], s[3], h[3], q[3];
         for (int k = 0; k < 3; k++) {
@@ -180,13 +179,12 @@ static int inside_piece(const double (*v)[3], const int (*tri)[3], int nt, const
         q[2] = s[0] * e1[1] - s[1] * e1[0];
         double w = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
         if (w < 0 || u + w > 1) continue;
-        if ((e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det > 0) n++;
+        if ((e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det > 0) odd[piece_of[i]] ^= 1;
     }
-    return n & 1;
 }
 
-/* Nested pieces are told apart only up to this many pieces (each test
- * walks every triangle); beyond, every piece is made positive. */
+/* Nested pieces are told apart only up to this many pieces (each piece's
+ * test walks every triangle); beyond, every piece is made positive. */
 enum { NEST_MAX_PIECES = 64 };
 
 /* Turns the triangles of a mesh whose every edge joins two triangles so that
@@ -243,19 +241,25 @@ static int orient(const double (*v)[3], const int (*tri)[3], int nt, int nv, uns
         vol[piece_of[i]] -= a[0] * (p[1] * q[2] - p[2] * q[1]) -
                             a[1] * (p[0] * q[2] - p[2] * q[0]) + a[2] * (p[0] * q[1] - p[1] * q[0]);
     }
-    unsigned char *turn = calloc((size_t)npieces, 1);
-    if (!turn) goto done;
+    unsigned char *turn = calloc((size_t)npieces, 1), *odd = calloc((size_t)npieces, 1);
+    if (!turn || !odd) {
+        free(turn);
+        free(odd);
+        goto done;
+    }
     for (int k = 0; k < npieces; k++) {
         int depth = 0;
-        if (npieces <= NEST_MAX_PIECES) {
+        if (npieces > 1 && npieces <= NEST_MAX_PIECES) {
             int t = 0;
             while (piece_of[t] != k)
                 t++;
             double c[3];
             for (int j = 0; j < 3; j++)
                 c[j] = (v[tri[t][0]][j] + v[tri[t][1]][j] + v[tri[t][2]][j]) / 3;
+            memset(odd, 0, (size_t)npieces);
+            crossings(v, tri, nt, piece_of, c, odd);
             for (int other = 0; other < npieces; other++)
-                if (other != k) depth += inside_piece(v, tri, nt, piece_of, other, c);
+                if (other != k) depth += odd[other];
         }
         int want_positive = depth % 2 == 0;
         turn[k] = (unsigned char)((vol[k] > 0) != want_positive);
@@ -263,6 +267,7 @@ static int orient(const double (*v)[3], const int (*tri)[3], int nt, int nv, uns
     for (int i = 0; i < nt; i++)
         flip[i] ^= turn[piece_of[i]];
     free(turn);
+    free(odd);
     rc = 0;
 done:
     free(e);
