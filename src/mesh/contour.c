@@ -561,6 +561,12 @@ static void cell(sweep *s, int i, int j, int mask)
         }
     }
     int done[12] = {0};
+    /* this cell's loop vertices so far: two loops whose QEF vertices are
+     * pinned to the same corner of the shrunk cell would share a point, and
+     * a reader that welds by position (every STL reader) would see one
+     * vertex with two fans */
+    double placed[6][3];
+    int nplaced = 0;
     for (int e0 = 0; e0 < 12; e0++) {
         if (!has[e0] || done[e0]) continue;
         int loop[12], nl = 0;
@@ -607,6 +613,22 @@ static void cell(sweep *s, int i, int j, int mask)
         if (!feature && fan_plain(s, lv, nv, navg)) continue;
         double c[3];
         loop_vertex(s, smp, loop, nl, lo, c);
+        for (int q = 0; q < nplaced; q++) {
+            double dd[3];
+            sub3(c, placed[q], dd);
+            if (dot3(dd, dd) < EPS * EPS * h * h) {
+                /* the loop's own centre instead, inside the cell (its
+                 * samples lie on the cell's edges) and its own */
+                for (int k = 0; k < 3; k++) {
+                    c[k] = 0;
+                    for (int r = 0; r < nl; r++)
+                        c[k] += smp[loop[r]].p[k] / nl;
+                    c[k] = fmin(fmax(c[k], lo[k] + EPS * h), lo[k] + (1 - EPS) * h);
+                }
+                break;
+            }
+        }
+        if (nplaced < 6) memcpy(placed[nplaced++], c, sizeof c);
         int32_t cv = mesh_push_vertex(s->m, c[0], c[1], c[2]);
         if (cv < 0) {
             s->oom = 1;
