@@ -12,6 +12,7 @@
  * onto each other) keeps the diagonal F[0]F[2], as libtess2 was seen to.
  */
 #include "shape_kinds.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -33,16 +34,14 @@ static void project(const double (*v)[3], const int *F, int len, double (*P)[2])
     int w = 0;
     for (int k = 1; k < 3; k++)
         if (v[F[hi[k]]][k] - v[F[lo[k]]][k] > v[F[hi[w]]][w] - v[F[lo[w]]][w]) w = k;
-    const double *a = v[F[lo[w]]], *b = v[F[hi[w]]];
+    const double *b = v[F[hi[w]]];
     double d1[3], n[3] = {0, 0, 0}, best = 0;
-    for (int k = 0; k < 3; k++)
-        d1[k] = a[k] - b[k];
+    sub3(v[F[lo[w]]], b, d1);
     for (int j = 0; j < len; j++) {
-        const double *p = v[F[j]];
-        double d2[3] = {p[0] - b[0], p[1] - b[1], p[2] - b[2]};
-        double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
-                       d1[0] * d2[1] - d1[1] * d2[0]};
-        double l2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        double d2[3], c[3];
+        sub3(v[F[j]], b, d2);
+        cross3(d1, d2, c);
+        double l2 = dot3(c, c);
         if (l2 > best) {
             best = l2;
             memcpy(n, c, sizeof n);

@@ -17,6 +17,7 @@
  * write), and open — a surface without an inside — when they are holes.
  */
 #include "shape_kinds.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -160,26 +161,20 @@ static void crossings(const double (*v)[3], const int (*tri)[3], int nt, const i
      * on the ray but by a coincidence of about 1e-16 */
     static const double d[3] = {0.5773502691896258, 0.5345224838248488, 0.6172133998483676};
     for (int i = 0; i < nt; i++) {
-        const double *a = v[tri[i][0]], *b = v[tri[i][1]], *c = v[tri[i][2]];
+        const double *a = v[tri[i][0]];
         double e1[3], e2[3], s[3], h[3], q[3];
-        for (int k = 0; k < 3; k++) {
-            e1[k] = b[k] - a[k];
-            e2[k] = c[k] - a[k];
-            s[k] = p[k] - a[k];
-        }
-        h[0] = d[1] * e2[2] - d[2] * e2[1];
-        h[1] = d[2] * e2[0] - d[0] * e2[2];
-        h[2] = d[0] * e2[1] - d[1] * e2[0];
-        double det = e1[0] * h[0] + e1[1] * h[1] + e1[2] * h[2];
+        sub3(v[tri[i][1]], a, e1);
+        sub3(v[tri[i][2]], a, e2);
+        sub3(p, a, s);
+        cross3(d, e2, h);
+        double det = dot3(e1, h);
         if (det == 0) continue;
-        double u = (s[0] * h[0] + s[1] * h[1] + s[2] * h[2]) / det;
+        double u = dot3(s, h) / det;
         if (u < 0 || u > 1) continue;
-        q[0] = s[1] * e1[2] - s[2] * e1[1];
-        q[1] = s[2] * e1[0] - s[0] * e1[2];
-        q[2] = s[0] * e1[1] - s[1] * e1[0];
-        double w = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
+        cross3(s, e1, q);
+        double w = dot3(d, q) / det;
         if (w < 0 || u + w > 1) continue;
-        if ((e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det > 0) odd[piece_of[i]] ^= 1;
+        if (dot3(e2, q) / det > 0) odd[piece_of[i]] ^= 1;
     }
 }
 
@@ -232,14 +227,8 @@ static int orient(const double (*v)[3], const int (*tri)[3], int nt, int nv, uns
     /* vol[piece]: six times its signed volume as turned, positive for
      * OpenSCAD's winding (clockwise from outside) */
     for (int i = 0; i < nt; i++) {
-        const double *a = v[tri[i][0]], *p = v[tri[i][1]], *q = v[tri[i][2]];
-        if (flip[i]) {
-            const double *x = p;
-            p = q;
-            q = x;
-        }
-        vol[piece_of[i]] -= a[0] * (p[1] * q[2] - p[2] * q[1]) -
-                            a[1] * (p[0] * q[2] - p[2] * q[0]) + a[2] * (p[0] * q[1] - p[1] * q[0]);
+        const double *p = v[tri[i][1]], *q = v[tri[i][2]];
+        vol[piece_of[i]] -= flip[i] ? triple3(v[tri[i][0]], q, p) : triple3(v[tri[i][0]], p, q);
     }
     unsigned char *turn = calloc((size_t)npieces, 1), *odd = calloc((size_t)npieces, 1);
     if (!turn || !odd) {

@@ -41,6 +41,7 @@
  * passes nearest the point.
  */
 #include "shape_kinds.h"
+#include "vec3.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -137,32 +138,38 @@ static void split_face(const int *F, int a, int b, int (*tri)[3], int *t)
 #define MESH_SPLIT_EXTRA 2.0
 enum { MESH_REF_MAX = 1 << 22 };
 
+/* How build reads the faces: as our own code makes them (closed), or as a
+ * user wrote them (iv_shape_polyhedron), an open surface a sheet or, for a
+ * mesh, a solid best effort. */
+typedef enum faces_from { FROM_CODE, FROM_USER, FROM_USER_SOLID } faces_from;
+
 static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                  const int *face_start, int nfaces, double extra_per_triangle, long *nref,
-                 int as_written);
+                 faces_from from);
 
 int iv_shape_mesh(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                   const int *face_start, int nfaces)
 {
-    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 0);
+    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, FROM_CODE);
 }
 
 int iv_shape_mesh_budget(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                          const int *face_start, int nfaces, double extra_per_triangle, long *nref)
 {
-    return build(s, verts, nverts, faces, face_start, nfaces, extra_per_triangle, nref, 0);
+    return build(s, verts, nverts, faces, face_start, nfaces, extra_per_triangle, nref, FROM_CODE);
 }
 
 int iv_shape_polyhedron(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                         const int *face_start, int nfaces)
 {
-    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 1);
+    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, FROM_USER);
 }
 
 int iv_shape_polyhedron_solid(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                               const int *face_start, int nfaces)
 {
-    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL, 2);
+    return build(s, verts, nverts, faces, face_start, nfaces, MESH_SPLIT_EXTRA, NULL,
+                 FROM_USER_SOLID);
 }
 
 /* Turns the planes of the triangles flip[] marks (which read_edges turned).
@@ -221,19 +228,16 @@ static int keep_used_points(iv_mesh *m, int (*tri)[3])
 static double signed_volume(const double (*v)[3], const int (*tri)[3], int nt)
 {
     double vol = 0;
-    for (int i = 0; i < nt; i++) {
-        const double *a = v[tri[i][0]], *p = v[tri[i][1]], *q = v[tri[i][2]];
-        vol -= (a[0] * (p[1] * q[2] - p[2] * q[1]) - a[1] * (p[0] * q[2] - p[2] * q[0]) +
-                a[2] * (p[0] * q[1] - p[1] * q[0])) /
-               6;
-    }
+    for (int i = 0; i < nt; i++)
+        vol -= triple3(v[tri[i][0]], v[tri[i][1]], v[tri[i][2]]) / 6;
     return vol;
 }
 
 static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *faces,
                  const int *face_start, int nfaces, double extra_per_triangle, long *nref,
-                 int as_written)
+                 faces_from from)
 {
+    const int as_written = from != FROM_CODE;
     if (nverts <= 0 || nfaces <= 0) return -1;
     for (int i = 0; i < nverts; i++)
         for (int k = 0; k < 3; k++)
@@ -269,13 +273,14 @@ static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *f
     }
     /* the box of the points the faces use: a point no face uses is not
      * part of the shape (nor of OpenSCAD's box, which frames the view) */
-    for (int f = 0; f < nfaces; f++)
-        for (int j = face_start[f]; face_start[f + 1] - face_start[f] >= 3 && j < face_start[f + 1];
-             j++)
+    for (int f = 0; f < nfaces; f++) {
+        if (face_start[f + 1] - face_start[f] < 3) continue;
+        for (int j = face_start[f]; j < face_start[f + 1]; j++)
             for (int k = 0; k < 3; k++) {
                 m->lo[k] = fmin(m->lo[k], verts[faces[j]][k]);
                 m->hi[k] = fmax(m->hi[k], verts[faces[j]][k]);
             }
+    }
     int t = 0, np = 0;
     for (int f = 0; f < nfaces; f++) {
         const int *F = faces + face_start[f];
@@ -360,7 +365,7 @@ static int build(iv_shape *s, const double (*verts)[3], int nverts, const int *f
             reading = IV_MESH_OPEN;
         free(flip);
         if (reading == IV_MESH_READ_FAILED) goto done;
-        m->sheet = reading == IV_MESH_OPEN && as_written != 2;
+        m->sheet = reading == IV_MESH_OPEN && from == FROM_USER;
     }
     double vol = m->sheet ? 0 : signed_volume(V, (const int(*)[3])tri, t);
     if (vol < 0) {

@@ -26,6 +26,14 @@ static inline void cross3(const double a[3], const double b[3], double o[3])
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* a · (b × c): six times the signed volume of the tetrahedron (0, a, b, c). */
+static inline double triple3(const double a[3], const double b[3], const double c[3])
+{
+    double x[3];
+    cross3(b, c, x);
+    return dot3(a, x);
+}
+
 /* The plane through P[a], P[b], P[c] (counter-clockwise seen from the side
  * n points to): unit normal n and offset d = n·P[a]; -1 when the triangle
  * has no area.  The convex hulls (polytope.c, src/scad/hull3d.c) both take

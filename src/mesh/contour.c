@@ -424,14 +424,21 @@ static void qef_solve(double a[3][3], const double b[3], double x[3])
     }
 }
 
+/* The centre of a loop's samples (which lie on the cell's edges). */
+static void loop_mass(const sample *smp, const int *loop, int nl, double mass[3])
+{
+    mass[0] = mass[1] = mass[2] = 0;
+    for (int q = 0; q < nl; q++)
+        for (int c = 0; c < 3; c++)
+            mass[c] += smp[loop[q]].p[c] / nl;
+}
+
 /* The QEF vertex of a loop's samples, clamped to the cell shrunk by EPS·h. */
 static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int nl,
                         const double lo[3], double out[3])
 {
-    double mass[3] = {0, 0, 0};
-    for (int q = 0; q < nl; q++)
-        for (int c = 0; c < 3; c++)
-            mass[c] += smp[loop[q]].p[c] / nl;
+    double mass[3];
+    loop_mass(smp, loop, nl, mass);
     double a[3][3] = {{0}}, b[3] = {0, 0, 0};
     for (int q = 0; q < nl; q++) {
         const sample *e = &smp[loop[q]];
@@ -617,14 +624,10 @@ static void cell(sweep *s, int i, int j, int mask)
             double dd[3];
             sub3(c, placed[q], dd);
             if (dot3(dd, dd) < EPS * EPS * h * h) {
-                /* the loop's own centre instead, inside the cell (its
-                 * samples lie on the cell's edges) and its own */
-                for (int k = 0; k < 3; k++) {
-                    c[k] = 0;
-                    for (int r = 0; r < nl; r++)
-                        c[k] += smp[loop[r]].p[k] / nl;
+                /* the loop's own centre instead: in the cell, and its own */
+                loop_mass(smp, loop, nl, c);
+                for (int k = 0; k < 3; k++)
                     c[k] = fmin(fmax(c[k], lo[k] + EPS * h), lo[k] + (1 - EPS) * h);
-                }
                 break;
             }
         }

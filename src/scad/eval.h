@@ -33,9 +33,8 @@ struct scad_geom {
     int n, cap;
     const char *text; /* dump mode only */
     int whole;        /* op: one piece of geometry in the preview (csg_node_frame_whole) */
-    int extruded; /* leaf: 3D though its prism may be the 2D slab (linear_extrude(1, center = true))
-                   */
-    scad_loc loc; /* the statement that made it (scad_eval_here) */
+    int extruded;     /* leaf: made by linear_extrude(), 3D even over the 2D slab */
+    scad_loc loc;     /* the statement that made it (scad_eval_here) */
     /* leaves only */
     iv_shape shape;
     csg_affine xf;
@@ -302,14 +301,14 @@ void scad_eval_free_captured(scad_eval *ev);
 /* Instantiate st's children in a fresh scope below env with the given state;
  * returns them as one node (union of several, NULL if none). op selects how
  * several children combine. */
-/* The children of st one by one, each child statement's result (empty
- * sets included, statements that make no node left out): a malloc'd array
- * of *n (the caller frees it; the geometry is the arena's), or NULL when
- * there are none. */
-scad_geom **scad_eval_children_list(scad_eval *ev, scad_env *env, const scad_stmt *st,
-                                    const scad_state *state, int *n);
 scad_geom *scad_eval_children(scad_eval *ev, scad_env *env, const scad_stmt *st,
                               const scad_state *state, csg_op op);
+/* The same children one by one, each child statement's result (empty sets
+ * included, statements that make no node left out): a malloc'd array of *n
+ * (the caller frees it; the geometry is the arena's), or NULL when there
+ * are none. */
+scad_geom **scad_eval_children_list(scad_eval *ev, scad_env *env, const scad_stmt *st,
+                                    const scad_state *state, int *n);
 
 /* Keep one reference to s's data until the end of the evaluation (in
  * ev->owned).  Returns 0, or -1 when out of memory (then s's data is

@@ -221,30 +221,32 @@ static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s, const s
 }
 
 /* A child scope: a fresh environment below env for its assignments. */
+/* The statements of scope s run in a fresh environment below env (dynamic
+ * parent dyn), each one's node gathered into *g, in order. */
+static void gather_scope(scad_eval *ev, scad_env *env, scad_env *dyn, const scad_scope *s,
+                         const scad_state *state, const int *pick, int npick, gather *g)
+{
+    if (!s || ev->aborted) return;
+    scad_env *ce = scad_env_new(ev, env, dyn, s);
+    if (!ce) return;
+    scad_run_assignments(ev, ce, s);
+    run_stmts(ev, ce, s, state, g, pick, npick);
+    scad_env_free(ce);
+}
+
 static scad_geom *child_scope(scad_eval *ev, scad_env *env, scad_env *dyn, const scad_scope *s,
                               const scad_state *state, csg_op op, const int *pick, int npick)
 {
-    if (!s || ev->aborted) return NULL;
-    scad_env *ce = scad_env_new(ev, env, dyn, s);
-    if (!ce) return NULL;
     gather g = {0};
-    scad_run_assignments(ev, ce, s);
-    run_stmts(ev, ce, s, state, &g, pick, npick);
-    scad_env_free(ce);
+    gather_scope(ev, env, dyn, s, state, pick, npick, &g);
     return finish(ev, &g, op);
 }
 
 scad_geom **scad_eval_children_list(scad_eval *ev, scad_env *env, const scad_stmt *st,
                                     const scad_state *state, int *n)
 {
-    *n = 0;
-    if (!st->children || ev->aborted) return NULL;
-    scad_env *ce = scad_env_new(ev, env, env, st->children);
-    if (!ce) return NULL;
     gather g = {0};
-    scad_run_assignments(ev, ce, st->children);
-    run_stmts(ev, ce, st->children, state, &g, NULL, 0);
-    scad_env_free(ce);
+    gather_scope(ev, env, env, st->children, state, NULL, 0, &g);
     *n = g.n;
     return g.v;
 }

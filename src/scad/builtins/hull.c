@@ -11,6 +11,7 @@
 
 #include "../../geom/hull2d.h"
 #include "../../geom/hull3d.h"
+#include "../../intervals/vec3.h"
 #include "builtins.h"
 
 typedef struct pts {
@@ -185,11 +186,10 @@ static void hull_points(pts *P, const scad_geom *g, const double lfw[12], scad_f
 static int flat_hull(const double (*p)[3], int n, iv_shape *s)
 {
     int b = 0, c = 0;
-    double far = 0, u[3], w[3], nrm[3] = {0, 0, 0};
+    double far = 0, u[3], w[3], nrm[3] = {0, 0, 0}, a[3];
     for (int i = 1; i < n; i++) {
-        double d = 0;
-        for (int k = 0; k < 3; k++)
-            d += (p[i][k] - p[0][k]) * (p[i][k] - p[0][k]);
+        sub3(p[i], p[0], a);
+        double d = dot3(a, a);
         if (d > far) far = d, b = i;
     }
     if (!(far > 0)) return -1;
@@ -197,27 +197,25 @@ static int flat_hull(const double (*p)[3], int n, iv_shape *s)
         u[k] = (p[b][k] - p[0][k]) / sqrt(far);
     double best = 0;
     for (int i = 1; i < n; i++) {
-        double a[3] = {p[i][0] - p[0][0], p[i][1] - p[0][1], p[i][2] - p[0][2]};
-        double x[3] = {u[1] * a[2] - u[2] * a[1], u[2] * a[0] - u[0] * a[2],
-                       u[0] * a[1] - u[1] * a[0]};
-        double l = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+        double x[3];
+        sub3(p[i], p[0], a);
+        cross3(u, a, x);
+        double l = dot3(x, x);
         if (l > best) best = l, c = i, memcpy(nrm, x, sizeof nrm);
     }
     if (!(best > 1e-24 * far) || c == 0) return -1;
     double l = sqrt(best);
     for (int k = 0; k < 3; k++)
         nrm[k] /= l;
-    w[0] = nrm[1] * u[2] - nrm[2] * u[1];
-    w[1] = nrm[2] * u[0] - nrm[0] * u[2];
-    w[2] = nrm[0] * u[1] - nrm[1] * u[0];
+    cross3(nrm, u, w);
     double(*Q)[3] = malloc((size_t)n * sizeof *Q), (*H)[2] = malloc((size_t)(n + 1) * sizeof *H);
     double(*V)[3] = malloc((size_t)(n + 1) * sizeof *V);
     int *idx = malloc((size_t)(n + 1) * sizeof *idx), rc = -1;
     if (Q && H && V && idx) {
         for (int i = 0; i < n; i++) {
-            double a[3] = {p[i][0] - p[0][0], p[i][1] - p[0][1], p[i][2] - p[0][2]};
-            Q[i][0] = a[0] * u[0] + a[1] * u[1] + a[2] * u[2];
-            Q[i][1] = a[0] * w[0] + a[1] * w[1] + a[2] * w[2];
+            sub3(p[i], p[0], a);
+            Q[i][0] = dot3(a, u);
+            Q[i][1] = dot3(a, w);
             Q[i][2] = 0;
         }
         int k = geom_hull2d(Q, n, H);

@@ -451,9 +451,9 @@ static scad_geom *render_build(scad_call *c, const void *args)
     (void)args;
     scad_eval *ev = c->ev;
     scad_geom *kids = scad_eval_children(ev, c->env, c->st, c->state, CSG_OP_UNION);
-    if (kids && !kids->is_leaf && scad_geom_dims(kids) == 2) kids->whole = 1;
-    if (!kids || scad_geom_dims(kids) != 1 || (kids->is_leaf && scad_geom_is_flat(kids)))
-        return kids;
+    int dims = scad_geom_dims(kids);
+    if (dims == 2 && !kids->is_leaf) kids->whole = 1;
+    if (dims != 1 || (kids->is_leaf && scad_geom_is_flat(kids))) return kids;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return kids;
     scad_paths r = {0};
