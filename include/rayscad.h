@@ -367,7 +367,9 @@ rayscad_status rayscad_image_load(char *err, size_t errlen);
 
 typedef struct rayscad_mesh_options {
     /* Grid spacing in model units; <= 0: the longest side of the root's
-     * bounds / cells_per_side. */
+     * bounds / cells_per_side.  Parts of the model far apart (operands of
+     * its top-level unions whose grids would not meet) are sampled each on
+     * a grid of its own, the default spacing following each part's size. */
     double h;
     int cells_per_side; /* used when h <= 0; <= 0 means 128 */
     int threads;        /* <= 0: all cores */
@@ -378,6 +380,11 @@ typedef struct rayscad_mesh_options {
     /* The most cells the grid may have, nx·ny·nz; <= 0 means 2^32. */
     long long max_cells;
     int max_intervals; /* <= 0: 2^20 */
+    /* With h <= 0: when walls or gaps thinner than a few cells hold more
+     * than a thousandth of the volume, sample again on a grid up to 8
+     * times finer (a whole factor, within max_cells and about 2^21
+     * crossings), so thin parts keep their shape.  1 by default. */
+    int resolve_thin;
 } rayscad_mesh_options;
 
 void rayscad_mesh_options_default(rayscad_mesh_options *o);
@@ -396,7 +403,8 @@ rayscad_status rayscad_sampling_new(const rayscad_scene *s, const rayscad_mesh_o
                                     rayscad_sampling **out, char *err, size_t errlen);
 void rayscad_sampling_free(rayscad_sampling *d);
 /* The grid used: spacing h, the world position of node (0,0,0), cells per
- * axis (n = {0,0,0} when empty). */
+ * axis (n = {0,0,0} when empty).  Where far-apart parts have grids of their
+ * own: the largest spacing, and the first grid's origin and cells. */
 void rayscad_sampling_grid(const rayscad_sampling *d, double *h, double origin[3], int n[3]);
 
 typedef struct rayscad_measurement {
@@ -416,8 +424,11 @@ typedef struct rayscad_thin {
     long long walls, gaps;        /* chords through solid / empty space */
     double min_wall, min_gap;     /* the thinnest of each (INFINITY: none) */
     double wall_at[3], gap_at[3]; /* the world midpoint of each */
+    double wall_h, gap_h;         /* the spacing of the grid each was found on */
+    double volume;                /* the chords' lengths × h², summed: solid and space at stake */
 } rayscad_thin;
 
+/* thickness <= 0: each grid's own spacing. */
 void rayscad_sampling_thin(const rayscad_sampling *d, double thickness, rayscad_thin *out);
 
 /* An indexed triangle mesh: 3 floats a vertex, 3 indices a triangle,

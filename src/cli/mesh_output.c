@@ -82,14 +82,14 @@ static void warn_narrow(const char *kind, const char *extreme, const char *unit,
             kind, h, extreme, size, unit, at[0], at[1], at[2], rays, effect, measure);
 }
 
-static void warn_thin(const rayscad_thin *t, double h)
+static void warn_thin(const rayscad_thin *t)
 {
     if (t->walls)
-        warn_narrow("walls thinner", "the thinnest", "thick", h, t->min_wall, t->wall_at, t->walls,
-                    "lose them or have holes through them", "thickness");
+        warn_narrow("walls thinner", "the thinnest", "thick", t->wall_h, t->min_wall, t->wall_at,
+                    t->walls, "lose them or have holes through them", "thickness");
     if (t->gaps)
-        warn_narrow("gaps narrower", "the narrowest", "wide", h, t->min_gap, t->gap_at, t->gaps,
-                    "close them", "width");
+        warn_narrow("gaps narrower", "the narrowest", "wide", t->gap_h, t->min_gap, t->gap_at,
+                    t->gaps, "close them", "width");
 }
 
 /* Decimate (when asked) and write; 0 or 1 (printed). */
@@ -147,7 +147,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_
     double mesh_volume = 0;
     if (write_mesh) {
         rayscad_thin thin;
-        rayscad_sampling_thin(d, h, &thin);
+        rayscad_sampling_thin(d, 0, &thin);
         rc = rayscad_sampling_mesh(d, &mo, &msh, err, sizeof err);
         rayscad_sampling_free(d);
         d = NULL;
@@ -155,7 +155,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_
             cli_print_error(o, err);
             return 1;
         }
-        warn_thin(&thin, h);
+        warn_thin(&thin);
         if (rayscad_mesh_triangle_count(msh) == 0) {
             fprintf(stderr, "rayscad: error: %s: the model is empty; there is no mesh to write\n",
                     o->output);

@@ -642,19 +642,11 @@ static void cell(sweep *s, int i, int j, int mask)
     }
 }
 
-int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
+/* Contour one grid of a sampling, appending to m; 0 or -1 (message). */
+static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, char *err,
                         size_t errlen)
 {
-    *out = NULL;
-    mesh *m = calloc(1, sizeof *m);
-    if (!m) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    if (!d->off[0]) {
-        *out = m;
-        return 0;
-    }
+    if (!d->off[0]) return 0;
     sweep s;
     memset(&s, 0, sizeof s);
     s.d = d;
@@ -743,9 +735,24 @@ done:
     }
     free(s.faces.key);
     free(s.faces.val);
-    if (rc == 0)
-        *out = m;
-    else
-        mesh_free(m);
     return rc;
+}
+
+int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
+                        size_t errlen)
+{
+    *out = NULL;
+    mesh *m = calloc(1, sizeof *m);
+    if (!m) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    /* The grids cover disjoint boxes: their meshes are disjoint too. */
+    for (; d; d = d->next)
+        if (contour_grid(d, o, m, err, errlen) != 0) {
+            mesh_free(m);
+            return -1;
+        }
+    *out = m;
+    return 0;
 }

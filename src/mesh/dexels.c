@@ -54,21 +54,27 @@ void mesh_options_default(mesh_options *o)
     o->feature_angle_deg = 30;
     o->max_cells = 0;
     o->max_intervals = 0;
+    o->resolve_thin = 1;
 }
 
 void mesh_dexels_free(mesh_dexels *d)
 {
-    if (!d) return;
-    for (int a = 0; a < 3; a++) {
-        free(d->off[a]);
-        free(d->hit[a]);
+    while (d) {
+        mesh_dexels *next = d->next;
+        for (int a = 0; a < 3; a++) {
+            free(d->off[a]);
+            free(d->hit[a]);
+        }
+        free(d);
+        d = next;
     }
-    free(d);
 }
 
 void mesh_dexels_grid(const mesh_dexels *d, double *h, double origin[3], int n[3])
 {
     *h = d->h;
+    for (const mesh_dexels *e = d->next; e; e = e->next)
+        *h = fmax(*h, e->h);
     for (int a = 0; a < 3; a++) {
         origin[a] = d->org[a];
         n[a] = d->n[a];
@@ -290,45 +296,14 @@ static int thread_count(const mesh_options *o)
     return n > 256 ? 256 : n;
 }
 
-int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **out, char *err,
-                    size_t errlen)
+int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const double lo[3],
+                     const double hi[3], mesh_dexels **out, char *err, size_t errlen)
 {
-    mesh_options def;
-    mesh_options_default(&def);
-    const mesh_options *o = opt ? opt : &def;
     *out = NULL;
     mesh_dexels *d = calloc(1, sizeof *d);
     if (!d) {
         snprintf(err, errlen, "out of memory");
         return -1;
-    }
-    double lo[3], hi[3];
-    if (o->root < 0 || o->root >= csg_scene_root_count(s) ||
-        csg_scene_bounds(s, o->root, lo, hi) != 0) {
-        *out = d; /* empty: n = 0, no rays */
-        return 0;
-    }
-    double longest = 0;
-    for (int a = 0; a < 3; a++) {
-        if (!isfinite(lo[a]) || !isfinite(hi[a])) {
-            snprintf(err, errlen, "the model is unbounded (infinite along %c); cannot mesh it",
-                     "xyz"[a]);
-            free(d);
-            return -1;
-        }
-        if (hi[a] - lo[a] > longest) longest = hi[a] - lo[a];
-    }
-    double h = o->h;
-    if (!(h > 0)) {
-        int cells = o->cells_per_side > 0 ? o->cells_per_side : 128;
-        /* Rounded to float precision: that drops the 1e-9 relative padding
-         * csg_scene_bounds adds, so a model whose longest side is 8 gets
-         * h = 8/128 exactly, and its faces lie midway between nodes. */
-        h = (double)(float)(longest / cells);
-    }
-    if (!(h > 0) || !isfinite(h)) {
-        *out = d; /* a point: nothing to sample */
-        return 0;
     }
     d->h = h;
     size_t rays = 1;
@@ -381,7 +356,7 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
 
 /* ---- measuring ---------------------------------------------------------- */
 
-void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
+static void measure_grid(const mesh_dexels *d, mesh_measure *m)
 {
     memset(m, 0, sizeof *m);
     for (int a = 0; a < 3; a++) {
@@ -443,14 +418,35 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
         m->centroid[c] = vol > 0 ? d->org[c] + mom[c] / vol : 0;
 }
 
+void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *m)
+{
+    measure_grid(d, m);
+    double mom[3];
+    for (int c = 0; c < 3; c++)
+        mom[c] = m->centroid[c] * m->volume;
+    for (d = d->next; d; d = d->next) {
+        mesh_measure e;
+        measure_grid(d, &e);
+        m->volume += e.volume;
+        m->area += e.area;
+        m->crossings += e.crossings;
+        for (int c = 0; c < 3; c++) {
+            mom[c] += e.centroid[c] * e.volume;
+            m->lo[c] = fmin(m->lo[c], e.lo[c]);
+            m->hi[c] = fmax(m->hi[c], e.hi[c]);
+        }
+    }
+    for (int c = 0; c < 3; c++)
+        m->centroid[c] = m->volume > 0 ? mom[c] / m->volume : 0;
+}
+
 /* ---- thin features ------------------------------------------------------ */
 
-void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
+static void thin_grid(const mesh_dexels *d, double thickness, mesh_thin *out)
 {
-    memset(out, 0, sizeof *out);
-    out->min_wall = out->min_gap = INFINITY;
     if (!d->off[0]) return;
     double h = d->h;
+    if (!(thickness > 0)) thickness = h;
     for (int a = 0; a < 3; a++) {
         int u, v;
         mesh_axes_other(a, &u, &v);
@@ -473,8 +469,10 @@ void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
                     out->walls++;
                 else
                     out->gaps++;
+                out->volume += (hp[k + 1].t - hp[k].t) * h * h;
                 if (w < *best) {
                     *best = w;
+                    *(wall ? &out->wall_h : &out->gap_h) = h;
                     at[a] = d->org[a] + 0.5 * (hp[k].t + hp[k + 1].t);
                     at[u] = d->org[u] + (double)(r % rowlen) * h;
                     at[v] = d->org[v] + (double)(r / rowlen) * h;
@@ -482,4 +480,12 @@ void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
             }
         }
     }
+}
+
+void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
+{
+    memset(out, 0, sizeof *out);
+    out->min_wall = out->min_gap = INFINITY;
+    for (; d; d = d->next)
+        thin_grid(d, thickness, out);
 }

@@ -27,7 +27,26 @@ struct mesh_dexels {
     size_t *off[3];
     mesh_hit *hit[3];
     size_t nhit[3];
+    /* The next grid, over a part of the model far from this one's
+     * (mesh_dexels_new samples such parts each on its own grid). */
+    struct mesh_dexels *next;
 };
+
+/* A box of the model sampled on a grid of its own (pieces.c). */
+typedef struct mesh_piece {
+    double lo[3], hi[3];
+} mesh_piece;
+
+/* The far-apart parts of root: boxes no two of whose grids (spacing h, or
+ * the box's longest side / cells when h <= 0) meet.  Their number (0 for an
+ * empty root) and the boxes in *out (free), or -1 when out of memory. */
+int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **out);
+
+/* Cast the three families on one grid of spacing h around [lo, hi] (the
+ * caller's options for threads, root and limits) into a new sampling *out;
+ * 0, or an error code with a message (as mesh_dexels_new). */
+int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const double lo[3],
+                     const double hi[3], mesh_dexels **out, char *err, size_t errlen);
 
 /* The other two axes of a, in increasing order. */
 static inline void mesh_axes_other(int a, int *u, int *v)

@@ -51,15 +51,17 @@ void mesh_options_default(mesh_options *o);
  * memory (a few dozen bytes per crossing plus one offset per ray). */
 typedef struct mesh_dexels mesh_dexels;
 
-/* Cast the rays through root o->root of s (o may be NULL: defaults).  The
+/* Cast the rays through root o->root of s (o may be NULL: defaults), on one
+ * grid for each far-apart part of the model, of spacing o->h or chosen as
+ * grids.c says (refined for thin parts when o->resolve_thin).  The
  * scene is borrowed for the duration of the call only.  An empty root, or a
  * root index out of range, gives an empty sampling (volume 0, empty mesh).
  * The result does not depend on the number of threads.  Returns 0 and the sampling in
  * *out (owned by the caller, free with mesh_dexels_free), or with a message
- * in err (errlen bytes) RAYSCAD_ERROR_CELLS (checked before anything is cast or
- * allocated for the grid), RAYSCAD_ERROR_INTERVALS, or -1: unbounded root (a
- * halfspace left unintersected), a grid larger than 65536 cells per side or
- * 2^31 rays per family, out of memory. */
+ * in err (errlen bytes) RAYSCAD_ERROR_CELLS (each grid checked before it is
+ * cast; a refinement that would pass the limit is not made), RAYSCAD_ERROR_INTERVALS, or -1:
+ * unbounded root (a halfspace left unintersected), a grid larger than 65536 cells per side or 2^31
+ * rays per family, out of memory. */
 int mesh_dexels_new(const csg_scene *s, const mesh_options *o, mesh_dexels **out, char *err,
                     size_t errlen);
 void mesh_dexels_free(mesh_dexels *d);
@@ -88,6 +90,18 @@ void mesh_dexels_measure(const mesh_dexels *d, mesh_measure *out);
  * than the limit, which a grid of that spacing can miss entirely (both
  * faces between two nodes) or show with holes. */
 #define MESH_THIN_COS (-0.9)
+
+/* Refining the default grid (rayscad_mesh_options.resolve_thin): walls and
+ * gaps thinner than MESH_REFINE_CELLS cells count when they hold more than
+ * MESH_REFINE_SHARE of the volume; the grid may become up to
+ * MESH_REFINE_MAX times finer, in up to MESH_REFINE_ROUNDS resamplings,
+ * while the crossings stay within about MESH_REFINE_CROSSINGS (the
+ * contour's output grows with them: about 2 triangles each). */
+#define MESH_REFINE_CELLS 4.0
+#define MESH_REFINE_SHARE 1e-3
+#define MESH_REFINE_MAX 16.0
+#define MESH_REFINE_ROUNDS 3
+#define MESH_REFINE_CROSSINGS (1 << 20)
 
 /* Find walls and gaps thinner than `thickness` (model units; the grid
  * spacing is the limit a contour can resolve).  Never fails. */

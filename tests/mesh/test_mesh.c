@@ -872,6 +872,82 @@ Test(mesh_thin, curved_solids_are_not_thin)
     csg_scene_free(s);
 }
 
+/* ---- the default grid: far-apart parts and thin parts ------------------- */
+
+/* Mesh s with the default grid (o.h = 0), resolve_thin as given; the
+ * mesh, and the spacing reported. */
+static mesh *contour_default(const csg_scene *s, int resolve_thin, double *h)
+{
+    mesh_options o;
+    mesh_options_default(&o);
+    o.threads = 2;
+    o.resolve_thin = resolve_thin;
+    mesh_dexels *d;
+    char err[256] = "";
+    cr_assert(mesh_dexels_new(s, &o, &d, err, sizeof err) == 0, "%s", err);
+    double org[3];
+    int n[3];
+    mesh_dexels_grid(d, h, org, n);
+    mesh *m = NULL;
+    cr_assert(mesh_dexels_contour(d, &o, &m, err, sizeof err) == 0, "%s", err);
+    mesh_dexels_free(d);
+    return m;
+}
+
+Test(mesh_contour, far_apart_parts_get_grids_of_their_own)
+{
+    /* A sphere of radius 1 and a unit cube 1000 apart: one grid over both
+     * would have 7.8-unit cells and lose the sphere; each gets its own
+     * (the cube's 1/128, the sphere's 2/128: the largest is reported). */
+    csg_node *u = csg_node_op(CSG_OP_UNION);
+    cr_assert(csg_node_add(u, sphere_node(1, 0.1, 0.2, 0.3)) == 0);
+    cr_assert(csg_node_add(u, box_node(1000, 0, 0, 1001, 1, 1)) == 0);
+    csg_scene *s = scene_of(u);
+    double h;
+    mesh *m = contour_default(s, 1, &h);
+    double v = 4.0 / 3 * PI + 1;
+    cr_log_info("far apart: h %g, %d triangles, volume %.6f (exact %.6f)", h,
+                mesh_triangle_count(m), volume_of(m), v);
+    cr_assert_null(check_manifold(m));
+    cr_assert_float_eq(h, (double)(float)(2.0 / 128), 1e-12);
+    cr_assert_lt(fabs(volume_of(m) - v), 1e-3 * v, "volume %.6f, exact %.6f", volume_of(m), v);
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    const float *p = mesh_vertices(m);
+    for (int q = 0; q < mesh_vertex_count(m); q++)
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], p[3 * q + c]);
+            hi[c] = fmax(hi[c], p[3 * q + c]);
+        }
+    cr_assert_float_eq(lo[0], -0.9, 0.02);
+    cr_assert_float_eq(hi[0], 1001, 1e-4);
+    mesh_free(m);
+    csg_scene_free(s);
+}
+
+Test(mesh_contour, default_grid_resolves_a_thin_gap)
+{
+    /* Two 40 x 40 plates 0.2 apart: the default grid (0.3125, nodes at
+     * z = 2.031 and 2.344) would close the gap (+5 % volume, the plates
+     * fused); refined, the mesh is the two boxes. */
+    csg_node *u = csg_node_op(CSG_OP_UNION);
+    cr_assert(csg_node_add(u, box_node(0, 0, 0, 40, 40, 2.05)) == 0);
+    cr_assert(csg_node_add(u, box_node(0, 0, 2.25, 40, 40, 4.25)) == 0);
+    csg_scene *s = scene_of(u);
+    double v = 40 * 40 * 4.05, h;
+    mesh *coarse = contour_default(s, 0, &h);
+    cr_log_info("thin gap, not refined: h %g, volume %.6f", h, volume_of(coarse));
+    cr_assert_gt(volume_of(coarse), v * 1.01, "the coarse grid kept the gap?");
+    mesh_free(coarse);
+    mesh *m = contour_default(s, 1, &h);
+    cr_log_info("thin gap, refined: h %g, %d triangles, volume %.6f", h, mesh_triangle_count(m),
+                volume_of(m));
+    cr_assert_null(check_manifold(m));
+    cr_assert_lt(h, 0.2, "spacing %g does not resolve a 0.2 gap", h);
+    cr_assert_lt(fabs(volume_of(m) - v), 1e-6 * v, "volume %.6f", volume_of(m));
+    mesh_free(m);
+    csg_scene_free(s);
+}
+
 /* ---- the TriMesh built for OpenMesh ------------------------------------- */
 
 Test(mesh_io, write_rejects_non_manifold_and_accepts_open)

@@ -1,0 +1,198 @@
+/*
+ * grids.c — which grids sample a model: mesh_dexels_new.
+ *
+ * With a spacing given (mesh_options.h > 0) every far-apart part of the
+ * model (pieces.c) is cast on a grid of that spacing.  The default spacing
+ * follows what is there to sample:
+ *
+ *   - Each part's own size: its longest side / cells_per_side, so a small
+ *     part far from a large one is not sampled by the large one's cells.
+ *     Parts on grids of their own may not spend more than
+ *     MESH_PARTS_CROSSINGS together (a pilot of PILOT_CELLS per side
+ *     predicts each one's crossings, which grow as 1/h²); over that, the
+ *     model is sampled on one grid, its longest side / cells_per_side.
+ *   - Thin walls and gaps: where those thinner than MESH_REFINE_CELLS cells
+ *     hold more than MESH_REFINE_SHARE of a part's volume, the part is cast
+ *     again up to MESH_REFINE_MAX times finer (a whole factor), while its
+ *     share of MESH_REFINE_CROSSINGS allows, in up to MESH_REFINE_ROUNDS
+ *     rounds (a finer grid can find thin parts a coarser one missed).
+ */
+#include "dexels.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* The most crossings that far-apart parts may have on grids of their own
+ * (before refinement): about 4 times what a 128-cell grid finds on a plain
+ * part.  More, and the model is sampled on one grid. */
+#define MESH_PARTS_CROSSINGS (1 << 18)
+/* The cells per side of the pilot sampling that predicts the crossings. */
+#define PILOT_CELLS 32.0
+
+static double longest_side(const mesh_piece *p)
+{
+    double l = 0;
+    for (int a = 0; a < 3; a++)
+        l = fmax(l, p->hi[a] - p->lo[a]);
+    return l;
+}
+
+/* Crossings of a sampling (all its grids). */
+static long long crossings(const mesh_dexels *d)
+{
+    mesh_measure m;
+    mesh_dexels_measure(d, &m);
+    return m.crossings;
+}
+
+/* How much finer than h0 the thin walls and gaps of *d ask for: 1 when they
+ * hold too little of the volume to matter (or none are found), else the
+ * whole factor that puts MESH_REFINE_CELLS cells across the thinnest,
+ * within MESH_REFINE_MAX and `budget` crossings. */
+static int refine_factor(const mesh_dexels *d, double h0, double budget)
+{
+    mesh_thin t;
+    mesh_measure m;
+    mesh_dexels_thin(d, MESH_REFINE_CELLS * d->h, &t);
+    mesh_dexels_measure(d, &m);
+    if (!(t.volume > MESH_REFINE_SHARE * m.volume)) return 1;
+    double want = h0 * MESH_REFINE_CELLS / fmin(t.min_wall, t.min_gap);
+    double room = h0 / d->h * sqrt(budget / (double)(m.crossings + 1));
+    double k = floor(fmin(ceil(want), fmin(room, MESH_REFINE_MAX)));
+    return k > 1 ? (int)k : 1;
+}
+
+/* Cast one part at spacing h, refined for thin parts within `budget`
+ * crossings when `refine`; 0, or an error code with a message. */
+static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece *p, double h,
+                     int refine, double budget, mesh_dexels **out, char *err, size_t errlen)
+{
+    *out = NULL;
+    if (!(h > 0) || !isfinite(h)) return 0; /* a point: nothing to sample */
+    mesh_dexels *d;
+    int rc = mesh_dexels_cast(s, o, h, p->lo, p->hi, &d, err, errlen);
+    for (int round = 0, k = 1; rc == 0 && refine && round < MESH_REFINE_ROUNDS; round++) {
+        int f = refine_factor(d, h, budget);
+        if (f <= k) break;
+        mesh_dexels *finer;
+        rc = mesh_dexels_cast(s, o, (double)(float)(h / f), p->lo, p->hi, &finer, err, errlen);
+        if (rc == RAYSCAD_ERROR_CELLS) {
+            rc = 0; /* keep the coarser one */
+            break;
+        }
+        if (rc != 0) break;
+        mesh_dexels_free(d);
+        d = finer;
+        k = f;
+    }
+    if (rc != 0) {
+        mesh_dexels_free(d);
+        return rc;
+    }
+    *out = d;
+    return 0;
+}
+
+/* Predict each part's crossings at spacing h[i] into pred[i], from a pilot
+ * of PILOT_CELLS per side (they grow as 1/h²); 0 or an error code. */
+static int predict(const csg_scene *s, const mesh_options *o, const mesh_piece *p, int np,
+                   const double *h, double *pred, char *err, size_t errlen)
+{
+    mesh_options pilot = *o;
+    pilot.max_cells = 0;
+    for (int i = 0; i < np; i++) {
+        double hp = fmax(longest_side(&p[i]) / PILOT_CELLS, h[i]);
+        mesh_dexels *d;
+        int rc = mesh_dexels_cast(s, &pilot, hp, p[i].lo, p[i].hi, &d, err, errlen);
+        if (rc != 0) return rc;
+        pred[i] = (double)crossings(d) * (hp / h[i]) * (hp / h[i]);
+        mesh_dexels_free(d);
+    }
+    return 0;
+}
+
+/* The default spacings of the parts (see the top of the file), and each
+ * one's predicted crossings; 0 or an error code. */
+static int default_spacings(const csg_scene *s, const mesh_options *o, mesh_piece *p, int *np,
+                            const double lo[3], const double hi[3], double *h, double *pred,
+                            char *err, size_t errlen)
+{
+    int cells = o->cells_per_side > 0 ? o->cells_per_side : 128;
+    /* Rounded to float precision: that drops the 1e-9 relative padding
+     * csg_scene_bounds adds, so a model whose longest side is 8 gets
+     * h = 8/128 exactly, and its faces lie midway between nodes. */
+    for (int i = 0; i < *np; i++)
+        h[i] = (double)(float)(longest_side(&p[i]) / cells);
+    pred[0] = 1;
+    if (*np == 1) return 0;
+    int rc = predict(s, o, p, *np, h, pred, err, errlen);
+    if (rc != 0) return rc;
+    double total = 0;
+    for (int i = 0; i < *np; i++)
+        total += pred[i];
+    if (total > MESH_PARTS_CROSSINGS) { /* too many parts: one grid */
+        *np = 1;
+        for (int a = 0; a < 3; a++) {
+            p[0].lo[a] = lo[a];
+            p[0].hi[a] = hi[a];
+        }
+        h[0] = (double)(float)(longest_side(&p[0]) / cells);
+        pred[0] = 1;
+    }
+    return 0;
+}
+
+int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **out, char *err,
+                    size_t errlen)
+{
+    mesh_options def;
+    mesh_options_default(&def);
+    const mesh_options *o = opt ? opt : &def;
+    *out = NULL;
+    double lo[3], hi[3];
+    int np = 0, rc = 0;
+    mesh_piece *p = NULL;
+    if (o->root >= 0 && o->root < csg_scene_root_count(s) &&
+        csg_scene_bounds(s, o->root, lo, hi) == 0) {
+        for (int a = 0; a < 3; a++)
+            if (!isfinite(lo[a]) || !isfinite(hi[a])) {
+                snprintf(err, errlen, "the model is unbounded (infinite along %c); cannot mesh it",
+                         "xyz"[a]);
+                return -1;
+            }
+        np = mesh_pieces(s, o->root, o->h, o->cells_per_side > 0 ? o->cells_per_side : 128, &p);
+    }
+    double *h = np > 0 ? malloc(2 * (size_t)np * sizeof *h) : NULL;
+    if (np < 0 || (np > 0 && !h)) {
+        free(p);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    double *pred = h + np, total = 0;
+    int dflt = !(o->h > 0);
+    if (dflt && np > 0) rc = default_spacings(s, o, p, &np, lo, hi, h, pred, err, errlen);
+    for (int i = 0; i < np; i++) {
+        if (!dflt) h[i] = o->h;
+        total += dflt ? pred[i] : 1;
+    }
+    mesh_dexels *head = NULL, **tail = &head;
+    for (int i = 0; i < np && rc == 0; i++) {
+        double budget = MESH_REFINE_CROSSINGS * (pred[i] / total);
+        rc = cast_part(s, o, &p[i], h[i], dflt && o->resolve_thin, budget, tail, err, errlen);
+        if (*tail) tail = &(*tail)->next;
+    }
+    free(p);
+    free(h);
+    if (rc != 0) {
+        mesh_dexels_free(head);
+        return rc;
+    }
+    if (!head) head = calloc(1, sizeof *head); /* empty: n = 0, no rays */
+    if (!head) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    *out = head;
+    return 0;
+}
