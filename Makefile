@@ -62,6 +62,10 @@ MESH_IMPORT_CFLAGS := $(shell pkg-config --cflags libxml-2.0 libzip 2>/dev/null)
 MESH_IMPORT_LIBS := $(or $(shell pkg-config --libs libxml-2.0 2>/dev/null),-lxml2) \
 	$(or $(shell pkg-config --libs lib3MF 2>/dev/null),-l3MF -lzip -lz) \
 	$(or $(shell pkg-config --libs libzip 2>/dev/null),-lzip)
+# json-c reads customizer parameter files (-p, src/cli/params.c): the
+# command's, not the library's.
+JSON_CFLAGS := $(shell pkg-config --cflags json-c 2>/dev/null)
+JSON_LIBS := $(or $(shell pkg-config --libs json-c 2>/dev/null),-ljson-c)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
 LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
@@ -73,7 +77,7 @@ DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenme
 	libcriterion-dev pkg-config g++ make \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
 	clang libclang-rt-dev man-db \
-	libxml2-dev libzip-dev lib3mf-dev
+	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
 	src/rayscad/*.c \
@@ -174,7 +178,13 @@ $(BUILD)/$(SO_NAME): $(LIB_PIC) $(BUILD)/exports.map
 	ln -sf $(SO_NAME) $(BUILD)/librayscad.so
 
 $(BUILD)/rayscad: $(CLI_OBJ) $(BUILD)/librayscad.a
-	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS)
+	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS) $(JSON_LIBS)
+
+$(BUILD)/obj/src/cli/params.o: CFLAGS += $(JSON_CFLAGS)
+
+# tests/cli/test_params.c tests src/cli/params.c, which is not in the library.
+$(BUILD)/tests/cli/test_params: $(BUILD)/obj/src/cli/params.o
+$(BUILD)/tests/cli/test_params: LDLIBS += $(JSON_LIBS)
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(BUILD)/librayscad.a
 	@mkdir -p $(dir $@)
@@ -257,6 +267,8 @@ unit: all
 
 cli: all
 	tests/cli/cli_test.sh $(BUILD)
+	tests/cli/openscad_flags.sh $(BUILD)
+	tests/cli/params_test.sh $(BUILD)
 
 compare: all
 	tests/cli/compare_openscad.sh $(BUILD)

@@ -13,7 +13,7 @@
  *     rayscad_image_write     pixels → PNG, JPEG, TIFF, EXR … (OpenImageIO)
  *     rayscad_sampling_new    the scene's solid sampled by three ray families
  *     rayscad_sampling_mesh   … contoured into a closed triangle mesh
- *     rayscad_mesh_write      … written as STL, OFF, OBJ or PLY (OpenMesh)
+ *     rayscad_mesh_write      … written as STL, OFF, OBJ, PLY (OpenMesh), AMF or 3MF
  *
  * Conventions:
  * - Every fallible call returns a rayscad_status: RAYSCAD_OK (0), or a
@@ -50,6 +50,12 @@ extern "C" {
 
 /* The library's version string, as built (may differ from the header's). */
 const char *rayscad_version(void);
+
+/* The libraries rayscad runs with, one "name: version" line each
+ * (OpenImageIO, OpenMesh, lib3mf, FreeType, HarfBuzz, fontconfig, the
+ * fonts fontconfig knows), NUL-terminated, into buf (len bytes, truncated
+ * to fit).  Loads the image adapter to ask OpenImageIO. */
+void rayscad_library_info(char *buf, size_t len);
 
 /* ---- status ------------------------------------------------------------------ */
 
@@ -111,7 +117,41 @@ typedef struct rayscad_services {
      * top, sRGB-encoded in [0, 1]. */
     int (*read_image)(void *ud, const char *path, int *width, int *height, int *channels,
                       float **pixels, char *err, size_t errlen);
+    /* Told of every file the evaluation has read (the main file, include,
+     * use, imports, surfaces, the font files text() opened), as the path
+     * it was opened by, each time it is read: openscad's -d. */
+    void (*file_read)(void *ud, const char *path);
+    /* Asked for a file to import (a mesh, DXF, SVG, image or .dat) that
+     * does not exist, before it is read: openscad's -m runs make for it.
+     * The library reads it after the call either way. */
+    void (*make_file)(void *ud, const char *path);
 } rayscad_services;
+
+/* An OpenSCAD value's type. */
+typedef enum rayscad_value_type {
+    RAYSCAD_VALUE_UNDEF = 0,
+    RAYSCAD_VALUE_BOOL,
+    RAYSCAD_VALUE_NUMBER,
+    RAYSCAD_VALUE_STRING,
+    RAYSCAD_VALUE_VECTOR,
+    RAYSCAD_VALUE_RANGE,
+    RAYSCAD_VALUE_FUNCTION
+} rayscad_value_type;
+
+/* A file's top-level assignments as openscad's customizer sees them (see
+ * rayscad_eval_options.parameters): the main file's and its include<>d
+ * files', one per name (a later assignment of a name keeps the first's
+ * place), then the -D names the file lacks.  default_type(ctx, i)
+ * evaluates assignment i's expression, after the -D overrides, in an empty
+ * context as openscad 2021.01 does (no variables, no functions: `sin(30)`
+ * and `k + 1` are undef, `2 * 3` is a number), its warnings through the
+ * message callback, and returns the value's type. */
+typedef struct rayscad_parameter_query {
+    int count;
+    const char *const *names;
+    rayscad_value_type (*default_type)(void *ctx, int i);
+    void *ctx;
+} rayscad_parameter_query;
 
 /* How round primitives are built: SMOOTH exact; OPENSCAD the polytope or
  * polygon OpenSCAD 2021.01 tessellates them into; AUTO smooth, unless the
@@ -146,6 +186,24 @@ typedef struct rayscad_eval_options {
      * variable. */
     const char *library_path;
     const rayscad_services *services; /* NULL: the library's own */
+    /* openscad's --hardwarnings: the first warning stops the evaluation as
+     * an error does (the load fails). */
+    int hard_warnings;
+    /* openscad's --check-parameters=false: no "variable x not specified as
+     * parameter" for user modules and functions (0, the default, warns). */
+    int no_parameter_check;
+    /* openscad's --check-parameter-ranges=true: its warnings for cube,
+     * square, circle, sphere and cylinder sizes <= 0 (off by default). */
+    int range_check;
+    /* openscad's customizer parameter sets (-p, -P), may be NULL: called
+     * once the file is parsed and the -D overrides applied, before
+     * anything is evaluated.  It returns 0 and, in *overrides (kept alive
+     * by the caller until the load returns), *count more "name=value"
+     * overrides, applied as the -D ones are; or -1 to fail the load (the
+     * hook has said why). */
+    int (*parameters)(void *ud, const rayscad_parameter_query *q, const char *const **overrides,
+                      int *count);
+    void *parameters_ud;
 } rayscad_eval_options;
 
 /* An evaluated file: its top-level objects, the '#' and '%' subtrees, and
@@ -271,6 +329,8 @@ typedef struct rayscad_colors {
  * "BeforeDawn", "Nature", "DeepOcean", "Solarized", "Tomorrow", "Tomorrow
  * Night", "Monotone") into *out: RAYSCAD_OK, or RAYSCAD_ERROR_ARGUMENT. */
 rayscad_status rayscad_colors_by_name(const char *name, rayscad_colors *out);
+/* The name of scheme i, in OpenSCAD's order from 0; NULL past the last. */
+const char *rayscad_colors_name(int i);
 
 /* A point light, or with radius > 0 a spherical area light whose shadow
  * rays are spread, stratified, over the disc it shows each shaded point. */
@@ -452,12 +512,15 @@ double rayscad_mesh_volume(const rayscad_mesh *m);            /* signed: positiv
 rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_mesh **out,
                                      char *err, size_t errlen);
 
-/* 1 when the extension of path is a mesh format: stl, off, obj, ply. */
+/* 1 when the extension of path (any case) is a mesh format: stl, off,
+ * obj, ply, amf, 3mf. */
 int rayscad_mesh_format_supported(const char *path);
 
-/* Write m through OpenMesh in the format of path's extension (STL and PLY
- * binary unless ascii; OFF and OBJ text), to a temporary file beside path
- * renamed into place. */
+/* Write m in the format of path's extension: STL and PLY binary unless
+ * ascii, OFF and OBJ text (OpenMesh); AMF as openscad 2021.01 writes it;
+ * 3MF through lib3mf (one object, one build item, millimetres; ascii does
+ * not apply).  The file goes to a temporary name beside path, renamed into
+ * place. */
 rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int ascii, char *err,
                                   size_t errlen);
 

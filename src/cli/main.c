@@ -1,10 +1,17 @@
 /*
  * main.c — the rayscad command: parse the flags, evaluate the .scad file
- * into a model, commit it to a scene, and write what -o asks for (the
- * output's kind comes from its extension; each kind has one branch in
- * main's dispatch).  A thin user of include/rayscad.h: only main and the
- * writers it calls print, and main chooses the exit codes: 0 ok, 1 the
- * model or the output failed (a limit hit included), 2 usage.
+ * into a model, commit it to a scene, and write every -o (outputs.c says
+ * which format each one is).  A thin user of include/rayscad.h: only main
+ * and the writers it calls print, and main chooses the exit codes: 0 ok, 1
+ * the model or an output failed (a limit hit included), 2 usage.
+ *
+ * Evaluations: as openscad 2021.01, $preview is true for images (unless
+ * --render), .echo and .csg, and false for meshes and --measure, so a run
+ * evaluates the file at most once for each: the tree outputs (.echo, .csg:
+ * one evaluation without geometry), the preview model (images) and the
+ * rendered model (meshes, --measure, --render images).  Messages reach
+ * stderr (or the .echo) from the first of them only.  --animate N does all
+ * of it N times with $t = i/N, each output named as openscad names frames.
  *
  * Memory: main caps the process's data (memory.c) at --max-memory before
  * anything is evaluated, so a model that asks for too much sees its
@@ -12,9 +19,13 @@
  * memory" error, which the command prints with the limit named — instead
  * of the machine swapping or the kernel killing it.
  */
+#include "deps.h"
+#include "info.h"
 #include "memory.h"
 #include "mesh_output.h"
 #include "options.h"
+#include "outputs.h"
+#include "params.h"
 #include "progress.h"
 #include "settings.h"
 
@@ -25,9 +36,11 @@
 
 enum { EXIT_MODEL = 1, EXIT_USAGE = 2 };
 
-/* Messages from the evaluator: kept for an .echo output, else printed. */
+/* Messages from the evaluator: kept for an .echo output, else printed
+ * (only errors with -q, and only errors once an earlier evaluation of the
+ * same frame has said the rest). */
 typedef struct messages {
-    int to_buffer;
+    int to_buffer, errors_only;
     char *buf;
     size_t len, cap;
     const cli_options *o;
@@ -37,7 +50,9 @@ static void on_message(void *ud, rayscad_message_kind kind, const char *line)
 {
     messages *m = ud;
     if (kind == RAYSCAD_MSG_TRACE && !m->to_buffer) return; /* the ERROR line said it */
-    if (!m->to_buffer || kind == RAYSCAD_MSG_ERROR || kind == RAYSCAD_MSG_NOTE) {
+    int error = kind == RAYSCAD_MSG_ERROR || kind == RAYSCAD_MSG_NOTE;
+    if (!m->to_buffer || error) {
+        if (!error && (m->errors_only || m->o->quiet)) return;
         /* An error (file:line:col: error: …) that was an allocation
          * failing gets the memory limit's note here; the .echo keeps
          * OpenSCAD's wording. */
@@ -61,26 +76,163 @@ static void on_message(void *ud, rayscad_message_kind kind, const char *line)
     m->buf[m->len++] = '\n';
 }
 
-static int has_extension(const char *path, const char *ext)
+/* -p/-P: the parameter set's values as more -D overrides, asked for by
+ * the library once the file is parsed (rayscad_eval_options.parameters). */
+typedef struct param_hook {
+    const cli_options *o;
+    messages *msgs;
+    const rayscad_parameter_query *q;
+    char **assign; /* the overrides made, freed after the load */
+    int n;
+} param_hook;
+
+static cli_param_type param_default_type(void *ud, int i)
 {
-    size_t n = strlen(path), e = strlen(ext);
-    if (n < e) return 0;
-    for (size_t i = 0; i < e; i++) {
-        char c = path[n - e + i];
-        if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
-        if (c != ext[i]) return 0;
-    }
-    return 1;
+    const param_hook *h = ud;
+    return (cli_param_type)h->q->default_type(h->q->ctx, i); /* the same order */
 }
 
-static int write_image(const cli_options *o, const rayscad_scene *scene)
+static void param_message(void *ud, const char *line)
+{
+    const param_hook *h = ud;
+    on_message(h->msgs, RAYSCAD_MSG_WARNING, line);
+}
+
+static int apply_param_set(void *ud, const rayscad_parameter_query *q,
+                           const char *const **overrides, int *count)
+{
+    param_hook *h = ud;
+    h->q = q;
+    cli_param_file f = {q->count, q->names, param_default_type, param_message, h};
+    char msg[1024], line[1100];
+    int rc =
+        cli_params_load(h->o->param_file, h->o->param_set, &f, &h->assign, &h->n, msg, sizeof msg);
+    if (rc == CLI_PARAMS_FATAL) {
+        fprintf(stderr, "rayscad: error: %s\n", msg);
+        return -1;
+    }
+    if (rc == CLI_PARAMS_ERROR) { /* openscad's words, and it goes on */
+        snprintf(line, sizeof line, "ERROR: %s", msg);
+        on_message(h->msgs, RAYSCAD_MSG_WARNING, line);
+    }
+    *overrides = (const char *const *)h->assign;
+    *count = h->n;
+    return 0;
+}
+
+/* One run's outputs: what each is, and its name in the current frame. */
+typedef struct run {
+    cli_options *o;
+    const char *src; /* the model from stdin ("-"), else NULL */
+    cli_output out[CLI_MAX_OUTPUTS];
+    const char *path[CLI_MAX_OUTPUTS];
+    char frame_path[CLI_MAX_OUTPUTS][4096];
+    int n;
+    const char *defines[CLI_MAX_DEFINES + 1]; /* o's, then $t when animating */
+    int define_count;
+    int said; /* an evaluation of this frame has shown its messages */
+} run;
+
+static double seconds_since(const struct timespec *t0)
+{
+    struct timespec t1;
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    return (double)(t1.tv_sec - t0->tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0->tv_nsec);
+}
+
+static void debug_time(const cli_options *o, const char *what, const struct timespec *t0)
+{
+    if (o->debug) fprintf(stderr, "rayscad: debug: %s in %.3f s\n", what, seconds_since(t0));
+}
+
+/* Write bytes to output i; 0 or EXIT_MODEL (printed). */
+static int write_bytes(run *r, int i, const char *data, size_t len)
 {
     char err[512];
-    rayscad_render_options ro = o->optics; /* the light model; the rest is set here */
-    if (rayscad_colors_by_name(o->colorscheme, &ro.colors) != RAYSCAD_OK) {
-        fprintf(stderr, "rayscad: error: unknown colour scheme '%s'\n", o->colorscheme);
-        return EXIT_USAGE;
+    rayscad_status rc = RAYSCAD_ERROR;
+    if (cli_output_begin(&r->out[i], r->path[i], err, sizeof err) == 0) {
+        rc = rayscad_file_write(r->out[i].write, data, len, err, sizeof err);
+        if (cli_output_finish(&r->out[i], r->path[i], rc == RAYSCAD_OK, err, sizeof err) != 0)
+            rc = RAYSCAD_ERROR;
     }
+    if (rc != RAYSCAD_OK) cli_print_error(r->o, err);
+    return rc == RAYSCAD_OK ? 0 : EXIT_MODEL;
+}
+
+static void eval_options(run *r, messages *msgs, const rayscad_services *services, int for_mesh,
+                         param_hook *params, rayscad_eval_options *eo)
+{
+    const cli_options *o = r->o;
+    *params = (param_hook){.o = o, .msgs = msgs};
+    *eo = (rayscad_eval_options){
+        .defines = r->defines,
+        .define_count = r->define_count,
+        .message = on_message,
+        .message_ud = msgs,
+        .max_recursion = o->max_recursion,
+        .max_steps = o->max_steps,
+        .max_list = o->max_list,
+        .max_string = o->max_string,
+        .facets = o->facets,
+        /* openscad renders for a mesh: $preview is false, 2D objects
+         * beside 3D ones are left out */
+        .for_mesh = for_mesh,
+        .services = services,
+        .hard_warnings = o->hardwarnings,
+        .no_parameter_check = !o->check_parameters,
+        .range_check = o->check_parameter_ranges,
+        .parameters = o->param_file && o->param_set ? apply_param_set : NULL,
+        .parameters_ud = params,
+    };
+}
+
+static int has_kind(const run *r, output_kind k)
+{
+    for (int i = 0; i < r->n; i++)
+        if (r->out[i].kind == k) return 1;
+    return 0;
+}
+
+/* .echo and .csg: OpenSCAD's evaluated tree, no geometry — one evaluation
+ * for all of them.  As openscad, an .echo holds what the evaluation says
+ * (what came before an error and the error itself; the exit status still
+ * says the model failed), and a .csg the tree. */
+static int write_trees(run *r, const rayscad_services *services)
+{
+    int echo = has_kind(r, OUTPUT_ECHO), csg = has_kind(r, OUTPUT_CSG);
+    if (!echo && !csg) return 0;
+    messages msgs = {.to_buffer = echo, .errors_only = r->said, .o = r->o};
+    rayscad_eval_options eo;
+    param_hook params;
+    eval_options(r, &msgs, services, 0, &params, &eo);
+    char *text = NULL;
+    size_t len = 0;
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    int failed =
+        (r->src ? rayscad_csg_text_string("<stdin>", r->src, &eo, csg ? &text : NULL, &len)
+                : rayscad_csg_text(r->o->input, &eo, csg ? &text : NULL, &len)) != RAYSCAD_OK;
+    debug_time(r->o, "evaluated for .echo/.csg", &t0);
+    cli_params_free(params.assign, params.n);
+    r->said = 1;
+    int rc = 0;
+    for (int i = 0; i < r->n && !rc; i++) {
+        if (r->out[i].kind == OUTPUT_ECHO)
+            rc = write_bytes(r, i, msgs.buf ? msgs.buf : "", msgs.len);
+        else if (r->out[i].kind == OUTPUT_CSG && !failed)
+            rc = write_bytes(r, i, text, len);
+    }
+    free(text);
+    free(msgs.buf);
+    return rc ? rc : failed ? EXIT_MODEL : 0;
+}
+
+/* An image or a .pov of scene as output i. */
+static int write_image(run *r, int i, const cli_options *o, const rayscad_scene *scene)
+{
+    char err[512];
+    rayscad_render_options ro = o->optics;              /* the light model; the rest is set here */
+    rayscad_colors_by_name(o->colorscheme, &ro.colors); /* checked in main */
     rayscad_camera cam;
     if (rayscad_camera_frame(scene, &o->view, o->width, o->height, &cam, err, sizeof err) !=
         RAYSCAD_OK) {
@@ -93,22 +245,23 @@ static int write_image(const cli_options *o, const rayscad_scene *scene)
     ro.samples = o->samples;
     ro.threads = o->threads;
     ro.max_intervals = o->max_intervals;
-    if (has_extension(o->output, ".pov")) { /* the same scene and camera for POV-Ray */
+    if (r->out[i].kind == OUTPUT_POV) { /* the same scene and camera for POV-Ray */
         char *text;
         size_t len;
         rayscad_status rc = rayscad_pov_export(scene, &cam, &ro, &text, &len, err, sizeof err);
-        if (rc == RAYSCAD_OK) {
-            rc = rayscad_file_write(o->output, text, len, err, sizeof err);
-            free(text);
+        if (rc != RAYSCAD_OK) {
+            cli_print_error(o, err);
+            return EXIT_MODEL;
         }
-        if (rc != RAYSCAD_OK) cli_print_error(o, err);
-        return rc != RAYSCAD_OK ? EXIT_MODEL : 0;
+        int wrc = write_bytes(r, i, text, len);
+        free(text);
+        return wrc;
     }
     /* Before anything large is allocated, and only once the model has
      * evaluated (a failing one exits without the load). */
     cli_load_image_adapter();
     progress bar;
-    progress_start(&bar, "rendering");
+    progress_start(&bar, o->quiet ? NULL : "rendering");
     ro.progress = progress_update;
     ro.ud = &bar;
 
@@ -118,30 +271,117 @@ static int write_image(const cli_options *o, const rayscad_scene *scene)
         cli_print_error(o, err);
         return EXIT_MODEL;
     }
-    struct timespec t0, t1;
+    struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     rayscad_status rc = rayscad_render(scene, &cam, &ro, rgba, err, sizeof err);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double sec = seconds_since(&t0);
     progress_finish(&bar);
     if (rc == RAYSCAD_OK && getenv("RAYSCAD_STATS")) { /* render-only time, for bench/run.py */
-        double sec = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
         double rays = (double)o->width * o->height * o->samples * o->samples;
         fprintf(stderr, "rayscad: stats: %.0f rays in %.6f s, %.0f rays/s\n", rays, sec,
                 sec > 0 ? rays / sec : 0);
     }
+    debug_time(o, "rendered", &t0);
     if (rc == RAYSCAD_ERROR_INTERVALS) {
         fprintf(stderr, "rayscad: error: %s (--max-intervals)\n", err);
         free(rgba);
         return EXIT_MODEL;
     }
-    if (rc == RAYSCAD_OK)
-        rc = rayscad_image_write(o->output, o->width, o->height, 4, rgba, err, sizeof err);
+    if (rc == RAYSCAD_OK && cli_output_begin(&r->out[i], r->path[i], err, sizeof err) != 0)
+        rc = RAYSCAD_ERROR;
+    else if (rc == RAYSCAD_OK) {
+        rc = rayscad_image_write(r->out[i].write, o->width, o->height, 4, rgba, err, sizeof err);
+        if (cli_output_finish(&r->out[i], r->path[i], rc == RAYSCAD_OK, err, sizeof err) != 0)
+            rc = RAYSCAD_ERROR;
+    }
     free(rgba);
     if (rc != RAYSCAD_OK) {
         cli_print_error(o, err);
         return EXIT_MODEL;
     }
     return 0;
+}
+
+/* Evaluate the model in one mode (for_mesh: as openscad renders) and write
+ * the outputs that mode serves. */
+static int write_model_outputs(run *r, const rayscad_services *services, int for_mesh)
+{
+    int images = 0, meshes = 0;
+    for (int i = 0; i < r->n; i++) {
+        output_kind k = r->out[i].kind;
+        images += (k == OUTPUT_IMAGE || k == OUTPUT_POV) && r->o->render == for_mesh;
+        meshes += k == OUTPUT_MESH && for_mesh;
+    }
+    int measure = for_mesh && r->o->measure;
+    if (!images && !meshes && !measure) return 0;
+    cli_options fo = *r->o; /* this evaluation's: the file's settings and view join it */
+    messages msgs = {.errors_only = r->said, .o = &fo};
+    rayscad_eval_options eo;
+    param_hook params;
+    eval_options(r, &msgs, services, for_mesh, &params, &eo);
+    rayscad_model *model;
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    rayscad_status loaded = r->src ? rayscad_model_load_string("<stdin>", r->src, &eo, &model)
+                                   : rayscad_model_load(fo.input, &eo, &model);
+    debug_time(&fo, for_mesh ? "evaluated as rendered" : "evaluated for preview", &t0);
+    cli_params_free(params.assign, params.n);
+    r->said = 1;
+    if (loaded != RAYSCAD_OK) return EXIT_MODEL;
+
+    cli_settings_apply(&fo, model, fo.quiet ? NULL : stderr); /* the file's $rs_ settings */
+    if (fo.view.kind == RAYSCAD_CAMERA_DEFAULT)               /* the file's $vp* camera */
+        rayscad_model_file_view(model, &fo.view.file);
+    rayscad_scene *scene;
+    char err[512];
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    rayscad_status made = rayscad_scene_new(model, &scene, err, sizeof err);
+    rayscad_model_free(model);
+    debug_time(&fo, "scene built", &t0);
+    if (made != RAYSCAD_OK) {
+        cli_print_error(&fo, err);
+        return EXIT_MODEL;
+    }
+    int rc = 0;
+    for (int i = 0; i < r->n && !rc; i++)
+        if ((r->out[i].kind == OUTPUT_IMAGE || r->out[i].kind == OUTPUT_POV) &&
+            r->o->render == for_mesh)
+            rc = write_image(r, i, &fo, scene);
+    if (!rc && (meshes || measure)) {
+        cli_output mesh_out[CLI_MAX_OUTPUTS];
+        const char *mesh_path[CLI_MAX_OUTPUTS];
+        int n = 0;
+        for (int i = 0; i < r->n; i++)
+            if (r->out[i].kind == OUTPUT_MESH) {
+                mesh_out[n] = r->out[i];
+                mesh_path[n++] = r->path[i];
+            }
+        clock_gettime(CLOCK_MONOTONIC, &t0);
+        rc = cli_mesh_output(&fo, scene, mesh_out, mesh_path, n);
+        debug_time(&fo, "meshed and measured", &t0);
+    }
+    rayscad_scene_free(scene);
+    return rc;
+}
+
+/* Every output of one frame (frame < 0: not animating). */
+static int run_frame(run *r, int frame, int frames, const rayscad_services *services)
+{
+    char t[64];
+    r->define_count = r->o->define_count;
+    if (frame >= 0) {
+        snprintf(t, sizeof t, "$t=%.17g", (double)frame / frames);
+        r->defines[r->define_count++] = t;
+    }
+    for (int i = 0; i < r->n; i++)
+        r->path[i] = frame < 0 ? r->o->outputs[i]
+                               : cli_output_frame_path(r->o->outputs[i], frame, r->frame_path[i],
+                                                       sizeof r->frame_path[i]);
+    r->said = 0;
+    int rc = write_trees(r, services);
+    if (!rc) rc = write_model_outputs(r, services, 0);
+    if (!rc) rc = write_model_outputs(r, services, 1);
+    return rc;
 }
 
 /* Refuse an image the limits do not allow, before the model is evaluated:
@@ -167,60 +407,58 @@ static int check_image_size(const cli_options *o)
     return 0;
 }
 
-/* What -o writes, by its extension. */
-typedef enum output_kind {
-    OUTPUT_NONE, /* no -o (--measure alone) */
-    OUTPUT_UNKNOWN,
-    OUTPUT_IMAGE, /* also .pov: the scene and camera for POV-Ray */
-    OUTPUT_MESH,
-    OUTPUT_ECHO,
-    OUTPUT_CSG,
-} output_kind;
-
-static output_kind output_kind_of(const char *path)
+/* Flags that only some outputs use: a message when o asks for one that no
+ * output would use, else NULL. */
+static const char *misplaced_flag(const cli_options *o, const run *r)
 {
-    if (!path) return OUTPUT_NONE;
-    if (has_extension(path, ".echo")) return OUTPUT_ECHO;
-    if (has_extension(path, ".csg")) return OUTPUT_CSG;
-    if (cli_mesh_output_is_mesh(path)) return OUTPUT_MESH;
-    if (has_extension(path, ".pov") || rayscad_image_format_supported(path)) return OUTPUT_IMAGE;
-    return OUTPUT_UNKNOWN;
-}
-
-/* Flags that only some outputs use: a message when o asks for one that
- * `kind` would ignore, else NULL. */
-static const char *misplaced_flag(const cli_options *o, output_kind kind)
-{
-    if (kind != OUTPUT_MESH && o->ascii) return "--ascii applies to mesh outputs";
-    if (kind != OUTPUT_MESH && o->decimate >= 0) return "--decimate applies to mesh outputs";
-    if (kind != OUTPUT_MESH && !o->measure && o->mesh_size > 0)
+    int mesh = has_kind(r, OUTPUT_MESH);
+    if (!mesh && o->ascii) return "--ascii applies to mesh outputs";
+    if (!mesh && o->decimate >= 0) return "--decimate applies to mesh outputs";
+    if (!mesh && !o->measure && o->mesh_size > 0)
         return "--mesh-size applies to mesh outputs and --measure";
-    if (o->measure && (kind == OUTPUT_ECHO || kind == OUTPUT_CSG))
-        return "--measure cannot go with .echo or .csg output";
     return NULL;
 }
 
-/* .echo and .csg: OpenSCAD's evaluated tree, no geometry.  As openscad,
- * the .echo holds what the evaluation says (what came before an error and
- * the error itself; the exit status still says the model failed), and the
- * .csg the tree, its messages on stderr. */
-static int write_tree(const cli_options *o, const rayscad_eval_options *eo, messages *msgs,
-                      int echo)
+/* What the run cannot honour, said before it starts (not with -q). */
+static void say_limits(const cli_options *o, const run *r)
 {
-    char err[512], *text = NULL;
-    size_t len;
-    int failed = rayscad_csg_text(o->input, eo, echo ? NULL : &text, &len) != RAYSCAD_OK;
-    rayscad_status rc = RAYSCAD_OK;
-    if (echo)
-        rc = rayscad_file_write(o->output, msgs->buf ? msgs->buf : "", msgs->len, err, sizeof err);
-    else if (!failed)
-        rc = rayscad_file_write(o->output, text, len, err, sizeof err);
-    free(text);
-    if (rc != RAYSCAD_OK) {
-        cli_print_error(o, err);
-        return EXIT_MODEL;
+    if (o->quiet) return;
+    if (o->deprecated_flags & 1)
+        fprintf(stderr, "DEPRECATED: The -s option is deprecated. Use -o instead.\n");
+    if (o->deprecated_flags & 2)
+        fprintf(stderr, "DEPRECATED: The -x option is deprecated. Use -o instead.\n");
+    int images = has_kind(r, OUTPUT_IMAGE);
+    if (images && o->throwntogether)
+        fprintf(stderr, "rayscad: warning: --preview=throwntogether is drawn as the normal "
+                        "preview (exact CSG, subtracted faces in their own colour)\n");
+    static const char *const parts[] = {"axes", "crosshairs", "edges", "scales", "wireframe"};
+    for (int k = 0; images && k < 5; k++)
+        if (o->view_flags & (1 << k))
+            fprintf(stderr, "rayscad: warning: --view=%s is not drawn yet\n", parts[k]);
+}
+
+/* The whole of the standard input, NUL-terminated; NULL (printed) when
+ * it cannot be read. */
+static char *read_stdin(void)
+{
+    size_t len = 0, cap = 1 << 16;
+    char *buf = malloc(cap);
+    for (size_t got; buf; len += got) {
+        if (cap - len < 2) {
+            char *b = realloc(buf, cap *= 2);
+            if (!b) break;
+            buf = b;
+        }
+        got = fread(buf + len, 1, cap - len - 1, stdin);
+        if (got == 0) {
+            if (ferror(stdin)) break;
+            buf[len] = '\0';
+            return buf;
+        }
     }
-    return failed ? EXIT_MODEL : 0;
+    free(buf);
+    fprintf(stderr, "rayscad: error: cannot read the model from the standard input\n");
+    return NULL;
 }
 
 int main(int argc, char **argv)
@@ -233,78 +471,61 @@ int main(int argc, char **argv)
     }
     if (o.help) {
         fputs(cli_usage, stdout);
+        fputs(cli_usage_light, stdout);
+        fputs(cli_usage_openscad, stdout);
         return 0;
     }
     if (o.version) {
         printf("rayscad %s\n", rayscad_version());
         return 0;
     }
-    output_kind kind = output_kind_of(o.output);
-    if (kind == OUTPUT_UNKNOWN) {
-        fprintf(stderr,
-                "rayscad: cannot tell the output format from '%s' "
-                "(use .png .jpg .tif .exr .stl .off .obj .ply .echo or .csg)\n",
-                o.output);
-        return EXIT_USAGE;
-    }
-    const char *misplaced = misplaced_flag(&o, kind);
+    if (o.info) return cli_print_info(stdout) == 0 ? 0 : EXIT_MODEL;
+    static run r;
+    r.o = &o;
+    r.n = o.output_count;
+    for (int i = 0; i < r.n; i++)
+        if (cli_output_resolve(o.outputs[i], o.export_format, o.ascii, &r.out[i], err,
+                               sizeof err) != 0) {
+            fprintf(stderr, "rayscad: %s\n", err);
+            return EXIT_MODEL; /* as openscad */
+        }
+    const char *misplaced = misplaced_flag(&o, &r);
     if (misplaced) {
         fprintf(stderr, "rayscad: %s\n(rayscad --help lists the options)\n", misplaced);
         return EXIT_USAGE;
     }
-    if (kind == OUTPUT_IMAGE && !has_extension(o.output, ".pov") && check_image_size(&o) != 0)
-        return EXIT_MODEL;
+    if (has_kind(&r, OUTPUT_IMAGE) || has_kind(&r, OUTPUT_POV)) {
+        rayscad_colors colors;
+        if (rayscad_colors_by_name(o.colorscheme, &colors) != RAYSCAD_OK) {
+            fprintf(stderr, "rayscad: error: unknown colour scheme '%s'; the schemes are:\n",
+                    o.colorscheme);
+            for (int k = 0; rayscad_colors_name(k); k++)
+                fprintf(stderr, "%s\n", rayscad_colors_name(k));
+            return EXIT_USAGE;
+        }
+    }
+    if (has_kind(&r, OUTPUT_IMAGE) && check_image_size(&o) != 0) return EXIT_MODEL;
+    say_limits(&o, &r);
     cli_apply_memory_limit(&o);
+    for (int i = 0; i < o.define_count; i++)
+        r.defines[i] = o.defines[i];
+    char *src = NULL;
+    if (!strcmp(o.input, "-") && !(src = read_stdin())) return EXIT_MODEL;
+    r.src = src;
 
-    messages msgs = {.to_buffer = kind == OUTPUT_ECHO, .o = &o};
-    const rayscad_services services = {.read_image = cli_read_image};
-    rayscad_eval_options eo = {
-        .defines = o.defines,
-        .define_count = o.define_count,
-        .message = on_message,
-        .message_ud = &msgs,
-        .max_recursion = o.max_recursion,
-        .max_steps = o.max_steps,
-        .max_list = o.max_list,
-        .max_string = o.max_string,
-        .facets = o.facets,
-        /* openscad -o x.stl renders: $preview is false, 2D objects
-         * beside 3D ones are left out */
-        .for_mesh = kind == OUTPUT_MESH,
-        .services = &services,
-    };
-    if (kind == OUTPUT_ECHO || kind == OUTPUT_CSG) {
-        int rc = write_tree(&o, &eo, &msgs, kind == OUTPUT_ECHO);
-        free(msgs.buf);
-        return rc;
-    }
-    rayscad_model *model;
-    rayscad_status loaded = rayscad_model_load(o.input, &eo, &model);
-    free(msgs.buf);
-    if (loaded != RAYSCAD_OK) return EXIT_MODEL;
-
-    cli_settings_apply(&o, model, stderr);     /* the file's $rs_ scene settings */
-    if (o.view.kind == RAYSCAD_CAMERA_DEFAULT) /* the file's $vp* camera */
-        rayscad_model_file_view(model, &o.view.file);
-    rayscad_scene *scene;
-    rayscad_status made = rayscad_scene_new(model, &scene, err, sizeof err);
-    rayscad_model_free(model);
-    if (made != RAYSCAD_OK) {
-        cli_print_error(&o, err);
-        return EXIT_MODEL;
-    }
+    rayscad_services services = {.read_image = cli_read_image};
+    cli_deps deps = {.input = o.input, .make_cmd = o.make_cmd};
+    if (o.deps_file || o.make_cmd) cli_deps_hook(&deps, &services);
     int rc = 0;
-    switch (kind) {
-    case OUTPUT_IMAGE:
-        rc = write_image(&o, scene);
-        break;
-    case OUTPUT_MESH:
-        rc = cli_mesh_output(&o, scene, 1);
-        break;
-    default:
-        break;
+    if (!o.animate) rc = run_frame(&r, -1, 1, &services);
+    for (int f = 0; f < o.animate && !rc; f++)
+        rc = run_frame(&r, f, o.animate, &services);
+    if (!rc && o.deps_file &&
+        cli_deps_write(&deps, o.deps_file, o.outputs, o.output_count, err, sizeof err) != 0) {
+        cli_print_error(&o, err);
+        rc = EXIT_MODEL;
     }
-    if (rc == 0 && o.measure && kind != OUTPUT_MESH) rc = cli_mesh_output(&o, scene, 0);
-    rayscad_scene_free(scene);
+    cli_deps_free(&deps);
+    free(src);
     return rc;
 }

@@ -22,11 +22,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-int cli_mesh_output_is_mesh(const char *path)
-{
-    return rayscad_mesh_format_supported(path);
-}
-
 static void print_vec(const char *fmt, const double v[3])
 {
     printf(fmt, v[0], v[1], v[2]);
@@ -92,29 +87,31 @@ static void warn_thin(const rayscad_thin *t)
                     t->gaps, "close them", "width");
 }
 
-/* Decimate (when asked) and write; 0 or 1 (printed). */
-static int write_mesh_file(const cli_options *o, const rayscad_mesh *msh)
+/* Write msh to every mesh output (paths[i] the name of outs[i], a frame's
+ * when animating); 0 or 1 (printed). */
+static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_output *outs,
+                            const char *const *paths, int n)
 {
     char err[512];
-    rayscad_mesh *dec = NULL;
-    if (o->decimate >= 0) {
-        if (rayscad_mesh_decimate(msh, o->decimate, &dec, err, sizeof err) != RAYSCAD_OK) {
+    for (int i = 0; i < n; i++) {
+        rayscad_status rc = RAYSCAD_ERROR;
+        if (cli_output_begin(&outs[i], paths[i], err, sizeof err) == 0) {
+            rc = rayscad_mesh_write(msh, outs[i].write, outs[i].ascii, err, sizeof err);
+            if (cli_output_finish(&outs[i], paths[i], rc == RAYSCAD_OK, err, sizeof err) != 0)
+                rc = RAYSCAD_ERROR;
+        }
+        if (rc != RAYSCAD_OK) {
             cli_print_error(o, err);
             return 1;
         }
-        msh = dec;
-    }
-    rayscad_status rc = rayscad_mesh_write(msh, o->output, o->ascii, err, sizeof err);
-    rayscad_mesh_free(dec);
-    if (rc != RAYSCAD_OK) {
-        cli_print_error(o, err);
-        return 1;
     }
     return 0;
 }
 
-int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_mesh)
+int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output *outs,
+                    const char *const *paths, int n)
 {
+    int write_mesh = n > 0;
     rayscad_mesh_options mo;
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
@@ -139,8 +136,8 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_
         return 1;
     }
     double h, org[3];
-    int n[3];
-    rayscad_sampling_grid(d, &h, org, n);
+    int cells[3];
+    rayscad_sampling_grid(d, &h, org, cells);
     rayscad_measurement m;
     rayscad_sampling_measure(d, &m);
     rayscad_mesh *msh = NULL;
@@ -155,15 +152,25 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_
             cli_print_error(o, err);
             return 1;
         }
-        warn_thin(&thin);
+        if (!o->quiet) warn_thin(&thin);
         if (rayscad_mesh_triangle_count(msh) == 0) {
             fprintf(stderr, "rayscad: error: %s: the model is empty; there is no mesh to write\n",
-                    o->output);
+                    paths[0]);
             rayscad_mesh_free(msh);
             return 1;
         }
+        if (o->decimate >= 0) {
+            rayscad_mesh *dec;
+            if (rayscad_mesh_decimate(msh, o->decimate, &dec, err, sizeof err) != RAYSCAD_OK) {
+                cli_print_error(o, err);
+                rayscad_mesh_free(msh);
+                return 1;
+            }
+            rayscad_mesh_free(msh);
+            msh = dec;
+        }
         mesh_volume = rayscad_mesh_volume(msh);
-        if (write_mesh_file(o, msh) != 0) {
+        if (write_mesh_files(o, msh, outs, paths, n) != 0) {
             rayscad_mesh_free(msh);
             return 1;
         }

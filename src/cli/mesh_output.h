@@ -8,17 +8,17 @@
 #define RAYSCAD_CLI_MESH_OUTPUT_H
 
 #include "options.h"
-
-/* 1 when path's extension names a mesh format (.stl .off .obj .ply). */
-int cli_mesh_output_is_mesh(const char *path);
+#include "outputs.h"
 
 /* Sample root 0 of scene (borrowed) once on the grid o->mesh_size (or the
- * default), then, as o asks: write the mesh to o->output when `write_mesh`
- * (with --decimate and --ascii), and print the measurement on stdout when
- * o->measure (as JSON with o->json).  Warnings (thin walls the grid cannot
+ * default), then, as o asks: write the mesh (decimated once with
+ * --decimate) to each of the n outputs outs[i] under the name paths[i],
+ * and print the measurement on stdout when o->measure (as JSON with
+ * o->json).  Warnings (thin walls the grid cannot
  * resolve) go to stderr.  Returns the exit status: 0, or 1 when the model
  * cannot be meshed or the file cannot be written (a message on stderr; the
  * output is then left untouched). */
-int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, int write_mesh);
+int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output *outs,
+                    const char *const *paths, int n);
 
 #endif

@@ -6,6 +6,7 @@
  * depend on the machine, and the error line that names the memory limit.
  */
 #include "options.h"
+#include "options_parse.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -16,16 +17,19 @@
 #include <unistd.h>
 
 const char cli_usage[] =
-    "usage: rayscad FILE.scad -o OUTPUT [options]\n"
+    "usage: rayscad FILE.scad -o OUTPUT [-o OUTPUT ...] [options]\n"
     "       rayscad FILE.scad --measure [--json] [-o OUTPUT] [options]\n"
     "\n"
     "Renders an OpenSCAD file by ray casting its CSG tree with interval lists.\n"
-    "OUTPUT's extension picks the format: .png .jpg .tif .exr (images),\n"
-    ".stl .off .obj .ply (a mesh of the model, top-level objects unioned),\n"
+    "OUTPUT's extension (or --export-format) picks the format: .png .jpg .tif\n"
+    ".exr (images), .pov (a POV-Ray scene), .stl .off .obj .ply .amf .3mf (a\n"
+    "mesh of the model, top-level objects unioned; STL as text unless binstl),\n"
     ".echo (the ECHO and WARNING lines, as openscad -o x.echo writes them),\n"
-    ".csg (the evaluated tree, as openscad -o x.csg writes it).\n"
+    ".csg (the evaluated tree, as openscad -o x.csg writes it).  FILE '-' reads\n"
+    "the model from the standard input, OUTPUT '-' writes to the standard output.\n"
     "\n"
-    "  -o FILE                 output file (required unless --measure)\n"
+    "  -o FILE                 output file, repeatable: one run writes them all\n"
+    "                          (required unless --measure)\n"
     "  -D name=value           override a top-level variable (repeatable)\n"
     "  --camera=tx,ty,tz,rx,ry,rz,dist   gimbal camera, as OpenSCAD\n"
     "  --camera=ex,ey,ez,cx,cy,cz        eye and centre camera, as OpenSCAD\n"
@@ -49,7 +53,9 @@ const char cli_usage[] =
     "  --max-mesh-cells N      cells of the mesh and --measure grid (default 2^32)\n"
     "  --max-memory SIZE       data memory (heap and thread stacks), bytes or with\n"
     "                          K, M, G, T (default: 3/4 of RAM, plus 1G for the\n"
-    "                          evaluator's stack and the workers' stacks)\n"
+    "                          evaluator's stack and the workers' stacks)\n";
+
+const char cli_usage_light[] =
     "\n"
     "Light model (opt-in; without these and $rs_ variables the image looks like\n"
     "OpenSCAD's preview):\n"
@@ -71,19 +77,15 @@ const char cli_usage[] =
     "Meshes (.stl .off .obj .ply) and measurement:\n"
     "  --mesh-size H           grid spacing in model units (default: each far-apart\n"
     "                          part's longest side / 128, finer for thin walls)\n"
-    "  --ascii                 text STL or PLY (default binary; OFF, OBJ are text)\n"
+    "  --ascii                 text STL or PLY (STL is text by default, as\n"
+    "                          openscad's; PLY binary; OFF, OBJ are text)\n"
     "  --decimate TOL          simplify the mesh within TOL model units (OpenMesh's\n"
     "                          quadric decimater)\n"
     "  --measure               print volume, surface area, bounding box and centre\n"
     "                          of mass, integrated over the ray intervals\n"
-    "  --json                  the same as JSON on stdout (implies --measure)\n"
-    "  --help                  this text\n"
-    "  --version               the version\n"
-    "\n"
-    "Exit status: 0 ok, 1 the model or the output failed (a --max-* limit\n"
-    "included), 2 usage error.\n";
+    "  --json                  the same as JSON on stdout (implies --measure)\n";
 
-static int parse_double(const char *s, double *out)
+int cli_parse_double(const char *s, double *out)
 {
     char *end;
     errno = 0;
@@ -93,7 +95,7 @@ static int parse_double(const char *s, double *out)
     return 0;
 }
 
-static int parse_int(const char *s, long lo, long hi, int *out)
+int cli_parse_int(const char *s, long lo, long hi, int *out)
 {
     char *end;
     errno = 0;
@@ -132,15 +134,13 @@ static int parse_numbers(const char *s, double *v, int max)
     int n = 0;
     char *save = NULL;
     for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-        if (n == max || parse_double(tok, &v[n]) != 0) return -1;
+        if (n == max || cli_parse_double(tok, &v[n]) != 0) return -1;
         n++;
     }
     return n;
 }
 
-/* If argv[*i] is `name` or `name=value`, set *value (taking the next argument
- * for the first form) and return 1; return -1 when the value is missing. */
-static int flag_value(int argc, char **argv, int *i, const char *name, const char **value)
+int cli_flag_value(int argc, char **argv, int *i, const char *name, const char **value)
 {
     const char *a = argv[*i];
     size_t n = strlen(name);
@@ -155,9 +155,7 @@ static int flag_value(int argc, char **argv, int *i, const char *name, const cha
     return 1;
 }
 
-/* A flag whose value is optional: `name` alone gives 1 with *value NULL,
- * `name=v` gives 1 with *value v. */
-static int optional_value(const char *a, const char *name, const char **value)
+int cli_optional_value(const char *a, const char *name, const char **value)
 {
     size_t n = strlen(name);
     if (strncmp(a, name, n) != 0 || (a[n] != '\0' && a[n] != '=')) return 0;
@@ -177,41 +175,41 @@ static int parse_optics(int argc, char **argv, int *i, rayscad_render_options *p
         p->shadows = 1;
         return 1;
     }
-    if (optional_value(a, "--xray", &val)) {
+    if (cli_optional_value(a, "--xray", &val)) {
         p->xray = 0.25;
-        if (val && (parse_double(val, &p->xray) != 0 || !(p->xray > 0) || p->xray > 1)) {
+        if (val && (cli_parse_double(val, &p->xray) != 0 || !(p->xray > 0) || p->xray > 1)) {
             snprintf(err, errlen, "--xray expects an opacity in (0, 1], got '%s'", val);
             return -1;
         }
         return 1;
     }
-    if (optional_value(a, "--absorb", &val)) {
+    if (cli_optional_value(a, "--absorb", &val)) {
         p->absorb = 10;
-        if (val && (parse_double(val, &p->absorb) != 0 || !(p->absorb > 0))) {
+        if (val && (cli_parse_double(val, &p->absorb) != 0 || !(p->absorb > 0))) {
             snprintf(err, errlen, "--absorb expects a thickness > 0, got '%s'", val);
             return -1;
         }
         return 1;
     }
-    if (optional_value(a, "--path-trace", &val)) {
+    if (cli_optional_value(a, "--path-trace", &val)) {
         p->path_trace = 64;
-        if (val && parse_int(val, 1, 1000000, &p->path_trace) != 0) {
+        if (val && cli_parse_int(val, 1, 1000000, &p->path_trace) != 0) {
             snprintf(err, errlen, "--path-trace expects samples per pixel in 1..1000000, got '%s'",
                      val);
             return -1;
         }
         return 1;
     }
-    if (optional_value(a, "--refract", &val)) {
+    if (cli_optional_value(a, "--refract", &val)) {
         p->ior = 1.5;
-        if (val && (parse_double(val, &p->ior) != 0 || !(p->ior >= 1) || p->ior > 10)) {
+        if (val && (cli_parse_double(val, &p->ior) != 0 || !(p->ior >= 1) || p->ior > 10)) {
             snprintf(err, errlen, "--refract expects an index of refraction in 1..10, got '%s'",
                      val);
             return -1;
         }
         return 1;
     }
-    if ((r = flag_value(argc, argv, i, "--light", &val)) != 0) {
+    if ((r = cli_flag_value(argc, argv, i, "--light", &val)) != 0) {
         double v[5] = {0, 0, 0, 0, 1};
         int n = r > 0 ? parse_numbers(val, v, 5) : -1;
         if (n < 3 || v[3] < 0 || !(v[4] > 0) || p->nlights == RAYSCAD_MAX_LIGHTS) {
@@ -238,9 +236,9 @@ static int parse_optics(int argc, char **argv, int *i, rayscad_render_options *p
                    {"--focus", 0, 0, 1e9},
                    {"--seed", 1, 0, 2147483647}};
     for (size_t k = 0; k < sizeof numeric / sizeof *numeric; k++) {
-        r = flag_value(argc, argv, i, numeric[k].name, &val);
+        r = cli_flag_value(argc, argv, i, numeric[k].name, &val);
         if (r == 0) continue;
-        if (r < 0 || parse_double(val, &x) != 0 || x < numeric[k].lo || x > numeric[k].hi ||
+        if (r < 0 || cli_parse_double(val, &x) != 0 || x < numeric[k].lo || x > numeric[k].hi ||
             (numeric[k].is_int && x != floor(x)) || (k == 3 && !(x > 0))) {
             snprintf(err, errlen, "%s expects a %s in %g..%g, got '%s'", numeric[k].name,
                      numeric[k].is_int ? "whole number" : "number", numeric[k].lo, numeric[k].hi,
@@ -278,6 +276,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
     o->colorscheme = "Cornfield";
     o->view.kind = RAYSCAD_CAMERA_DEFAULT;
     o->decimate = -1;
+    o->check_parameters = 1;
 
     static const char *const valued[] = {"-o",
                                          "-D",
@@ -330,12 +329,15 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         int optic = parse_optics(argc, argv, &i, &o->optics, err, errlen);
         if (optic < 0) return -1;
         if (optic > 0) continue;
+        int oscad = cli_parse_openscad_flag(argc, argv, &i, o, err, errlen);
+        if (oscad < 0) return -1;
+        if (oscad > 0) continue;
         if ((a[0] == '-' && (a[1] == 'o' || a[1] == 'D') && a[2] != '\0' && a[2] != '=')) {
             flag = a[1] == 'o' ? "-o" : "-D";
             val = a + 2;
         }
         for (size_t k = 0; !flag && k < sizeof valued / sizeof *valued; k++) {
-            int r = flag_value(argc, argv, &i, valued[k], &val);
+            int r = cli_flag_value(argc, argv, &i, valued[k], &val);
             if (r < 0) {
                 snprintf(err, errlen, "%s needs a value", valued[k]);
                 return -1;
@@ -343,7 +345,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             if (r > 0) flag = valued[k];
         }
         if (!flag) {
-            if (a[0] == '-' && a[1] != '\0') {
+            if (a[0] == '-' && a[1] != '\0') { /* "-" alone: the standard input */
                 snprintf(err, errlen, "unknown option '%s'", a);
                 return -1;
             }
@@ -355,7 +357,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             continue;
         }
         if (strcmp(flag, "-o") == 0) {
-            o->output = val;
+            if (cli_options_add_output(o, val, err, errlen) != 0) return -1;
         } else if (strcmp(flag, "-D") == 0) {
             if (o->define_count == CLI_MAX_DEFINES || !strchr(val, '=')) {
                 snprintf(err, errlen, "-D expects name=value (at most %d of them)",
@@ -405,19 +407,19 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 return -1;
             }
         } else if (strcmp(flag, "--mesh-size") == 0) {
-            if (parse_double(val, &o->mesh_size) != 0 || !(o->mesh_size > 0)) {
+            if (cli_parse_double(val, &o->mesh_size) != 0 || !(o->mesh_size > 0)) {
                 snprintf(err, errlen, "--mesh-size expects a grid spacing > 0, got '%s'", val);
                 return -1;
             }
         } else if (strcmp(flag, "--decimate") == 0) {
-            if (parse_double(val, &o->decimate) != 0 || !(o->decimate >= 0)) {
+            if (cli_parse_double(val, &o->decimate) != 0 || !(o->decimate >= 0)) {
                 snprintf(err, errlen, "--decimate expects a tolerance >= 0, got '%s'", val);
                 return -1;
             }
         } else if (strcmp(flag, "--colorscheme") == 0) {
             o->colorscheme = val;
         } else if (strcmp(flag, "--samples") == 0) {
-            if (parse_int(val, 1, 64, &o->samples) != 0) {
+            if (cli_parse_int(val, 1, 64, &o->samples) != 0) {
                 snprintf(err, errlen, "--samples expects a whole number in 1..64, got '%s'", val);
                 return -1;
             }
@@ -448,7 +450,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             while (strcmp(limits[k].name, flag) != 0)
                 k++;
             double x;
-            if (parse_double(val, &x) != 0 || !(x >= 1) || x != floor(x) || x > limits[k].hi) {
+            if (cli_parse_double(val, &x) != 0 || !(x >= 1) || x != floor(x) || x > limits[k].hi) {
                 snprintf(err, errlen, "%s expects a whole number in 1..%.0f, got '%s'", flag,
                          limits[k].hi, val);
                 return -1;
@@ -477,18 +479,18 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 break;
             }
         } else if (strcmp(flag, "--threads") == 0) {
-            if (parse_int(val, 0, 1024, &o->threads) != 0) {
+            if (cli_parse_int(val, 0, 1024, &o->threads) != 0) {
                 snprintf(err, errlen, "--threads expects a whole number in 0..1024, got '%s'", val);
                 return -1;
             }
         }
     }
-    if (o->help || o->version) return 0;
+    if (o->help || o->version || o->info) return 0;
     if (!o->input) {
         snprintf(err, errlen, "no input file");
         return -1;
     }
-    if (!o->output && !o->measure) {
+    if (!o->output_count && !o->measure) {
         snprintf(err, errlen, "no output file (-o) and no --measure");
         return -1;
     }

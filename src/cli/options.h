@@ -7,11 +7,41 @@
 
 #include "../../include/rayscad.h"
 
-enum { CLI_MAX_DEFINES = 256 };
+enum { CLI_MAX_DEFINES = 256, CLI_MAX_OUTPUTS = 64 };
+
+/* --view's parts, as openscad 2021.01 names them. */
+enum {
+    CLI_VIEW_AXES = 1,
+    CLI_VIEW_CROSSHAIRS = 2,
+    CLI_VIEW_EDGES = 4,
+    CLI_VIEW_SCALES = 8,
+    CLI_VIEW_WIREFRAME = 16
+};
 
 typedef struct cli_options {
-    const char *input;
-    const char *output;
+    const char *input; /* "-": the standard input */
+    /* -o, in order ("-": the standard output); -s and -x are old names of
+     * -o (deprecated_flags has bit 1 for -s, 2 for -x: main says so). */
+    const char *outputs[CLI_MAX_OUTPUTS];
+    int output_count;
+    int deprecated_flags;
+    const char *export_format; /* --export-format: every output's format */
+    /* openscad's modes: --render (images as its CGAL render, $preview
+     * false), --preview[=throwntogether] (the default). */
+    int render, throwntogether;
+    int quiet;                  /* -q: only errors on stderr */
+    int hardwarnings;           /* stop at the first warning, exit 1 */
+    int check_parameters;       /* --check-parameters, default true */
+    int check_parameter_ranges; /* --check-parameter-ranges, default false */
+    int info;                   /* --info: what rayscad is built with */
+    int animate;                /* --animate N: frames, 0 none */
+    const char *param_file;     /* -p: customizer parameter file */
+    const char *param_set;      /* -P: the set in it */
+    const char *deps_file;      /* -d: a Makefile rule of every file read */
+    const char *make_cmd;       /* -m: run it for a missing file */
+    int view_flags;             /* --view: CLI_VIEW_* */
+    int csglimit;               /* --csglimit (accepted; no limit needed) */
+    const char *debug;          /* --debug[=WHAT] (NULL: off) */
     const char *defines[CLI_MAX_DEFINES];
     int define_count;
     rayscad_view view;
@@ -56,12 +86,15 @@ typedef struct cli_options {
 #define CLI_MAX_PIXELS_DEFAULT (1LL << 28)
 enum { CLI_MAX_IMAGE_SIDE = 65536 };
 
-/* Parse argv into *o.  -o may be left out when --measure is given (then
- * o->output is NULL).  Returns 0, or -1 with a message in err (a usage
+/* Parse argv into *o.  -o may be left out when --measure or --info is
+ * given.  Returns 0, or -1 with a message in err (a usage
  * error: the caller prints it and exits 2). */
 int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t errlen);
 
-/* The --help text. */
+/* The --help text: cli_usage, cli_usage_light (the light model and
+ * meshes), then cli_usage_openscad (the flags of options_openscad.c). */
 extern const char cli_usage[];
+extern const char cli_usage_light[];
+extern const char cli_usage_openscad[];
 
 #endif

@@ -10,7 +10,7 @@
 void progress_start(progress *p, const char *label)
 {
     p->label = label;
-    p->enabled = isatty(STDERR_FILENO);
+    p->enabled = label && isatty(STDERR_FILENO); /* NULL label: silent (-q) */
     p->last = -1;
 }
 

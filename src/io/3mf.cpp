@@ -13,6 +13,20 @@
  * index out of its object's vertices is refused (lib3mf checks this when
  * reading already).
  *
+ * io_3mf_write writes a mesh as 2021.01's 3MF export does (its
+ * src/export_3mf.cc): through lib3mf's writer, one mesh object (named
+ * "rayscad Model" where 2021.01 says "OpenSCAD Model") and one build item
+ * for it without a transform, unit millimetre, and also the model metadata
+ * "Application" naming rayscad (2021.01 writes none).  lib3mf 1.8 prints
+ * each coordinate with six decimals, cut toward zero (so do 2021.01's
+ * files): each coordinate moves toward 0 by less than 1e-6 mm, and two
+ * vertices closer than that may become one.  lib3mf gives
+ * the object, the build and the item production-extension UUIDs, random
+ * unless set; here they are derived from a hash of the arrays, so one mesh
+ * always makes the same file.  lib3mf writes the package to
+ * io_temp_beside's temporary file, renamed over path only when it reports
+ * success.
+ *
  * lib3mf's C interface returns status codes and never throws; its objects
  * are reference counted and each one it hands out is released here.  No
  * C++ exception crosses the C boundary.
@@ -27,7 +41,12 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include "../../include/rayscad.h"
+#include "export.h"
 #include "io.h"
+#include "temp_file.h"
 #include "weld.h"
 
 namespace
@@ -174,6 +193,97 @@ extern "C" int io_3mf_read(const char *path, float **v, int *nv, int32_t **t, in
         return -1;
     } catch (...) {
         if (msg && msglen) std::snprintf(msg, msglen, "%s: 3MF read failed", path ? path : "");
+        return -1;
+    }
+}
+
+namespace
+{
+
+/* UUID number k (8-4-4-4-12 hex digits) of a mesh of hash h, with the
+ * version and variant bits of RFC 9562's version 8 (custom). */
+std::string uuid_of(uint64_t h, uint64_t k)
+{
+    uint64_t hi = io_export::mix(h, 2 * k), lo = io_export::mix(h, 2 * k + 1);
+    hi = (hi & ~(uint64_t)0xf000) | 0x8000;
+    lo = (lo & ~((uint64_t)3 << 62)) | ((uint64_t)2 << 62);
+    char s[40];
+    std::snprintf(s, sizeof s, "%08x-%04x-%04x-%04x-%012llx", (unsigned)(hi >> 32),
+                  (unsigned)(hi >> 16 & 0xffff), (unsigned)(hi & 0xffff), (unsigned)(lo >> 48),
+                  (unsigned long long)(lo & 0xffffffffffffull));
+    return s;
+}
+
+int write_3mf(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
+              size_t errlen)
+{
+    std::string why = io_export::check(v, nv, t, nt);
+    if (!why.empty()) {
+        set_msg(err, errlen, std::string(path) + ": " + why);
+        return -1;
+    }
+    std::vector<NMR::MODELMESHVERTEX> verts((size_t)nv + 1); /* never empty: data() != NULL */
+    std::vector<NMR::MODELMESHTRIANGLE> tris((size_t)nt + 1);
+    for (size_t i = 0; i < (size_t)nv; i++)
+        for (int k = 0; k < 3; k++)
+            verts[i].m_fPosition[k] = v[3 * i + (size_t)k] + 0.0f; /* +0 for -0 */
+    for (size_t i = 0; i < (size_t)nt; i++)
+        for (int k = 0; k < 3; k++)
+            tris[i].m_nIndices[k] = (DWORD)t[3 * i + (size_t)k];
+    uint64_t h = io_export::hash(v, nv, t, nt);
+    std::string object_uuid = uuid_of(h, 0), build_uuid = uuid_of(h, 1), item_uuid = uuid_of(h, 2);
+    std::vector<char> tmp(std::strlen(path) + 64);
+
+    /* true when rc is success; else the message names the step and lib3mf's
+     * last error on the object it was asked of */
+    auto ok = [&](LIB3MFRESULT rc, const char *step, NMR::PLib3MFBase *on) {
+        if (rc == LIB3MF_OK) return true;
+        std::string e = last_error(on);
+        set_msg(err, errlen, std::string(path) + ": lib3mf: " + step + (e.empty() ? "" : ": " + e));
+        return false;
+    };
+    Held model, mesh, item, writer;
+    const char *app = "rayscad " RAYSCAD_VERSION_STRING;
+    if (!ok(NMR::lib3mf_createmodel(&model.p), "cannot create a model", nullptr) ||
+        !ok(NMR::lib3mf_model_setunit(model.p, NMR::MODELUNIT_MILLIMETER), "unit", model.p) ||
+        !ok(NMR::lib3mf_model_addmeshobject(model.p, &mesh.p), "mesh object", model.p) ||
+        !ok(NMR::lib3mf_object_setnameutf8(mesh.p, "rayscad Model"), "object name", mesh.p) ||
+        !ok(NMR::lib3mf_object_setuuidutf8(mesh.p, object_uuid.c_str()), "object UUID", mesh.p) ||
+        !ok(NMR::lib3mf_meshobject_setgeometry(mesh.p, verts.data(), (DWORD)nv, tris.data(),
+                                               (DWORD)nt),
+            "geometry", mesh.p) ||
+        !ok(NMR::lib3mf_model_addbuilditem(model.p, mesh.p, nullptr, &item.p), "build item",
+            model.p) ||
+        !ok(NMR::lib3mf_builditem_setuuidutf8(item.p, item_uuid.c_str()), "build item UUID",
+            item.p) ||
+        !ok(NMR::lib3mf_model_setbuilduuidutf8(model.p, build_uuid.c_str()), "build UUID",
+            model.p) ||
+        !ok(NMR::lib3mf_model_addmetadatautf8(model.p, "Application", app), "metadata", model.p) ||
+        !ok(NMR::lib3mf_model_querywriter(model.p, "3mf", &writer.p), "no 3MF writer", model.p))
+        return -1;
+    if (io_temp_beside(path, tmp.data(), tmp.size(), err, errlen) != 0) return -1;
+    if (NMR::lib3mf_writer_writetofileutf8(writer.p, tmp.data()) != LIB3MF_OK) {
+        unlink(tmp.data());
+        std::string e = last_error(writer.p);
+        set_msg(err, errlen, std::string(path) + ": writing failed" + (e.empty() ? "" : ": " + e));
+        return -1;
+    }
+    return io_temp_commit(tmp.data(), path, err, errlen);
+}
+
+} // namespace
+
+extern "C" int io_3mf_write(const char *path, const float *v, int nv, const int32_t *t, int nt,
+                            char *err, size_t errlen)
+{
+    if (err && errlen) err[0] = 0;
+    try {
+        return write_3mf(path, v, nv, t, nt, err, errlen);
+    } catch (const std::bad_alloc &) {
+        if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "3MF");
+        return -1;
+    } catch (...) {
+        if (err && errlen) std::snprintf(err, errlen, "%s: 3MF write failed", path ? path : "");
         return -1;
     }
 }

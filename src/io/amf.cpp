@@ -30,6 +30,17 @@
  * substitution or DTD loading, so no external resource is ever read; its
  * error callback keeps the first error instead of printing it.  No C++
  * exception crosses the C boundary.
+ *
+ * io_amf_write writes AMF as 2021.01 exports it (src/export_amf.cc there):
+ * the same elements, one-space indentation and CRLF line ends, one
+ * <object id="0"> in millimetres, <metadata type="producer"> naming
+ * rayscad.  It prints with stdio rather than libxml2's xmlTextWriter: the
+ * file holds numbers and fixed tags only, nothing to escape, and 2021.01's
+ * layout (<vertex><coordinates> on one line) is not one of xmlTextWriter's
+ * indentations.  The one departure: numbers carry 9 significant digits
+ * (%.9g, so each float reads back exactly) where 2021.01's ostream keeps
+ * 6.  The file is written to io_temp_beside's temporary file and renamed
+ * over path only once it was flushed and closed without error.
  */
 #include <libxml/xmlreader.h>
 #include <zip.h>
@@ -45,7 +56,12 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include "../../include/rayscad.h"
+#include "export.h"
 #include "io.h"
+#include "temp_file.h"
 #include "weld.h"
 
 namespace
@@ -375,6 +391,104 @@ extern "C" int io_amf_read(const char *path, float **v, int *nv, int32_t **t, in
         return -1;
     } catch (...) {
         if (msg && msglen) std::snprintf(msg, msglen, "%s: AMF read failed", path ? path : "");
+        return -1;
+    }
+}
+
+namespace
+{
+
+/* The body of the AMF, into f (a stdio stream: its errors are sticky and
+ * checked once, at the end). */
+void print_amf(std::FILE *f, const float *v, int nv, const int32_t *t, int nt)
+{
+    std::fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\r\n"
+               "<amf unit=\"millimeter\">\r\n"
+               " <metadata type=\"producer\">rayscad " RAYSCAD_VERSION_STRING "</metadata>\r\n"
+               " <object id=\"0\">\r\n"
+               "  <mesh>\r\n"
+               "   <vertices>\r\n",
+               f);
+    for (size_t i = 0; i < (size_t)nv; i++) {
+        const float *p = v + 3 * i;
+        /* +0 for -0: the sign of a zero means nothing in a mesh */
+        std::fprintf(f,
+                     "    <vertex><coordinates>\r\n"
+                     "     <x>%.9g</x>\r\n"
+                     "     <y>%.9g</y>\r\n"
+                     "     <z>%.9g</z>\r\n"
+                     "    </coordinates></vertex>\r\n",
+                     p[0] + 0.0, p[1] + 0.0, p[2] + 0.0);
+    }
+    std::fputs("   </vertices>\r\n"
+               "   <volume>\r\n",
+               f);
+    for (size_t i = 0; i < (size_t)nt; i++) {
+        const int32_t *q = t + 3 * i;
+        std::fprintf(f,
+                     "    <triangle>\r\n"
+                     "     <v1>%d</v1>\r\n"
+                     "     <v2>%d</v2>\r\n"
+                     "     <v3>%d</v3>\r\n"
+                     "    </triangle>\r\n",
+                     (int)q[0], (int)q[1], (int)q[2]);
+    }
+    std::fputs("   </volume>\r\n"
+               "  </mesh>\r\n"
+               " </object>\r\n"
+               "</amf>\r\n",
+               f);
+}
+
+int write_amf(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
+              size_t errlen)
+{
+    std::string why = io_export::check(v, nv, t, nt);
+    if (!why.empty()) {
+        set_msg(err, errlen, std::string(path) + ": " + why);
+        return -1;
+    }
+    std::vector<char> tmp(std::strlen(path) + 64);
+    std::vector<char> buf((size_t)1 << 16); /* f's buffer: outlives it */
+    if (io_temp_beside(path, tmp.data(), tmp.size(), err, errlen) != 0) return -1;
+    errno = 0;
+    std::FILE *f = std::fopen(tmp.data(), "wb");
+    int saved = errno;
+    int failed = !f;
+    if (f) {
+        std::setvbuf(f, buf.data(), _IOFBF, buf.size());
+        errno = 0;
+        print_amf(f, v, nv, t, nt);
+        failed = std::ferror(f);
+        saved = errno;
+        if (std::fclose(f) != 0 && !failed) {
+            failed = 1;
+            saved = errno;
+        }
+    }
+    if (failed) {
+        unlink(tmp.data());
+        set_msg(err, errlen,
+                std::string(path) + ": writing failed" +
+                    (saved ? std::string(": ") + std::strerror(saved) : std::string()));
+        return -1;
+    }
+    return io_temp_commit(tmp.data(), path, err, errlen);
+}
+
+} // namespace
+
+extern "C" int io_amf_write(const char *path, const float *v, int nv, const int32_t *t, int nt,
+                            char *err, size_t errlen)
+{
+    if (err && errlen) err[0] = 0;
+    try {
+        return write_amf(path, v, nv, t, nt, err, errlen);
+    } catch (const std::bad_alloc &) {
+        if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "AMF");
+        return -1;
+    } catch (...) {
+        if (err && errlen) std::snprintf(err, errlen, "%s: AMF write failed", path ? path : "");
         return -1;
     }
 }

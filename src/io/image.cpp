@@ -277,6 +277,11 @@ extern "C" int io_image_read(const char *path, int *width, int *height, int *cha
     return -1;
 }
 
+extern "C" const char *io_image_version(void)
+{
+    return OIIO_VERSION_STRING;
+}
+
 extern "C" int io_image_format_supported(const char *path)
 {
     try {

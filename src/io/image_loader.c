@@ -35,6 +35,7 @@
  */
 #define _GNU_SOURCE /* dladdr */
 #include "io.h"
+#include "versions.h"
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -62,12 +63,14 @@ extern const char rayscad_image_deps[];
 typedef int (*write_fn)(const char *, int, int, int, const float *, char *, size_t);
 typedef int (*read_fn)(const char *, int *, int *, int *, float **, char *, size_t);
 typedef int (*supported_fn)(const char *);
+typedef const char *(*version_fn)(void);
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 static struct {
     write_fn write;
     read_fn read;
     supported_fn supported;
+    version_fn version; /* may be NULL */
 } fn;
 static char load_err[2048]; /* empty when the adapter loaded */
 
@@ -155,6 +158,8 @@ static void load(void)
     memcpy(&fn.write, &w, sizeof w);
     memcpy(&fn.read, &r, sizeof r);
     memcpy(&fn.supported, &s, sizeof s);
+    void *v = dlsym(h, "io_image_version");
+    if (v) memcpy(&fn.version, &v, sizeof v);
 }
 
 /* Load the adapter unless done already.  Returns 0, or -1 with the reason
@@ -172,6 +177,12 @@ static int ready(char *err, size_t errlen)
 int io_image_load(char *err, size_t errlen)
 {
     return ready(err, errlen);
+}
+
+const char *io_image_library_version(void)
+{
+    if (ready(NULL, 0) != 0) return load_err;
+    return fn.version ? fn.version() : "unknown";
 }
 
 int io_image_write(const char *path, int width, int height, int channels, const float *pixels,

@@ -1,9 +1,9 @@
 /*
  * io.h — the C face of the C++ adapters: images through OpenImageIO,
  * meshes through OpenMesh (with the mesh exporter), AMF through libxml2 and
- * 3MF through lib3mf (for import()).  Nothing here prints
- * or throws: every C++ exception is caught at this boundary and becomes a
- * status with a message.
+ * 3MF through lib3mf (for import(), and both written for export).  Nothing
+ * here prints or throws: every C++ exception is caught at this boundary and
+ * becomes a status with a message.
  */
 #ifndef RAYSCAD_IO_H
 #define RAYSCAD_IO_H
@@ -90,6 +90,24 @@ int io_amf_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char
                 size_t msglen);
 int io_3mf_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char *msg,
                 size_t msglen);
+
+/* ---- AMF and 3MF export (src/io/amf.cpp, src/io/3mf.cpp) ---------------- */
+
+/* Write nv vertices and nt triangles (borrowed; the conventions above) to
+ * path as one object in millimetres, as OpenSCAD 2021.01 exports them:
+ * io_amf_write an uncompressed AMF (2021.01's layout, CRLF line ends,
+ * coordinates with 9 significant digits so floats read back exactly);
+ * io_3mf_write a 3MF package through lib3mf (one mesh object, one build
+ * item; lib3mf keeps six decimals of each coordinate, cut toward zero).
+ * The extension of path is not looked at.  Any triangle soup is accepted,
+ * closed or not; refused: a coordinate that is NaN or infinite, an index
+ * out of range, a triangle with a repeated vertex.  The file is written to a temporary
+ * name beside path and renamed, so a failure never leaves a partial file
+ * nor touches an existing one.  Returns 0, or -1 with a message in err. */
+int io_amf_write(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
+                 size_t errlen);
+int io_3mf_write(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
+                 size_t errlen);
 
 /* Simplify a closed manifold mesh with OpenMesh's decimater (quadric error
  * metric, ModQuadricT, plus ModNormalFlippingT so no face turns over more

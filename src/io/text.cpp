@@ -240,6 +240,8 @@ int render(const io_text_params *p, io_paths *out, char *err, size_t errlen)
         set_err(err, errlen, "cannot initialise FreeType");
         return -1;
     }
+    if (p->font_used && p->font_used_len)
+        std::snprintf(p->font_used, p->font_used_len, "%s", file.c_str());
     FT_Face face;
     if (FT_New_Face(lib, file.c_str(), index, &face)) {
         FT_Done_FreeType(lib);

@@ -28,6 +28,8 @@ typedef struct io_text_params {
     int segments;          /* points per Bézier segment (OpenSCAD: fragments/8 + 1, >= 2) */
     const char *const *font_files; /* added to fontconfig's fonts first (a */
     int nfont_files;               /* script's use <font.ttf>, as OpenSCAD's) */
+    char *font_used;               /* out (may be NULL): the font file opened, */
+    size_t font_used_len;          /* "" when none */
 } io_text_params;
 
 /* The outlines of the shaped text in model units, each glyph filled by the

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "../io/temp_file.h"
+#include "../io/versions.h"
 #include "rayscad_internal.h"
 
 rayscad_status rayscad_file_write(const char *path, const void *data, size_t len, char *err,
@@ -37,4 +38,14 @@ rayscad_status rayscad_file_write(const char *path, const void *data, size_t len
 const char *rayscad_version(void)
 {
     return RAYSCAD_VERSION_STRING;
+}
+
+void rayscad_library_info(char *buf, size_t len)
+{
+    snprintf(buf, len,
+             "OpenImageIO: %s\nOpenMesh: %s\nlib3mf: %s\nFreeType: %s\nHarfBuzz: %s\n"
+             "fontconfig: %s\nfonts: %d\n",
+             io_image_library_version(), io_openmesh_version(), io_lib3mf_version(),
+             io_freetype_version(), io_harfbuzz_version(), io_fontconfig_version(),
+             io_font_count());
 }

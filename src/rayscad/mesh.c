@@ -1,9 +1,12 @@
 /*
  * mesh.c — sampling a scene by the three ray families, measuring and
  * contouring it (src/mesh), and decimating and writing meshes (src/io's
- * OpenMesh adapter).
+ * OpenMesh adapter; AMF and 3MF through io_amf_write and io_3mf_write, by
+ * extension).
  */
+#include <ctype.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../io/io.h"
 #include "rayscad_internal.h"
@@ -133,9 +136,21 @@ rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_
     return RAYSCAD_ERROR_MEMORY;
 }
 
+/* 1 when path ends in "." and ext (lower case), in any case. */
+static int has_extension(const char *path, const char *ext)
+{
+    size_t n = strlen(path), k = strlen(ext);
+    if (n <= k || path[n - k - 1] != '.') return 0;
+    for (size_t i = 0; i < k; i++)
+        if (tolower((unsigned char)path[n - k + i]) != ext[i]) return 0;
+    return 1;
+}
+
 int rayscad_mesh_format_supported(const char *path)
 {
-    return io_mesh_format_supported(path);
+    if (!path) return 0;
+    return has_extension(path, "amf") || has_extension(path, "3mf") ||
+           io_mesh_format_supported(path);
 }
 
 rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int ascii, char *err,
@@ -143,8 +158,19 @@ rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int a
 {
     char local[1];
     if (!err) err = local, errlen = sizeof local;
-    return io_mesh_write(path, mesh_vertices(m->m), mesh_vertex_count(m->m), mesh_triangles(m->m),
-                         mesh_triangle_count(m->m), ascii, err, errlen) == 0
-               ? RAYSCAD_OK
-               : RAYSCAD_ERROR;
+    const float *v = mesh_vertices(m->m);
+    const int32_t *t = mesh_triangles(m->m);
+    int nv = mesh_vertex_count(m->m), nt = mesh_triangle_count(m->m), rc;
+    if (!rayscad_mesh_format_supported(path)) {
+        rayscad_say(err, errlen,
+                    "%s: unknown mesh format (use .stl, .off, .obj, .ply, .amf or .3mf)", path);
+        return RAYSCAD_ERROR;
+    }
+    if (has_extension(path, "amf"))
+        rc = io_amf_write(path, v, nv, t, nt, err, errlen);
+    else if (has_extension(path, "3mf"))
+        rc = io_3mf_write(path, v, nv, t, nt, err, errlen);
+    else
+        rc = io_mesh_write(path, v, nv, t, nt, ascii, err, errlen);
+    return rc == 0 ? RAYSCAD_OK : RAYSCAD_ERROR;
 }

@@ -29,6 +29,11 @@ static void scad_options_of(const rayscad_eval_options *o, scad_services *servic
     so->facets = (int)o->facets;
     so->for_mesh = o->for_mesh;
     so->library_path = o->library_path;
+    so->hard_warnings = o->hard_warnings;
+    so->no_parameter_check = o->no_parameter_check;
+    so->range_check = o->range_check;
+    so->parameters = o->parameters;
+    so->parameters_ud = o->parameters_ud;
 }
 
 static rayscad_status load(const char *name, const char *src, const rayscad_eval_options *o,

@@ -80,3 +80,8 @@ rayscad_status rayscad_colors_by_name(const char *name, rayscad_colors *out)
 {
     return render_colors_by_name(name, out) == 0 ? RAYSCAD_OK : RAYSCAD_ERROR_ARGUMENT;
 }
+
+const char *rayscad_colors_name(int i)
+{
+    return render_colors_name(i);
+}

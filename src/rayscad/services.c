@@ -297,12 +297,14 @@ static int mesh_tree(void *ud, csg_node *root, double h, float **v, int *nv, int
 static int text_outlines(void *ud, const scad_text_params *p, scad_paths *out, char *err,
                          size_t errlen)
 {
-    (void)ud;
-    io_text_params q = {p->text,   p->size,     p->font,       p->halign,
-                        p->valign, p->spacing,  p->direction,  p->language,
-                        p->script, p->segments, p->font_files, p->nfont_files};
+    const rayscad_services *caller = ud;
+    char font[4096] = "";
+    io_text_params q = {p->text,       p->size,        p->font,     p->halign,  p->valign,
+                        p->spacing,    p->direction,   p->language, p->script,  p->segments,
+                        p->font_files, p->nfont_files, font,        sizeof font};
     io_paths r;
     int rc = io_text_render(&q, &r, err, errlen);
+    if (font[0] && caller && caller->file_read) caller->file_read(caller->ud, font);
     if (rc != 0) return rc;
     from_io(&r, out);
     return 0;
@@ -311,13 +313,33 @@ static int text_outlines(void *ud, const scad_text_params *p, scad_paths *out, c
 /* ---- the caller's services over the defaults ------------------------------------------ */
 
 /* ud is the caller's rayscad_services (or NULL): each member it sets
- * replaces the library's. */
+ * replaces the library's; file_read hears of each file read, make_file of
+ * each file to import that is not there. */
+static void told(const rayscad_services *p, const char *path, int rc)
+{
+    if (rc == 0 && p && p->file_read) p->file_read(p->ud, path);
+}
+
+static void make_if_missing(const rayscad_services *p, const char *path)
+{
+    struct stat st;
+    if (p && p->make_file && stat(path, &st) != 0 && errno == ENOENT) p->make_file(p->ud, path);
+}
+
+static void want_file_via(void *ud, const char *path)
+{
+    make_if_missing(ud, path);
+}
+
 static int read_file_via(void *ud, const char *path, size_t max, char **data, size_t *len,
                          char *err, size_t errlen)
 {
     const rayscad_services *p = ud;
-    if (p && p->read_file) return p->read_file(p->ud, path, max, data, len, err, errlen);
-    return read_file(NULL, path, max, data, len, err, errlen);
+    make_if_missing(p, path); /* an import: an include is read once found */
+    int rc = p && p->read_file ? p->read_file(p->ud, path, max, data, len, err, errlen)
+                               : read_file(NULL, path, max, data, len, err, errlen);
+    told(p, path, rc);
+    return rc;
 }
 
 static int stat_file_via(void *ud, const char *path, long long *mtime)
@@ -331,17 +353,23 @@ static int read_mesh_via(void *ud, const char *path, float **v, int *nv, int32_t
                          char *err, size_t errlen)
 {
     const rayscad_services *p = ud;
-    if (p && p->read_mesh) return p->read_mesh(p->ud, path, v, nv, t, nt, err, errlen);
-    return read_mesh(NULL, path, v, nv, t, nt, err, errlen);
+    make_if_missing(p, path);
+    int rc = p && p->read_mesh ? p->read_mesh(p->ud, path, v, nv, t, nt, err, errlen)
+                               : read_mesh(NULL, path, v, nv, t, nt, err, errlen);
+    told(p, path, rc);
+    return rc;
 }
 
 static int read_image_via(void *ud, const char *path, int *width, int *height, int *channels,
                           float **pixels, char *err, size_t errlen)
 {
     const rayscad_services *p = ud;
-    if (p && p->read_image)
-        return p->read_image(p->ud, path, width, height, channels, pixels, err, errlen);
-    return read_image(NULL, path, width, height, channels, pixels, err, errlen);
+    make_if_missing(p, path);
+    int rc = p && p->read_image
+                 ? p->read_image(p->ud, path, width, height, channels, pixels, err, errlen)
+                 : read_image(NULL, path, width, height, channels, pixels, err, errlen);
+    told(p, path, rc);
+    return rc;
 }
 
 void rayscad_scad_services(const rayscad_services *caller, scad_services *out)
@@ -350,6 +378,7 @@ void rayscad_scad_services(const rayscad_services *caller, scad_services *out)
         .ud = (void *)(uintptr_t)caller,
         .read_file = read_file_via,
         .stat_file = stat_file_via,
+        .want_file = want_file_via,
         .read_mesh = read_mesh_via,
         .read_image = read_image_via,
         .paths_clip = clip_paths,

@@ -36,6 +36,11 @@ static void unpack(unsigned rgb, float out[3])
     out[2] = (float)(rgb & 0xff) / 255.0f;
 }
 
+const char *render_colors_name(int i)
+{
+    return i >= 0 && (size_t)i < sizeof schemes / sizeof schemes[0] ? schemes[i].name : NULL;
+}
+
 int render_colors_by_name(const char *name, render_colors *out)
 {
     if (!name) return -1;

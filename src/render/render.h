@@ -51,6 +51,8 @@ int render_raygen_cover(const render_raygen *g, const double lo[3], const double
 /* Fill *out with scheme `name` ("Cornfield", "Metallic", …, as OpenSCAD
  * names them).  Returns 0, or -1 for an unknown name. */
 int render_colors_by_name(const char *name, render_colors *out);
+/* Scheme i's name (OpenSCAD's order), NULL past the last. */
+const char *render_colors_name(int i);
 
 /* Scene roots by role (RAYSCAD_ROOT_MODEL …): root 0 is the model; root 1,
  * when present, the '#' highlight subtrees (drawn in colors.highlight over

@@ -111,6 +111,10 @@ typedef struct scad_diag {
     const char **deprecated;
     int ndeprecated, capdeprecated;
     int stopped; /* an error stopped the evaluation: later lines are dropped */
+    /* With opt->hard_warnings: called after each "WARNING: " line (the
+     * evaluator stops there), while an evaluation runs; else NULL. */
+    void (*hard_stop)(void *ud);
+    void *hard_ud;
 } scad_diag;
 
 /* "file:line:col: error: <fmt>" as a RAYSCAD_MSG_ERROR line. */
@@ -224,6 +228,8 @@ char *scad_file_read(const scad_options *opt, const char *path, size_t max, size
 /* 1 when path is a regular file that can be read; *mtime (may be NULL) gets
  * its modification time, 0 when it is none. */
 int scad_file_stat(const scad_options *opt, const char *path, long long *mtime);
+/* Say that an import is about to read path (scad_services.want_file). */
+void scad_file_want(const scad_options *opt, const char *path);
 
 /* ---- syntax tree ---------------------------------------------------------- */
 

@@ -44,6 +44,9 @@ void scad_diag_line(scad_diag *d, scad_msg_kind kind, const char *line)
     if (kind == RAYSCAD_MSG_WARNING) d->warnings++;
     if (kind == RAYSCAD_MSG_ERROR) d->errors++;
     if (d->opt && d->opt->message) d->opt->message(d->opt->ud, kind, line);
+    if (kind == RAYSCAD_MSG_WARNING && d->hard_stop && d->opt && d->opt->hard_warnings &&
+        strncmp(line, "WARNING: ", 9) == 0)
+        d->hard_stop(d->hard_ud);
 }
 
 /* "file:line:col: <label>: <message>" as one line of the given kind. */

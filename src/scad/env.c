@@ -297,7 +297,7 @@ const scad_moddef *scad_find_module(scad_eval *ev, scad_env *env, const char *na
  * With params, every argument in *out carries its resolved name; without,
  * positional arguments keep their relative order. */
 int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out, int resolve,
-                   const scad_args *params, int npositional, scad_loc loc)
+                   const scad_args *params, int npositional, int user, scad_loc loc)
 {
     out->n = 0;
     out->v = NULL;
@@ -341,7 +341,8 @@ int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_arg
             }
             name = params->v[pos++].name;
         }
-        if (named && params && name[0] != '$') {
+        if (named && params && name[0] != '$' &&
+            !(user && ev->d->opt && ev->d->opt->no_parameter_check)) {
             int known = 0;
             for (int k = 0; k < params->n && !known; k++)
                 known = params->v[k].name == name;
@@ -372,7 +373,7 @@ int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_arg
 
 int scad_args_eval(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out)
 {
-    return scad_args_bind(ev, env, args, out, 0, NULL, 0, (scad_loc){0});
+    return scad_args_bind(ev, env, args, out, 0, NULL, 0, 0, (scad_loc){0});
 }
 
 int scad_args_lazy(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out)

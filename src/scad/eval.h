@@ -137,6 +137,7 @@ typedef struct scad_eval {
     scad_loc at;
     int facets;                    /* scad_facets, from the options */
     int for_mesh;                  /* evaluated for a mesh (scad_options.for_mesh) */
+    int no_builtins;               /* openscad's empty context: no builtin functions */
     const scad_services *services; /* from the options; never NULL (an empty set) */
     /* shape data made by builtin_geometry.c, one reference each, dropped by
      * scad_geometry_release */
@@ -209,10 +210,12 @@ const scad_moddef *scad_find_module(scad_eval *ev, scad_env *env, const char *na
 /* Evaluate a call's arguments (env.c says in which order).  resolve 0:
  * first to last, names as written.  resolve 1: bound to params by
  * OpenSCAD's rule, the first npositional of them taking the unnamed
- * arguments; params NULL: unnamed ones stay unnamed.  0, or -1 after an
- * out-of-memory error; free out with scad_argv_free. */
+ * arguments; params NULL: unnamed ones stay unnamed.  user 1: params are a
+ * user module's or function's (--check-parameters=false silences their
+ * "not specified as parameter").  0, or -1 after an out-of-memory error;
+ * free out with scad_argv_free. */
 int scad_args_bind(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out, int resolve,
-                   const scad_args *params, int npositional, scad_loc loc);
+                   const scad_args *params, int npositional, int user, scad_loc loc);
 int scad_args_eval(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out);
 /* The same, each argument evaluated only when first read (scad_arg_at). */
 int scad_args_lazy(scad_eval *ev, scad_env *env, const scad_args *args, scad_argv *out);
@@ -272,6 +275,10 @@ void scad_bind_given(scad_env *target, const scad_argv *argv);
  * evaluator counts calls and loop values: 0 to go on; past the limit, the
  * error "evaluation took more than N steps (what)" at loc and -1. */
 int scad_eval_steps(scad_eval *ev, long n, scad_loc loc, const char *what);
+
+/* scad_diag.hard_stop for an evaluation (ud: its scad_eval): the call
+ * trace, an error naming --hardwarnings, and the evaluation stops. */
+void scad_eval_hard_stop(void *ud);
 
 /* Error: reports "file:line:col: error: …" and stops the evaluation. */
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)

@@ -54,6 +54,19 @@ static void eval_verror(scad_eval *ev, scad_loc loc, const char *echo_msg, const
     eval_error_at(ev, loc, loc, echo_msg ? echo_msg : msg, msg, 0);
 }
 
+void scad_eval_hard_stop(void *ud)
+{
+    scad_eval *ev = ud;
+    if (ev->aborted) return;
+    /* openscad 2021.01 stops as at an error, the warning in the ERROR
+     * line's place: the call trace follows it */
+    for (int i = ev->nframes - 1, k = 0; i >= 0 && k < TRACE_DEPTH; i--, k++)
+        scad_diag_trace(ev->d, ev->frames[i].loc, "TRACE: called by '%s'", ev->frames[i].name);
+    scad_diag_error(ev->d, scad_eval_here(ev), "stopped at the first warning (--hardwarnings)");
+    ev->d->stopped = 1;
+    ev->aborted = 1;
+}
+
 void scad_eval_error(scad_eval *ev, scad_loc loc, const char *fmt, ...)
 {
     va_list ap;
@@ -199,7 +212,7 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
     if (scad_call_enter(ev, call->loc, call->loc, "function", name)) return scad_undef();
     scad_env *fe = scad_env_new(ev, def_env, env, NULL);
     if (fe) scad_bind_defaults(ev, fe, def_env, params);
-    if (!fe || scad_args_bind(ev, env, &call->args, &argv, 1, params, params->n, call->loc)) {
+    if (!fe || scad_args_bind(ev, env, &call->args, &argv, 1, params, params->n, 1, call->loc)) {
         scad_env_free(fe);
         scad_call_leave(ev);
         return scad_undef();
@@ -264,7 +277,8 @@ static scad_value call_user_function(scad_eval *ev, scad_env *env, const scad_ex
                  * $-variables ($fn given to the first call) go on */
                 scad_env_copy_specials(next, cur, fe);
                 scad_bind_defaults(ev, next, def_env, params);
-                if (scad_args_bind(ev, cur, &tail->args, &argv, 1, params, params->n, tail->loc)) {
+                if (scad_args_bind(ev, cur, &tail->args, &argv, 1, params, params->n, 1,
+                                   tail->loc)) {
                     scad_env_free(next);
                     next = NULL;
                 }
@@ -331,7 +345,8 @@ static scad_value eval_call_framed(scad_eval *ev, scad_env *env, const scad_expr
                 if (fresh) scad_env_free(def_env);
                 return r;
             }
-            const scad_function_def *b = scad_registry_function(callee->str);
+            const scad_function_def *b =
+                ev->no_builtins ? NULL : scad_registry_function(callee->str);
             if (b) {
                 scad_argv argv;
                 if (scad_args_lazy(ev, env, &e->args, &argv)) return scad_undef();

@@ -264,7 +264,7 @@ static scad_geom *call_module(scad_eval *ev, scad_env *env, const scad_stmt *st,
     scad_env *me = scad_env_new(ev, def_env, env, m->body);
     if (!me) return NULL;
     scad_bind_defaults(ev, me, def_env, &m->params);
-    if (scad_args_bind(ev, env, &st->args, &argv, 1, &m->params, m->params.n, st->loc)) {
+    if (scad_args_bind(ev, env, &st->args, &argv, 1, &m->params, m->params.n, 1, st->loc)) {
         scad_env_free(me);
         return NULL;
     }
@@ -516,7 +516,8 @@ static scad_geom *call_builtin(scad_eval *ev, scad_env *env, const scad_stmt *st
             scad_eval_error(ev, st->loc, "out of memory");
             return NULL;
         }
-        if (scad_args_bind(ev, env, &st->args, &a, 1, params, d->npositional, st->loc)) return NULL;
+        if (scad_args_bind(ev, env, &st->args, &a, 1, params, d->npositional, 0, st->loc))
+            return NULL;
         for (int k = 0; k < a.n; k++)
             for (int i = 0; i < params->n; i++)
                 if (params->v[i].name == a.names[k]) c.arg[i] = a.v[k];

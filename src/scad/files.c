@@ -51,6 +51,12 @@ int scad_file_stat(const scad_options *opt, const char *path, long long *mtime)
     return s && s->stat_file && s->stat_file(s->ud, path, mtime);
 }
 
+void scad_file_want(const scad_options *opt, const char *path)
+{
+    const scad_services *s = opt ? opt->services : NULL;
+    if (s && s->want_file) s->want_file(s->ud, path);
+}
+
 static char *join_path(scad_arena *a, const char *dir, size_t dl, const char *name)
 {
     size_t nl = strlen(name);

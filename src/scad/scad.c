@@ -216,44 +216,60 @@ static int file_camera(scad_eval *ev, scad_env *file, scad_result *out)
     return taken;
 }
 
+/* Set up an evaluator for job j, its stack measured from *base (in the
+ * caller's frame): 0, or -1 after an out-of-memory error (nothing to
+ * free). */
+static int eval_init(scad_eval *ev, job *j, char *base)
+{
+    memset(ev, 0, sizeof *ev);
+    ev->d = j->d;
+    ev->names = j->names;
+    ev->arena = scad_arena_new();
+    ev->max_depth =
+        j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion : DEFAULT_MAX_RECURSION;
+    ev->max_steps = j->opt && j->opt->max_steps > 0 ? j->opt->max_steps : DEFAULT_MAX_STEPS;
+    ev->max_list = j->opt && j->opt->max_list > 0 && j->opt->max_list < SCAD_MAX_LIST
+                       ? j->opt->max_list
+                       : SCAD_MAX_LIST;
+    ev->max_string = j->opt && j->opt->max_string > 0 ? j->opt->max_string : SCAD_MAX_STRING;
+    ev->stack_base = base;
+    ev->stack_budget =
+        j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;
+    ev->rand_seed = (unsigned long)time(NULL) ^ (unsigned long)(size_t)base;
+    ev->dump = j->dump != NULL;
+    ev->at = (scad_loc){j->name, 1, 1};
+    if (!ev->arena) {
+        scad_diag_error(j->d, ev->at, "out of memory");
+        return -1;
+    }
+    ev->sym_children = scad_names_intern(ev->names, "$children", 9);
+    ev->sym_parent_modules = scad_names_intern(ev->names, "$parent_modules", 15);
+    ev->sym_children_module = scad_names_intern(ev->names, "children", 8);
+    ev->sym_intersection_for = scad_names_intern(ev->names, "intersection_for", 16);
+    ev->builtin_params = scad_arena_alloc(ev->arena, sizeof *ev->builtin_params *
+                                                         (size_t)scad_registry_module_count());
+    if (!ev->sym_children || !ev->sym_parent_modules || !ev->sym_children_module ||
+        !ev->sym_intersection_for || !ev->builtin_params) {
+        scad_diag_error(j->d, ev->at, "out of memory");
+        scad_arena_free(ev->arena);
+        return -1;
+    }
+    ev->top = j->top;
+    ev->facets = j->opt ? j->opt->facets : RAYSCAD_FACETS_AUTO;
+    ev->for_mesh = j->opt && j->opt->for_mesh;
+    static const scad_services no_services;
+    ev->services = j->opt && j->opt->services ? j->opt->services : &no_services;
+    return 0;
+}
+
 static void run_job(job *j)
 {
     char base;
     scad_eval ev;
-    memset(&ev, 0, sizeof ev);
-    ev.d = j->d;
-    ev.names = j->names;
-    ev.arena = scad_arena_new();
-    ev.max_depth =
-        j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion : DEFAULT_MAX_RECURSION;
-    ev.max_steps = j->opt && j->opt->max_steps > 0 ? j->opt->max_steps : DEFAULT_MAX_STEPS;
-    ev.max_list = j->opt && j->opt->max_list > 0 && j->opt->max_list < SCAD_MAX_LIST
-                      ? j->opt->max_list
-                      : SCAD_MAX_LIST;
-    ev.max_string = j->opt && j->opt->max_string > 0 ? j->opt->max_string : SCAD_MAX_STRING;
-    ev.stack_base = &base;
-    ev.stack_budget =
-        j->stack_size > 2 * STACK_MARGIN ? j->stack_size - STACK_MARGIN : j->stack_size / 2;
-    ev.rand_seed = (unsigned long)time(NULL) ^ (unsigned long)(size_t)&base;
-    ev.dump = j->dump != NULL;
-    ev.at = (scad_loc){j->name, 1, 1};
     j->status = -1;
-    if (!ev.arena) {
-        scad_diag_error(j->d, ev.at, "out of memory");
-        return;
-    }
-    ev.sym_children = scad_names_intern(ev.names, "$children", 9);
-    ev.sym_parent_modules = scad_names_intern(ev.names, "$parent_modules", 15);
-    ev.sym_children_module = scad_names_intern(ev.names, "children", 8);
-    ev.sym_intersection_for = scad_names_intern(ev.names, "intersection_for", 16);
-    ev.builtin_params = scad_arena_alloc(ev.arena, sizeof *ev.builtin_params *
-                                                       (size_t)scad_registry_module_count());
-    if (!ev.sym_children || !ev.sym_parent_modules || !ev.sym_children_module ||
-        !ev.sym_intersection_for || !ev.builtin_params) {
-        scad_diag_error(j->d, ev.at, "out of memory");
-        scad_arena_free(ev.arena);
-        return;
-    }
+    if (eval_init(&ev, j, &base) != 0) return;
+    j->d->hard_stop = scad_eval_hard_stop;
+    j->d->hard_ud = &ev;
     scad_env *builtins = scad_env_new(&ev, NULL, NULL, NULL);
     if (builtins) { /* set before any environment below it is made (eval.h) */
         set_num(&ev, builtins, "PI", 3.14159265358979323846);
@@ -269,11 +285,6 @@ static void run_job(job *j)
     }
     scad_env *file = builtins ? scad_env_new(&ev, builtins, builtins, j->top) : NULL;
     ev.builtins = builtins;
-    ev.top = j->top;
-    ev.facets = j->opt ? j->opt->facets : RAYSCAD_FACETS_AUTO;
-    ev.for_mesh = j->opt && j->opt->for_mesh;
-    static const scad_services no_services;
-    ev.services = j->opt && j->opt->services ? j->opt->services : &no_services;
     if (file) {
         scad_geom *model = scad_eval_file_scope(&ev, file, j->top);
         if (ev.second_root.file && !ev.aborted)
@@ -324,6 +335,7 @@ static void run_job(job *j)
             }
         }
     }
+    j->d->hard_stop = NULL;
     scad_env_free(file);
     free(ev.module_names);
     free(ev.frames);
@@ -338,11 +350,10 @@ static void run_job(job *j)
 /* ---- -D overrides ------------------------------------------------------------------ */
 
 static int apply_defines(scad_arena *a, scad_diag *d, scad_names *names, scad_scope *top,
-                         const scad_options *opt)
+                         const char *const *defines, int count)
 {
-    if (!opt) return 0;
-    for (int i = 0; i < opt->define_count; i++) {
-        const char *def = opt->defines[i];
+    for (int i = 0; i < count; i++) {
+        const char *def = defines[i];
         size_t n = strlen(def);
         char *src = scad_arena_alloc(a, n + 2);
         if (!src) return -1;
@@ -373,6 +384,60 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_names *names, scad_sc
     return 0;
 }
 
+/* ---- customizer parameter sets ----------------------------------------------------- */
+
+typedef struct param_ctx {
+    job *j;
+} param_ctx;
+
+/* rayscad_parameter_query.default_type: assignment i's expression in an
+ * empty context, as openscad 2021.01's ParameterSet::applyParameterSet
+ * evaluates it (no variables, no builtin functions), warnings and all. */
+static rayscad_value_type default_type(void *ud, int i)
+{
+    param_ctx *c = ud;
+    job *j = c->j;
+    char base;
+    scad_eval ev;
+    if (i < 0 || i >= j->top->nassigns || eval_init(&ev, j, &base) != 0) return RAYSCAD_VALUE_UNDEF;
+    ev.no_builtins = 1;
+    scad_env *empty = scad_env_new(&ev, NULL, NULL, NULL);
+    scad_value v = empty ? scad_eval_expr(&ev, empty, j->top->assigns[i].value) : scad_undef();
+    rayscad_value_type t = (rayscad_value_type)v.kind; /* scad_vkind's order */
+    scad_env_free(empty);
+    scad_eval_free_captured(&ev);
+    scad_geometry_release(&ev);
+    scad_arena_free(ev.arena);
+    return t;
+}
+
+/* Ask the caller for the parameter set's overrides and apply them as -D
+ * ones: 0, or -1 (the load fails). */
+static int apply_parameters(job *j)
+{
+    scad_scope *top = j->top;
+    const char **names = scad_arena_alloc(j->a, sizeof *names * (size_t)(top->nassigns + 1));
+    if (!names) {
+        scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
+        return -1;
+    }
+    for (int i = 0; i < top->nassigns; i++)
+        names[i] = top->assigns[i].name;
+    param_ctx c = {j};
+    rayscad_parameter_query q = {top->nassigns, names, default_type, &c};
+    const char *const *overrides = NULL;
+    int n = 0;
+    if (j->opt->parameters(j->opt->parameters_ud, &q, &overrides, &n) != 0) {
+        j->d->errors++; /* the hook said why */
+        return -1;
+    }
+    if (apply_defines(j->a, j->d, j->names, top, overrides, n)) {
+        if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
+        return -1;
+    }
+    return 0;
+}
+
 /* Parse the job's source and apply the -D overrides, on the job's own
  * stack: a file nested MAX_DEPTH levels deep recurses that far in the
  * parser, which a sanitizer build's larger frames do not fit in 8 MB.
@@ -385,11 +450,12 @@ static int parse_job(job *j)
         scad_diag_parse_failed(j->d, j->name);
         return -1;
     }
-    if (apply_defines(j->a, j->d, j->names, j->top, j->opt)) {
+    if (j->opt &&
+        apply_defines(j->a, j->d, j->names, j->top, j->opt->defines, j->opt->define_count)) {
         if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
         return -1;
     }
-    return 0;
+    return j->opt && j->opt->parameters ? apply_parameters(j) : 0;
 }
 
 static void *job_thread(void *p)

@@ -59,6 +59,9 @@ typedef struct scad_services {
     int (*read_file)(void *ud, const char *path, size_t max, char **data, size_t *len, char *err,
                      size_t errlen);
     int (*stat_file)(void *ud, const char *path, long long *mtime);
+    /* A file to import is about to be looked at (may be NULL): the caller
+     * may make it first (rayscad_services.make_file). */
+    void (*want_file)(void *ud, const char *path);
     /* import(): a triangle mesh file (stl, off, obj, ply, amf, 3mf) as 3
      * floats per vertex and 3 indices per triangle, counter-clockwise seen
      * from outside; err may hold warnings after a success, as
@@ -130,6 +133,12 @@ typedef struct scad_options {
     const char *library_path;
     /* Outside services (may be NULL: none). */
     const scad_services *services;
+    /* rayscad_eval_options: hard_warnings, no_parameter_check, range_check,
+     * parameters. */
+    int hard_warnings, no_parameter_check, range_check;
+    int (*parameters)(void *ud, const rayscad_parameter_query *q, const char *const **overrides,
+                      int *count);
+    void *parameters_ud;
 } scad_options;
 
 /* What a file evaluates to.  Each tree may be NULL (nothing there). */

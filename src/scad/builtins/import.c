@@ -191,6 +191,7 @@ static scad_geom *import_build(scad_call *c, const void *args)
     err[0] = 0;
     scad_geom *g = NULL;
     int read = -1;
+    if (!path.oom) scad_file_want(ev->d->opt, scad_buf_str(&path));
     if (path.oom) {
         scad_eval_error(ev, st->loc, "out of memory");
     } else if (!scad_file_stat(ev->d->opt, scad_buf_str(&path), NULL)) {

@@ -22,6 +22,26 @@
 #include "../../geom/hull3d.h"
 #include "builtins.h"
 
+/* ---- openscad's --check-parameter-ranges ----------------------------------------- */
+
+/* With scad_options.range_check, openscad 2021.01's warning for a size
+ * that makes nothing: "<head><a><mid><b><tail>", a and b values formatted
+ * as echo() prints them (b may be undefined: then mid and tail are left
+ * out, and a is followed by tail2). */
+static void range_warning(scad_call *c, const char *head, scad_value a, const char *mid,
+                          scad_value b, const char *tail)
+{
+    const scad_options *o = c->ev->d->opt;
+    if (!o || !o->range_check) return;
+    scad_buf fa = {0}, fb = {0};
+    scad_value_format(&fa, a, 1);
+    if (mid) scad_value_format(&fb, b, 1);
+    scad_diag_warning(c->ev->d, c->st->loc, "%s%s%s%s%s", head, scad_buf_str(&fa), mid ? mid : "",
+                      mid ? scad_buf_str(&fb) : "", tail);
+    scad_buf_free(&fa);
+    scad_buf_free(&fb);
+}
+
 /* ---- cube --------------------------------------------------------------------- */
 
 enum { CUBE_SIZE, CUBE_CENTER };
@@ -53,6 +73,8 @@ static void cube_read(scad_call *c, void *out)
                           scad_buf_str(&b));
         scad_buf_free(&b);
     }
+    if (!(p->size[0] > 0 && p->size[1] > 0 && p->size[2] > 0))
+        range_warning(c, "cube(size=", size, NULL, size, ", ...)");
     p->center = scad_arg_bool(c->arg[CUBE_CENTER], 0);
 }
 
@@ -104,6 +126,10 @@ static void round_read(scad_call *c, void *out)
     round_args *p = out;
     p->r = 1;
     scad_arg_radius(c, ROUND_D, ROUND_R, "d", "r", &p->r);
+    if (!(p->r > 0)) {
+        const char *head = strcmp(c->def->name, "sphere") == 0 ? "sphere(r=" : "circle(r=";
+        range_warning(c, head, scad_num(p->r), NULL, scad_num(0), ")");
+    }
     p->f = scad_facets_read_clamped(c);
 }
 
@@ -226,6 +252,9 @@ static void cylinder_read(scad_call *c, void *out)
     int has_r2 = scad_arg_radius(c, CYL_D2, CYL_R2, "d2", "r2", &p->r2);
     if (has_r && (has_r1 || has_r2))
         scad_diag_warning(c->ev->d, c->st->loc, "Cylinder parameters ambiguous");
+    if (!(p->h > 0)) range_warning(c, "cylinder(h=", scad_num(p->h), NULL, scad_num(0), ", ...)");
+    if (p->r1 < 0 || p->r2 < 0 || (p->r1 == 0 && p->r2 == 0))
+        range_warning(c, "cylinder(r1=", scad_num(p->r1), ", r2=", scad_num(p->r2), ", ...)");
     p->center = scad_arg_bool(c->arg[CYL_CENTER], 0);
     p->f = scad_facets_read_clamped(c);
 }
@@ -331,6 +360,8 @@ static void square_read(scad_call *c, void *out)
                           scad_buf_str(&b));
         scad_buf_free(&b);
     }
+    if (!(p->size[0] > 0 && p->size[1] > 0))
+        range_warning(c, "square(size=", size, NULL, size, ", ...)");
     p->center = scad_arg_bool(c->arg[SQUARE_CENTER], 0);
 }
 

@@ -1,0 +1,216 @@
+#!/usr/bin/env bash
+# Every option of `openscad --help` (2021.01), run on the same files by the
+# real openscad and by rayscad: the outputs, messages and exit statuses that
+# openscad's users rely on must agree (README.md has the table).  Where the
+# two differ on purpose the check says so.  Meshes are compared by volume
+# (build/tools/meshcmp), images by silhouette (build/tools/maskcmp; openscad
+# under xvfb-run).
+#   usage: tests/cli/openscad_flags.sh [BUILD]
+set -u
+build=${1:-build}
+rayscad=$(realpath "$build/rayscad")
+meshcmp=$(realpath "$build/tools/meshcmp")
+maskcmp=$(realpath "$build/tools/maskcmp")
+root=$PWD
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+umask 022
+passed=0
+failed=0
+
+check() { # name, condition (a command)
+    local name=$1
+    shift
+    if "$@"; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL $name"
+        failed=$((failed + 1))
+    fi
+}
+
+if ! command -v openscad >/dev/null; then
+    echo "openscad_flags: openscad not found (make deps installs it)"
+    exit 1
+fi
+
+# Both programs on the same arguments, in folders of their own with the same
+# files: o/ for openscad, r/ for rayscad; stdout, stderr and status kept.
+both() {
+    rm -rf o r
+    mkdir o r
+    cp -- *.scad *.stl *.dat *.json o/ 2>/dev/null
+    cp -- *.scad *.stl *.dat *.json r/ 2>/dev/null
+    (cd o && openscad "$@" >out.txt 2>err.txt)
+    orc=$?
+    (cd r && "$rayscad" "$@" >out.txt 2>err.txt)
+    rrc=$?
+}
+same_status() { [ "$orc" -eq 0 ] && [ "$rrc" -eq 0 ] || { [ "$orc" -ne 0 ] && [ "$rrc" -ne 0 ]; }; }
+same_file() { cmp -s "o/$1" "r/$1"; }
+same_volume() { "$meshcmp" "r/$1" "o/$1" --volume-only >/dev/null; }
+# The ECHO and WARNING lines a run printed on stderr (openscad adds its own
+# progress lines, rayscad its own notes).
+said() { grep -E '^(ECHO|WARNING|DEPRECATED|TRACE):' "$1/err.txt"; }
+same_said() { diff <(said o) <(said r) >/dev/null; }
+
+cat >p.scad <<'EOF'
+echo(preview = $preview, t = $t);
+if ($preview) cube(2); else sphere(1, $fn = 16);
+EOF
+cat >w.scad <<'EOF'
+echo("a");
+cube(a = 1);
+echo("b");
+EOF
+cat >params.scad <<'EOF'
+module m(a = 1) echo(a = a);
+m(b = 2);
+cylinder(r = -1, h = 1);
+cube([1, -1, 1]);
+sphere(d = -4);
+square(0);
+circle(r = 0);
+cube(2);
+EOF
+printf 'include <inc.scad>\nimport("ring.stl");\nsurface("s.dat");\necho(v);\n' >dep.scad
+printf 'v = 5;\n' >inc.scad
+printf '1 2\n3 4\n' >s.dat
+printf 'solid t\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\nendloop\nendfacet\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 0 1\nendloop\nendfacet\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 1\nvertex 0 1 0\nendloop\nendfacet\nfacet normal 0 0 0\nouter loop\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\nendloop\nendfacet\nendsolid t\n' >ring.stl # a tetrahedron, outward
+
+# -o, repeatable: every output of one run.  openscad 2021.01 crashes on
+# some pairs (-o x.echo -o y.csg), so its reference is one run per output.
+# (It also writes a .csg beside the input file, not in the working folder:
+# the input is copied in.)
+rm -rf o r && mkdir o r && cp p.scad o/ && cp p.scad r/
+(cd o && openscad -o a.echo p.scad && openscad -o b.csg p.scad && openscad -o a.stl p.scad) \
+    >/dev/null 2>&1
+(cd r && "$rayscad" -o a.echo -o b.csg -o a.stl -o b.off p.scad >/dev/null 2>err.txt)
+rrc=$?
+check "-o four times: one run writes them all" \
+    sh -c "[ $rrc -eq 0 ] && [ -s r/a.echo ] && [ -s r/b.csg ] && [ -s r/a.stl ] && [ -s r/b.off ]"
+check "-o four times: the .echo openscad writes alone" same_file a.echo
+check "-o four times: the .csg openscad writes alone" same_file b.csg
+check "-o four times: the STL's volume as openscad's (render: the sphere)" same_volume a.stl
+check "-o four times: the OFF holds the same mesh" \
+    sh -c "'$meshcmp' r/b.off o/a.stl --volume-only >/dev/null"
+
+# --export-format and -o -.
+both --export-format echo -o - p.scad
+check "-o - --export-format echo: the same stdout" cmp -s o/out.txt r/out.txt
+both -o - p.scad
+check "-o - without a format fails in both" sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ]"
+check "-o - without a format: openscad's words" grep -q "Either add a valid suffix" r/err.txt
+both --export-format binstl -o x.foo p.scad
+check "--export-format binstl: binary STL whatever the name" \
+    sh -c "! head -c 5 r/x.foo | grep -q solid && ! head -c 5 o/x.foo | grep -q solid"
+both --export-format asciistl -o x.stl p.scad
+check "--export-format asciistl: text STL" sh -c "head -c 5 r/x.stl | grep -q solid"
+check "--export-format asciistl: volume as openscad's" same_volume x.stl
+both -o x.stl p.scad
+check "STL is text by default in both" \
+    sh -c "head -c 5 r/x.stl | grep -q solid && head -c 5 o/x.stl | grep -q solid"
+both --export-format foo -o x.stl p.scad
+check "--export-format foo fails in both" sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ] && [ ! -e r/x.stl ]"
+check "--export-format foo: openscad's words" grep -q "Unknown --export-format option 'foo'" r/err.txt
+
+# - as the input: the model from stdin, named <stdin>.
+rm -rf o r && mkdir o r && cp w.scad o/ && cp w.scad r/
+(cd o && openscad -o x.echo - <w.scad >/dev/null 2>&1)
+(cd r && "$rayscad" -o x.echo - <w.scad >/dev/null 2>&1)
+check "- reads stdin: the same .echo" same_file x.echo
+
+# $preview: true for images and .echo, false for meshes and --render images.
+both -o x.stl p.scad
+check "\$preview false for a mesh, as openscad" same_said
+if command -v xvfb-run >/dev/null; then
+    rm -rf o r && mkdir o r
+    (cd o && xvfb-run -a openscad --render -o x.png --imgsize=200,200 ../p.scad >out.txt 2>err.txt)
+    (cd r && "$rayscad" --render -o x.png --imgsize=200,200 ../p.scad >out.txt 2>err.txt)
+    check "--render: \$preview false for the image" same_said
+    check "--render: the same silhouette (the sphere)" \
+        sh -c "'$maskcmp' r/x.png o/x.png --min-iou 0.99 >/dev/null"
+    rm -rf o r && mkdir o r
+    (cd o && xvfb-run -a openscad --preview -o x.png --imgsize=200,200 ../p.scad >out.txt 2>err.txt)
+    (cd r && "$rayscad" --preview -o x.png --imgsize=200,200 ../p.scad >out.txt 2>err.txt)
+    check "--preview: \$preview true for the image" same_said
+    check "--preview: the same silhouette (the cube)" \
+        sh -c "'$maskcmp' r/x.png o/x.png --min-iou 0.99 >/dev/null"
+    # --animate: frames named as openscad names them; openscad 2021.01 stops
+    # after two PNG frames under Xvfb (an X error), so each reference frame
+    # is its own run at that $t.
+    printf 'rotate([0, 0, 90 * $t]) translate([5, 0, 0]) cube([6, 2, 2]);\n' >anim.scad
+    "$rayscad" --animate 4 -o f.png --imgsize=160,120 anim.scad >/dev/null 2>&1
+    ok=1
+    for i in 0 1 2 3; do
+        xvfb-run -a openscad -o "ref$i.png" --imgsize=160,120 -D "\$t=$i/4" anim.scad >/dev/null 2>&1
+        "$maskcmp" "f0000$i.png" "ref$i.png" --min-iou 0.99 >/dev/null || ok=0
+    done
+    check "--animate 4: four frames, each openscad's at its \$t" test "$ok" -eq 1
+fi
+both --animate 3 -o f.stl p.scad
+check "--animate 3: frames f00000.stl .. f00002.stl in both" \
+    sh -c "ls o/f0000?.stl | sed 's|o/||' >o.txt; ls r/f0000?.stl | sed 's|r/||' >r.txt; cmp -s o.txt r.txt && [ \$(wc -l <r.txt) -eq 3 ]"
+check "--animate 3: \$t = 0, 1/3, 2/3 as openscad" same_said
+
+# Messages: -q, --hardwarnings, --check-parameters, --check-parameter-ranges.
+both -q -o x.stl w.scad
+check "-q: nothing on stderr but errors" test ! -s r/err.txt
+both --hardwarnings -o x.echo w.scad
+check "--hardwarnings: the .echo stops at the warning, as openscad's" same_file x.echo
+both --hardwarnings -o x.stl w.scad
+check "--hardwarnings: a mesh export fails in both" sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ]"
+both -o x.echo params.scad
+check "default checks: the same .echo" same_file x.echo
+both --check-parameters=false -o x.echo params.scad
+check "--check-parameters=false: the same .echo" same_file x.echo
+both --check-parameter-ranges=true -o x.echo params.scad
+check "--check-parameter-ranges=true: the same .echo" same_file x.echo
+check "--check-parameter-ranges=true: warns of cylinder(r1=-1, r2=-1, ...)" \
+    grep -q "cylinder(r1=-1, r2=-1, ...)" r/x.echo
+
+# --colorscheme: a wrong name lists the schemes, in openscad's order.
+both --colorscheme=Foo -o x.png p.scad
+check "--colorscheme=Foo fails in both" sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ]"
+check "--colorscheme=Foo: the same schemes listed" \
+    sh -c "grep -v 'rayscad:' r/err.txt | diff - o/err.txt >/dev/null"
+
+# -d and -m.
+both -d x.d -o x.stl dep.scad
+check "-d: the same files (fonts aside), files absolute, the input as given" \
+    sh -c "tr -d '\\\\' <o/x.d | tr -s ' \t' '\n' | sed 's|$tmp/o/||' | sort >o.deps;
+           tr -d '\\\\' <r/x.d | tr -s ' \t' '\n' | sed 's|$tmp/r/||' | sort >r.deps; cmp -s o.deps r.deps"
+printf 'import("made.stl");\n' >mk.scad
+printf '#!/bin/sh\ncp "$(dirname "$1")/ring.stl" "$1"\necho "$1" >made.txt\n' >mk.sh
+chmod +x mk.sh
+rm -rf o r && mkdir o r && cp mk.scad mk.sh ring.stl o/ && cp mk.scad mk.sh ring.stl r/
+(cd o && openscad -m ./mk.sh -o x.stl mk.scad >/dev/null 2>&1)
+(cd r && "$rayscad" -m ./mk.sh -o x.stl mk.scad >/dev/null 2>&1)
+check "-m: make ran for the missing import with the path openscad gives" \
+    sh -c "sed 's|/o/|/|' o/made.txt >a.txt; sed 's|/r/|/|' r/made.txt >b.txt; cmp -s a.txt b.txt"
+check "-m: the made file is imported" same_volume x.stl
+
+# Accepted flags: --csglimit, --debug, --preview=throwntogether, --view,
+# -s, --info, -h, -v.
+both --csglimit=5 -o x.stl p.scad
+check "--csglimit: accepted, the same mesh" same_volume x.stl
+both --debug=all -o x.stl p.scad
+check "--debug: accepted by both" same_status
+both -s s.stl p.scad
+check "-s: writes the file, as -o" same_volume s.stl
+check "-s: openscad's DEPRECATED line" \
+    sh -c "grep DEPRECATED o/err.txt >a.txt; grep DEPRECATED r/err.txt | cmp -s a.txt -"
+both --info # openscad 2021.01 exits 1 after printing it
+check "--info: exits 0" test "$rrc" -eq 0
+for lib in lib3mf freetype harfbuzz fontconfig; do
+    check "--info: the $lib version openscad reports" \
+        sh -c "v=\$(grep -i '^$lib version' o/out.txt | grep -o '[0-9][0-9.]*[0-9]' | head -1); [ -n \"\$v\" ] && grep -i '^$lib' r/out.txt | grep -q \"\$v\""
+done
+both --help
+check "--help: exits 0 in both" same_status
+both --version
+check "--version: exits 0 in both" same_status
+
+echo "openscad_flags: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
