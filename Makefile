@@ -73,11 +73,15 @@ LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 	$(MESH_IMPORT_LIBS) \
 	-lpthread -lm
 
-DEBS = openscad xvfb xauth povray libopenimageio-dev openimageio-tools libopenmesh-dev \
-	libcriterion-dev pkg-config g++ make \
+# What building rayscad (and rendering the demo) needs, and what the tests
+# add: the peers they compare against, Criterion, Xvfb, the sanitizer
+# toolchain.  make demo installs the first only.
+BUILD_DEBS = pkg-config g++ make libopenimageio-dev libopenmesh-dev \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
-	clang libclang-rt-dev man-db \
 	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev
+TEST_DEBS = openscad xvfb xauth povray openimageio-tools libcriterion-dev \
+	clang libclang-rt-dev man-db
+DEBS = $(BUILD_DEBS) $(TEST_DEBS)
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
 	src/rayscad/*.c \
@@ -98,7 +102,7 @@ IMAGE_SO = $(BUILD)/rayscad-image.so
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps demo test unit cli compare conformance corpus meshcheck asan clean format bench fuzz hostile \
+.PHONY: all deps deps-build demo test unit cli compare conformance corpus meshcheck asan clean format bench fuzz hostile \
 	valgrind install uninstall installcheck format-check
 .DEFAULT_GOAL := all
 
@@ -198,12 +202,13 @@ $(BUILD)/tools/%: $(BUILD)/obj/tests/tools/%.o $(BUILD)/librayscad.a
 # make install [PREFIX=/usr/local] [DESTDIR=…]: the command, the static and
 # shared library, the header, pkg-config's rayscad.pc, the image adapter in
 # lib/rayscad/ (found from the program or the library, wherever PREFIX is)
-# and the man page.  make uninstall takes them away again.
+# the man page and bash's completion.  make uninstall takes them away again.
 PREFIX ?= /usr/local
 BINDIR  = $(PREFIX)/bin
 LIBDIR  = $(PREFIX)/lib
 INCDIR  = $(PREFIX)/include
 MANDIR  = $(PREFIX)/share/man/man1
+COMPDIR = $(PREFIX)/share/bash-completion/completions
 PCDIR   = $(LIBDIR)/pkgconfig
 
 $(BUILD)/rayscad.pc: Makefile include/rayscad.h
@@ -216,7 +221,7 @@ $(BUILD)/rayscad.pc: Makefile include/rayscad.h
 
 install: $(BUILD)/rayscad $(BUILD)/$(SO_NAME) $(BUILD)/librayscad.a $(IMAGE_SO) $(BUILD)/rayscad.pc
 	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR)/rayscad $(DESTDIR)$(INCDIR) \
-		$(DESTDIR)$(MANDIR) $(DESTDIR)$(PCDIR)
+		$(DESTDIR)$(MANDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(COMPDIR)
 	install -m 755 $(BUILD)/rayscad $(DESTDIR)$(BINDIR)/rayscad
 	install -m 755 $(BUILD)/$(SO_NAME) $(DESTDIR)$(LIBDIR)/$(SO_NAME)
 	ln -sf $(SO_NAME) $(DESTDIR)$(LIBDIR)/librayscad.so.$(MAJOR)
@@ -225,13 +230,15 @@ install: $(BUILD)/rayscad $(BUILD)/$(SO_NAME) $(BUILD)/librayscad.a $(IMAGE_SO) 
 	install -m 755 $(IMAGE_SO) $(DESTDIR)$(LIBDIR)/rayscad/$(notdir $(IMAGE_SO))
 	install -m 644 include/rayscad.h $(DESTDIR)$(INCDIR)/rayscad.h
 	install -m 644 docs/rayscad.1 $(DESTDIR)$(MANDIR)/rayscad.1
+	install -m 644 docs/rayscad.bash-completion $(DESTDIR)$(COMPDIR)/rayscad
 	install -m 644 $(BUILD)/rayscad.pc $(DESTDIR)$(PCDIR)/rayscad.pc
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/rayscad $(DESTDIR)$(LIBDIR)/$(SO_NAME) \
 		$(DESTDIR)$(LIBDIR)/librayscad.so.$(MAJOR) $(DESTDIR)$(LIBDIR)/librayscad.so \
 		$(DESTDIR)$(LIBDIR)/librayscad.a $(DESTDIR)$(LIBDIR)/rayscad/$(notdir $(IMAGE_SO)) \
-		$(DESTDIR)$(INCDIR)/rayscad.h $(DESTDIR)$(MANDIR)/rayscad.1 $(DESTDIR)$(PCDIR)/rayscad.pc
+		$(DESTDIR)$(INCDIR)/rayscad.h $(DESTDIR)$(MANDIR)/rayscad.1 $(DESTDIR)$(PCDIR)/rayscad.pc \
+		$(DESTDIR)$(COMPDIR)/rayscad
 	-rmdir $(DESTDIR)$(LIBDIR)/rayscad 2>/dev/null
 
 # An installation into a scratch DESTDIR, used as a stranger would use it
@@ -239,16 +246,24 @@ uninstall:
 installcheck: all
 	tests/rayscad/install_test.sh $(BUILD)
 
-deps:
-	@missing=""; for p in $(DEBS); do \
+# Install the Debian packages of $(1) that are missing.
+define install_debs
+	@missing=""; for p in $(1); do \
 		dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
 		echo "installing:$$missing"; \
 		apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
 	fi
+endef
 
-demo: deps
+deps:
+	$(call install_debs,$(DEBS))
+
+deps-build:
+	$(call install_debs,$(BUILD_DEBS))
+
+demo: deps-build
 	$(MAKE) $(BUILD)/rayscad
 	@mkdir -p out
 	$(BUILD)/rayscad models/demo.scad -o out/demo.png --samples 3 \

@@ -21,7 +21,7 @@ typedef enum output_kind {
 typedef struct cli_output {
     const char *path; /* as given; "-": the standard output */
     output_kind kind;
-    char ext[8];      /* the format's file extension, without the dot */
+    char ext[16];     /* the format's file extension, without the dot */
     int ascii;        /* meshes: text (STL unless binstl, and --ascii) */
     char write[4096]; /* where the writer writes */
     int temporary;    /* write is a temporary name (cli_output_finish) */

@@ -12,6 +12,7 @@ void progress_start(progress *p, const char *label)
     p->label = label;
     p->enabled = label && isatty(STDERR_FILENO); /* NULL label: silent (-q) */
     p->last = -1;
+    clock_gettime(CLOCK_MONOTONIC, &p->t0);
 }
 
 void progress_update(void *ud, double done)
@@ -29,7 +30,15 @@ void progress_update(void *ud, double done)
     for (int i = 0; i < WIDTH; i++)
         bar[i] = i < fill ? '#' : '.';
     bar[WIDTH] = '\0';
-    fprintf(stderr, "\r%s [%s] %3d%%", p->label, bar, pct);
+    /* The time left if the rest goes as fast as what is done: said once
+     * a few percent are in, to the second. */
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    double spent = (double)(t.tv_sec - p->t0.tv_sec) + 1e-9 * (double)(t.tv_nsec - p->t0.tv_nsec);
+    char left[32] = "";
+    if (pct >= 3 && pct < 100 && done > 0)
+        snprintf(left, sizeof left, ", %.0f s left", spent * (1 - done) / done);
+    fprintf(stderr, "\r%s [%s] %3d%%%-16s", p->label, bar, pct, left);
     fflush(stderr);
 }
 

@@ -1,14 +1,17 @@
 /*
- * progress.h — a progress bar on stderr, drawn only when stderr is a
- * terminal.
+ * progress.h — a progress bar on stderr with an estimate of the time left,
+ * drawn only when stderr is a terminal (and not with -q: a NULL label).
  */
 #ifndef RAYSCAD_CLI_PROGRESS_H
 #define RAYSCAD_CLI_PROGRESS_H
+
+#include <time.h>
 
 typedef struct progress {
     const char *label;
     int enabled;
     int last; /* last percentage drawn, -1 before the first */
+    struct timespec t0;
 } progress;
 
 void progress_start(progress *p, const char *label);

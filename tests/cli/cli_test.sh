@@ -87,6 +87,18 @@ check "the man page lists every flag of --help and of the parser" \
     "$py" -c "$flags_py" "$rayscad" "$root/docs/rayscad.1" "$root/src/cli/options.c:$root/src/cli/options_openscad.c" documented
 check "every flag the man page names is accepted by the parser" \
     "$py" -c "$flags_py" "$rayscad" "$root/docs/rayscad.1" "$root/src/cli/options.c:$root/src/cli/options_openscad.c" accepted
+check "bash completion offers every flag of --help" "$py" -c '
+import re, subprocess, sys
+usage = subprocess.run([sys.argv[1], "--help"], capture_output=True, text=True).stdout
+flags = set(re.findall(r"(?<![A-Za-z0-9-])(--?[A-Za-z][a-z0-9-]*)", usage))
+flags = {f for f in flags if re.match(r"^(-[A-Za-z]|--[a-z][a-z0-9-]*[a-z0-9])$", f)}
+text = open(sys.argv[2]).read()
+m = re.search(r"flags=\"([^\"]*)\"", text)
+offered = set(m.group(1).split()) if m else set()
+missing = sorted(flags - offered)
+for f in missing: print("  " + f + " is not in docs/rayscad.bash-completion", file=sys.stderr)
+sys.exit(1 if missing or not offered else 0)
+' "$rayscad" "$root/docs/rayscad.bash-completion"
 run --version
 check "version exits 0" test "$rc" -eq 0
 run ok.scad

@@ -44,7 +44,7 @@ p=$dest/usr/local
 check "installed files" test -x "$p/bin/rayscad" -a -f "$p/lib/librayscad.a" \
     -a -f "$p/lib/librayscad.so" -a -f "$p/include/rayscad.h" \
     -a -f "$p/lib/pkgconfig/rayscad.pc" -a -f "$p/lib/rayscad/rayscad-image.so" \
-    -a -f "$p/share/man/man1/rayscad.1"
+    -a -f "$p/share/man/man1/rayscad.1" -a -f "$p/share/bash-completion/completions/rayscad"
 check "no build path in any installed file" bash -c "! grep -rl '$root' '$dest'"
 
 export PKG_CONFIG_PATH=$p/lib/pkgconfig
@@ -59,6 +59,11 @@ printf '%s\n' "$src" > "$work/model.scad"
 check "the installed command renders" "$p/bin/rayscad" "$work/model.scad" -o "$work/command.png"
 check "the example's PNG is the command's" cmp "$work/example.png" "$work/command.png"
 check "man -l shows the page" bash -c "MANWIDTH=80 man -l '$p/share/man/man1/rayscad.1' | grep -q -- '--max-memory'"
+# bash's completion, sourced as bash-completion would, offers the flags.
+check "bash completes --hardw to --hardwarnings" bash -c "
+    source '$p/share/bash-completion/completions/rayscad'
+    COMP_WORDS=(rayscad --hardw); COMP_CWORD=1; _rayscad
+    [ \"\${COMPREPLY[*]}\" = --hardwarnings ]"
 check "make uninstall" make -s uninstall BUILD="$build" PREFIX=/usr/local DESTDIR="$dest"
 check "nothing left installed" bash -c "[ -z \"\$(find '$dest' -type f -o -type l)\" ]"
 
