@@ -267,6 +267,40 @@ def main():
                   f"{row['volume_error_pct']:+9.3f}")
         sys.stdout.flush()
 
+    # ---- animation: 60 frames, one process each side -----------------------
+    # rayscad --animate 60 against povray rendering the same 60 frames from
+    # rayscad's .pov export of each, driven by povray's own animation clock
+    # (one scene file that includes frame_number's export).
+    frames = 10 if a.quick else 60
+    anim = os.path.join(ROOT, "models", "animated.scad")
+    adir = os.path.join(work, "anim")
+    os.makedirs(adir, exist_ok=True)
+    t_export, p = run([rayscad, anim, "--animate", str(frames), "-o", os.path.join(adir, "f.pov"),
+                       f"--imgsize={W},{H}"])
+    driver = os.path.join(adir, "animation.pov")
+    with open(driver, "w") as fh:
+        fh.write('#include concat("f", str(frame_number, -5, 0), ".pov")\n')
+    row = {"frames": frames, "size": [W, H], "pov_export_s": t_export, "rayscad_s": [],
+           "povray_s": []}
+    for _ in range(reps):
+        t, p = run([rayscad, anim, "--animate", str(frames), "-o", os.path.join(adir, "r.png"),
+                    f"--imgsize={W},{H}", "--threads", str(a.threads)], timeout=600)
+        if p.returncode == 0:
+            row["rayscad_s"].append(t)
+        if have["povray"]:
+            t, p = run(["povray", f"+W{W}", f"+H{H}", "-D", "-A", f"+WT{a.threads}",
+                        f"+KFI0", f"+KFF{frames - 1}", f"+L{adir}", f"+I{driver}",
+                        f"+O{os.path.join(adir, 'p.png')}"], timeout=1200)
+            if p.returncode == 0:
+                row["povray_s"].append(t)
+    row["rayscad_s_median"], row["povray_s_median"] = med(row["rayscad_s"]), med(row["povray_s"])
+    if row["rayscad_s_median"] and row["povray_s_median"]:
+        row["speedup_whole"] = row["povray_s_median"] / row["rayscad_s_median"]
+    result["animation"] = row
+    print(f"animation: {frames} frames at {W}x{H}: rayscad {row['rayscad_s_median']} s, "
+          f"povray {row['povray_s_median']} s")
+    sys.stdout.flush()
+
     # ---- evaluation: library code (BOSL2's test pass) ------------------------
     if not a.quick:
         result["evaluation"] = eval_bench.run(a.build, reps)
@@ -280,6 +314,8 @@ def main():
         S["eval_heaviest_worst_cpu_ratio"] = ev["heaviest_worst_ratio"]
         S["eval_startup_cpu_s"] = (f"rayscad {ev['startup']['rayscad_cpu_s']:.3f}, "
                                    f"openscad {ev['startup']['openscad_cpu_s']:.3f}")
+    if result.get("animation", {}).get("speedup_whole"):
+        S["animation_60_frames_whole_speedup"] = result["animation"]["speedup_whole"]
     S["render_whole_speedup_gmean"] = gmean([r["speedup_whole"] for r in result["render"]])
     S["render_only_speedup_gmean"] = gmean([r["speedup_render"] for r in result["render"]])
     big = [r for r in result["render"] if r["scene"] in ("union_1000", "union_10000")]

@@ -137,17 +137,18 @@ if command -v xvfb-run >/dev/null; then
     check "--preview: \$preview true for the image" same_said
     check "--preview: the same silhouette (the cube)" \
         sh -c "'$maskcmp' r/x.png o/x.png --min-iou 0.99 >/dev/null"
-    # --animate: frames named as openscad names them; openscad 2021.01 stops
-    # after two PNG frames under Xvfb (an X error), so each reference frame
-    # is its own run at that $t.
-    printf 'rotate([0, 0, 90 * $t]) translate([5, 0, 0]) cube([6, 2, 2]);\n' >anim.scad
-    "$rayscad" --animate 4 -o f.png --imgsize=160,120 anim.scad >/dev/null 2>&1
+    # --animate 10 of the bundled animation (its camera follows $t too):
+    # frames named as openscad names them, each openscad's silhouette.
+    # openscad 2021.01 stops after two PNG frames under Xvfb (an X error),
+    # so each reference frame is its own run at that $t.
+    "$rayscad" --animate 10 -o f.png --imgsize=160,120 "$root/models/animated.scad" >/dev/null 2>&1
     ok=1
-    for i in 0 1 2 3; do
-        xvfb-run -a openscad -o "ref$i.png" --imgsize=160,120 -D "\$t=$i/4" anim.scad >/dev/null 2>&1
+    for i in 0 1 2 3 4 5 6 7 8 9; do
+        xvfb-run -a openscad -o "ref$i.png" --imgsize=160,120 -D "\$t=$i/10" \
+            "$root/models/animated.scad" >/dev/null 2>&1
         "$maskcmp" "f0000$i.png" "ref$i.png" --min-iou 0.99 >/dev/null || ok=0
     done
-    check "--animate 4: four frames, each openscad's at its \$t" test "$ok" -eq 1
+    check "--animate 10: ten frames, each openscad's silhouette at its \$t" test "$ok" -eq 1
 fi
 both --animate 3 -o f.stl p.scad
 check "--animate 3: frames f00000.stl .. f00002.stl in both" \
