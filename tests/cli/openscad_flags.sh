@@ -155,6 +155,19 @@ check "--animate 3: frames f00000.stl .. f00002.stl in both" \
     sh -c "ls o/f0000?.stl | sed 's|o/||' >o.txt; ls r/f0000?.stl | sed 's|r/||' >r.txt; cmp -s o.txt r.txt && [ \$(wc -l <r.txt) -eq 3 ]"
 check "--animate 3: \$t = 0, 1/3, 2/3 as openscad" same_said
 
+# Every mesh format we write, imported by openscad: the same volume as ours
+# (its STL export of import("ours.EXT") against our STL of the model).
+printf 'difference() { cube(10, center = true); sphere(6); }\n' >solid.scad
+"$rayscad" -o ours.stl solid.scad --mesh-size 0.5 >/dev/null 2>&1
+for ext in stl off amf 3mf; do
+    "$rayscad" -o "ours.$ext" solid.scad --mesh-size 0.5 >/dev/null 2>&1
+    printf 'import("ours.%s");\n' "$ext" >reimport.scad
+    rm -f back.stl
+    openscad -o back.stl reimport.scad >/dev/null 2>&1
+    check "openscad imports our .$ext with our volume" \
+        sh -c "'$meshcmp' back.stl ours.stl --volume-only --vol-tol 0.5 >/dev/null"
+done
+
 # Messages: -q, --hardwarnings, --check-parameters, --check-parameter-ranges.
 both -q -o x.stl w.scad
 check "-q: nothing on stderr but errors" test ! -s r/err.txt
