@@ -180,6 +180,13 @@ typedef struct rayscad_eval_options {
     /* 1: evaluate as openscad does to export a mesh (its CGAL render):
      * $preview is false.  0: as for its preview, $preview true. */
     int for_mesh;
+    /* 1: evaluate as openscad does to export a 2D model (SVG, DXF): as
+     * for_mesh, with OpenSCAD's facets whatever `facets` says, and the
+     * model kept as one polygon set (rayscad_model_region), not as trees
+     * to render.  A model whose top level is not 2D (3D, or empty) fails
+     * the load with openscad's error "Current top level object is not a
+     * 2D object." */
+    int for_2d;
     /* Folders searched for use <…> and include <…> after the including
      * file's own, ':'-separated, before /usr/share/openscad/libraries, as
      * openscad's OPENSCADPATH; NULL: the OPENSCADPATH environment
@@ -445,6 +452,11 @@ typedef struct rayscad_mesh_options {
      * times finer (a whole factor, within max_cells and about 2^21
      * crossings), so thin parts keep their shape.  1 by default. */
     int resolve_thin;
+    /* May be NULL: told, on the calling thread, how far a phase has come
+     * ("sampling": each grid's rays, again for a refined one; "contouring"),
+     * done in [0, 1]. */
+    void (*progress)(void *ud, const char *phase, double done);
+    void *progress_ud;
 } rayscad_mesh_options;
 
 void rayscad_mesh_options_default(rayscad_mesh_options *o);
@@ -523,6 +535,36 @@ int rayscad_mesh_format_supported(const char *path);
  * place. */
 rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int ascii, char *err,
                                   size_t errlen);
+
+/* ---- 2D models: regions and their export ------------------------------------------ */
+
+/* The polygon set of a model loaded with for_2d, borrowed from m: path i
+ * is the points (x, y pairs, model units) [path_start[i], path_start[i +
+ * 1]) of *points, path_start holding *path_count + 1 entries.  The set is
+ * normalised as Clipper (OpenSCAD's polygon library) leaves it: paths do
+ * not cross or overlap, outlines run counter-clockwise and holes
+ * clockwise, so even-odd and nonzero filling agree; circles are
+ * OpenSCAD's polygons, points on its 1/65536 grid.  As in openscad, a
+ * lone square() or circle() (whatever transforms or one-child operations
+ * hold it) is its outline as made, off the grid.  RAYSCAD_OK (at least
+ * one path), or RAYSCAD_ERROR_ARGUMENT when m was not loaded for_2d. */
+rayscad_status rayscad_model_region(const rayscad_model *m, const double **points,
+                                    const int **path_start, int *path_count);
+
+/* 1 when the extension of path (any case) is a 2D format
+ * rayscad_region_write writes: svg, dxf. */
+int rayscad_region_format_supported(const char *path);
+
+/* Write the polygon set of m (loaded with for_2d) in the format of path's
+ * extension, laid out as openscad 2021.01 lays out its 2D exports: SVG
+ * (one <path>, viewBox from the bounds rounded outwards, y down) and DXF
+ * (each edge a LINE on layer 0), numbers with six significant digits.
+ * The file goes to a temporary name beside path, renamed into place: a
+ * failure leaves no partial file and an existing one untouched.
+ * RAYSCAD_OK, RAYSCAD_ERROR_ARGUMENT (an unknown extension, m not loaded
+ * for_2d) or RAYSCAD_ERROR, with a message in err. */
+rayscad_status rayscad_region_write(const rayscad_model *m, const char *path, char *err,
+                                    size_t errlen);
 
 /* ---- files ------------------------------------------------------------------------ */
 

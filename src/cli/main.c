@@ -364,6 +364,45 @@ static int write_model_outputs(run *r, const rayscad_services *services, int for
     return rc;
 }
 
+/* Evaluate as openscad's 2D export and write every SVG and DXF output.  A
+ * model loaded for_2d holds one polygon set and no trees. */
+static int write_2d_outputs(run *r, const rayscad_services *services)
+{
+    if (!has_kind(r, OUTPUT_2D)) return 0;
+    cli_options fo = *r->o;
+    messages msgs = {.errors_only = r->said, .o = &fo};
+    rayscad_eval_options eo;
+    param_hook params;
+    eval_options(r, &msgs, services, 1, &params, &eo);
+    eo.for_2d = 1;
+    rayscad_model *model;
+    struct timespec t0;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    rayscad_status loaded = r->src ? rayscad_model_load_string("<stdin>", r->src, &eo, &model)
+                                   : rayscad_model_load(fo.input, &eo, &model);
+    debug_time(&fo, "evaluated as a 2D export", &t0);
+    cli_params_free(params.assign, params.n);
+    r->said = 1;
+    if (loaded != RAYSCAD_OK) return EXIT_MODEL; /* "… is not a 2D object." said it */
+    char err[512];
+    int rc = 0;
+    for (int i = 0; i < r->n && !rc; i++) {
+        if (r->out[i].kind != OUTPUT_2D) continue;
+        rayscad_status st = RAYSCAD_ERROR;
+        if (cli_output_begin(&r->out[i], r->path[i], err, sizeof err) == 0) {
+            st = rayscad_region_write(model, r->out[i].write, err, sizeof err);
+            if (cli_output_finish(&r->out[i], r->path[i], st == RAYSCAD_OK, err, sizeof err) != 0)
+                st = RAYSCAD_ERROR;
+        }
+        if (st != RAYSCAD_OK) {
+            cli_print_error(&fo, err);
+            rc = EXIT_MODEL;
+        }
+    }
+    rayscad_model_free(model);
+    return rc;
+}
+
 /* Every output of one frame (frame < 0: not animating). */
 static int run_frame(run *r, int frame, int frames, const rayscad_services *services)
 {
@@ -381,6 +420,7 @@ static int run_frame(run *r, int frame, int frames, const rayscad_services *serv
     int rc = write_trees(r, services);
     if (!rc) rc = write_model_outputs(r, services, 0);
     if (!rc) rc = write_model_outputs(r, services, 1);
+    if (!rc) rc = write_2d_outputs(r, services);
     return rc;
 }
 

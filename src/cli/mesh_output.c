@@ -18,6 +18,7 @@
  */
 #include "mesh_output.h"
 #include "memory.h"
+#include "progress.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -119,9 +120,14 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     mo.root = RAYSCAD_ROOT_MODEL;
     mo.max_cells = o->max_mesh_cells;
     mo.max_intervals = o->max_intervals;
+    progress bar;
+    progress_start(&bar, o->quiet ? NULL : "sampling");
+    mo.progress = progress_phase;
+    mo.progress_ud = &bar;
     char err[512];
     rayscad_sampling *d;
     rayscad_status rc = rayscad_sampling_new(scene, &mo, &d, err, sizeof err);
+    if (!write_mesh || rc != RAYSCAD_OK) progress_finish(&bar);
     if (rc == RAYSCAD_ERROR_CELLS) {
         fprintf(stderr, "rayscad: error: %s (--max-mesh-cells; a larger --mesh-size needs fewer)\n",
                 err);
@@ -146,6 +152,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
         rayscad_thin thin;
         rayscad_sampling_thin(d, 0, &thin);
         rc = rayscad_sampling_mesh(d, &mo, &msh, err, sizeof err);
+        progress_finish(&bar);
         rayscad_sampling_free(d);
         d = NULL;
         if (rc != RAYSCAD_OK) {

@@ -20,9 +20,7 @@ static const struct {
 } not_written[] = {
     {"ast", "rayscad does not write openscad's .ast (the parsed file) yet"},
     {"term", "rayscad does not write openscad's .term (its CSG term text) yet"},
-    {"svg", "rayscad does not write 2D exports (SVG, DXF, PDF) yet"},
-    {"dxf", "rayscad does not write 2D exports (SVG, DXF, PDF) yet"},
-    {"pdf", "rayscad does not write 2D exports (SVG, DXF, PDF) yet"},
+    {"pdf", "rayscad does not write PDF exports yet (SVG and DXF it does)"},
     {"nef3", "nef3 is CGAL's own format, which rayscad has no use for and does not write"},
     {"nefdbg", "nefdbg is CGAL's own debugging format, which rayscad does not write"},
 };
@@ -74,7 +72,9 @@ int cli_output_resolve(const char *path, const char *fmt, int ascii, cli_output 
         out->kind = OUTPUT_POV;
     } else {
         snprintf(probe, sizeof probe, "x.%s", name);
-        if (name[0] && rayscad_mesh_format_supported(probe)) {
+        if (name[0] && rayscad_region_format_supported(probe)) {
+            out->kind = OUTPUT_2D;
+        } else if (name[0] && rayscad_mesh_format_supported(probe)) {
             out->kind = OUTPUT_MESH;
             /* openscad 2021.01 writes STL as text unless asked for binstl */
             out->ascii = ascii || !strcmp(name, "stl");
@@ -93,7 +93,8 @@ int cli_output_resolve(const char *path, const char *fmt, int ascii, cli_output 
             else
                 snprintf(err, errlen,
                          "cannot tell the output format from '%s' (use .png .jpg .tif .exr .stl "
-                         ".off .obj .ply .amf .3mf .pov .echo or .csg, or --export-format)",
+                         ".off .obj .ply .amf .3mf .svg .dxf .pov .echo or .csg, or "
+                         "--export-format)",
                          path);
             return 1;
         }

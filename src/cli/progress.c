@@ -42,6 +42,17 @@ void progress_update(void *ud, double done)
     fflush(stderr);
 }
 
+void progress_phase(void *ud, const char *phase, double done)
+{
+    progress *p = ud;
+    if (!p->enabled) return;
+    if (p->label != phase) {
+        progress_finish(p);
+        progress_start(p, phase);
+    }
+    progress_update(p, done);
+}
+
 void progress_finish(progress *p)
 {
     if (p->enabled && p->last >= 0) fprintf(stderr, "\n");

@@ -18,5 +18,9 @@ void progress_start(progress *p, const char *label);
 /* A render_options.progress callback: ud is the progress, done in [0, 1]. */
 void progress_update(void *ud, double done);
 void progress_finish(progress *p);
+/* A mesh_options.progress callback: a new phase's name ends the bar drawn
+ * so far and starts one of its own (labels are the library's static
+ * strings). */
+void progress_phase(void *ud, const char *phase, double done);
 
 #endif

@@ -51,7 +51,9 @@ Paths to_clipper(const io_paths *p)
             if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > RANGE ||
                 std::fabs(y) > RANGE)
                 throw std::range_error("polygon coordinate out of range");
-            q.emplace_back((cInt)std::llround(x * SCALE), (cInt)std::llround(y * SCALE));
+            /* truncated toward zero, as openscad's IntPoint(v[0] * CLIPPER_SCALE, …)
+             * converts: its exports show the grid point below, not the nearest */
+            q.emplace_back((cInt)(x * SCALE), (cInt)(y * SCALE));
         }
         if (q.size() >= 3) out.push_back(q);
     }

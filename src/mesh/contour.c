@@ -675,6 +675,7 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
     memset(s.xv[1], 0xff, nxe * sizeof *s.xv[1]);
     memset(s.yv[1], 0xff, nye * sizeof *s.yv[1]);
     for (int k = 0; k < s.nz && !s.oom; k++) {
+        if (o && o->progress) o->progress(o->progress_ud, "contouring", (double)k / s.nz);
         s.k = k;
         /* Roll: the top layer of slab k-1 is the bottom of slab k. */
         uint8_t *ts = s.sign[0];
@@ -719,6 +720,7 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
             }
         }
     }
+    if (o && o->progress && !s.oom) o->progress(o->progress_ud, "contouring", 1);
     if (s.oom) {
         snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");
         goto done;

@@ -55,6 +55,8 @@ void mesh_options_default(mesh_options *o)
     o->max_cells = 0;
     o->max_intervals = 0;
     o->resolve_thin = 1;
+    o->progress = NULL;
+    o->progress_ud = NULL;
 }
 
 void mesh_dexels_free(mesh_dexels *d)
@@ -107,7 +109,8 @@ typedef struct job {
     row_src *rows;
     pthread_mutex_t lock;
     int next_row;
-    int stop; /* set when a worker fails */
+    int stop;              /* set when a worker fails */
+    const mesh_options *o; /* its progress callback, called from worker 0 */
 } job;
 
 static int take_row(job *j)
@@ -172,6 +175,8 @@ static void *work(void *arg)
     job *j = w->job;
     int r;
     while ((r = take_row(j)) >= 0) {
+        if (w->id == 0 && j->o->progress) /* the calling thread's worker */
+            j->o->progress(j->o->progress_ud, "sampling", (j->axis + (double)r / j->nrows) / 3);
         j->rows[r].worker = w->id;
         j->rows[r].start = w->n;
         if (cast_row(w, r) != 0) {
@@ -187,11 +192,13 @@ static void *work(void *arg)
     return NULL;
 }
 
-static int cast_family(const csg_scene *s, int root, mesh_dexels *d, int a, int nthreads,
-                       int max_intervals, char *err, size_t errlen)
+static int cast_family(const csg_scene *s, const mesh_options *o, mesh_dexels *d, int a,
+                       int nthreads, char *err, size_t errlen)
 {
+    int root = o->root, max_intervals = o->max_intervals;
     job j;
     memset(&j, 0, sizeof j);
+    j.o = o;
     j.s = s;
     j.root = root;
     j.d = d;
@@ -344,7 +351,7 @@ int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const 
     }
     int nt = thread_count(o);
     for (int a = 0; a < 3; a++) {
-        int rc = cast_family(s, o->root, d, a, nt, o->max_intervals, err, errlen);
+        int rc = cast_family(s, o, d, a, nt, err, errlen);
         if (rc != 0) {
             mesh_dexels_free(d);
             return rc;

@@ -28,6 +28,7 @@ static void scad_options_of(const rayscad_eval_options *o, scad_services *servic
     so->max_string = o->max_string;
     so->facets = (int)o->facets;
     so->for_mesh = o->for_mesh;
+    so->for_2d = o->for_2d;
     so->library_path = o->library_path;
     so->hard_warnings = o->hard_warnings;
     so->no_parameter_check = o->no_parameter_check;

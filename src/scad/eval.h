@@ -34,6 +34,7 @@ struct scad_geom {
     const char *text; /* dump mode only */
     int whole;        /* op: one piece of geometry in the preview (csg_node_frame_whole) */
     int extruded;     /* leaf: made by linear_extrude(), 3D even over the 2D slab */
+    int raw2d;        /* leaf: square() or circle(), exported unclipped when alone */
     scad_loc loc;     /* the statement that made it (scad_eval_here) */
     /* leaves only */
     iv_shape shape;

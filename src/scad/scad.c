@@ -91,6 +91,60 @@ static int render_dims(scad_geom *g)
     return dim;
 }
 
+/* The one path of a raw2d leaf, placed: 0, or -1 (not one usable path,
+ * out of memory: then flattened as any other). */
+static int raw_region(const scad_geom *g, scad_paths *out)
+{
+    int n, np;
+    const double(*P)[2] = iv_region_points(g->shape.u.prism.g, &n);
+    const int *ps = iv_region_paths(g->shape.u.prism.g, &np);
+    const double *t = g->xf;
+    double det = t[0] * t[5] - t[1] * t[4];
+    if (np != 1 || ps[0] != 0 || ps[1] != n || n < 3 || !(det != 0)) return -1;
+    out->pts = malloc((size_t)n * sizeof *out->pts);
+    out->start = malloc(2 * sizeof *out->start);
+    if (!out->pts || !out->start) {
+        free(out->pts);
+        free(out->start);
+        out->pts = NULL;
+        out->start = NULL;
+        return -1;
+    }
+    /* untransformed, as openscad: its -0s stay (x·1 + 0 would be +0) */
+    int moved = memcmp(t, csg_affine_identity, sizeof(csg_affine)) != 0;
+    for (int i = 0; i < n; i++) {
+        int k = det < 0 ? n - 1 - i : i;
+        out->pts[i][0] = moved ? t[0] * P[k][0] + t[1] * P[k][1] + t[3] : P[k][0];
+        out->pts[i][1] = moved ? t[4] * P[k][0] + t[5] * P[k][1] + t[7] : P[k][1];
+    }
+    out->start[0] = 0;
+    out->start[1] = n;
+    out->npaths = 1;
+    return 0;
+}
+
+/* The 2D model g (render_dims 2) as one polygon set in out->region, as
+ * openscad's 2D export takes it: 3D leaves left out, circles at OpenSCAD's
+ * facets (the evaluation built them so: for_2d forces them).  A failure is
+ * an evaluation error (ev->aborted). */
+static void flatten_root(scad_eval *ev, const scad_geom *g, scad_result *out)
+{
+    /* openscad passes a lone child through every 2D operation and group
+     * untouched, so a lone square() or circle() reaches the export as the
+     * primitive made it: unsnapped, from its first corner, reversed by a
+     * mirroring transform (Polygon2d::transform) */
+    const scad_geom *lone = g;
+    while (lone && !lone->is_leaf && lone->n == 1)
+        lone = lone->kids[0];
+    if (lone && lone->is_leaf && lone->raw2d && scad_geom_is_flat(lone) && lone->shape.u.prism.g &&
+        raw_region(lone, &out->region) == 0)
+        return;
+    /* The facets only reach smooth discs, which for_2d never builds. */
+    scad_facet_params f = {0, 12, 2};
+    if (scad_flatten_2d(ev, g, csg_affine_identity, f, ev->at, "export", &out->region) != 0)
+        ev->aborted = 1;
+}
+
 static csg_node *list_to_csg(scad_geom **v, int n, const scad_geom **oom)
 {
     if (n == 0) return NULL;
@@ -256,7 +310,8 @@ static int eval_init(scad_eval *ev, job *j, char *base)
     }
     ev->top = j->top;
     ev->facets = j->opt ? j->opt->facets : RAYSCAD_FACETS_AUTO;
-    ev->for_mesh = j->opt && j->opt->for_mesh;
+    ev->for_mesh = j->opt && (j->opt->for_mesh || j->opt->for_2d);
+    if (j->opt && j->opt->for_2d) ev->facets = RAYSCAD_FACETS_OPENSCAD;
     static const scad_services no_services;
     ev->services = j->opt && j->opt->services ? j->opt->services : &no_services;
     return 0;
@@ -277,7 +332,7 @@ static void run_job(job *j)
         set_num(&ev, builtins, "$fa", 12);
         set_num(&ev, builtins, "$fs", 2);
         set_num(&ev, builtins, "$t", 0);
-        set_value(&ev, builtins, "$preview", scad_bool(!(j->opt && j->opt->for_mesh)));
+        set_value(&ev, builtins, "$preview", scad_bool(!ev.for_mesh));
         set_num(&ev, builtins, "$vpd", 500);
         set_num(&ev, builtins, "$vpf", 22.5);
         set_vec3(&ev, builtins, "$vpr", 0, 0, 0);
@@ -306,9 +361,9 @@ static void run_job(job *j)
             scad_diag_line(j->d, RAYSCAD_MSG_WARNING,
                            "WARNING: Viewall and autocenter disabled in favor of $vp*");
         /* for a mesh, the model as openscad's render makes it (in place) */
-        int dims = !ev.aborted && !j->dump && j->opt && j->opt->for_mesh
-                       ? render_dims(ev.has_root ? ev.root : model)
-                       : 3;
+        int for_2d = !j->dump && j->opt && j->opt->for_2d;
+        int dims =
+            !ev.aborted && !j->dump && ev.for_mesh ? render_dims(ev.has_root ? ev.root : model) : 3;
         if (!ev.aborted && j->dump && !j->dump_text) {
             j->status = 0;
         } else if (!ev.aborted && j->dump) {
@@ -316,6 +371,13 @@ static void run_job(job *j)
             if (j->dump->oom)
                 scad_diag_error(j->d, failed ? failed->loc : ev.at, "out of memory");
             else
+                j->status = 0;
+        } else if (!ev.aborted && for_2d) {
+            if (dims == 2) flatten_root(&ev, ev.has_root ? ev.root : model, j->out);
+            if (!ev.aborted && j->out->region.npaths == 0) /* 3D or empty: openscad's words */
+                scad_diag_line(j->d, RAYSCAD_MSG_ERROR,
+                               "Current top level object is not a 2D object.");
+            else if (!ev.aborted)
                 j->status = 0;
         } else if (!ev.aborted && dims == 2) {
             /* openscad's words; it too writes no mesh of a 2D model */
@@ -593,4 +655,9 @@ void scad_result_free(scad_result *r)
     csg_node_free(r->highlight);
     csg_node_free(r->background);
     r->model = r->highlight = r->background = NULL;
+    free(r->region.pts);
+    free(r->region.start);
+    r->region.pts = NULL;
+    r->region.start = NULL;
+    r->region.npaths = 0;
 }

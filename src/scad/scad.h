@@ -129,6 +129,10 @@ typedef struct scad_options {
     int facets;
     /* $preview is false (rayscad_eval_options.for_mesh). */
     int for_mesh;
+    /* Evaluated for a 2D export (rayscad_eval_options.for_2d): $preview
+     * false, OpenSCAD's facets whatever `facets` says, and the model
+     * flattened into scad_result.region instead of csg trees. */
+    int for_2d;
     /* Folders searched for use and include (rayscad_eval_options). */
     const char *library_path;
     /* Outside services (may be NULL: none). */
@@ -163,6 +167,12 @@ typedef struct scad_result {
         double value;
     } settings[16];
     int nsettings;
+    /* With scad_options.for_2d: the 2D model as one polygon set,
+     * normalised by the paths_clip service (no overlaps, outlines
+     * counter-clockwise, holes clockwise, at least one path), or a lone
+     * square's or circle's outline as made (openscad exports those so);
+     * the trees above are then NULL. */
+    scad_paths region;
 } scad_result;
 
 enum { SCAD_MAX_SETTINGS = 16 };

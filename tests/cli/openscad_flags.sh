@@ -168,6 +168,17 @@ for ext in stl off amf 3mf; do
         sh -c "'$meshcmp' back.stl ours.stl --volume-only --vol-tol 0.5 >/dev/null"
 done
 
+# 2D exports: SVG and DXF as openscad writes them (byte for byte where the
+# region is the same), and a 3D model refused with its words.
+printf 'difference() { square(10); translate([5, 5]) circle(3); }\nsquare([4, 20]);\n' >flat.scad
+for ext in svg dxf; do
+    both -o "x.$ext" flat.scad
+    check "2D .$ext: the file openscad writes" same_file "x.$ext"
+done
+both -o x.svg p.scad
+check "2D export of a 3D model fails in both, in openscad's words" \
+    sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ] && grep -q 'Current top level object is not a 2D object.' r/err.txt && [ ! -e r/x.svg ]"
+
 # Messages: -q, --hardwarnings, --check-parameters, --check-parameter-ranges.
 both -q -o x.stl w.scad
 check "-q: nothing on stderr but errors" test ! -s r/err.txt

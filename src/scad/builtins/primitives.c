@@ -207,6 +207,7 @@ static scad_geom *circle_build(scad_call *c, const void *args)
     if (scad_facets_shown(c->ev, p->f, r)) {
         scad_geom *g =
             scad_region_leaf(c->ev, scad_circle_region(r, scad_fragments(r, p->f)), c->state);
+        if (g) g->raw2d = 1;
         return scad_with_optics(c, g);
     }
     iv_shape s;
@@ -387,8 +388,9 @@ static scad_geom *square_build(scad_call *c, const void *args)
     double x0 = p->center ? -sx / 2 : 0, y0 = p->center ? -sy / 2 : 0;
     double P[4][2] = {{x0, y0}, {x0 + sx, y0}, {x0 + sx, y0 + sy}, {x0, y0 + sy}};
     int ps[2] = {0, 4};
-    return scad_with_optics(
-        c, scad_region_leaf(c->ev, iv_region_new((const double(*)[2])P, ps, 1), c->state));
+    scad_geom *g = scad_region_leaf(c->ev, iv_region_new((const double(*)[2])P, ps, 1), c->state);
+    if (g) g->raw2d = 1;
+    return scad_with_optics(c, g);
 }
 
 static const char *const square_params[] = {"size", "center", NULL};

@@ -67,6 +67,11 @@ void scad_circle_point(double r, int i, int n, double out[2])
     double a = 360.0 * i / n;
     out[0] = r * iv_cos_degrees(a);
     out[1] = r * iv_sin_degrees(a);
+    /* openscad's cos_degrees and sin_degrees negate a folded angle's
+     * value, so their zeros at 270° and 180° are -0, which its 2D exports
+     * print ("-5,0" in SVG's flipped y) */
+    if (out[0] == 0 && a > 90 && a <= 270) out[0] = -0.0;
+    if (out[1] == 0 && a >= 180) out[1] = -0.0;
 }
 
 void scad_sphere_ring(double r, int i, int rings, double *rr, double *z)
