@@ -47,6 +47,9 @@ int io_image_load(char *err, size_t errlen);
  * vertex, t holds 3 int32 vertex indices per triangle (counter-clockwise
  * seen from outside), as mesh_vertices / mesh_triangles give them. */
 
+/* 1 when path ends in "." and ext (given in lower case), in any case. */
+int io_path_has_extension(const char *path, const char *ext);
+
 /* 1 when the extension of path (case-insensitive) is a mesh format
  * io_mesh_write and io_mesh_read handle: stl, off, obj, ply. */
 int io_mesh_format_supported(const char *path);

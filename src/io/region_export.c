@@ -15,8 +15,8 @@
  * caller's locale (openscad sets LC_NUMERIC "C" around its writers).
  */
 #include "region_export.h"
+#include "io.h"
 
-#include <ctype.h>
 #include <errno.h>
 #include <locale.h>
 #include <math.h>
@@ -27,20 +27,11 @@
 
 #include "temp_file.h"
 
-static int has_extension(const char *path, const char *ext)
-{
-    size_t n = strlen(path), k = strlen(ext);
-    if (n <= k || path[n - k - 1] != '.') return 0;
-    for (size_t i = 0; i < k; i++)
-        if (tolower((unsigned char)path[n - k + i]) != ext[i]) return 0;
-    return 1;
-}
-
 io_region_format io_region_format_of(const char *path)
 {
     if (!path) return IO_REGION_NONE;
-    if (has_extension(path, "svg")) return IO_REGION_SVG;
-    if (has_extension(path, "dxf")) return IO_REGION_DXF;
+    if (io_path_has_extension(path, "svg")) return IO_REGION_SVG;
+    if (io_path_has_extension(path, "dxf")) return IO_REGION_DXF;
     return IO_REGION_NONE;
 }
 

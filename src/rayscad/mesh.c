@@ -4,7 +4,6 @@
  * OpenMesh adapter; AMF and 3MF through io_amf_write and io_3mf_write, by
  * extension).
  */
-#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -136,20 +135,10 @@ rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_
     return RAYSCAD_ERROR_MEMORY;
 }
 
-/* 1 when path ends in "." and ext (lower case), in any case. */
-static int has_extension(const char *path, const char *ext)
-{
-    size_t n = strlen(path), k = strlen(ext);
-    if (n <= k || path[n - k - 1] != '.') return 0;
-    for (size_t i = 0; i < k; i++)
-        if (tolower((unsigned char)path[n - k + i]) != ext[i]) return 0;
-    return 1;
-}
-
 int rayscad_mesh_format_supported(const char *path)
 {
     if (!path) return 0;
-    return has_extension(path, "amf") || has_extension(path, "3mf") ||
+    return io_path_has_extension(path, "amf") || io_path_has_extension(path, "3mf") ||
            io_mesh_format_supported(path);
 }
 
@@ -166,9 +155,9 @@ rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int a
                     "%s: unknown mesh format (use .stl, .off, .obj, .ply, .amf or .3mf)", path);
         return RAYSCAD_ERROR;
     }
-    if (has_extension(path, "amf"))
+    if (io_path_has_extension(path, "amf"))
         rc = io_amf_write(path, v, nv, t, nt, err, errlen);
-    else if (has_extension(path, "3mf"))
+    else if (io_path_has_extension(path, "3mf"))
         rc = io_3mf_write(path, v, nv, t, nt, err, errlen);
     else
         rc = io_mesh_write(path, v, nv, t, nt, ascii, err, errlen);

@@ -120,22 +120,13 @@ static size_t off_counts_on_header(const char *b, size_t n)
 }
 
 /* 1 when path ends in "." and the three letters ext (lower case), in any case. */
-static int has_extension(const char *path, const char *ext)
-{
-    size_t n = strlen(path);
-    if (n < 4 || path[n - 4] != '.') return 0;
-    for (int i = 0; i < 3; i++)
-        if (tolower((unsigned char)path[n - 3 + i]) != ext[i]) return 0;
-    return 1;
-}
-
 static int read_mesh(void *ud, const char *path, float **v, int *nv, int32_t **t, int *nt,
                      char *err, size_t errlen)
 {
     (void)ud;
-    if (has_extension(path, "amf")) return io_amf_read(path, v, nv, t, nt, err, errlen);
-    if (has_extension(path, "3mf")) return io_3mf_read(path, v, nv, t, nt, err, errlen);
-    if (!has_extension(path, "off")) return io_mesh_read(path, v, nv, t, nt, err, errlen);
+    if (io_path_has_extension(path, "amf")) return io_amf_read(path, v, nv, t, nt, err, errlen);
+    if (io_path_has_extension(path, "3mf")) return io_3mf_read(path, v, nv, t, nt, err, errlen);
+    if (!io_path_has_extension(path, "off")) return io_mesh_read(path, v, nv, t, nt, err, errlen);
     size_t n = 0;
     char *b = NULL, msg[64];
     if (read_file(NULL, path, MAX_MESH_BYTES, &b, &n, msg, sizeof msg) != 0) b = NULL;
