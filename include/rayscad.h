@@ -448,8 +448,8 @@ typedef struct rayscad_mesh_options {
     long long max_cells;
     int max_intervals; /* <= 0: 2^20 */
     /* With h <= 0: when walls or gaps thinner than a few cells hold more
-     * than a thousandth of the volume, sample again on a grid up to 8
-     * times finer (a whole factor, within max_cells and about 2^21
+     * than a thousandth of a part's volume, sample it again on a grid up
+     * to 16 times finer (a whole factor, within max_cells and about 2^20
      * crossings), so thin parts keep their shape.  1 by default. */
     int resolve_thin;
     /* May be NULL: told, on the calling thread, how far a phase has come

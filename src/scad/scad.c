@@ -466,7 +466,10 @@ static rayscad_value_type default_type(void *ud, int i)
     scad_env *empty = scad_env_new(&ev, NULL, NULL, NULL);
     scad_value v = empty ? scad_eval_expr(&ev, empty, j->top->assigns[i].value) : scad_undef();
     rayscad_value_type t = (rayscad_value_type)v.kind; /* scad_vkind's order */
+    scad_value_drop(v);
     scad_env_free(empty);
+    free(ev.module_names);
+    free(ev.frames);
     scad_eval_free_captured(&ev);
     scad_geometry_release(&ev);
     scad_arena_free(ev.arena);
