@@ -225,7 +225,10 @@ def main():
             if mesh_cli:
                 for h in MESH_SIZES:
                     out = os.path.join(work, f"{name}.rayscad-{h}.stl")
-                    t, p = run([rayscad, path, "-o", out, "--mesh-size", str(h), "--threads",
+                    # binary STL, as the diary's earlier runs wrote (manifold-3d
+                    # writes no file; openscad its default, text)
+                    t, p = run([rayscad, path, "-o", out, "--export-format", "binstl",
+                                "--mesh-size", str(h), "--threads",
                                 str(a.threads)])
                     if p.returncode == 0:
                         runs.setdefault(f"rayscad --mesh-size {h}", []).append((t, None, out))
@@ -315,7 +318,8 @@ def main():
         S["eval_startup_cpu_s"] = (f"rayscad {ev['startup']['rayscad_cpu_s']:.3f}, "
                                    f"openscad {ev['startup']['openscad_cpu_s']:.3f}")
     if result.get("animation", {}).get("speedup_whole"):
-        S["animation_60_frames_whole_speedup"] = result["animation"]["speedup_whole"]
+        S[f"animation_{result['animation']['frames']}_frames_whole_speedup"] = \
+            result["animation"]["speedup_whole"]
     S["render_whole_speedup_gmean"] = gmean([r["speedup_whole"] for r in result["render"]])
     S["render_only_speedup_gmean"] = gmean([r["speedup_render"] for r in result["render"]])
     big = [r for r in result["render"] if r["scene"] in ("union_1000", "union_10000")]
