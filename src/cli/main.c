@@ -145,18 +145,34 @@ static void debug_time(const cli_options *o, const char *what, const struct time
     if (o->debug) fprintf(stderr, "rayscad: debug: %s in %.3f s\n", what, seconds_since(t0));
 }
 
+typedef struct bytes {
+    const char *data;
+    size_t len;
+} bytes;
+
+static int write_bytes_to(void *ctx, const char *path, char *err, size_t errlen)
+{
+    const bytes *b = ctx;
+    return rayscad_file_write(path, b->data, b->len, err, errlen) == RAYSCAD_OK ? 0 : -1;
+}
+
 /* Write bytes to output i; 0 or EXIT_MODEL (printed). */
 static int write_bytes(run *r, int i, const char *data, size_t len)
 {
     char err[512];
-    rayscad_status rc = RAYSCAD_ERROR;
-    if (cli_output_begin(&r->out[i], r->path[i], err, sizeof err) == 0) {
-        rc = rayscad_file_write(r->out[i].write, data, len, err, sizeof err);
-        if (cli_output_finish(&r->out[i], r->path[i], rc == RAYSCAD_OK, err, sizeof err) != 0)
-            rc = RAYSCAD_ERROR;
-    }
-    if (rc != RAYSCAD_OK) cli_print_error(r->o, err);
-    return rc == RAYSCAD_OK ? 0 : EXIT_MODEL;
+    bytes b = {data, len};
+    if (cli_output_write(&r->out[i], r->path[i], write_bytes_to, &b, err, sizeof err) == 0)
+        return 0;
+    cli_print_error(r->o, err);
+    return EXIT_MODEL;
+}
+
+/* Load the model (from the standard input's text when there is one). */
+static rayscad_status load_model(const run *r, const rayscad_eval_options *eo,
+                                 rayscad_model **model)
+{
+    return r->src ? rayscad_model_load_string("<stdin>", r->src, eo, model)
+                  : rayscad_model_load(r->o->input, eo, model);
 }
 
 static void eval_options(run *r, messages *msgs, const rayscad_services *services, int for_mesh,
@@ -227,6 +243,19 @@ static int write_trees(run *r, const rayscad_services *services)
     return rc ? rc : failed ? EXIT_MODEL : 0;
 }
 
+typedef struct image {
+    int width, height;
+    const float *rgba;
+} image;
+
+static int write_image_to(void *ctx, const char *path, char *err, size_t errlen)
+{
+    const image *m = ctx;
+    return rayscad_image_write(path, m->width, m->height, 4, m->rgba, err, errlen) == RAYSCAD_OK
+               ? 0
+               : -1;
+}
+
 /* An image or a .pov of scene as output i. */
 static int write_image(run *r, int i, const cli_options *o, const rayscad_scene *scene)
 {
@@ -287,11 +316,9 @@ static int write_image(run *r, int i, const cli_options *o, const rayscad_scene 
         free(rgba);
         return EXIT_MODEL;
     }
-    if (rc == RAYSCAD_OK && cli_output_begin(&r->out[i], r->path[i], err, sizeof err) != 0)
-        rc = RAYSCAD_ERROR;
-    else if (rc == RAYSCAD_OK) {
-        rc = rayscad_image_write(r->out[i].write, o->width, o->height, 4, rgba, err, sizeof err);
-        if (cli_output_finish(&r->out[i], r->path[i], rc == RAYSCAD_OK, err, sizeof err) != 0)
+    if (rc == RAYSCAD_OK) {
+        image img = {o->width, o->height, rgba};
+        if (cli_output_write(&r->out[i], r->path[i], write_image_to, &img, err, sizeof err) != 0)
             rc = RAYSCAD_ERROR;
     }
     free(rgba);
@@ -322,8 +349,7 @@ static int write_model_outputs(run *r, const rayscad_services *services, int for
     rayscad_model *model;
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    rayscad_status loaded = r->src ? rayscad_model_load_string("<stdin>", r->src, &eo, &model)
-                                   : rayscad_model_load(fo.input, &eo, &model);
+    rayscad_status loaded = load_model(r, &eo, &model);
     debug_time(&fo, for_mesh ? "evaluated as rendered" : "evaluated for preview", &t0);
     cli_params_free(params.assign, params.n);
     r->said = 1;
@@ -364,6 +390,11 @@ static int write_model_outputs(run *r, const rayscad_services *services, int for
     return rc;
 }
 
+static int write_region_to(void *ctx, const char *path, char *err, size_t errlen)
+{
+    return rayscad_region_write(ctx, path, err, errlen) == RAYSCAD_OK ? 0 : -1;
+}
+
 /* Evaluate as openscad's 2D export and write every SVG and DXF output.  A
  * model loaded for_2d holds one polygon set and no trees. */
 static int write_2d_outputs(run *r, const rayscad_services *services)
@@ -378,8 +409,7 @@ static int write_2d_outputs(run *r, const rayscad_services *services)
     rayscad_model *model;
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    rayscad_status loaded = r->src ? rayscad_model_load_string("<stdin>", r->src, &eo, &model)
-                                   : rayscad_model_load(fo.input, &eo, &model);
+    rayscad_status loaded = load_model(r, &eo, &model);
     debug_time(&fo, "evaluated as a 2D export", &t0);
     cli_params_free(params.assign, params.n);
     r->said = 1;
@@ -388,13 +418,8 @@ static int write_2d_outputs(run *r, const rayscad_services *services)
     int rc = 0;
     for (int i = 0; i < r->n && !rc; i++) {
         if (r->out[i].kind != OUTPUT_2D) continue;
-        rayscad_status st = RAYSCAD_ERROR;
-        if (cli_output_begin(&r->out[i], r->path[i], err, sizeof err) == 0) {
-            st = rayscad_region_write(model, r->out[i].write, err, sizeof err);
-            if (cli_output_finish(&r->out[i], r->path[i], st == RAYSCAD_OK, err, sizeof err) != 0)
-                st = RAYSCAD_ERROR;
-        }
-        if (st != RAYSCAD_OK) {
+        if (cli_output_write(&r->out[i], r->path[i], write_region_to, model, err, sizeof err) !=
+            0) {
             cli_print_error(&fo, err);
             rc = EXIT_MODEL;
         }

@@ -88,6 +88,17 @@ static void warn_thin(const rayscad_thin *t)
                     t->gaps, "close them", "width");
 }
 
+typedef struct mesh_file {
+    const rayscad_mesh *msh;
+    int ascii;
+} mesh_file;
+
+static int write_mesh_to(void *ctx, const char *path, char *err, size_t errlen)
+{
+    const mesh_file *f = ctx;
+    return rayscad_mesh_write(f->msh, path, f->ascii, err, errlen) == RAYSCAD_OK ? 0 : -1;
+}
+
 /* Write msh to every mesh output (paths[i] the name of outs[i], a frame's
  * when animating); 0 or 1 (printed). */
 static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_output *outs,
@@ -95,13 +106,8 @@ static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_o
 {
     char err[512];
     for (int i = 0; i < n; i++) {
-        rayscad_status rc = RAYSCAD_ERROR;
-        if (cli_output_begin(&outs[i], paths[i], err, sizeof err) == 0) {
-            rc = rayscad_mesh_write(msh, outs[i].write, outs[i].ascii, err, sizeof err);
-            if (cli_output_finish(&outs[i], paths[i], rc == RAYSCAD_OK, err, sizeof err) != 0)
-                rc = RAYSCAD_ERROR;
-        }
-        if (rc != RAYSCAD_OK) {
+        mesh_file f = {msh, outs[i].ascii};
+        if (cli_output_write(&outs[i], paths[i], write_mesh_to, &f, err, sizeof err) != 0) {
             cli_print_error(o, err);
             return 1;
         }

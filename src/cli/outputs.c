@@ -188,3 +188,12 @@ int cli_output_finish(cli_output *out, const char *path, int ok, char *err, size
     if (!ok || rc != 0 || strcmp(path, "-") == 0) remove(out->write);
     return rc;
 }
+
+int cli_output_write(cli_output *out, const char *path, cli_writer write, void *ctx, char *err,
+                     size_t errlen)
+{
+    if (cli_output_begin(out, path, err, errlen) != 0) return -1;
+    int ok = write(ctx, out->write, err, errlen) == 0;
+    if (cli_output_finish(out, path, ok, err, errlen) != 0) ok = 0;
+    return ok ? 0 : -1;
+}

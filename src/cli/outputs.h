@@ -49,4 +49,10 @@ int cli_output_begin(cli_output *out, const char *path, char *err, size_t errlen
  * (message in err). */
 int cli_output_finish(cli_output *out, const char *path, int ok, char *err, size_t errlen);
 
+/* begin, write(ctx, out->write, …), finish: the whole of writing output
+ * out under the name path.  0, or -1 with a message in err. */
+typedef int (*cli_writer)(void *ctx, const char *write_path, char *err, size_t errlen);
+int cli_output_write(cli_output *out, const char *path, cli_writer write, void *ctx, char *err,
+                     size_t errlen);
+
 #endif

@@ -226,24 +226,32 @@ bool build(TriMesh &m, const float *v, int nv, const int32_t *t, int nt, std::st
 
 /* Unit face normals, computed in double from the arrays (faces of m are
  * the triangles in order). */
+/* The unit normal of triangle i (zero for a degenerate one), in double
+ * from the float vertices. */
+void face_normal(const float *v, const int32_t *t, int i, float out[3])
+{
+    const float *p0 = v + 3 * (size_t)t[3 * (size_t)i], *p1 = v + 3 * (size_t)t[3 * (size_t)i + 1],
+                *p2 = v + 3 * (size_t)t[3 * (size_t)i + 2];
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = (double)p1[k] - p0[k];
+        e2[k] = (double)p2[k] - p0[k];
+    }
+    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double s = len > 0 ? 1 / len : 0;
+    for (int k = 0; k < 3; k++)
+        out[k] = (float)(n[k] * s);
+}
+
 void set_face_normals(TriMesh &m, const float *v, const int32_t *t, int nt)
 {
     m.request_face_normals();
     for (int i = 0; i < nt; i++) {
-        const float *p0 = v + 3 * (size_t)t[3 * (size_t)i],
-                    *p1 = v + 3 * (size_t)t[3 * (size_t)i + 1],
-                    *p2 = v + 3 * (size_t)t[3 * (size_t)i + 2];
-        double e1[3], e2[3];
-        for (int k = 0; k < 3; k++) {
-            e1[k] = (double)p1[k] - p0[k];
-            e2[k] = (double)p2[k] - p0[k];
-        }
-        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                       e1[0] * e2[1] - e1[1] * e2[0]};
-        double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        double s = len > 0 ? 1 / len : 0;
-        m.set_normal(TriMesh::FaceHandle(i),
-                     TriMesh::Normal((float)(n[0] * s), (float)(n[1] * s), (float)(n[2] * s)));
+        float n[3];
+        face_normal(v, t, i, n);
+        m.set_normal(TriMesh::FaceHandle(i), TriMesh::Normal(n[0], n[1], n[2]));
     }
 }
 
@@ -321,18 +329,11 @@ bool write_text_stl(const std::string &path, const float *v, const int32_t *t, i
         const float *p[3];
         for (int k = 0; k < 3; k++)
             p[k] = v + 3 * (size_t)t[3 * (size_t)i + (size_t)k];
-        double e1[3], e2[3];
-        for (int k = 0; k < 3; k++) {
-            e1[k] = (double)p[1][k] - p[0][k];
-            e2[k] = (double)p[2][k] - p[0][k];
-        }
-        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                       e1[0] * e2[1] - e1[1] * e2[0]};
-        double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        double s = len > 0 ? 1 / len : 0;
+        float n[3];
+        face_normal(v, t, i, n);
         puts_("  facet normal");
         for (int k = 0; k < 3; k++)
-            num((float)(n[k] * s));
+            num(n[k]);
         puts_("\n    outer loop\n");
         for (int c = 0; c < 3; c++) {
             puts_("      vertex");
@@ -380,7 +381,8 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
             return -1;
         }
         OpenMesh::IO::Options opt;
-        if (ext == "stl") {
+        bool text_stl = ascii && ext == "stl"; /* write_text_stl: normals of its own */
+        if (ext == "stl" && !text_stl) {
             set_face_normals(m, v, t, nt);
             opt += OpenMesh::IO::Options::FaceNormal;
         }
@@ -389,7 +391,6 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
         std::vector<char> name(std::strlen(path) + 64);
         if (io_temp_beside(path, name.data(), name.size(), err, errlen) != 0) return -1;
         tmp = name.data();
-        bool text_stl = ascii && ext == "stl";
         if (text_stl ? !write_text_stl(tmp, v, t, nt) : !OpenMesh::IO::write_mesh(m, tmp, opt, 9)) {
             unlink(tmp.c_str());
             set_err(err, errlen, std::string(path) + ": writing failed");

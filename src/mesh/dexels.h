@@ -41,6 +41,8 @@ typedef struct mesh_piece {
  * the box's longest side / cells when h <= 0) meet.  Their number (0 for an
  * empty root) and the boxes in *out (free), or -1 when out of memory. */
 int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **out);
+/* The longest side of a piece's box. */
+double mesh_piece_longest(const mesh_piece *p);
 
 /* Cast the three families on one grid of spacing h around [lo, hi] (the
  * caller's options for threads, root and limits) into a new sampling *out;

@@ -30,14 +30,6 @@
 /* The cells per side of the pilot sampling that predicts the crossings. */
 #define PILOT_CELLS 32.0
 
-static double longest_side(const mesh_piece *p)
-{
-    double l = 0;
-    for (int a = 0; a < 3; a++)
-        l = fmax(l, p->hi[a] - p->lo[a]);
-    return l;
-}
-
 /* Crossings of a sampling (all its grids). */
 static long long crossings(const mesh_dexels *d)
 {
@@ -102,7 +94,7 @@ static int predict(const csg_scene *s, const mesh_options *o, const mesh_piece *
     mesh_options pilot = *o;
     pilot.max_cells = 0;
     for (int i = 0; i < np; i++) {
-        double hp = fmax(longest_side(&p[i]) / PILOT_CELLS, h[i]);
+        double hp = fmax(mesh_piece_longest(&p[i]) / PILOT_CELLS, h[i]);
         mesh_dexels *d;
         int rc = mesh_dexels_cast(s, &pilot, hp, p[i].lo, p[i].hi, &d, err, errlen);
         if (rc != 0) return rc;
@@ -123,7 +115,7 @@ static int default_spacings(const csg_scene *s, const mesh_options *o, mesh_piec
      * csg_scene_bounds adds, so a model whose longest side is 8 gets
      * h = 8/128 exactly, and its faces lie midway between nodes. */
     for (int i = 0; i < *np; i++)
-        h[i] = (double)(float)(longest_side(&p[i]) / cells);
+        h[i] = (double)(float)(mesh_piece_longest(&p[i]) / cells);
     pred[0] = 1;
     if (*np == 1) return 0;
     int rc = predict(s, o, p, *np, h, pred, err, errlen);
@@ -137,7 +129,7 @@ static int default_spacings(const csg_scene *s, const mesh_options *o, mesh_piec
             p[0].lo[a] = lo[a];
             p[0].hi[a] = hi[a];
         }
-        h[0] = (double)(float)(longest_side(&p[0]) / cells);
+        h[0] = (double)(float)(mesh_piece_longest(&p[0]) / cells);
         pred[0] = 1;
     }
     return 0;

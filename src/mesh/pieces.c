@@ -53,14 +53,18 @@ static void collect(gather *g, int32_t i)
     g->n++;
 }
 
+double mesh_piece_longest(const mesh_piece *p)
+{
+    double l = 0;
+    for (int a = 0; a < 3; a++)
+        l = fmax(l, p->hi[a] - p->lo[a]);
+    return l;
+}
+
 /* The spacing a piece's own grid gets. */
 static double piece_h(const mesh_piece *p, double h, int cells)
 {
-    if (h > 0) return h;
-    double longest = 0;
-    for (int a = 0; a < 3; a++)
-        longest = fmax(longest, p->hi[a] - p->lo[a]);
-    return longest / cells;
+    return h > 0 ? h : mesh_piece_longest(p) / cells;
 }
 
 /* 1 when grids of spacings hp over p and hq over q would meet. */
