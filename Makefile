@@ -284,6 +284,7 @@ cli: all
 	tests/cli/cli_test.sh $(BUILD)
 	tests/cli/openscad_flags.sh $(BUILD)
 	tests/cli/params_test.sh $(BUILD)
+	tests/cli/colors_test.py $(BUILD)
 
 compare: all
 	tests/cli/compare_openscad.sh $(BUILD)

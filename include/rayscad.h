@@ -518,6 +518,16 @@ int rayscad_mesh_triangle_count(const rayscad_mesh *m);
 const float *rayscad_mesh_vertices(const rayscad_mesh *m);    /* borrowed from m */
 const int32_t *rayscad_mesh_triangles(const rayscad_mesh *m); /* borrowed from m */
 double rayscad_mesh_volume(const rayscad_mesh *m);            /* signed: positive when outward */
+/* The colours of the model's color() calls that the surface shows; 0 when
+ * the model gives none.  rayscad_mesh_colors: 4 floats a colour (sRGB and
+ * alpha in [0, 1]); rayscad_mesh_triangle_colors: per triangle, k for
+ * colour k - 1, or 0 where the surface had no color().  Each triangle
+ * takes the colour of the primitive whose surface it lies on (a subtracted
+ * primitive's on the faces it cuts), so colours meet along sharp edges.
+ * Both borrowed from m; NULL without colours.  A decimated mesh has none. */
+int rayscad_mesh_color_count(const rayscad_mesh *m);
+const float *rayscad_mesh_colors(const rayscad_mesh *m);
+const uint16_t *rayscad_mesh_triangle_colors(const rayscad_mesh *m);
 
 /* Simplify m within tol model units (OpenMesh's quadric decimater, no
  * face turned over by more than 60°) into a new mesh *out. */
@@ -528,12 +538,23 @@ rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_
  * obj, ply, amf, 3mf. */
 int rayscad_mesh_format_supported(const char *path);
 
+enum {
+    RAYSCAD_WRITE_ASCII = 1,    /* STL and PLY as text */
+    RAYSCAD_WRITE_NO_COLORS = 2 /* leave the mesh's colours out */
+};
+
 /* Write m in the format of path's extension: STL and PLY binary unless
- * ascii, OFF and OBJ text (OpenMesh); AMF as openscad 2021.01 writes it;
- * 3MF through lib3mf (one object, one build item, millimetres; ascii does
- * not apply).  The file goes to a temporary name beside path, renamed into
- * place. */
-rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int ascii, char *err,
+ * flags has RAYSCAD_WRITE_ASCII, OFF and OBJ text (OpenMesh); AMF as
+ * openscad 2021.01 writes it; 3MF through lib3mf (one object, one build
+ * item, millimetres).  A mesh with colours (rayscad_mesh_color_count) has
+ * them written where the format holds them, unless flags has
+ * RAYSCAD_WRITE_NO_COLORS: 3MF a colour per triangle (the materials
+ * extension's colour group), PLY a red, green, blue and alpha per face,
+ * OBJ a material per colour in a material file beside it (path's name with
+ * .mtl, written first, named in the OBJ by its file name).  Surfaces of no
+ * color() get openscad's default colour for a rendered object (#f9d72c).
+ * The file goes to a temporary name beside path, renamed into place. */
+rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int flags, char *err,
                                   size_t errlen);
 
 /* ---- 2D models: regions and their export ------------------------------------------ */

@@ -22,6 +22,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static void print_vec(const char *fmt, const double v[3])
 {
@@ -89,14 +90,26 @@ static void warn_thin(const rayscad_thin *t)
 }
 
 typedef struct mesh_file {
+    const cli_options *o;
     const rayscad_mesh *msh;
-    int ascii;
+    const cli_output *out;
 } mesh_file;
 
 static int write_mesh_to(void *ctx, const char *path, char *err, size_t errlen)
 {
     const mesh_file *f = ctx;
-    return rayscad_mesh_write(f->msh, path, f->ascii, err, errlen) == RAYSCAD_OK ? 0 : -1;
+    int flags = f->out->ascii ? RAYSCAD_WRITE_ASCII : 0;
+    /* An OBJ's colours go to a material file beside it, named in the OBJ:
+     * not for the standard output, nor for a temporary name moved after. */
+    if (f->out->temporary && !strcmp(f->out->ext, "obj") && rayscad_mesh_color_count(f->msh)) {
+        flags |= RAYSCAD_WRITE_NO_COLORS;
+        if (!f->o->quiet)
+            fprintf(stderr,
+                    "rayscad: warning: %s: colours not written: an OBJ keeps them in a material "
+                    "file beside it, so only an output named .obj has them\n",
+                    f->out->path);
+    }
+    return rayscad_mesh_write(f->msh, path, flags, err, errlen) == RAYSCAD_OK ? 0 : -1;
 }
 
 /* Write msh to every mesh output (paths[i] the name of outs[i], a frame's
@@ -106,7 +119,7 @@ static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_o
 {
     char err[512];
     for (int i = 0; i < n; i++) {
-        mesh_file f = {msh, outs[i].ascii};
+        mesh_file f = {o, msh, &outs[i]};
         if (cli_output_write(&outs[i], paths[i], write_mesh_to, &f, err, sizeof err) != 0) {
             cli_print_error(o, err);
             return 1;

@@ -214,8 +214,34 @@ std::string uuid_of(uint64_t h, uint64_t k)
     return s;
 }
 
-int write_3mf(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
-              size_t errlen)
+/* Give every triangle of mesh its colour (c may be NULL: none), and the
+ * object io_default_rgba as its default.  lib3mf writes them as one colour
+ * group; it reads #00000000 as "no colour", which only a fully transparent
+ * black could be, and that then shows the default. */
+template <typename Ok> bool colors(Held &mesh, int nt, const io_colors *c, Ok &ok)
+{
+    if (!c) return true;
+    std::vector<NMR::MODELMESHCOLOR_SRGB> each((size_t)nt + 1);
+    for (int i = 0; i < nt; i++) {
+        unsigned char b[4];
+        io_color_bytes(c, i, b);
+        each[(size_t)i] = {b[0], b[1], b[2], b[3]};
+    }
+    unsigned char d[4];
+    io_color_bytes(nullptr, 0, d);
+    Held handler, fallback;
+    return ok(NMR::lib3mf_meshobject_createpropertyhandler(mesh.p, &handler.p), "colours",
+              mesh.p) &&
+           ok(NMR::lib3mf_propertyhandler_setsinglecolorarray(handler.p, each.data()), "colours",
+              handler.p) &&
+           ok(NMR::lib3mf_object_createdefaultpropertyhandler(mesh.p, &fallback.p),
+              "default colour", mesh.p) &&
+           ok(NMR::lib3mf_defaultpropertyhandler_setcolorrgba(fallback.p, d[0], d[1], d[2], d[3]),
+              "default colour", fallback.p);
+}
+
+int write_3mf(const char *path, const float *v, int nv, const int32_t *t, int nt,
+              const io_colors *c, char *err, size_t errlen)
 {
     std::string why = io_export::check(v, nv, t, nt);
     if (!why.empty()) {
@@ -252,6 +278,7 @@ int write_3mf(const char *path, const float *v, int nv, const int32_t *t, int nt
         !ok(NMR::lib3mf_meshobject_setgeometry(mesh.p, verts.data(), (DWORD)nv, tris.data(),
                                                (DWORD)nt),
             "geometry", mesh.p) ||
+        !colors(mesh, nt, c, ok) ||
         !ok(NMR::lib3mf_model_addbuilditem(model.p, mesh.p, nullptr, &item.p), "build item",
             model.p) ||
         !ok(NMR::lib3mf_builditem_setuuidutf8(item.p, item_uuid.c_str()), "build item UUID",
@@ -274,11 +301,11 @@ int write_3mf(const char *path, const float *v, int nv, const int32_t *t, int nt
 } // namespace
 
 extern "C" int io_3mf_write(const char *path, const float *v, int nv, const int32_t *t, int nt,
-                            char *err, size_t errlen)
+                            const io_colors *c, char *err, size_t errlen)
 {
     if (err && errlen) err[0] = 0;
     try {
-        return write_3mf(path, v, nv, t, nt, err, errlen);
+        return write_3mf(path, v, nv, t, nt, c, err, errlen);
     } catch (const std::bad_alloc &) {
         if (err && errlen) std::snprintf(err, errlen, "%s: out of memory", path ? path : "3MF");
         return -1;

@@ -54,16 +54,42 @@ int io_path_has_extension(const char *path, const char *ext);
  * io_mesh_write and io_mesh_read handle: stl, off, obj, ply. */
 int io_mesh_format_supported(const char *path);
 
+/* The colours of a mesh's triangles (NULL where a mesh has none): triangle
+ * i has colour rgba[of_tri[i] - 1] (sRGB and alpha in [0, 1]), or
+ * io_default_rgba when of_tri[i] is 0. */
+typedef struct io_colors {
+    const float (*rgba)[4];
+    int n;
+    const uint16_t *of_tri;
+} io_colors;
+
+/* openscad's colour for a rendered object of no color(): the Cornfield
+ * scheme's #f9d72c. */
+extern const float io_default_rgba[4];
+
+/* The colour of triangle i as 8-bit sRGB and alpha. */
+void io_color_bytes(const io_colors *c, int i, unsigned char out[4]);
+
 /* Write nv vertices and nt triangles (borrowed) to path in the format of its
  * extension: STL binary (ascii != 0: ASCII STL), PLY binary (ascii != 0:
  * ASCII PLY), OFF and OBJ always ASCII; ASCII numbers carry 9 significant
- * digits, so floats survive the round trip.  STL gets face normals.
- * The file is written to a temporary name beside path and renamed, so a
- * failure never leaves a partial file nor touches an existing one.  Returns
- * 0, or -1 with a message in err (unknown extension, an index out of range,
- * a triangle that would make the mesh non-manifold, an I/O error). */
+ * digits, so floats survive the round trip.  STL gets face normals.  With
+ * colours c (may be NULL): PLY gets a red, green, blue, alpha per face, and
+ * OBJ a material per colour in a material file beside it (path's name with
+ * .mtl, written first; io_obj_write).  The file is written to a temporary
+ * name beside path and renamed, so a failure never leaves a partial file
+ * nor touches an existing one.  Returns 0, or -1 with a message in err
+ * (unknown extension, an index out of range, a triangle that would make the
+ * mesh non-manifold, an I/O error). */
 int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, int nt, int ascii,
-                  char *err, size_t errlen);
+                  const io_colors *c, char *err, size_t errlen);
+
+/* OBJ with colours (src/io/obj.c): the material file (newmtl per colour,
+ * Kd and d), then the OBJ naming it with mtllib, its faces grouped by
+ * colour under usemtl; both through temporary files.  0, or -1 with a
+ * message in err. */
+int io_obj_write(const char *path, const float *v, int nv, const int32_t *t, int nt,
+                 const io_colors *c, char *err, size_t errlen);
 
 /* Read a mesh file (stl, off, obj, ply) into malloc'ed arrays *v (3 floats
  * per vertex) and *t (3 indices per triangle) that the caller frees.  STL
@@ -104,13 +130,16 @@ int io_3mf_read(const char *path, float **v, int *nv, int32_t **t, int *nt, char
  * item; lib3mf keeps six decimals of each coordinate, cut toward zero).
  * The extension of path is not looked at.  Any triangle soup is accepted,
  * closed or not; refused: a coordinate that is NaN or infinite, an index
- * out of range, a triangle with a repeated vertex.  The file is written to a temporary
+ * out of range, a triangle with a repeated vertex.  With colours c (may be
+ * NULL), io_3mf_write gives every triangle its colour (the materials
+ * extension's colour group, the object's default being io_default_rgba).
+ * The file is written to a temporary
  * name beside path and renamed, so a failure never leaves a partial file
  * nor touches an existing one.  Returns 0, or -1 with a message in err. */
 int io_amf_write(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
                  size_t errlen);
-int io_3mf_write(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
-                 size_t errlen);
+int io_3mf_write(const char *path, const float *v, int nv, const int32_t *t, int nt,
+                 const io_colors *c, char *err, size_t errlen);
 
 /* Simplify a closed manifold mesh with OpenMesh's decimater (quadric error
  * metric, ModQuadricT, plus ModNormalFlippingT so no face turns over more

@@ -54,6 +54,7 @@ namespace
 struct Traits : public OpenMesh::DefaultTraits {
     typedef OpenMesh::Vec3f Point;
     typedef OpenMesh::Vec3f Normal;
+    typedef OpenMesh::Vec4uc Color; /* PLY's face colours, with alpha */
 };
 typedef OpenMesh::TriMesh_ArrayKernelT<Traits> TriMesh;
 
@@ -363,7 +364,7 @@ int io_mesh_format_supported(const char *path)
 }
 
 int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, int nt, int ascii,
-                  char *err, size_t errlen)
+                  const io_colors *c, char *err, size_t errlen)
 {
     std::string tmp;
     try {
@@ -374,6 +375,7 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
                     std::string(path) + ": unknown mesh format (use .stl, .off, .obj or .ply)");
             return -1;
         }
+        if (c && ext == "obj") return io_obj_write(path, v, nv, t, nt, c, err, errlen);
         TriMesh m;
         std::string msg;
         if (!build(m, v, nv, t, nt, msg)) {
@@ -387,6 +389,16 @@ int io_mesh_write(const char *path, const float *v, int nv, const int32_t *t, in
             opt += OpenMesh::IO::Options::FaceNormal;
         }
         if (!ascii && (ext == "stl" || ext == "ply")) opt += OpenMesh::IO::Options::Binary;
+        if (c && ext == "ply") {
+            m.request_face_colors();
+            for (int i = 0; i < nt; i++) {
+                unsigned char b[4];
+                io_color_bytes(c, i, b);
+                m.set_color(TriMesh::FaceHandle(i), TriMesh::Color(b[0], b[1], b[2], b[3]));
+            }
+            opt += OpenMesh::IO::Options::FaceColor;
+            opt += OpenMesh::IO::Options::ColorAlpha;
+        }
 
         std::vector<char> name(std::strlen(path) + 64);
         if (io_temp_beside(path, name.data(), name.size(), err, errlen) != 0) return -1;

@@ -174,6 +174,7 @@ typedef struct sample {
     double p[3];
     double n[3];
     int32_t vid;
+    uint16_t color; /* the crossing's (mesh_hit.color) */
 } sample;
 
 typedef struct sweep {
@@ -294,7 +295,9 @@ static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, con
         t = best->t;
         for (int c = 0; c < 3; c++)
             out->n[c] = best->n[c];
+        out->color = best->color;
     } else {
+        out->color = 0;
         t = 0.5 * (t0 + t1);
         for (int c = 0; c < 3; c++)
             out->n[c] = 0;
@@ -488,10 +491,14 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
         out[c] = fmin(fmax(mass[c] + x[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
 }
 
+/* A loop vertex.  Its colour is its sample's, for a face point the next
+ * sample's: the triangles from a vertex to the next take its colour, so a
+ * sharp edge through the face separates the colours of its two sides. */
 typedef struct lvert {
     int32_t vid;
     int edge; /* cell edge, or -1 for a face point */
     double p[3];
+    uint16_t color;
 } lvert;
 
 /* Normal (twice the area) of triangle a, b, c. */
@@ -525,7 +532,7 @@ static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
         if (!ok) continue;
         for (int q = 1; q + 1 < nl; q++)
             if (mesh_push_triangle(s->m, lv[st].vid, lv[(st + q) % nl].vid,
-                                   lv[(st + q + 1) % nl].vid) < 0)
+                                   lv[(st + q + 1) % nl].vid, lv[(st + q) % nl].color) < 0)
                 s->oom = 1;
         return 1;
     }
@@ -589,6 +596,7 @@ static void cell(sweep *s, int i, int j, int mask)
             const sample *a = &smp[loop[q]], *b = &smp[loop[(q + 1) % nl]];
             lv[nv].vid = a->vid;
             lv[nv].edge = loop[q];
+            lv[nv].color = a->color;
             memcpy(lv[nv].p, a->p, sizeof a->p);
             nv++;
             for (int c = 0; c < 3; c++)
@@ -612,6 +620,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 }
                 lv[nv].vid = *slot;
                 lv[nv].edge = -1;
+                lv[nv].color = b->color;
                 memcpy(lv[nv].p, fp, sizeof fp);
                 nv++;
                 feature = 1;
@@ -638,7 +647,8 @@ static void cell(sweep *s, int i, int j, int mask)
             return;
         }
         for (int q = 0; q < nv; q++)
-            if (mesh_push_triangle(s->m, cv, lv[q].vid, lv[(q + 1) % nv].vid) < 0) s->oom = 1;
+            if (mesh_push_triangle(s->m, cv, lv[q].vid, lv[(q + 1) % nv].vid, lv[q].color) < 0)
+                s->oom = 1;
     }
 }
 
@@ -749,7 +759,13 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    /* The grids cover disjoint boxes: their meshes are disjoint too. */
+    if (mesh_set_palette(m, &d->pal) != 0) {
+        mesh_free(m);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    /* The grids cover disjoint boxes: their meshes are disjoint too.  They
+     * sample one root, so they share its palette. */
     for (; d; d = d->next)
         if (contour_grid(d, o, m, err, errlen) != 0) {
             mesh_free(m);

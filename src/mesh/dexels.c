@@ -67,6 +67,7 @@ void mesh_dexels_free(mesh_dexels *d)
             free(d->off[a]);
             free(d->hit[a]);
         }
+        mesh_palette_free(&d->pal);
         free(d);
         d = next;
     }
@@ -162,6 +163,7 @@ static int cast_row(worker *w, int iv)
                 hp->n[1] = (float)nn[1];
                 hp->n[2] = (float)nn[2];
                 hp->enter = e == 0;
+                hp->color = mesh_palette_of(&d->pal, b->prim);
             }
         }
         j->count[(size_t)iv * j->rowlen + iu] = 2 * (size_t)l.n;
@@ -348,6 +350,11 @@ int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const 
             free(d);
             return -1;
         }
+    }
+    if (mesh_palette_build(s, o->root, &d->pal) != 0) {
+        snprintf(err, errlen, "out of memory");
+        free(d);
+        return -1;
     }
     int nt = thread_count(o);
     for (int a = 0; a < 3; a++) {

@@ -11,9 +11,27 @@
  * origin along the ray's axis (world coordinate = origin[axis] + t). */
 typedef struct mesh_hit {
     double t;
-    float n[3];    /* outward unit normal at the crossing */
-    int32_t enter; /* 1: the ray (going +axis) enters the solid here */
+    float n[3];     /* outward unit normal at the crossing */
+    int16_t enter;  /* 1: the ray (going +axis) enters the solid here */
+    uint16_t color; /* the surface's colour in the grid's palette; 0: none */
 } mesh_hit;
+
+/* The distinct color() values of a root's leaves (palette.c): colour k (1
+ * .. n) is rgba[k - 1], sRGB and alpha in [0, 1]; of_prim[prim] is the
+ * colour of primitive prim, 0 when none was given (or past
+ * MESH_PALETTE_MAX colours). */
+#define MESH_PALETTE_MAX 65535
+typedef struct mesh_palette {
+    float (*rgba)[4];
+    int n;
+    uint16_t *of_prim;
+    int32_t nprim;
+} mesh_palette;
+
+/* 0, or -1 when out of memory (*p then empty). */
+int mesh_palette_build(const csg_scene *s, int root, mesh_palette *p);
+uint16_t mesh_palette_of(const mesh_palette *p, int32_t prim);
+void mesh_palette_free(mesh_palette *p);
 
 /* Family a holds the rays along axis a.  Its rays are indexed by the other
  * two axes u < v: ray (iu, iv) is number iu + (n[u] + 1) * iv, and its
@@ -27,6 +45,7 @@ struct mesh_dexels {
     size_t *off[3];
     mesh_hit *hit[3];
     size_t nhit[3];
+    mesh_palette pal; /* what the crossings' colours mean */
     /* The next grid, over a part of the model far from this one's
      * (mesh_dexels_new samples such parts each on its own grid). */
     struct mesh_dexels *next;
@@ -62,11 +81,20 @@ struct mesh {
     int32_t *t;
     int nv, nt;
     int capv, capt;
+    /* With colours (npal > 0): triangle i has colour tc[i], 1 .. npal
+     * (pal[tc[i] - 1]), or 0 (none given). */
+    uint16_t *tc;
+    int captc;
+    float (*pal)[4];
+    int npal;
 };
 
-/* Append a vertex / a triangle; return its index, or -1 when out of memory
- * or past INT32_MAX. */
+/* Append a vertex / a triangle (of colour `color`, kept when the mesh has
+ * colours); return its index, or -1 when out of memory or past INT32_MAX. */
 int mesh_push_vertex(mesh *m, double x, double y, double z);
-int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c);
+int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c, uint16_t color);
+/* Give m (still without triangles) the colours of palette p; 0 or -1 (out
+ * of memory). */
+int mesh_set_palette(mesh *m, const mesh_palette *p);
 
 #endif

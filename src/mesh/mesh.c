@@ -38,15 +38,31 @@ int mesh_push_vertex(mesh *m, double x, double y, double z)
     return m->nv++;
 }
 
-int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c)
+int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c, uint16_t color)
 {
-    if (m->nt == INT32_MAX || grow((void **)&m->t, &m->capt, m->nt + 1, 3 * sizeof(int32_t)) != 0)
+    if (m->nt == INT32_MAX || grow((void **)&m->t, &m->capt, m->nt + 1, 3 * sizeof(int32_t)) != 0 ||
+        (m->npal && grow((void **)&m->tc, &m->captc, m->nt + 1, sizeof *m->tc) != 0))
         return -1;
     int32_t *p = m->t + 3 * (size_t)m->nt;
     p[0] = a;
     p[1] = b;
     p[2] = c;
+    if (m->npal) m->tc[m->nt] = color;
     return m->nt++;
+}
+
+int mesh_set_palette(mesh *m, const mesh_palette *p)
+{
+    if (!p->n) return 0;
+    m->pal = malloc((size_t)p->n * sizeof *m->pal);
+    if (!m->pal || grow((void **)&m->tc, &m->captc, m->nt + 1, sizeof *m->tc) != 0) {
+        free(m->pal);
+        m->pal = NULL;
+        return -1;
+    }
+    memcpy(m->pal, p->rgba, (size_t)p->n * sizeof *m->pal);
+    m->npal = p->n;
+    return 0;
 }
 
 void mesh_free(mesh *m)
@@ -54,6 +70,8 @@ void mesh_free(mesh *m)
     if (!m) return;
     free(m->v);
     free(m->t);
+    free(m->tc);
+    free(m->pal);
     free(m);
 }
 
@@ -72,6 +90,19 @@ const float *mesh_vertices(const mesh *m)
 const int32_t *mesh_triangles(const mesh *m)
 {
     return m->t;
+}
+
+int mesh_color_count(const mesh *m)
+{
+    return m->npal;
+}
+const float *mesh_colors(const mesh *m)
+{
+    return m->npal ? m->pal[0] : NULL;
+}
+const uint16_t *mesh_triangle_colors(const mesh *m)
+{
+    return m->npal ? m->tc : NULL;
 }
 
 mesh *mesh_new_from_arrays(const float *v, int nv, const int32_t *t, int nt)

@@ -144,6 +144,16 @@ const float *mesh_vertices(const mesh *m);
 /* 3 × mesh_triangle_count indices, borrowed from m. */
 const int32_t *mesh_triangles(const mesh *m);
 
+/* The colours of the model's color() calls the surface shows (0: none):
+ * mesh_colors holds 4 floats each (sRGB and alpha in [0, 1]), and
+ * mesh_triangle_colors a number per triangle, k for colour k - 1 or 0 for
+ * a surface of no color(); both NULL without colours.  Each triangle takes
+ * the colour of the primitive whose surface it is drawn from (a subtracted
+ * one's on the faces it cuts), so colours meet along sharp edges. */
+int mesh_color_count(const mesh *m);
+const float *mesh_colors(const mesh *m);
+const uint16_t *mesh_triangle_colors(const mesh *m);
+
 /* Build a mesh from copies of caller arrays (e.g. one read back from a
  * file).  Indices are checked to lie in [0, nv).  Returns NULL when out of
  * memory or an index is out of range. */

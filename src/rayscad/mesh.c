@@ -115,6 +115,21 @@ double rayscad_mesh_volume(const rayscad_mesh *m)
     return mesh_signed_volume(m->m);
 }
 
+int rayscad_mesh_color_count(const rayscad_mesh *m)
+{
+    return mesh_color_count(m->m);
+}
+
+const float *rayscad_mesh_colors(const rayscad_mesh *m)
+{
+    return mesh_colors(m->m);
+}
+
+const uint16_t *rayscad_mesh_triangle_colors(const rayscad_mesh *m)
+{
+    return mesh_triangle_colors(m->m);
+}
+
 rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_mesh **out,
                                      char *err, size_t errlen)
 {
@@ -142,7 +157,7 @@ int rayscad_mesh_format_supported(const char *path)
            io_mesh_format_supported(path);
 }
 
-rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int ascii, char *err,
+rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int flags, char *err,
                                   size_t errlen)
 {
     char local[1];
@@ -155,11 +170,14 @@ rayscad_status rayscad_mesh_write(const rayscad_mesh *m, const char *path, int a
                     "%s: unknown mesh format (use .stl, .off, .obj, .ply, .amf or .3mf)", path);
         return RAYSCAD_ERROR;
     }
+    io_colors colors = {(const float(*)[4])mesh_colors(m->m), mesh_color_count(m->m),
+                        mesh_triangle_colors(m->m)};
+    const io_colors *c = colors.n && !(flags & RAYSCAD_WRITE_NO_COLORS) ? &colors : NULL;
     if (io_path_has_extension(path, "amf"))
         rc = io_amf_write(path, v, nv, t, nt, err, errlen);
     else if (io_path_has_extension(path, "3mf"))
-        rc = io_3mf_write(path, v, nv, t, nt, err, errlen);
+        rc = io_3mf_write(path, v, nv, t, nt, c, err, errlen);
     else
-        rc = io_mesh_write(path, v, nv, t, nt, ascii, err, errlen);
+        rc = io_mesh_write(path, v, nv, t, nt, flags & RAYSCAD_WRITE_ASCII, c, err, errlen);
     return rc == 0 ? RAYSCAD_OK : RAYSCAD_ERROR;
 }

@@ -89,6 +89,13 @@ static double tet_volume(void)
 typedef int (*writer)(const char *, const float *, int, const int32_t *, int, char *, size_t);
 typedef int (*reader)(const char *, float **, int *, int32_t **, int *, char *, size_t);
 
+/* io_3mf_write without colours, as a writer. */
+static int plain_3mf(const char *path, const float *v, int nv, const int32_t *t, int nt, char *err,
+                     size_t errlen)
+{
+    return io_3mf_write(path, v, nv, t, nt, NULL, err, errlen);
+}
+
 static void path_in_dir(char *path, size_t len, const char *name)
 {
     snprintf(path, len, "%s/%s", dir, name);
@@ -140,8 +147,8 @@ Test(io_export, threemf_reads_back_to_six_decimals)
      * 2021.01's files): a unit of the sixth decimal, and half a float's
      * spacing below 4 when read back */
     float tol = 1e-6f + 2.5e-7f;
-    round_trip(io_3mf_write, io_3mf_read, "box.3mf", &box_v[0][0], 8, &box_t[0][0], 12, 0, 24);
-    round_trip(io_3mf_write, io_3mf_read, "tet.3mf", &tet_v[0][0], 4, &tet_t[0][0], 4, tol,
+    round_trip(plain_3mf, io_3mf_read, "box.3mf", &box_v[0][0], 8, &box_t[0][0], 12, 0, 24);
+    round_trip(plain_3mf, io_3mf_read, "tet.3mf", &tet_v[0][0], 4, &tet_t[0][0], 4, tol,
                tet_volume());
 }
 
@@ -246,8 +253,8 @@ Test(io_export, threemf_holds_one_object_built_in_millimetres)
     if (!have("unzip")) cr_skip_test("unzip not installed");
     char path[256], err[512] = "";
     path_in_dir(path, sizeof path, "box.3mf");
-    cr_assert_eq(io_3mf_write(path, &box_v[0][0], 8, &box_t[0][0], 12, err, sizeof err), 0, "%s",
-                 err);
+    cr_assert_eq(io_3mf_write(path, &box_v[0][0], 8, &box_t[0][0], 12, NULL, err, sizeof err), 0,
+                 "%s", err);
     char *x = model_xml(path);
     cr_assert_not_null(x);
     cr_expect(strstr(x, "unit=\"millimeter\""), "%s", x);
@@ -273,8 +280,10 @@ Test(io_export, threemf_of_one_mesh_is_one_file)
     char a[256], b[256], err[512] = "";
     path_in_dir(a, sizeof a, "a.3mf");
     path_in_dir(b, sizeof b, "b.3mf");
-    cr_assert_eq(io_3mf_write(a, &box_v[0][0], 8, &box_t[0][0], 12, err, sizeof err), 0, "%s", err);
-    cr_assert_eq(io_3mf_write(b, &box_v[0][0], 8, &box_t[0][0], 12, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(io_3mf_write(a, &box_v[0][0], 8, &box_t[0][0], 12, NULL, err, sizeof err), 0, "%s",
+                 err);
+    cr_assert_eq(io_3mf_write(b, &box_v[0][0], 8, &box_t[0][0], 12, NULL, err, sizeof err), 0, "%s",
+                 err);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "cmp -s '%s' '%s'", a, b);
     cr_expect_eq(system(cmd), 0, "two writes of one mesh differ");
@@ -312,7 +321,7 @@ Test(io_export, openscad_imports_what_we_export, .timeout = 120)
     for (int q = 0; q < 4; q++) {
         char path[256], err[512] = "";
         path_in_dir(path, sizeof path, names[q]);
-        writer w = q < 2 ? io_amf_write : io_3mf_write;
+        writer w = q < 2 ? io_amf_write : plain_3mf;
         int rc = q % 2 ? w(path, &tet_v[0][0], 4, &tet_t[0][0], 4, err, sizeof err)
                        : w(path, &box_v[0][0], 8, &box_t[0][0], 12, err, sizeof err);
         cr_assert_eq(rc, 0, "%s", err);
@@ -366,7 +375,7 @@ Test(io_export, refused_meshes_leave_nothing)
     float nan_v[8][3];
     memcpy(nan_v, box_v, sizeof nan_v);
     nan_v[5][1] = NAN;
-    writer ws[2] = {io_amf_write, io_3mf_write};
+    writer ws[2] = {io_amf_write, plain_3mf};
     const char *names[2] = {"x.amf", "x.3mf"};
     for (int q = 0; q < 2; q++) {
         refused(ws[q], names[q], &box_v[0][0], 8, out_of_range, 1,
@@ -380,7 +389,7 @@ Test(io_export, refused_meshes_leave_nothing)
 
 Test(io_export, unwritable_folder_leaves_nothing)
 {
-    writer ws[2] = {io_amf_write, io_3mf_write};
+    writer ws[2] = {io_amf_write, plain_3mf};
     const char *names[2] = {"no/such/x.amf", "no/such/x.3mf"};
     for (int q = 0; q < 2; q++) {
         char path[256], err[512] = "";
@@ -393,7 +402,7 @@ Test(io_export, unwritable_folder_leaves_nothing)
 
 Test(io_export, rewrite_keeps_the_targets_mode)
 {
-    writer ws[2] = {io_amf_write, io_3mf_write};
+    writer ws[2] = {io_amf_write, plain_3mf};
     const char *names[2] = {"m.amf", "m.3mf"};
     for (int q = 0; q < 2; q++) {
         char path[256], err[512] = "";

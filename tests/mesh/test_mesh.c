@@ -780,7 +780,7 @@ Test(mesh_io, write_read_round_trip)
         snprintf(path, sizeof path, "%s/out%d.%s", dir, q, ext[q]);
         int ascii = q == 1;
         cr_assert(io_mesh_write(path, mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
-                                mesh_triangle_count(m), ascii, err, sizeof err) == 0,
+                                mesh_triangle_count(m), ascii, NULL, err, sizeof err) == 0,
                   "%s: %s", path, err);
         float *v = NULL;
         int32_t *t = NULL;
@@ -802,13 +802,13 @@ Test(mesh_io, write_read_round_trip)
     char bad[300], err[256] = "";
     snprintf(bad, sizeof bad, "%s/no/such/dir/x.stl", dir);
     cr_assert_eq(io_mesh_write(bad, mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
-                               mesh_triangle_count(m), 0, err, sizeof err),
+                               mesh_triangle_count(m), 0, NULL, err, sizeof err),
                  -1);
     cr_assert_neq(err[0], 0);
     char unk[300];
     snprintf(unk, sizeof unk, "%s/x.unknownext", dir);
     cr_assert_eq(io_mesh_write(unk, mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
-                               mesh_triangle_count(m), 0, err, sizeof err),
+                               mesh_triangle_count(m), 0, NULL, err, sizeof err),
                  -1);
     cr_assert_eq(access(unk, F_OK), -1);
     cr_assert_eq(rmdir(dir), 0, "temporary files left in %s", dir);
@@ -961,17 +961,17 @@ Test(mesh_io, write_rejects_non_manifold_and_accepts_open)
     const float v[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1};
     const int32_t pinch[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3,
                              0, 5, 4, 0, 4, 6, 0, 6, 5, 4, 5, 6};
-    cr_assert_eq(io_mesh_write(path, v, 7, pinch, 8, 0, err, sizeof err), -1);
+    cr_assert_eq(io_mesh_write(path, v, 7, pinch, 8, 0, NULL, err, sizeof err), -1);
     cr_assert(strstr(err, "non-manifold"), "%s", err);
     cr_assert_eq(access(path, F_OK), -1);
     /* One edge in three triangles. */
     const int32_t fin[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 1, 0, 4};
-    cr_assert_eq(io_mesh_write(path, v, 7, fin, 5, 0, err, sizeof err), -1);
+    cr_assert_eq(io_mesh_write(path, v, 7, fin, 5, 0, NULL, err, sizeof err), -1);
     /* A repeated vertex. */
     const int32_t degenerate[] = {0, 1, 1};
-    cr_assert_eq(io_mesh_write(path, v, 7, degenerate, 1, 0, err, sizeof err), -1);
+    cr_assert_eq(io_mesh_write(path, v, 7, degenerate, 1, 0, NULL, err, sizeof err), -1);
     /* An open mesh (one tetrahedron face missing) goes through add_face. */
-    cr_assert(io_mesh_write(path, v, 7, pinch, 3, 0, err, sizeof err) == 0, "%s", err);
+    cr_assert(io_mesh_write(path, v, 7, pinch, 3, 0, NULL, err, sizeof err) == 0, "%s", err);
     float *rv;
     int32_t *rt;
     int nv, nt;
@@ -981,7 +981,7 @@ Test(mesh_io, write_rejects_non_manifold_and_accepts_open)
     free(rv);
     free(rt);
     /* The closed tetrahedron comes back with its vertices in order. */
-    cr_assert(io_mesh_write(path, v, 7, pinch, 4, 0, err, sizeof err) == 0, "%s", err);
+    cr_assert(io_mesh_write(path, v, 7, pinch, 4, 0, NULL, err, sizeof err) == 0, "%s", err);
     cr_assert(io_mesh_read(path, &rv, &nv, &rt, &nt, err, sizeof err) == 0, "%s", err);
     cr_assert_eq(nt, 4);
     for (int q = 0; q < 12; q++)

@@ -186,7 +186,8 @@ Test(import, stl_and_one_line_off_round_trip, .init = arena_setup, .fini = arena
     const int32_t bt[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
                                {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
     char err[256];
-    cr_assert_eq(io_mesh_write(stl, &bv[0][0], 8, &bt[0][0], 12, 0, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(io_mesh_write(stl, &bv[0][0], 8, &bt[0][0], 12, 0, NULL, err, sizeof err), 0, "%s",
+                 err);
     /* the OFF as OpenSCAD writes it: counts on the header line */
     FILE *f = fopen(off, "w");
     cr_assert(f);
