@@ -330,6 +330,8 @@ typedef struct rayscad_colors {
     float back[3];                /* subtracted surfaces with no color() */
     float highlight[4];           /* '#' subtrees: OpenSCAD's transparent pink */
     float background_modifier[4]; /* '%' subtrees: transparent grey */
+    float axes[3];                /* --view=axes and scales */
+    float crosshair[3];           /* --view=crosshairs */
 } rayscad_colors;
 
 /* Scheme name ("Cornfield", "Metallic", "Sunset", "Starnight",
@@ -382,7 +384,19 @@ typedef struct rayscad_render_options {
     int path_trace;    /* > 0: path-trace with this many samples per pixel
                           (interreflection, next-event estimation, Fresnel
                           glass); samples is then unused */
+
+    /* What openscad's --view draws over the image (RAYSCAD_VIEW_*): crease
+     * and silhouette lines, the axes (with scale ticks and numbers when
+     * SCALES is set too), crosshairs at the view centre.  0: none. */
+    int view;
 } rayscad_render_options;
+
+enum {
+    RAYSCAD_VIEW_AXES = 1,
+    RAYSCAD_VIEW_SCALES = 2, /* drawn only with AXES, as openscad does */
+    RAYSCAD_VIEW_CROSSHAIRS = 4,
+    RAYSCAD_VIEW_EDGES = 8
+};
 
 /* Fill o with the defaults: 512 × 512, one sample, all cores, Cornfield,
  * the preview's light. */

@@ -274,6 +274,7 @@ static int write_image(run *r, int i, const cli_options *o, const rayscad_scene 
     ro.samples = o->samples;
     ro.threads = o->threads;
     ro.max_intervals = o->max_intervals;
+    ro.view = o->view_flags & ~CLI_VIEW_WIREFRAME;
     if (r->out[i].kind == OUTPUT_POV) { /* the same scene and camera for POV-Ray */
         char *text;
         size_t len;
@@ -496,10 +497,15 @@ static void say_limits(const cli_options *o, const run *r)
     if (images && o->throwntogether)
         fprintf(stderr, "rayscad: warning: --preview=throwntogether is drawn as the normal "
                         "preview (exact CSG, subtracted faces in their own colour)\n");
-    static const char *const parts[] = {"axes", "crosshairs", "edges", "scales", "wireframe"};
-    for (int k = 0; images && k < 5; k++)
-        if (o->view_flags & (1 << k))
-            fprintf(stderr, "rayscad: warning: --view=%s is not drawn yet\n", parts[k]);
+    if (images && (o->view_flags & CLI_VIEW_WIREFRAME))
+        fprintf(stderr, "rayscad: note: --view=wireframe changes no image (openscad draws a "
+                        "wireframe only in its window's CGAL view)\n");
+    if (images && (o->view_flags & RAYSCAD_VIEW_SCALES) && !(o->view_flags & RAYSCAD_VIEW_AXES))
+        fprintf(stderr, "rayscad: note: --view=scales draws ticks on the axes only, so with "
+                        "axes (as openscad)\n");
+    if (images && (o->view_flags & RAYSCAD_VIEW_CROSSHAIRS))
+        fprintf(stderr, "rayscad: note: --view=crosshairs drawn; openscad 2021.01 draws them "
+                        "in its window only, not in images\n");
 }
 
 /* The whole of the standard input, NUL-terminated; NULL (printed) when

@@ -9,14 +9,9 @@
 
 enum { CLI_MAX_DEFINES = 256, CLI_MAX_OUTPUTS = 64 };
 
-/* --view's parts, as openscad 2021.01 names them. */
-enum {
-    CLI_VIEW_AXES = 1,
-    CLI_VIEW_CROSSHAIRS = 2,
-    CLI_VIEW_EDGES = 4,
-    CLI_VIEW_SCALES = 8,
-    CLI_VIEW_WIREFRAME = 16
-};
+/* --view's parts, as openscad 2021.01 names them: the library's
+ * RAYSCAD_VIEW_* bits, and wireframe (which changes no image). */
+enum { CLI_VIEW_WIREFRAME = 16 };
 
 typedef struct cli_options {
     const char *input; /* "-": the standard input */
@@ -39,7 +34,7 @@ typedef struct cli_options {
     const char *param_set;      /* -P: the set in it */
     const char *deps_file;      /* -d: a Makefile rule of every file read */
     const char *make_cmd;       /* -m: run it for a missing file */
-    int view_flags;             /* --view: CLI_VIEW_* */
+    int view_flags;             /* --view: RAYSCAD_VIEW_*, CLI_VIEW_WIREFRAME */
     int csglimit;               /* --csglimit (accepted; no limit needed) */
     const char *debug;          /* --debug[=WHAT] (NULL: off) */
     const char *defines[CLI_MAX_DEFINES];

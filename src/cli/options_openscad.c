@@ -30,7 +30,10 @@ const char cli_usage_openscad[] =
     "                          function does not take (default true)\n"
     "  --check-parameter-ranges=true|false  warn about cube, square, circle,\n"
     "                          sphere and cylinder sizes <= 0 (default false)\n"
-    "  --view=axes,crosshairs,edges,scales,wireframe  accepted; not drawn yet\n"
+    "  --view=axes,crosshairs,edges,scales,wireframe  lines over images: axes\n"
+    "                          (scales: with ticks), crosshairs, crease and\n"
+    "                          silhouette edges; wireframe changes nothing, as\n"
+    "                          in openscad's images\n"
     "  --csglimit N            accepted: interval CSG has no limit to raise\n"
     "  --debug[=WHAT]          the time each phase took, on stderr\n"
     "  --info                  what rayscad runs with (libraries, fonts)\n"
@@ -60,10 +63,10 @@ static int parse_view(const char *s, int *flags, char *err, size_t errlen)
     static const struct {
         const char *name;
         int bit;
-    } parts[] = {{"axes", CLI_VIEW_AXES},
-                 {"crosshairs", CLI_VIEW_CROSSHAIRS},
-                 {"edges", CLI_VIEW_EDGES},
-                 {"scales", CLI_VIEW_SCALES},
+    } parts[] = {{"axes", RAYSCAD_VIEW_AXES},
+                 {"crosshairs", RAYSCAD_VIEW_CROSSHAIRS},
+                 {"edges", RAYSCAD_VIEW_EDGES},
+                 {"scales", RAYSCAD_VIEW_SCALES},
                  {"wireframe", CLI_VIEW_WIREFRAME}};
     const char *p = s;
     for (;;) {

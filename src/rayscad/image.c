@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "../io/io.h"
+#include "../render/overlay.h"
 #include "../render/render.h"
 #include "rayscad_internal.h"
 
@@ -24,6 +25,7 @@ rayscad_status rayscad_render(const rayscad_scene *s, const rayscad_camera *cam,
     char local[1];
     if (!err) err = local, errlen = sizeof local;
     int rc = render_image(s->s, cam, o, rgba, err, errlen);
+    if (rc == 0) rc = render_overlays(s->s, cam, o, rgba, err, errlen);
     return rc == 0                         ? RAYSCAD_OK
            : rc == RAYSCAD_ERROR_INTERVALS ? RAYSCAD_ERROR_INTERVALS
                                            : RAYSCAD_ERROR;

@@ -216,7 +216,41 @@ check "-m: make ran for the missing import with the path openscad gives" \
     sh -c "sed 's|/o/|/|' o/made.txt >a.txt; sed 's|/r/|/|' r/made.txt >b.txt; cmp -s a.txt b.txt"
 check "-m: the made file is imported" same_volume x.stl
 
-# Accepted flags: --csglimit, --debug, --preview=throwntogether, --view,
+# --view: the lines each part adds, against openscad's (within a pixel,
+# both ways).  Edges on a polyhedral model only: openscad outlines every
+# facet of its tessellation, rayscad the creases of the exact surface.
+if command -v xvfb-run >/dev/null; then
+    cat >v.scad <<'EOV'
+cube(10);
+translate([14, 0, 0]) rotate([0, 0, 30]) cube([6, 8, 4]);
+translate([-8, -8, 0]) cube([5, 5, 12]);
+EOV
+    view() { # program, flags...: o/ or r/ gets <flags>.png
+        local who=$1
+        shift
+        if [ "$who" = o ]; then
+            (cd o && xvfb-run -a openscad ../v.scad -o "x$*.png" --imgsize=400,300 "$@" >/dev/null 2>&1)
+        else
+            (cd r && "$rayscad" ../v.scad -o "x$*.png" --imgsize=400,300 "$@" >/dev/null 2>&1)
+        fi
+    }
+    rm -rf o r
+    mkdir o r
+    view o
+    view r
+    for v in axes axes,scales edges; do
+        view o "--view=$v"
+        view r "--view=$v"
+        check "--view=$v: openscad's lines" \
+            "$root/tests/cli/viewcmp.py" o/x.png "o/x--view=$v.png" r/x.png "r/x--view=$v.png"
+    done
+    view o --view=wireframe
+    view r --view=wireframe
+    check "--view=wireframe: the image unchanged, as openscad's" \
+        sh -c "cmp -s r/x.png r/x--view=wireframe.png && oiiotool --diff o/x.png o/x--view=wireframe.png >/dev/null"
+fi
+
+# Accepted flags: --csglimit, --debug, --preview=throwntogether,
 # -s, --info, -h, -v.
 both --csglimit=5 -o x.stl p.scad
 check "--csglimit: accepted, the same mesh" same_volume x.stl
