@@ -211,6 +211,13 @@ typedef struct rayscad_eval_options {
     int (*parameters)(void *ud, const rayscad_parameter_query *q, const char *const **overrides,
                       int *count);
     void *parameters_ud;
+    /* May be NULL: told on the calling thread how far the evaluation has
+     * come, done in [0, 1] the share of the main file's top-level
+     * statements finished (each counts alike; an include<>d file's count
+     * where it stands), called after each one and every 2^16 steps of work
+     * between (with the same share, so a caller can show time passing). */
+    void (*progress)(void *ud, double done);
+    void *progress_ud;
 } rayscad_eval_options;
 
 /* An evaluated file: its top-level objects, the '#' and '%' subtrees, and

@@ -44,6 +44,7 @@ typedef struct messages {
     char *buf;
     size_t len, cap;
     const cli_options *o;
+    progress bar; /* the evaluation's (eval_options starts it) */
 } messages;
 
 static void on_message(void *ud, rayscad_message_kind kind, const char *line)
@@ -57,6 +58,7 @@ static void on_message(void *ud, rayscad_message_kind kind, const char *line)
          * failing gets the memory limit's note here; the .echo keeps
          * OpenSCAD's wording. */
         char note[96];
+        progress_break(&m->bar);
         fprintf(stderr, "%s%s\n", line,
                 kind == RAYSCAD_MSG_ERROR ? cli_memory_note(m->o, line, note, sizeof note) : "");
         return;
@@ -180,7 +182,10 @@ static void eval_options(run *r, messages *msgs, const rayscad_services *service
 {
     const cli_options *o = r->o;
     *params = (param_hook){.o = o, .msgs = msgs};
+    progress_start_after(&msgs->bar, o->quiet ? NULL : "evaluating", 1.0);
     *eo = (rayscad_eval_options){
+        .progress = progress_update,
+        .progress_ud = &msgs->bar,
         .defines = r->defines,
         .define_count = r->define_count,
         .message = on_message,
@@ -228,6 +233,7 @@ static int write_trees(run *r, const rayscad_services *services)
     int failed =
         (r->src ? rayscad_csg_text_string("<stdin>", r->src, &eo, csg ? &text : NULL, &len)
                 : rayscad_csg_text(r->o->input, &eo, csg ? &text : NULL, &len)) != RAYSCAD_OK;
+    progress_finish(&msgs.bar);
     debug_time(r->o, "evaluated for .echo/.csg", &t0);
     cli_params_free(params.assign, params.n);
     r->said = 1;
@@ -351,6 +357,7 @@ static int write_model_outputs(run *r, const rayscad_services *services, int for
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     rayscad_status loaded = load_model(r, &eo, &model);
+    progress_finish(&msgs.bar);
     debug_time(&fo, for_mesh ? "evaluated as rendered" : "evaluated for preview", &t0);
     cli_params_free(params.assign, params.n);
     r->said = 1;
@@ -411,6 +418,7 @@ static int write_2d_outputs(run *r, const rayscad_services *services)
     struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     rayscad_status loaded = load_model(r, &eo, &model);
+    progress_finish(&msgs.bar);
     debug_time(&fo, "evaluated as a 2D export", &t0);
     cli_params_free(params.assign, params.n);
     r->said = 1;

@@ -12,9 +12,18 @@ typedef struct progress {
     int enabled;
     int last; /* last percentage drawn, -1 before the first */
     struct timespec t0;
+    double delay; /* seconds before the first drawing */
+    double drawn; /* when it last drew, seconds from t0 */
 } progress;
 
 void progress_start(progress *p, const char *label);
+/* A bar that shows only once `delay` seconds have passed (a short phase
+ * draws nothing) and then, while the share done stands still, redraws
+ * each second with the time spent. */
+void progress_start_after(progress *p, const char *label, double delay);
+/* Something else is about to be printed on stderr: erase the bar (the
+ * next update draws it again, below what was printed). */
+void progress_break(progress *p);
 /* A render_options.progress callback: ud is the progress, done in [0, 1]. */
 void progress_update(void *ud, double done);
 void progress_finish(progress *p);

@@ -35,6 +35,8 @@ static void scad_options_of(const rayscad_eval_options *o, scad_services *servic
     so->range_check = o->range_check;
     so->parameters = o->parameters;
     so->parameters_ud = o->parameters_ud;
+    so->progress = o->progress;
+    so->progress_ud = o->progress_ud;
 }
 
 static rayscad_status load(const char *name, const char *src, const rayscad_eval_options *o,

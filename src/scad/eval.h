@@ -105,6 +105,12 @@ typedef struct scad_eval {
     int depth, max_depth;
     int max_list, max_string;  /* value size limits (scad_options) */
     long steps, max_steps;     /* work done and its limit (scad_options.max_steps) */
+    /* scad_options.progress, the main file's top-level scope and the share
+     * of its statements done (scad_eval_file_scope) */
+    void (*progress)(void *ud, double done);
+    void *progress_ud;
+    const scad_scope *progress_scope;
+    double progress_done;
     int module_depth;          /* user modules being instantiated: $parent_modules */
     const char **module_names; /* their names, outermost first (parent_module) */
     int module_names_cap;

@@ -124,6 +124,7 @@ void scad_frame_pop(scad_eval *ev, int pushed)
  * recursion). */
 int scad_eval_step(scad_eval *ev, scad_loc loc)
 {
+    if ((ev->steps & 0xffff) == 0 && ev->progress) ev->progress(ev->progress_ud, ev->progress_done);
     if (++ev->steps <= ev->max_steps) return 0;
     scad_eval_error(ev, loc, "evaluation took more than %ld steps (calls and loop values)",
                     ev->max_steps);

@@ -217,6 +217,10 @@ static void run_stmts(scad_eval *ev, scad_env *env, const scad_scope *s, const s
         const scad_stmt *st = s->stmts[pick ? pick[i] : i];
         if (ev->nframes == 0) ev->at = st->loc;
         gather_add(ev, out, instantiate(ev, env, st, state));
+        if (s == ev->progress_scope && ev->progress) {
+            ev->progress_done = (double)(i + 1) / n;
+            ev->progress(ev->progress_ud, ev->progress_done);
+        }
     }
 }
 
@@ -758,6 +762,9 @@ scad_geom *scad_eval_file_scope(scad_eval *ev, scad_env *env, const scad_scope *
     memcpy(st.xf, csg_affine_identity, sizeof st.xf);
     memset(&st.mat, 0, sizeof st.mat);
     gather g = {0};
+    ev->progress_scope = s;
+    ev->progress_done = 0;
+    if (ev->progress) ev->progress(ev->progress_ud, 0);
     scad_run_assignments(ev, env, s);
     run_stmts(ev, env, s, &st, &g, NULL, 0);
     return finish(ev, &g, CSG_OP_UNION);

@@ -282,6 +282,8 @@ static int eval_init(scad_eval *ev, job *j, char *base)
     ev->max_depth =
         j->opt && j->opt->max_recursion > 0 ? j->opt->max_recursion : DEFAULT_MAX_RECURSION;
     ev->max_steps = j->opt && j->opt->max_steps > 0 ? j->opt->max_steps : DEFAULT_MAX_STEPS;
+    ev->progress = j->opt ? j->opt->progress : NULL;
+    ev->progress_ud = j->opt ? j->opt->progress_ud : NULL;
     ev->max_list = j->opt && j->opt->max_list > 0 && j->opt->max_list < SCAD_MAX_LIST
                        ? j->opt->max_list
                        : SCAD_MAX_LIST;

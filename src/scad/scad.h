@@ -143,6 +143,8 @@ typedef struct scad_options {
     int (*parameters)(void *ud, const rayscad_parameter_query *q, const char *const **overrides,
                       int *count);
     void *parameters_ud;
+    void (*progress)(void *ud, double done); /* rayscad_eval_options.progress */
+    void *progress_ud;
 } scad_options;
 
 /* What a file evaluates to.  Each tree may be NULL (nothing there). */

@@ -447,5 +447,22 @@ printf 'text("a", font = ":charset=xxx");\ncube(1);\n' >nofont.scad
 run nofont.scad -o nofont.stl
 check "text() without a font warns, draws the rest and exits 0" sh -c "test $rc -eq 0 && test -s nofont.stl && grep -q \"WARNING: text(): no font found for ':charset=xxx'; nothing is drawn\" err.txt && ! grep -q 'error:' err.txt"
 
+# Progress of a long evaluation: on a terminal (script(1) gives one) a bar
+# with the time spent shows once a second has passed, erased for each ECHO
+# line; not with -q, and not when stderr is no terminal.
+if command -v script >/dev/null; then
+    cat >slow.scad <<'EOF'
+function f(n) = n <= 0 ? 0 : 1 + f(n - 1);
+for (i = [0:40]) { echo(i, f(5000) + len([for (j = [0:500000]) j])); translate([i, 0, 0]) cube(1); }
+EOF
+    script -q -c "'$rayscad' slow.scad -o slow.png --imgsize=32,32" /dev/null >tty.txt 2>&1
+    check "a long evaluation shows its progress on a terminal" \
+        sh -c "grep -q 'evaluating \\[' tty.txt && grep -q '(1 s)' tty.txt && grep -q 'ECHO: 40, 505001' tty.txt"
+    script -q -c "'$rayscad' -q slow.scad -o slow.png --imgsize=32,32" /dev/null >tty.txt 2>&1
+    check "-q: no progress on a terminal" sh -c "! grep -q 'evaluating' tty.txt"
+    "$rayscad" slow.scad -o slow.png --imgsize=32,32 >out.txt 2>err.txt
+    check "no progress when stderr is no terminal" sh -c "! grep -q 'evaluating' err.txt"
+fi
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
