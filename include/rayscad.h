@@ -267,6 +267,29 @@ rayscad_status rayscad_csg_text(const char *path, const rayscad_eval_options *o,
 rayscad_status rayscad_csg_text_string(const char *name, const char *src,
                                        const rayscad_eval_options *o, char **text, size_t *len);
 
+/* The parsed file as `openscad -o x.ast` (2021.01) writes it: each scope's
+ * functions, modules, assignments and instantiations printed back in
+ * OpenSCAD's layout, included files inline, the -D overrides and the
+ * parameter set applied, and the customizer annotations of the top-level
+ * assignments ("//Parameter([0 : 10])") above them.  Only a parse: its
+ * messages are the parse's (syntax errors, includes not found).
+ * RAYSCAD_OK and *text (NUL-terminated, *len bytes, len may be NULL; the
+ * caller frees it with free()), or RAYSCAD_ERROR after an error message
+ * (*text NULL). */
+rayscad_status rayscad_ast_text(const char *path, const rayscad_eval_options *o, char **text,
+                                size_t *len);
+rayscad_status rayscad_ast_text_string(const char *name, const char *src,
+                                       const rayscad_eval_options *o, char **text, size_t *len);
+
+/* The file's CSG term as `openscad -o x.term` (2021.01) writes it, which is
+ * "No top-level CSG object\n" for every file that parses: openscad builds
+ * the term without geometry, so each of its leaves is empty.  Only a parse,
+ * as rayscad_ast_text; the same results. */
+rayscad_status rayscad_term_text(const char *path, const rayscad_eval_options *o, char **text,
+                                 size_t *len);
+rayscad_status rayscad_term_text_string(const char *name, const char *src,
+                                        const rayscad_eval_options *o, char **text, size_t *len);
+
 /* ---- scenes and cameras ---------------------------------------------------------- */
 
 /* A model's trees committed for ray casting: bounds, hierarchies, the

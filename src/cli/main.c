@@ -7,8 +7,9 @@
  *
  * Evaluations: as openscad 2021.01, $preview is true for images (unless
  * --render), .echo and .csg, and false for meshes and --measure, so a run
- * evaluates the file at most once for each: the tree outputs (.echo, .csg:
- * one evaluation without geometry), the preview model (images) and the
+ * evaluates the file at most once for each: the tree outputs (.echo, .csg,
+ * .ast, .term: one evaluation without geometry; .ast and .term are
+ * printed from a parse of their own), the preview model (images) and the
  * rendered model (meshes, --measure, --render images).  Messages reach
  * stderr (or the .echo) from the first of them only.  --animate N does all
  * of it N times with $t = i/N, each output named as openscad names frames.
@@ -41,6 +42,7 @@ enum { EXIT_MODEL = 1, EXIT_USAGE = 2 };
  * same frame has said the rest). */
 typedef struct messages {
     int to_buffer, errors_only;
+    int drop; /* a second parse's: everything was said by the first */
     char *buf;
     size_t len, cap;
     const cli_options *o;
@@ -50,6 +52,7 @@ typedef struct messages {
 static void on_message(void *ud, rayscad_message_kind kind, const char *line)
 {
     messages *m = ud;
+    if (m->drop) return;
     if (kind == RAYSCAD_MSG_TRACE && !m->to_buffer) return; /* the ERROR line said it */
     int error = kind == RAYSCAD_MSG_ERROR || kind == RAYSCAD_MSG_NOTE;
     if (!m->to_buffer || error) {
@@ -110,7 +113,7 @@ static int apply_param_set(void *ud, const rayscad_parameter_query *q,
     int rc =
         cli_params_load(h->o->param_file, h->o->param_set, &f, &h->assign, &h->n, msg, sizeof msg);
     if (rc == CLI_PARAMS_FATAL) {
-        fprintf(stderr, "rayscad: error: %s\n", msg);
+        if (!h->msgs->drop) fprintf(stderr, "rayscad: error: %s\n", msg);
         return -1;
     }
     if (rc == CLI_PARAMS_ERROR) { /* openscad's words, and it goes on */
@@ -217,11 +220,16 @@ static int has_kind(const run *r, output_kind k)
 /* .echo and .csg: OpenSCAD's evaluated tree, no geometry — one evaluation
  * for all of them.  As openscad, an .echo holds what the evaluation says
  * (what came before an error and the error itself; the exit status still
- * says the model failed), and a .csg the tree. */
+ * says the model failed), and a .csg the tree.  .ast and .term come from
+ * a parse of their own (its messages dropped: the evaluation said them),
+ * written whenever the file parses, as openscad writes them after most
+ * errors; openscad evaluates the file for them too, so they share the
+ * evaluation and its messages. */
 static int write_trees(run *r, const rayscad_services *services)
 {
     int echo = has_kind(r, OUTPUT_ECHO), csg = has_kind(r, OUTPUT_CSG);
-    if (!echo && !csg) return 0;
+    int ast = has_kind(r, OUTPUT_AST), term = has_kind(r, OUTPUT_TERM);
+    if (!echo && !csg && !ast && !term) return 0;
     messages msgs = {.to_buffer = echo, .errors_only = r->said, .o = r->o};
     rayscad_eval_options eo;
     param_hook params;
@@ -236,15 +244,36 @@ static int write_trees(run *r, const rayscad_services *services)
     progress_finish(&msgs.bar);
     debug_time(r->o, "evaluated for .echo/.csg", &t0);
     cli_params_free(params.assign, params.n);
+    char *parsed[2] = {NULL, NULL}; /* the .ast and .term texts */
+    size_t parsed_len[2] = {0, 0};
+    for (int k = 0; k < 2; k++) {
+        if (!(k ? term : ast)) continue;
+        messages quiet = {.drop = 1, .o = r->o};
+        eval_options(r, &quiet, services, 0, &params, &eo);
+        rayscad_status st =
+            k ? (r->src
+                     ? rayscad_term_text_string("<stdin>", r->src, &eo, &parsed[k], &parsed_len[k])
+                     : rayscad_term_text(r->o->input, &eo, &parsed[k], &parsed_len[k]))
+              : (r->src
+                     ? rayscad_ast_text_string("<stdin>", r->src, &eo, &parsed[k], &parsed_len[k])
+                     : rayscad_ast_text(r->o->input, &eo, &parsed[k], &parsed_len[k]));
+        cli_params_free(params.assign, params.n);
+        if (st != RAYSCAD_OK) failed = 1;
+    }
     r->said = 1;
     int rc = 0;
     for (int i = 0; i < r->n && !rc; i++) {
-        if (r->out[i].kind == OUTPUT_ECHO)
+        output_kind k = r->out[i].kind;
+        if (k == OUTPUT_ECHO)
             rc = write_bytes(r, i, msgs.buf ? msgs.buf : "", msgs.len);
-        else if (r->out[i].kind == OUTPUT_CSG && !failed)
+        else if (k == OUTPUT_CSG && !failed)
             rc = write_bytes(r, i, text, len);
+        else if ((k == OUTPUT_AST || k == OUTPUT_TERM) && parsed[k == OUTPUT_TERM])
+            rc = write_bytes(r, i, parsed[k == OUTPUT_TERM], parsed_len[k == OUTPUT_TERM]);
     }
     free(text);
+    free(parsed[0]);
+    free(parsed[1]);
     free(msgs.buf);
     return rc ? rc : failed ? EXIT_MODEL : 0;
 }

@@ -18,8 +18,6 @@
 static const struct {
     const char *name, *why;
 } not_written[] = {
-    {"ast", "rayscad does not write openscad's .ast (the parsed file) yet"},
-    {"term", "rayscad does not write openscad's .term (its CSG term text) yet"},
     {"pdf", "rayscad does not write PDF exports yet (SVG and DXF it does)"},
     {"nef3", "nef3 is CGAL's own format, which rayscad has no use for and does not write"},
     {"nefdbg", "nefdbg is CGAL's own debugging format, which rayscad does not write"},
@@ -68,6 +66,10 @@ int cli_output_resolve(const char *path, const char *fmt, int ascii, cli_output 
         out->kind = OUTPUT_ECHO;
     } else if (!strcmp(name, "csg")) {
         out->kind = OUTPUT_CSG;
+    } else if (!strcmp(name, "ast")) {
+        out->kind = OUTPUT_AST;
+    } else if (!strcmp(name, "term")) {
+        out->kind = OUTPUT_TERM;
     } else if (!strcmp(name, "pov")) {
         out->kind = OUTPUT_POV;
     } else {
@@ -93,7 +95,7 @@ int cli_output_resolve(const char *path, const char *fmt, int ascii, cli_output 
             else
                 snprintf(err, errlen,
                          "cannot tell the output format from '%s' (use .png .jpg .tif .exr .stl "
-                         ".off .obj .ply .amf .3mf .svg .dxf .pov .echo or .csg, or "
+                         ".off .obj .ply .amf .3mf .svg .dxf .pov .echo .csg .ast or .term, or "
                          "--export-format)",
                          path);
             return 1;

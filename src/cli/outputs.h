@@ -17,6 +17,8 @@ typedef enum output_kind {
     OUTPUT_2D,    /* SVG, DXF of a 2D model */
     OUTPUT_ECHO,  /* the ECHO and WARNING lines */
     OUTPUT_CSG,   /* the evaluated tree */
+    OUTPUT_AST,   /* the parsed file printed back */
+    OUTPUT_TERM,  /* openscad's CSG term text */
 } output_kind;
 
 typedef struct cli_output {

@@ -1,7 +1,8 @@
 /*
  * model.c — rayscad_model: a .scad file evaluated by src/scad with the
- * library's services, and the .csg text of the same evaluation rule without
- * geometry.  The public options become scad_options here, once.
+ * library's services, the .csg text of the same evaluation rule without
+ * geometry, and the .ast and .term texts of its parse.  The public options
+ * become scad_options here, once.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -119,4 +120,62 @@ rayscad_status rayscad_csg_text_string(const char *name, const char *src,
                                        const rayscad_eval_options *o, char **text, size_t *len)
 {
     return csg_text(name ? name : "<string>", src ? src : "", o, text, len);
+}
+
+static rayscad_status ast_text(const char *name, const char *src, const rayscad_eval_options *o,
+                               char **text, size_t *len)
+{
+    scad_services services;
+    scad_options so;
+    scad_options_of(o, &services, &so);
+    int rc = src ? scad_dump_ast_string(name, src, &so, text, len)
+                 : scad_dump_ast_file(name, &so, text, len);
+    return rc == 0 ? RAYSCAD_OK : RAYSCAD_ERROR;
+}
+
+rayscad_status rayscad_ast_text(const char *path, const rayscad_eval_options *o, char **text,
+                                size_t *len)
+{
+    return ast_text(path, NULL, o, text, len);
+}
+
+rayscad_status rayscad_ast_text_string(const char *name, const char *src,
+                                       const rayscad_eval_options *o, char **text, size_t *len)
+{
+    return ast_text(name ? name : "<string>", src ? src : "", o, text, len);
+}
+
+/* openscad.cc 2021.01 builds the term with a CSGTreeEvaluator that has no
+ * GeometryEvaluator: its leaves (CSGTreeEvaluator::visit of AbstractPolyNode,
+ * RenderNode and CgaladvNode) are made from geometry only, so each is a
+ * null term, every operation on null terms is null
+ * (CSGOperation::createCSGNode), and the root is null whatever the file
+ * holds.  What is left of the output is whether the file parses. */
+static rayscad_status term_text(const char *name, const char *src, const rayscad_eval_options *o,
+                                char **text, size_t *len)
+{
+    static const char empty[] = "No top-level CSG object\n";
+    char *ast;
+    rayscad_status rc = ast_text(name, src, o, &ast, NULL);
+    *text = NULL;
+    if (len) *len = 0;
+    if (rc != RAYSCAD_OK) return rc;
+    free(ast);
+    *text = malloc(sizeof empty);
+    if (!*text) return RAYSCAD_ERROR_MEMORY;
+    memcpy(*text, empty, sizeof empty);
+    if (len) *len = sizeof empty - 1;
+    return RAYSCAD_OK;
+}
+
+rayscad_status rayscad_term_text(const char *path, const rayscad_eval_options *o, char **text,
+                                 size_t *len)
+{
+    return term_text(path, NULL, o, text, len);
+}
+
+rayscad_status rayscad_term_text_string(const char *name, const char *src,
+                                        const rayscad_eval_options *o, char **text, size_t *len)
+{
+    return term_text(name ? name : "<string>", src ? src : "", o, text, len);
 }

@@ -341,6 +341,10 @@ struct scad_scope {
      * (use <font.ttf>, as openscad registers them with its font cache) */
     const char **fonts;
     int nfonts, capfonts;
+    /* the top scope of a parse: the line the main file ends on, as the
+     * lexer counts them (openscad parses the -D assignments from two
+     * lines further down) */
+    int end_line;
     /* funcs and mods by name (scope.c), built when the parse ends */
     int *fslot, *mslot;
     uint32_t fmask, mmask;

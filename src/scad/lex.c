@@ -230,6 +230,10 @@ static void lex_string(lexer *L, scad_loc loc)
             advance(L, 1);
             break;
         }
+        if (c == '\n') { /* a line break in a literal is dropped, as 2021.01's lexer does */
+            advance(L, 1);
+            continue;
+        }
         if (c != '\\') {
             buf[n++] = c;
             advance(L, 1);

@@ -492,6 +492,7 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
     }
     scad_scope *s = new_scope(&P);
     sh.top = s;
+    if (s) s->end_line = P.t[P.ntok - 1].loc.line;
     if (s) parse_into(&P, s);
     free(P.t);
     if (s) drain_uses(&P, 0);

@@ -19,6 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "ast_print.h"
 #include "builtins/builtins.h"
 #include "eval.h"
 #include "registry.h"
@@ -175,6 +176,7 @@ typedef struct job {
     int status;
     scad_buf *dump; /* non-NULL: write the .csg text here, build no trees */
     int dump_text;  /* 0: the .csg tree is evaluated, its text not written (.echo) */
+    int ast;        /* 1: the file is parsed, not evaluated, and its .ast written to dump */
 } job;
 
 static void set_value(scad_eval *ev, scad_env *e, const char *name, scad_value v)
@@ -413,8 +415,12 @@ static void run_job(job *j)
 
 /* ---- -D overrides ------------------------------------------------------------------ */
 
+/* Each define replaces the value of top's assignment of its name, or is
+ * added after them.  file non-NULL: the assignments made take the
+ * location openscad gives them, line first_line + i of file (it parses
+ * the -D assignments as lines of the main file after its end). */
 static int apply_defines(scad_arena *a, scad_diag *d, scad_names *names, scad_scope *top,
-                         const char *const *defines, int count)
+                         const char *const *defines, int count, const char *file, int first_line)
 {
     for (int i = 0; i < count; i++) {
         const char *def = defines[i];
@@ -430,11 +436,13 @@ static int apply_defines(scad_arena *a, scad_diag *d, scad_names *names, scad_sc
             return -1;
         }
         scad_assign *as = &s->assigns[0];
+        if (file) as->loc = (scad_loc){file, first_line + i, 1};
         int k;
         for (k = 0; k < top->nassigns; k++)
             if (top->assigns[k].name == as->name) break;
         if (k < top->nassigns) {
             top->assigns[k].value = as->value;
+            if (file) top->assigns[k].loc = as->loc;
             continue;
         }
         scad_assign *nv = scad_arena_alloc(a, sizeof *nv * (size_t)(top->nassigns + 1));
@@ -498,7 +506,7 @@ static int apply_parameters(job *j)
         j->d->errors++; /* the hook said why */
         return -1;
     }
-    if (apply_defines(j->a, j->d, j->names, top, overrides, n)) {
+    if (apply_defines(j->a, j->d, j->names, top, overrides, n, NULL, 0)) {
         if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
         return -1;
     }
@@ -517,25 +525,55 @@ static int parse_job(job *j)
         scad_diag_parse_failed(j->d, j->name);
         return -1;
     }
-    if (j->opt &&
-        apply_defines(j->a, j->d, j->names, j->top, j->opt->defines, j->opt->define_count)) {
+    if (j->opt && apply_defines(j->a, j->d, j->names, j->top, j->opt->defines, j->opt->define_count,
+                                j->ast ? j->name : NULL, j->top->end_line + 2)) {
         if (j->d->errors == 0) scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
         return -1;
     }
     return j->opt && j->opt->parameters ? apply_parameters(j) : 0;
 }
 
+/* The job's parse as openscad's .ast: the customizer annotations read
+ * from the text openscad parses (the file, "\n\x03\n", each -D and
+ * ";\n"), then the scopes printed into j->dump. */
+static void ast_job(job *j)
+{
+    scad_buf text = {0};
+    scad_buf_puts(&text, j->src);
+    scad_buf_puts(&text, "\n\x03\n");
+    for (int i = 0; j->opt && i < j->opt->define_count; i++) {
+        scad_buf_puts(&text, j->opt->defines[i]);
+        scad_buf_puts(&text, ";\n");
+    }
+    const scad_annotation *notes =
+        text.oom ? NULL : scad_annotations_collect(j->a, j->top, j->name, scad_buf_str(&text));
+    scad_buf_free(&text);
+    if (notes) scad_ast_print(j->dump, j->top, notes);
+    if (!notes || j->dump->oom)
+        scad_diag_error(j->d, (scad_loc){j->name, 1, 1}, "out of memory");
+    else
+        j->status = 0;
+}
+
+static void run_parsed(job *j)
+{
+    if (j->ast)
+        ast_job(j);
+    else
+        run_job(j);
+}
+
 static void *job_thread(void *p)
 {
     job *j = p;
-    if (parse_job(j) == 0) run_job(j);
+    if (parse_job(j) == 0) run_parsed(j);
     return NULL;
 }
 
 /* ---- public ----------------------------------------------------------------------- */
 
 static int eval_source(const char *name, const char *src, scad_arena *a, const scad_options *opt,
-                       scad_result *out, scad_buf *dump, int dump_text)
+                       scad_result *out, scad_buf *dump, int dump_text, int ast)
 {
     scad_diag d;
     memset(&d, 0, sizeof d);
@@ -550,7 +588,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
         scad_diag_error(&d, (scad_loc){name, 1, 1}, "out of memory");
         return -1;
     }
-    job j = {opt, &d, names, name, src, a, NULL, out, EVAL_STACK, -1, dump, dump_text};
+    job j = {opt, &d, names, name, src, a, NULL, out, EVAL_STACK, -1, dump, dump_text, ast};
     pthread_attr_t attr;
     pthread_t th;
     int started = 0;
@@ -569,7 +607,7 @@ static int eval_source(const char *name, const char *src, scad_arena *a, const s
         if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur < lim)
             lim = (size_t)rl.rlim_cur;
         j.stack_size = lim / 2;
-        if (parse_job(&j) == 0) run_job(&j);
+        if (parse_job(&j) == 0) run_parsed(&j);
     }
     out->warnings = d.warnings;
     if (j.status != 0) scad_result_free(out);
@@ -581,13 +619,13 @@ int scad_eval_string(const char *name, const char *src, const scad_options *opt,
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
     if (!a) return -1;
-    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out, NULL, 0);
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, out, NULL, 0, 0);
     scad_arena_free(a);
     return r;
 }
 
 static int eval_path(const char *path, const scad_options *opt, scad_result *out, scad_buf *dump,
-                     int dump_text)
+                     int dump_text, int ast)
 {
     memset(out, 0, sizeof *out);
     scad_arena *a = scad_arena_new();
@@ -602,14 +640,14 @@ static int eval_path(const char *path, const scad_options *opt, scad_result *out
         scad_arena_free(a);
         return -1;
     }
-    int r = eval_source(path, src, a, opt, out, dump, dump_text);
+    int r = eval_source(path, src, a, opt, out, dump, dump_text, ast);
     scad_arena_free(a);
     return r;
 }
 
 int scad_eval_file(const char *path, const scad_options *opt, scad_result *out)
 {
-    return eval_path(path, opt, out, NULL, 0);
+    return eval_path(path, opt, out, NULL, 0, 0);
 }
 
 static int dump_finish(int r, scad_buf *b, char **text, size_t *len)
@@ -635,7 +673,7 @@ int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, s
     scad_result res;
     if (text) *text = NULL;
     if (len) *len = 0;
-    return dump_finish(eval_path(path, opt, &res, &b, text != NULL), &b, text, len);
+    return dump_finish(eval_path(path, opt, &res, &b, text != NULL, 0), &b, text, len);
 }
 
 int scad_dump_csg_string(const char *name, const char *src, const scad_options *opt, char **text,
@@ -648,7 +686,32 @@ int scad_dump_csg_string(const char *name, const char *src, const scad_options *
     memset(&res, 0, sizeof res);
     scad_arena *a = scad_arena_new();
     if (!a) return -1;
-    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, &res, &b, text != NULL);
+    int r =
+        eval_source(name ? name : "<string>", src ? src : "", a, opt, &res, &b, text != NULL, 0);
+    scad_arena_free(a);
+    return dump_finish(r, &b, text, len);
+}
+
+int scad_dump_ast_file(const char *path, const scad_options *opt, char **text, size_t *len)
+{
+    scad_buf b = {0};
+    scad_result res;
+    *text = NULL;
+    if (len) *len = 0;
+    return dump_finish(eval_path(path, opt, &res, &b, 1, 1), &b, text, len);
+}
+
+int scad_dump_ast_string(const char *name, const char *src, const scad_options *opt, char **text,
+                         size_t *len)
+{
+    scad_buf b = {0};
+    scad_result res;
+    *text = NULL;
+    if (len) *len = 0;
+    memset(&res, 0, sizeof res);
+    scad_arena *a = scad_arena_new();
+    if (!a) return -1;
+    int r = eval_source(name ? name : "<string>", src ? src : "", a, opt, &res, &b, 1, 1);
     scad_arena_free(a);
     return dump_finish(r, &b, text, len);
 }

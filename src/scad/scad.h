@@ -210,4 +210,15 @@ int scad_dump_csg_file(const char *path, const scad_options *opt, char **text, s
 int scad_dump_csg_string(const char *name, const char *src, const scad_options *opt, char **text,
                          size_t *len);
 
+/* The file at path as `openscad -o x.ast` (2021.01) writes it: the parse
+ * (includes inline, the -D overrides and opt->parameters' applied) printed
+ * back with OpenSCAD's layout and its customizer annotations.  Nothing is
+ * evaluated; the messages are the parse's.  0 and *text (NUL-terminated,
+ * *len bytes, len may be NULL; the caller frees it with free()), or -1
+ * with *text NULL after at least one RAYSCAD_MSG_ERROR line (a syntax
+ * error). */
+int scad_dump_ast_file(const char *path, const scad_options *opt, char **text, size_t *len);
+int scad_dump_ast_string(const char *name, const char *src, const scad_options *opt, char **text,
+                         size_t *len);
+
 #endif

@@ -402,6 +402,26 @@ void scad_format_number(double d, char *buf)
     *o = 0;
 }
 
+void scad_quote_escaped(scad_buf *b, const char *s, size_t n)
+{
+    scad_buf_put(b, "\"", 1);
+    size_t from = 0;
+    for (size_t i = 0; i < n; i++) {
+        const char *esc = s[i] == '\t'   ? "\\t"
+                          : s[i] == '\n' ? "\\n"
+                          : s[i] == '\r' ? "\\r"
+                          : s[i] == '"'  ? "\\\""
+                          : s[i] == '\\' ? "\\\\"
+                                         : NULL;
+        if (!esc) continue;
+        scad_buf_put(b, s + from, i - from);
+        scad_buf_puts(b, esc);
+        from = i + 1;
+    }
+    scad_buf_put(b, s + from, n - from);
+    scad_buf_put(b, "\"", 1);
+}
+
 static void put_number(scad_buf *b, double d)
 {
     char tmp[32];
@@ -449,9 +469,7 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         put_number(b, e->num);
         break;
     case EX_STRING:
-        scad_buf_puts(b, "\"");
-        scad_buf_put(b, e->str, e->len);
-        scad_buf_puts(b, "\"");
+        scad_quote_escaped(b, e->str, e->len);
         break;
     case EX_BOOL:
         scad_buf_puts(b, e->num ? "true" : "false");
@@ -482,7 +500,8 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         scad_buf_puts(b, "]");
         break;
     case EX_UNARY:
-        scad_buf_puts(b, scad_op_text(e->op, one));
+        /* 2021.01's parser drops a unary plus: +x is x */
+        if (e->op != '+') scad_buf_puts(b, scad_op_text(e->op, one));
         scad_expr_format(b, e->a[0]);
         break;
     case EX_BINARY:
@@ -522,10 +541,12 @@ void scad_expr_format(scad_buf *b, const scad_expr *e)
         break;
     case EX_LET:
     case LC_LET:
+        /* a comprehension's let (LcLet) has its body in parens */
         scad_buf_puts(b, "let(");
         format_params(b, &e->args);
-        scad_buf_puts(b, ") ");
+        scad_buf_puts(b, e->kind == LC_LET ? ") (" : ") ");
         scad_expr_format(b, e->a[0]);
+        if (e->kind == LC_LET) scad_buf_puts(b, ")");
         break;
     case EX_ASSERT:
     case EX_ECHO:

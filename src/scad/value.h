@@ -155,7 +155,12 @@ void scad_value_format(scad_buf *b, scad_value v, int quote_strings);
 /* An operator's text: "<=" for TK_LE, "+" for '+' (written into buf, which
  * must hold 2 bytes, when one character). */
 const char *scad_op_text(int op, char buf[2]);
-/* An expression as OpenSCAD prints function literals: "(x * 2)". */
+/* s[0..n) in double quotes with OpenSCAD's QuotedString escapes (\t \n
+ * \r \" \\; every other byte as it is), as it prints string literals in
+ * expressions. */
+void scad_quote_escaped(scad_buf *b, const char *s, size_t n);
+/* An expression as OpenSCAD 2021.01 prints it (Expression::print: function
+ * literals in echo, assert's condition, the .ast): "(x * 2)". */
 void scad_expr_format(scad_buf *b, const scad_expr *e);
 
 #endif

@@ -1,16 +1,17 @@
 #!/usr/bin/env python3
 """Real OpenSCAD code against the real openscad 2021.01 (`make corpus`).
 
-  corpus.py BUILD [--only GLOB] [--kind echo|csg|png|stl] [--jobs N] [--update]
+  corpus.py BUILD [--only GLOB] [--kind echo|csg|png|stl|ast|term] [--jobs N] [--update]
 
 The two corpora of ../shared/corpora (see its README):
-  openscad-tests/data/scad/**.scad  .echo, .csg, .png and .stl
+  openscad-tests/data/scad/**.scad  .echo, .csg, .png, .stl, .ast and .term
   BOSL2 tests/*.scadtest             .echo of every [[test]] script, written
                                      into a scratch copy of BOSL2 so that its
                                      include <../std.scad> resolves
 Each file runs in its own folder with OPENSCADPATH at the corpora root, under
-both programs, 2 jobs at a time.  .echo is compared byte for byte, .csg token
-by token as tests/cli/conformance.sh does (numbers within 1e-9 relative).
+both programs, 2 jobs at a time.  .echo, .ast (the parsed file printed back)
+and .term (the CSG term text) are compared byte for byte, .csg token by token
+as tests/cli/conformance.sh does (numbers within 1e-9 relative).
 .png is openscad's preview at 320x240 with its default camera (under one Xvfb
 for the whole run) against ours with --facets=openscad: the silhouettes must
 agree to IoU >= 0.99 outside a one-pixel band (BUILD/tools/maskcmp), and where
@@ -140,7 +141,7 @@ def csg_diff(a, b):
 
 
 def echo_diff(a, b):
-    """The first differing line of two .echo texts, or None."""
+    """The first differing line of two texts (.echo, .ast, .term), or None."""
     if a == b:
         return None
     x, y = a.split("\n"), b.split("\n")
@@ -231,7 +232,7 @@ def compare(kind, ref, ours, maskcmp):
     if kind == "stl":
         return stl_diff(os.path.join(os.path.dirname(maskcmp), "meshcmp"), ref, ours)
     a, b = read(ref), read(ours)
-    return (echo_diff(a, b) if kind == "echo" else csg_diff(a, b)), None
+    return (csg_diff(a, b) if kind == "csg" else echo_diff(a, b)), None
 
 
 def check(rayscad, outdir, key, path, kind, display=None):
@@ -331,7 +332,8 @@ def main(argv):
     for d in ("ref", "ours", "scratch"):
         os.makedirs(os.path.join(outdir, d), exist_ok=True)
 
-    jobs_list = [(k, p, kind) for k, p in openscad_tests() for kind in ("echo", "csg", "png", "stl")]
+    jobs_list = [(k, p, kind) for k, p in openscad_tests()
+                 for kind in ("echo", "csg", "png", "stl", "ast", "term")]
     jobs_list += [(k, p, "echo") for k, p in bosl2_tests(os.path.join(outdir, "scratch"))]
     if only:
         jobs_list = [j for j in jobs_list if fnmatch.fnmatch(j[0], only)]
@@ -382,7 +384,8 @@ def main(argv):
     for corpus in sorted(counts):
         ok, total, k = counts[corpus]
         print("corpus: %s: %d of %d %s openscad's, %d known differences" % (
-            corpus, ok, total, "identical to" if corpus.endswith(("echo", "csg")) else "agree with",
+            corpus, ok, total,
+            "identical to" if corpus.endswith(("echo", "csg", "ast", "term")) else "agree with",
             k))
     ious = [r["iou"] for r in results if r["kind"] == "png" and r["iou"] is not None]
     if ious:

@@ -194,6 +194,35 @@ Test(api, csg_text_is_openscads)
     free(text);
 }
 
+/* The .ast and .term of OpenSCAD 2021.01 for this source: the parse
+ * printed back, and the empty term it writes for any file that parses. */
+Test(api, ast_and_term_texts_are_openscads)
+{
+    lines m = {""};
+    rayscad_eval_options o = {.message = collect, .message_ud = &m};
+    const char *src = "size = 3; // [1:10]\n"
+                      "module box(s) cube(s);\n"
+                      "translate([1, 0, 0]) box(size);\n";
+    char *text = NULL;
+    size_t len = 0;
+    cr_assert_eq(rayscad_ast_text_string("t.scad", src, &o, &text, &len), RAYSCAD_OK);
+    cr_expect_str_eq(text, "module box(s) {\n"
+                           "\tcube(s);\n"
+                           "}\n"
+                           "//Parameter([1 : 10])\n"
+                           "size = 3;\n"
+                           "translate([1, 0, 0]) box(size);\n");
+    cr_expect_eq(len, strlen(text));
+    free(text);
+    cr_assert_eq(rayscad_term_text_string("t.scad", src, &o, &text, &len), RAYSCAD_OK);
+    cr_expect_str_eq(text, "No top-level CSG object\n");
+    cr_expect_eq(len, strlen(text));
+    free(text);
+    cr_expect_str_eq(m.text, "");
+    cr_expect_eq(rayscad_term_text_string("t.scad", "cube(", &o, &text, &len), RAYSCAD_ERROR);
+    cr_expect_null(text);
+}
+
 /* ---- rendering and measuring ------------------------------------------------------ */
 
 /* Cornfield's background (#ffffe5) in a corner, and no background at the
