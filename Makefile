@@ -54,7 +54,10 @@ CFLAGS   = -std=c11 -D_POSIX_C_SOURCE=200809L $(OPT) $(WARN) $(SANFLAGS) $(PREFI
 CXXFLAGS = -std=c++17 $(OPT) $(CXXWARN) $(SANFLAGS) $(PREFIX_MAP) -MMD -MP \
 	$(shell pkg-config --cflags OpenImageIO 2>/dev/null) \
 	$(shell pkg-config --cflags polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
-	$(MESH_IMPORT_CFLAGS)
+	$(CAIRO_CFLAGS) $(MESH_IMPORT_CFLAGS)
+# cairo draws the PDF export (src/io/pdf.cpp); -lcairo when its .pc is missing.
+CAIRO_CFLAGS := $(shell pkg-config --cflags cairo 2>/dev/null)
+CAIRO_LIBS := $(or $(shell pkg-config --libs cairo 2>/dev/null),-lcairo)
 # AMF (libxml2, libzip) and 3MF (lib3mf 1.8, whose .pc is named lib3MF)
 # import; -l3MF when its .pc is missing.
 MESH_IMPORT_CFLAGS := $(shell pkg-config --cflags libxml-2.0 libzip 2>/dev/null) \
@@ -70,7 +73,7 @@ JSON_LIBS := $(or $(shell pkg-config --libs json-c 2>/dev/null),-ljson-c)
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
 LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
-	$(MESH_IMPORT_LIBS) \
+	$(CAIRO_LIBS) $(MESH_IMPORT_LIBS) \
 	-lpthread -lm
 
 # What building rayscad (and rendering the demo) needs, and what the tests
@@ -78,9 +81,9 @@ LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 # toolchain.  make demo installs the first only.
 BUILD_DEBS = pkg-config g++ make libopenimageio-dev libopenmesh-dev \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
-	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev
+	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev libcairo2-dev
 TEST_DEBS = openscad xvfb xauth povray openimageio-tools libcriterion-dev \
-	clang libclang-rt-dev man-db
+	clang libclang-rt-dev man-db poppler-utils
 DEBS = $(BUILD_DEBS) $(TEST_DEBS)
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
@@ -360,7 +363,8 @@ $(FUZZ)/obj/%.o: %.c
 $(FUZZ)/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	clang++ -std=c++17 -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link -MMD -MP \
-		$(shell pkg-config --cflags OpenImageIO polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) -c $< -o $@
+		$(shell pkg-config --cflags OpenImageIO polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
+		$(CAIRO_CFLAGS) -c $< -o $@
 
 $(FUZZ)/fuzz_%: $(FUZZ)/obj/tests/fuzz/fuzz_%.o $(FUZZ_OBJ)
 	clang++ $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)

@@ -53,8 +53,8 @@ const char *rayscad_version(void);
 
 /* The libraries rayscad runs with, one "name: version" line each
  * (OpenImageIO, OpenMesh, lib3mf, FreeType, HarfBuzz, fontconfig, the
- * fonts fontconfig knows), NUL-terminated, into buf (len bytes, truncated
- * to fit).  Loads the image adapter to ask OpenImageIO. */
+ * fonts fontconfig knows, cairo), NUL-terminated, into buf (len bytes,
+ * truncated to fit).  Loads the image adapter to ask OpenImageIO. */
 void rayscad_library_info(char *buf, size_t len);
 
 /* ---- status ------------------------------------------------------------------ */
@@ -617,19 +617,31 @@ rayscad_status rayscad_model_region(const rayscad_model *m, const double **point
                                     const int **path_start, int *path_count);
 
 /* 1 when the extension of path (any case) is a 2D format
- * rayscad_region_write writes: svg, dxf. */
+ * rayscad_region_write writes: svg, dxf, pdf. */
 int rayscad_region_format_supported(const char *path);
 
 /* Write the polygon set of m (loaded with for_2d) in the format of path's
  * extension, laid out as openscad 2021.01 lays out its 2D exports: SVG
  * (one <path>, viewBox from the bounds rounded outwards, y down) and DXF
- * (each edge a LINE on layer 0), numbers with six significant digits.
- * The file goes to a temporary name beside path, renamed into place: a
- * failure leaves no partial file and an existing one untouched.
+ * (each edge a LINE on layer 0), numbers with six significant digits; PDF
+ * (through cairo) one A4 page, 1 mm to 2.8346 points, the model's origin
+ * 30 points in from the bottom-left corner when its bounds (rounded to
+ * whole units) are not negative, else at the page's centre, the outlines
+ * stroked black and unfilled, with openscad's rulers and scale note; a
+ * model larger than the page is cut off by it (see
+ * rayscad_region_fits_pdf_page).  The file goes to a temporary name
+ * beside path, renamed into place: a failure leaves no partial file and an
+ * existing one untouched.
  * RAYSCAD_OK, RAYSCAD_ERROR_ARGUMENT (an unknown extension, m not loaded
  * for_2d) or RAYSCAD_ERROR, with a message in err. */
 rayscad_status rayscad_region_write(const rayscad_model *m, const char *path, char *err,
                                     size_t errlen);
+
+/* 0 when m's region reaches past the PDF page rayscad_region_write draws,
+ * by openscad 2021.01's test (which then warns "Geometry is too large to
+ * fit into A4 size."; it skips each path's first point), else 1; also 1
+ * when m holds no region. */
+int rayscad_region_fits_pdf_page(const rayscad_model *m);
 
 /* ---- files ------------------------------------------------------------------------ */
 

@@ -432,8 +432,10 @@ static int write_region_to(void *ctx, const char *path, char *err, size_t errlen
     return rayscad_region_write(ctx, path, err, errlen) == RAYSCAD_OK ? 0 : -1;
 }
 
-/* Evaluate as openscad's 2D export and write every SVG and DXF output.  A
- * model loaded for_2d holds one polygon set and no trees. */
+/* Evaluate as openscad's 2D export and write every SVG, DXF and PDF
+ * output.  A model loaded for_2d holds one polygon set and no trees.  A
+ * PDF of a model past its A4 page gets openscad's warning (not an error:
+ * openscad writes the page, cut off, and exits 0, --hardwarnings or not). */
 static int write_2d_outputs(run *r, const rayscad_services *services)
 {
     if (!has_kind(r, OUTPUT_2D)) return 0;
@@ -460,6 +462,9 @@ static int write_2d_outputs(run *r, const rayscad_services *services)
             0) {
             cli_print_error(&fo, err);
             rc = EXIT_MODEL;
+        } else if (!strcmp(r->out[i].ext, "pdf") && !fo.quiet &&
+                   !rayscad_region_fits_pdf_page(model)) {
+            fprintf(stderr, "EXPORT-WARNING: Geometry is too large to fit into A4 size.\n");
         }
     }
     rayscad_model_free(model);

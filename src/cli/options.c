@@ -24,7 +24,7 @@ const char cli_usage[] =
     "OUTPUT's extension (or --export-format) picks the format: .png .jpg .tif\n"
     ".exr (images), .pov (a POV-Ray scene), .stl .off .obj .ply .amf .3mf (a\n"
     "mesh of the model, top-level objects unioned; STL as text unless binstl),\n"
-    ".svg .dxf (a 2D model, as openscad writes them),\n"
+    ".svg .dxf .pdf (a 2D model, as openscad writes them),\n"
     ".echo (the ECHO and WARNING lines, as openscad -o x.echo writes them),\n"
     ".csg (the evaluated tree, as openscad -o x.csg writes it).  FILE '-' reads\n"
     "the model from the standard input, OUTPUT '-' writes to the standard output.\n"

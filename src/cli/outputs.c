@@ -18,7 +18,6 @@
 static const struct {
     const char *name, *why;
 } not_written[] = {
-    {"pdf", "rayscad does not write PDF exports yet (SVG and DXF it does)"},
     {"nef3", "nef3 is CGAL's own format, which rayscad has no use for and does not write"},
     {"nefdbg", "nefdbg is CGAL's own debugging format, which rayscad does not write"},
 };
@@ -95,7 +94,8 @@ int cli_output_resolve(const char *path, const char *fmt, int ascii, cli_output 
             else
                 snprintf(err, errlen,
                          "cannot tell the output format from '%s' (use .png .jpg .tif .exr .stl "
-                         ".off .obj .ply .amf .3mf .svg .dxf .pov .echo .csg .ast or .term, or "
+                         ".off .obj .ply .amf .3mf .svg .dxf .pdf .pov .echo .csg .ast or .term, "
+                         "or "
                          "--export-format)",
                          path);
             return 1;

@@ -14,7 +14,7 @@ typedef enum output_kind {
     OUTPUT_IMAGE, /* PNG, JPEG, TIFF, EXR … through OpenImageIO */
     OUTPUT_POV,   /* the scene and camera for POV-Ray */
     OUTPUT_MESH,  /* STL, OFF, OBJ, PLY, AMF, 3MF */
-    OUTPUT_2D,    /* SVG, DXF of a 2D model */
+    OUTPUT_2D,    /* SVG, DXF, PDF of a 2D model */
     OUTPUT_ECHO,  /* the ECHO and WARNING lines */
     OUTPUT_CSG,   /* the evaluated tree */
     OUTPUT_AST,   /* the parsed file printed back */

@@ -10,6 +10,9 @@
  *   every contour as its own LINE on layer 0 (codes 10/20 the start, 11/21
  *   the end), then an OBJECTS section with an empty DICTIONARY.
  *
+ *   PDF: openscad's A4 page, drawn by cairo (pdf.cpp); this file only
+ *   opens and commits it.
+ *
  * Numbers are openscad's ostream defaults: %g, six significant digits, so
  * -0 stays "-0" as it does there.  The decimal point is '.' whatever the
  * caller's locale (openscad sets LC_NUMERIC "C" around its writers).
@@ -25,6 +28,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "pdf.h"
 #include "temp_file.h"
 
 io_region_format io_region_format_of(const char *path)
@@ -32,6 +36,7 @@ io_region_format io_region_format_of(const char *path)
     if (!path) return IO_REGION_NONE;
     if (io_path_has_extension(path, "svg")) return IO_REGION_SVG;
     if (io_path_has_extension(path, "dxf")) return IO_REGION_DXF;
+    if (io_path_has_extension(path, "pdf")) return IO_REGION_PDF;
     return IO_REGION_NONE;
 }
 
@@ -105,8 +110,8 @@ static void write_dxf(FILE *f, const double (*pts)[2], const int *start, int npa
 int io_region_write(const char *path, io_region_format fmt, const double (*pts)[2],
                     const int *start, int npaths, char *err, size_t errlen)
 {
-    if (fmt != IO_REGION_SVG && fmt != IO_REGION_DXF) {
-        snprintf(err, errlen, "%s: unknown 2D format (use .svg or .dxf)", path);
+    if (fmt != IO_REGION_SVG && fmt != IO_REGION_DXF && fmt != IO_REGION_PDF) {
+        snprintf(err, errlen, "%s: unknown 2D format (use .svg, .dxf or .pdf)", path);
         return -1;
     }
     if (npaths < 0 || (npaths > 0 && (!pts || !start))) {
@@ -133,13 +138,16 @@ int io_region_write(const char *path, io_region_format fmt, const double (*pts)[
     errno = 0;
     FILE *f = fopen(tmp, "wb");
     int saved = errno, failed = !f;
+    char why[256] = "";
     if (f) {
         errno = 0;
         if (fmt == IO_REGION_SVG)
             write_svg(f, pts, start, npaths);
-        else
+        else if (fmt == IO_REGION_DXF)
             write_dxf(f, pts, start, npaths);
-        failed = ferror(f);
+        else if (io_pdf_write(f, pts, start, npaths, why, sizeof why) != 0)
+            failed = 1;
+        failed = failed || ferror(f);
         saved = errno;
         if (fclose(f) != 0 && !failed) {
             failed = 1;
@@ -149,8 +157,11 @@ int io_region_write(const char *path, io_region_format fmt, const double (*pts)[
     if (failed) {
         unlink(tmp);
         free(tmp);
-        snprintf(err, errlen, "%s: writing failed%s%s", path, saved ? ": " : "",
-                 saved ? strerror(saved) : "");
+        if (why[0])
+            snprintf(err, errlen, "%s: writing failed: %s", path, why);
+        else
+            snprintf(err, errlen, "%s: writing failed%s%s", path, saved ? ": " : "",
+                     saved ? strerror(saved) : "");
         return -1;
     }
     int rc = io_temp_commit(tmp, path, err, errlen);

@@ -11,6 +11,7 @@
 #include FT_FREETYPE_H
 #include <hb.h>
 #include <Model/COM/NMR_DLLInterfaces.h>
+#include <cairo.h>
 
 #include <cstdio>
 
@@ -53,6 +54,11 @@ extern "C" const char *io_fontconfig_version(void)
     int n = FcGetVersion();
     std::snprintf(v, sizeof v, "%d.%d.%d", n / 10000, n / 100 % 100, n % 100);
     return v;
+}
+
+extern "C" const char *io_cairo_version(void)
+{
+    return cairo_version_string();
 }
 
 extern "C" int io_font_count(void)

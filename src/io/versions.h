@@ -15,6 +15,7 @@ const char *io_lib3mf_version(void);
 const char *io_freetype_version(void);
 const char *io_harfbuzz_version(void);
 const char *io_fontconfig_version(void);
+const char *io_cairo_version(void);
 /* The font files fontconfig knows (text() chooses among them); -1 when it
  * cannot be asked. */
 int io_font_count(void);

@@ -44,8 +44,8 @@ void rayscad_library_info(char *buf, size_t len)
 {
     snprintf(buf, len,
              "OpenImageIO: %s\nOpenMesh: %s\nlib3mf: %s\nFreeType: %s\nHarfBuzz: %s\n"
-             "fontconfig: %s\nfonts: %d\n",
+             "fontconfig: %s\nfonts: %d\ncairo: %s\n",
              io_image_library_version(), io_openmesh_version(), io_lib3mf_version(),
-             io_freetype_version(), io_harfbuzz_version(), io_fontconfig_version(),
-             io_font_count());
+             io_freetype_version(), io_harfbuzz_version(), io_fontconfig_version(), io_font_count(),
+             io_cairo_version());
 }

@@ -1,6 +1,7 @@
 /*
  * region.c — a 2D model's polygon set (evaluated with for_2d, kept in the
- * scad_result) and its SVG and DXF exports (src/io/region_export.c).
+ * scad_result) and its SVG, DXF and PDF exports (src/io/region_export.c,
+ * src/io/pdf.cpp).
  */
 #include "../io/region_export.h"
 #include "rayscad_internal.h"
@@ -20,13 +21,21 @@ int rayscad_region_format_supported(const char *path)
     return io_region_format_of(path) != IO_REGION_NONE;
 }
 
+int rayscad_region_fits_pdf_page(const rayscad_model *m)
+{
+    if (!m || m->r.region.npaths <= 0) return 1;
+    const scad_paths *p = &m->r.region;
+    return io_region_fits_pdf_page((const double(*)[2])p->pts, p->start, p->npaths);
+}
+
 rayscad_status rayscad_region_write(const rayscad_model *m, const char *path, char *err,
                                     size_t errlen)
 {
     char local[1];
     if (!err) err = local, errlen = sizeof local;
     if (!path || !rayscad_region_format_supported(path)) {
-        rayscad_say(err, errlen, "%s: unknown 2D format (use .svg or .dxf)", path ? path : "");
+        rayscad_say(err, errlen, "%s: unknown 2D format (use .svg, .dxf or .pdf)",
+                    path ? path : "");
         return RAYSCAD_ERROR_ARGUMENT;
     }
     if (!m || m->r.region.npaths <= 0) {

@@ -179,6 +179,57 @@ both -o x.svg p.scad
 check "2D export of a 3D model fails in both, in openscad's words" \
     sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ] && grep -q 'Current top level object is not a 2D object.' r/err.txt && [ ! -e r/x.svg ]"
 
+# PDF: openscad's A4 page (rulers, scale note, the outlines stroked, not
+# filled), both rasterised by pdftoppm at 300 dpi in grey.  The page size
+# pdfinfo reads; the outlines, the only ink darker than 128 (the rulers and
+# type are 40 % grey), within IoU 0.99 outside a one-pixel band (maskcmp
+# --ink); and where the region is openscad's to the bit, every pixel of the
+# page.  hole and poly sit at the page's corner, circle and mixed at its
+# centre; the text's glyphs differ from openscad's by about 0.01 mm, so its
+# page is compared by the outlines only.
+printf 'difference() { square(20); translate([5, 5]) square(10); }\n' >hole.scad
+printf 'translate([-20, 10]) circle(r = 25, $fn = 48);\n' >circle.scad
+printf 'polygon([[0, 0], [60, 0], [60, 40], [0, 40], [10, 10], [25, 10], [25, 30], [10, 30],
+         [35, 10], [50, 10], [42, 30]], paths = [[0, 1, 2, 3], [4, 5, 6, 7], [8, 9, 10]]);\n' >poly.scad
+printf 'difference() { offset(r = 3, $fn = 24) square([40, 20], center = true); circle(5, $fn = 30); }
+translate([0, 40]) rotate(17) square([15, 8]);\n' >mixed.scad
+printf 'text("Hello", size = 10, font = "Liberation Sans");\n' >hello.scad
+printf 'translate([-150, -20]) square([400, 30]);\n' >wide.scad
+if command -v pdftoppm >/dev/null && command -v pdfinfo >/dev/null; then
+    for m in hole circle poly mixed hello wide; do
+        both -o x.pdf "$m.scad"
+        check "2D .pdf ($m): written by both" \
+            sh -c "[ $orc -eq 0 ] && [ $rrc -eq 0 ] && [ -s o/x.pdf ] && [ -s r/x.pdf ]"
+        check "2D .pdf ($m): openscad's page size" \
+            sh -c "pdfinfo o/x.pdf | grep '^Page size' >o.txt && pdfinfo r/x.pdf | grep '^Page size' >r.txt && grep -q '595 x 842' r.txt && cmp -s o.txt r.txt"
+        pdftoppm -r 300 -gray -png o/x.pdf o/page >/dev/null 2>&1
+        pdftoppm -r 300 -gray -png r/x.pdf r/page >/dev/null 2>&1
+        check "2D .pdf ($m): openscad's outlines (IoU >= 0.99)" \
+            sh -c "'$maskcmp' r/page-1.png o/page-1.png --ink 128 --min-iou 0.99 >/dev/null"
+        [ "$m" = hello ] ||
+            check "2D .pdf ($m): every pixel of openscad's page" cmp -s o/page-1.png r/page-1.png
+    done
+    check "2D .pdf (wide): openscad's warning that it passes the page" \
+        sh -c "grep -q '^EXPORT-WARNING: Geometry is too large to fit into A4 size.' o/err.txt && grep -q '^EXPORT-WARNING: Geometry is too large to fit into A4 size.' r/err.txt"
+    both -o x.pdf hole.scad
+    check "2D .pdf: no warning for a page it fits" sh -c "! grep -q EXPORT-WARNING r/err.txt"
+    both --export-format pdf -o - circle.scad
+    check "--export-format pdf -o -: a PDF on stdout, pixels as openscad's" \
+        sh -c "head -c 5 r/out.txt | grep -q '%PDF-' && pdftoppm -r 72 -gray o/out.txt o/s && pdftoppm -r 72 -gray r/out.txt r/s && cmp -s o/s-1.pgm r/s-1.pgm"
+else
+    check "pdftoppm and pdfinfo installed (poppler-utils; make deps)" false
+fi
+both -o x.pdf p.scad
+check "2D .pdf of a 3D model fails in both, in openscad's words, no file" \
+    sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ] && grep -q 'Current top level object is not a 2D object.' r/err.txt && [ ! -e r/x.pdf ]"
+printf 'not a pdf\n' >r/kept.pdf
+(cd r && "$rayscad" -o kept.pdf p.scad >/dev/null 2>&1)
+check "2D .pdf of a 3D model leaves an existing file as it was" grep -qx 'not a pdf' r/kept.pdf
+(cd r && "$rayscad" -o no/such/dir/x.pdf hole.scad >/dev/null 2>err.txt)
+rrc=$?
+check "2D .pdf into a missing folder: exit 1, the path named, nothing left" \
+    sh -c "[ $rrc -eq 1 ] && grep -q 'error: no/such/dir/x.pdf: ' r/err.txt && [ -z \"\$(find r -name '*.pdf*' ! -name kept.pdf)\" ]"
+
 # Messages: -q, --hardwarnings, --check-parameters, --check-parameter-ranges.
 both -q -o x.stl w.scad
 check "-q: nothing on stderr but errors" test ! -s r/err.txt
@@ -262,7 +313,7 @@ check "-s: openscad's DEPRECATED line" \
     sh -c "grep DEPRECATED o/err.txt >a.txt; grep DEPRECATED r/err.txt | cmp -s a.txt -"
 both --info # openscad 2021.01 exits 1 after printing it
 check "--info: exits 0" test "$rrc" -eq 0
-for lib in lib3mf freetype harfbuzz fontconfig; do
+for lib in lib3mf freetype harfbuzz fontconfig cairo; do
     check "--info: the $lib version openscad reports" \
         sh -c "v=\$(grep -i '^$lib version' o/out.txt | grep -o '[0-9][0-9.]*[0-9]' | head -1); [ -n \"\$v\" ] && grep -i '^$lib' r/out.txt | grep -q \"\$v\""
 done

@@ -259,6 +259,7 @@ Test(region, arguments)
     rayscad_model_free(model);
     cr_expect(rayscad_region_format_supported("a.SVG"));
     cr_expect(rayscad_region_format_supported("b.dxf"));
+    cr_expect(rayscad_region_format_supported("d.PDF"));
     cr_expect(!rayscad_region_format_supported("c.stl"));
     cr_expect(!rayscad_region_format_supported("svg"));
 }
@@ -307,5 +308,86 @@ Test(region, identical_bytes, .timeout = 120)
             free(b);
         }
         rayscad_model_free(model);
+    }
+}
+
+/* The whole file (a PDF holds NULs), malloc'd; NULL when unreadable. */
+static unsigned char *read_bytes(const char *path, long *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    *n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *b = malloc((size_t)*n + 1);
+    if (b && fread(b, 1, (size_t)*n, f) != (size_t)*n) {
+        free(b);
+        b = NULL;
+    }
+    fclose(f);
+    return b;
+}
+
+static long find_bytes(const unsigned char *b, long n, const char *s)
+{
+    long k = (long)strlen(s);
+    for (long i = 0; i + k <= n; i++)
+        if (memcmp(b + i, s, (size_t)k) == 0) return i;
+    return -1;
+}
+
+/* PDF: openscad's page to the byte (both through the same cairo) up to the
+ * document's creator, which names openscad there and rayscad here (the
+ * cross-reference offsets after it move with the name's length); and the
+ * "too large to fit into A4" warning exactly where openscad gives it: the
+ * corner layout at its right and top edges, the centred one, and a
+ * triangle whose one point past the page is its first, which openscad's
+ * test skips. */
+Test(region, pdf_as_openscad, .timeout = 120)
+{
+    have_openscad();
+    cr_assert_eq(system("mkdir -p " DIR), 0);
+    const char *srcs[] = {
+        "difference() { square(20); translate([5, 5]) square(10); }\n",
+        "translate([-20, 10]) circle(r = 25, $fn = 48);\n",
+        "polygon([[0, 0], [60, 0], [60, 40], [0, 40], [10, 10], [25, 10], [25, 30], [10, 30]],\n"
+        "        paths = [[0, 1, 2, 3], [4, 5, 6, 7]]);\n",
+        "square(210);\n",
+        "square(211);\n",
+        "square([1, 297.4]);\n",
+        "translate([-105.3, -1]) square(1);\n",
+        "translate([0.5, 0]) circle(r = 105.2, $fn = 3);\n",
+    };
+    for (int i = 0; i < (int)(sizeof srcs / sizeof *srcs); i++) {
+        char scad[256], ours[256], theirs[256], errs[256], cmd[1024], err[256];
+        snprintf(scad, sizeof scad, DIR "/page%d.scad", i);
+        snprintf(ours, sizeof ours, DIR "/page%d_ours.pdf", i);
+        snprintf(theirs, sizeof theirs, DIR "/page%d_openscad.pdf", i);
+        snprintf(errs, sizeof errs, DIR "/page%d_openscad.txt", i);
+        write_text(scad, srcs[i]);
+        snprintf(cmd, sizeof cmd, "openscad -o '%s' '%s' >/dev/null 2>'%s'", theirs, scad, errs);
+        cr_assert_eq(system(cmd), 0, "openscad failed on %s", srcs[i]);
+        snprintf(cmd, sizeof cmd,
+                 "grep -q '^EXPORT-WARNING: Geometry is too large to fit into A4 size.' '%s'",
+                 errs);
+        int warned = system(cmd) == 0;
+
+        rayscad_eval_options o = {.for_2d = 1};
+        rayscad_model *model = NULL;
+        cr_assert_eq(rayscad_model_load(scad, &o, &model), RAYSCAD_OK, "%s", srcs[i]);
+        cr_assert_eq(rayscad_region_write(model, ours, err, sizeof err), RAYSCAD_OK, "%s", err);
+        cr_expect_eq(!rayscad_region_fits_pdf_page(model), warned, "%s: openscad %s past the page",
+                     srcs[i], warned ? "warns" : "does not warn");
+        rayscad_model_free(model);
+
+        long na = 0, nb = 0;
+        unsigned char *a = read_bytes(ours, &na), *b = read_bytes(theirs, &nb);
+        cr_assert(a && b);
+        long ka = find_bytes(a, na, "/Creator ("), kb = find_bytes(b, nb, "/Creator ");
+        cr_expect(ka > 0 && ka == kb && memcmp(a, b, (size_t)ka) == 0,
+                  "%s: the page differs from openscad's before its creator (%ld, %ld)", srcs[i], ka,
+                  kb);
+        free(a);
+        free(b);
     }
 }
