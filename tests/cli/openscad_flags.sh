@@ -121,6 +121,41 @@ rm -rf o r && mkdir o r && cp w.scad o/ && cp w.scad r/
 (cd r && "$rayscad" -o x.echo - <w.scad >/dev/null 2>&1)
 check "- reads stdin: the same .echo" same_file x.echo
 
+# .ast (the parse printed back, with the customizer's annotations) and
+# .term (the CSG term text, which 2021.01 builds without geometry: empty).
+cat >ast.scad <<'EOF'
+/* [Size] */
+// The width
+width = 10; // [1:50]
+shape = "box"; // [box, ball]
+flag = true;
+include <inc.scad>
+module part(w) { if (w > 5) cube(w); else { sphere(w); } }
+function half(x) = x / 2;
+!part(width);
+*sphere(1);
+v2 = [for (i = [0:2]) if (i % 2) i * v];
+EOF
+printf '{"parameterSets": {"big": {"width": "30", "shape": "ball", "flag": "false"}}, "fileFormatVersion": "1"}\n' >ast.json
+printf 'cube(\n' >bad.scad
+both -o x.ast ast.scad
+check ".ast: the file openscad writes" same_file x.ast
+both -D width=20 -D 'extra="x"' -o x.ast ast.scad
+check ".ast with -D: the values where openscad puts them" same_file x.ast
+both -p ast.json -P big -o x.ast ast.scad
+check ".ast with -p/-P: the parameter set's values" same_file x.ast
+both -o x.term ast.scad
+check ".term: the file openscad writes" same_file x.term
+both --export-format ast -o - ast.scad
+check "--export-format ast -o -: the same stdout" cmp -s o/out.txt r/out.txt
+both --export-format term -o - ast.scad
+check "--export-format term -o -: the same stdout" cmp -s o/out.txt r/out.txt
+for ext in ast term; do
+    both -o "x.$ext" bad.scad
+    check ".$ext of a syntax error: fails in both, no file" \
+        sh -c "[ $orc -ne 0 ] && [ $rrc -ne 0 ] && [ ! -e o/x.$ext ] && [ ! -e r/x.$ext ]"
+done
+
 # $preview: true for images and .echo, false for meshes and --render images.
 both -o x.stl p.scad
 check "\$preview false for a mesh, as openscad" same_said
