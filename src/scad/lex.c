@@ -277,9 +277,12 @@ static void lex_string(lexer *L, scad_loc loc)
                 if (h < 0) break;
                 cp = cp * 16 + (unsigned long)h;
             }
-            if (k == want && cp <= 0x10FFFF) {
-                if (cp == 0)
-                    buf[n++] = ' '; /* \u0000 is a space, as in 2021.01 */
+            if (k == want) {
+                /* \u0000, a surrogate and a number past U+10FFFF are a
+                 * space, as in 2021.01 (which takes what glib cannot
+                 * encode for one) */
+                if (cp == 0 || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
+                    buf[n++] = ' ';
                 else
                     n += put_utf8(buf + n, cp);
                 used = 2 + (size_t)want;

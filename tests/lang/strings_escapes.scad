@@ -5,3 +5,5 @@ echo(len("\u00e9"), len("\U01F600"), len("a\tb"));
 echo(str("a", "\x20", "b"));
 echo("\q \z", "unknown escapes");
 echo(ord("\t"), ord("\n"), chr(10) == "\n");
+// \u0000, a surrogate and a number past U+10FFFF are spaces in 2021.01
+echo(str("[", "\uD800", "|", "\uDFFF", "|", "\U110000", "|", "\UFFFFFF", "|", "\U10FFFF", "]"));
