@@ -68,6 +68,9 @@ MESH_IMPORT_LIBS := $(or $(shell pkg-config --libs libxml-2.0 2>/dev/null),-lxml
 # json-c reads customizer parameter files (-p, src/cli/params.c): the
 # command's, not the library's.
 JSON_CFLAGS := $(shell pkg-config --cflags json-c 2>/dev/null)
+# The viewer's window and input (src/cli/viewer.c only).
+SDL_CFLAGS := $(or $(shell pkg-config --cflags sdl2 2>/dev/null),-I/usr/include/SDL2)
+SDL_LIBS := $(or $(shell pkg-config --libs sdl2 2>/dev/null),-lSDL2)
 JSON_LIBS := $(or $(shell pkg-config --libs json-c 2>/dev/null),-ljson-c)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
@@ -81,9 +84,9 @@ LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 # toolchain.  make demo installs the first only.
 BUILD_DEBS = pkg-config g++ make libopenimageio-dev libopenmesh-dev \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
-	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev libcairo2-dev
+	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev libcairo2-dev libsdl2-dev
 TEST_DEBS = openscad xvfb xauth povray openimageio-tools libcriterion-dev \
-	clang libclang-rt-dev man-db poppler-utils
+	clang libclang-rt-dev man-db poppler-utils xdotool x11-apps
 DEBS = $(BUILD_DEBS) $(TEST_DEBS)
 
 LIB_SRC  = $(wildcard src/intervals/*.c src/csg/*.c src/geom/*.c src/scad/*.c src/scad/builtins/*.c \
@@ -105,7 +108,7 @@ IMAGE_SO = $(BUILD)/rayscad-image.so
 TESTS    = $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TOOLS    = $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
 
-.PHONY: all deps deps-build demo test unit cli compare conformance corpus meshcheck asan clean format bench fuzz hostile \
+.PHONY: all deps deps-build demo test unit cli viewer compare conformance corpus meshcheck asan clean format bench fuzz hostile \
 	valgrind install uninstall installcheck format-check
 .DEFAULT_GOAL := all
 
@@ -185,7 +188,9 @@ $(BUILD)/$(SO_NAME): $(LIB_PIC) $(BUILD)/exports.map
 	ln -sf $(SO_NAME) $(BUILD)/librayscad.so
 
 $(BUILD)/rayscad: $(CLI_OBJ) $(BUILD)/librayscad.a
-	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS) $(JSON_LIBS)
+	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS) $(JSON_LIBS) $(SDL_LIBS)
+
+$(BUILD)/obj/src/cli/viewer.o: CFLAGS += $(SDL_CFLAGS)
 
 $(BUILD)/obj/src/cli/params.o: CFLAGS += $(JSON_CFLAGS)
 
@@ -289,6 +294,10 @@ cli: all
 	tests/cli/params_test.sh $(BUILD)
 	tests/cli/colors_test.py $(BUILD)
 
+# The viewer in a real window under Xvfb, driven by xdotool (tests/viewer_test.sh).
+viewer: all
+	tests/viewer_test.sh $(BUILD)
+
 compare: all
 	tests/cli/compare_openscad.sh $(BUILD)
 
@@ -319,6 +328,7 @@ test: deps
 	$(MAKE) all
 	$(MAKE) unit
 	$(MAKE) cli
+	$(MAKE) viewer
 	$(MAKE) conformance
 	$(MAKE) meshcheck
 	$(MAKE) compare

@@ -69,7 +69,9 @@ typedef enum rayscad_status {
     RAYSCAD_ERROR_CELLS = -4,     /* a sampling grid passed max_cells */
     /* An argument the call cannot take: an unknown colour scheme, a camera
      * whose eye and centre coincide, an unknown output format. */
-    RAYSCAD_ERROR_ARGUMENT = -5
+    RAYSCAD_ERROR_ARGUMENT = -5,
+    /* The caller's cancel hook asked to stop (rayscad_render_options). */
+    RAYSCAD_CANCELLED = -6
 } rayscad_status;
 
 /* ---- evaluation --------------------------------------------------------------- */
@@ -218,6 +220,11 @@ typedef struct rayscad_eval_options {
      * between (with the same share, so a caller can show time passing). */
     void (*progress)(void *ud, double done);
     void *progress_ud;
+    /* The view the file is evaluated for, as openscad's window sets $vpr,
+     * $vpt and $vpd to its camera at each preview; view_set 0: its
+     * command line's values (0,0,0; 0,0,0; 500). */
+    int view_set;
+    double vpr[3], vpt[3], vpd;
 } rayscad_eval_options;
 
 /* An evaluated file: its top-level objects, the '#' and '%' subtrees, and
@@ -391,6 +398,11 @@ typedef struct rayscad_render_options {
     /* Called from the calling thread with the fraction done; may be NULL. */
     void (*progress)(void *ud, double done);
     void *ud;
+    /* May be NULL: asked by the worker threads before each tile; when it
+     * returns nonzero the render stops with RAYSCAD_CANCELLED (the image
+     * then half drawn).  It must be safe to call from any thread. */
+    int (*cancelled)(void *cancel_ud);
+    void *cancel_ud;
 
     /* ---- opt-in light model ---------------------------------------------
      * Every field below left 0 (and no $rs_ material in the scene) gives

@@ -28,6 +28,7 @@
 #include "outputs.h"
 #include "params.h"
 #include "progress.h"
+#include "viewer.h"
 #include "settings.h"
 
 #include <stdio.h>
@@ -46,7 +47,8 @@ typedef struct messages {
     char *buf;
     size_t len, cap;
     const cli_options *o;
-    progress bar; /* the evaluation's (eval_options starts it) */
+    progress bar;          /* the evaluation's (eval_options starts it) */
+    char first_error[512]; /* the viewer's title shows it */
 } messages;
 
 static void on_message(void *ud, rayscad_message_kind kind, const char *line)
@@ -55,6 +57,8 @@ static void on_message(void *ud, rayscad_message_kind kind, const char *line)
     if (m->drop) return;
     if (kind == RAYSCAD_MSG_TRACE && !m->to_buffer) return; /* the ERROR line said it */
     int error = kind == RAYSCAD_MSG_ERROR || kind == RAYSCAD_MSG_NOTE;
+    if (kind == RAYSCAD_MSG_ERROR && !m->first_error[0])
+        snprintf(m->first_error, sizeof m->first_error, "%s", line);
     if (!m->to_buffer || error) {
         if (!error && (m->errors_only || m->o->quiet)) return;
         /* An error (file:line:col: error: …) that was an allocation
@@ -574,6 +578,49 @@ static char *read_stdin(void)
     return NULL;
 }
 
+/* The viewer's evaluation (viewer.h): a preview for its view, messages
+ * printed, every file read listed. */
+static rayscad_status viewer_load(void *ud, const double vpr[3], const double vpt[3], double vpd,
+                                  rayscad_scene **scene, rayscad_file_view *file, char ***files,
+                                  int *n, char *err, size_t errlen)
+{
+    run *r = ud;
+    rayscad_services services = {.read_image = cli_read_image};
+    cli_deps deps = {.input = r->o->input};
+    cli_deps_hook(&deps, &services);
+    messages msgs = {.o = r->o};
+    rayscad_eval_options eo;
+    param_hook params;
+    eval_options(r, &msgs, &services, 0, &params, &eo);
+    eo.view_set = 1;
+    memcpy(eo.vpr, vpr, sizeof eo.vpr);
+    memcpy(eo.vpt, vpt, sizeof eo.vpt);
+    eo.vpd = vpd;
+    rayscad_model *model;
+    rayscad_status st = load_model(r, &eo, &model);
+    progress_finish(&msgs.bar);
+    cli_params_free(params.assign, params.n);
+    if (st == RAYSCAD_OK) {
+        rayscad_model_file_view(model, file);
+        st = rayscad_scene_new(model, scene, err, errlen);
+        rayscad_model_free(model);
+    } else {
+        snprintf(err, errlen, "%s", msgs.first_error);
+    }
+    /* the main file is read before the hooks see reads */
+    char **paths = realloc(deps.paths, (size_t)(deps.n + 1) * sizeof *paths);
+    if (paths) {
+        deps.paths = paths;
+        if ((paths[deps.n] = strdup(r->o->input))) deps.n++;
+    }
+    *files = deps.paths; /* taken */
+    *n = deps.n;
+    deps.paths = NULL;
+    deps.n = 0;
+    cli_deps_free(&deps);
+    return st;
+}
+
 int main(int argc, char **argv)
 {
     cli_options o;
@@ -626,6 +673,7 @@ int main(int argc, char **argv)
     if (!strcmp(o.input, "-") && !(src = read_stdin())) return EXIT_MODEL;
     r.src = src;
 
+    if (o.viewer) return cli_viewer_run(&o, viewer_load, &r);
     rayscad_services services = {.read_image = cli_read_image};
     cli_deps deps = {.input = o.input, .make_cmd = o.make_cmd};
     if (o.deps_file || o.make_cmd) cli_deps_hook(&deps, &services);

@@ -19,6 +19,8 @@
 const char cli_usage[] =
     "usage: rayscad FILE.scad -o OUTPUT [-o OUTPUT ...] [options]\n"
     "       rayscad FILE.scad --measure [--json] [-o OUTPUT] [options]\n"
+    "       rayscad FILE.scad [options]    a window on the model (no -o), reloaded\n"
+    "                                      when a file it read changes; ? lists its keys\n"
     "\n"
     "Renders an OpenSCAD file by ray casting its CSG tree with interval lists.\n"
     "OUTPUT's extension (or --export-format) picks the format: .png .jpg .tif\n"
@@ -32,11 +34,13 @@ const char cli_usage[] =
     "standard output.\n"
     "\n"
     "  -o FILE                 output file, repeatable: one run writes them all\n"
-    "                          (required unless --measure)\n"
+    "                          (none, and no --measure: the viewer's window)\n"
     "  -D name=value           override a top-level variable (repeatable)\n"
     "  --camera=tx,ty,tz,rx,ry,rz,dist   gimbal camera, as OpenSCAD\n"
     "  --camera=ex,ey,ez,cx,cy,cz        eye and centre camera, as OpenSCAD\n"
-    "  --imgsize=W,H           image size in pixels (default 512,512)\n"
+    "  --imgsize=W,H           image size in pixels (default 512,512; the\n"
+    "                          viewer's window 800,600)\n"
+    "  --stats                 the viewer: a line per frame drawn on stderr\n"
     "  --projection=p|o        perspective (default) or orthographic\n"
     "  --viewall               fit the model in view\n"
     "  --autocenter            centre the model in view\n"
@@ -324,6 +328,10 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             o->ascii = 1;
             continue;
         }
+        if (strcmp(a, "--stats") == 0) {
+            o->stats = 1;
+            continue;
+        }
         if (strcmp(a, "--measure") == 0 || strcmp(a, "--json") == 0) {
             o->measure = 1;
             o->json |= a[2] == 'j';
@@ -389,6 +397,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             }
             o->width = (int)wh[0];
             o->height = (int)wh[1];
+            o->imgsize_given = 1;
         } else if (strcmp(flag, "--projection") == 0) {
             if (val[0] == 'o' || val[0] == 'O')
                 o->view.ortho = 1;
@@ -493,9 +502,18 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         snprintf(err, errlen, "no input file");
         return -1;
     }
-    if (!o->output_count && !o->measure) {
-        snprintf(err, errlen, "no output file (-o) and no --measure");
-        return -1;
+    if (!o->output_count && !o->measure) { /* as openscad FILE opens its window */
+        if (!strcmp(o->input, "-")) {
+            snprintf(err, errlen,
+                     "no output file (-o): the viewer needs a file to watch, not "
+                     "the standard input");
+            return -1;
+        }
+        o->viewer = 1;
+        if (!o->imgsize_given) {
+            o->width = 800;
+            o->height = 600;
+        }
     }
     return 0;
 }

@@ -72,6 +72,9 @@ typedef struct cli_options {
     int ascii;        /* --ascii: text STL / PLY */
     int measure;      /* --measure (also set by --json) */
     int json;         /* --json: the measurement as JSON */
+    /* No -o and no --measure: the viewer (viewer.h), its window
+     * --imgsize (800x600 when not given); --stats: a line per frame. */
+    int viewer, imgsize_given, stats;
 } cli_options;
 
 /* The pixels a rendered image may have (--max-pixels): 2^28, a 16384 ×

@@ -28,6 +28,7 @@ rayscad_status rayscad_render(const rayscad_scene *s, const rayscad_camera *cam,
     if (rc == 0) rc = render_overlays(s->s, cam, o, rgba, err, errlen);
     return rc == 0                         ? RAYSCAD_OK
            : rc == RAYSCAD_ERROR_INTERVALS ? RAYSCAD_ERROR_INTERVALS
+           : rc == RAYSCAD_CANCELLED       ? RAYSCAD_CANCELLED
                                            : RAYSCAD_ERROR;
 }
 

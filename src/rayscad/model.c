@@ -38,6 +38,10 @@ static void scad_options_of(const rayscad_eval_options *o, scad_services *servic
     so->parameters_ud = o->parameters_ud;
     so->progress = o->progress;
     so->progress_ud = o->progress_ud;
+    so->view_set = o->view_set;
+    memcpy(so->vpr, o->vpr, sizeof so->vpr);
+    memcpy(so->vpt, o->vpt, sizeof so->vpt);
+    so->vpd = o->vpd;
 }
 
 static rayscad_status load(const char *name, const char *src, const rayscad_eval_options *o,

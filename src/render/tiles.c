@@ -16,6 +16,8 @@
 #include <unistd.h>
 
 enum { MAX_THREADS = 256, POLL_NS = 100 * 1000 * 1000, TILE = 32 };
+/* run()'s result when the cancel hook stopped it (no arena failure kind). */
+enum { RENDER_CANCELLED = -100 };
 
 typedef struct render_pool {
     const render_options *opt;
@@ -27,9 +29,10 @@ typedef struct render_pool {
 
 typedef struct pool_run {
     const render_pool *p;
-    atomic_int next;   /* next tile to hand out */
-    atomic_int done;   /* tiles finished */
-    atomic_int failed; /* the first failing worker's iv_arena_failure_kind */
+    atomic_int next;      /* next tile to hand out */
+    atomic_int done;      /* tiles finished */
+    atomic_int failed;    /* the first failing worker's iv_arena_failure_kind */
+    atomic_int cancelled; /* the options' cancel hook said stop */
     pthread_mutex_t mu;
     pthread_cond_t cv;
     int exited; /* workers that returned; guarded by mu */
@@ -53,7 +56,11 @@ static void draw(pool_run *R)
         fail(R, NULL);
     } else {
         iv_arena_set_list_limit(a, p->opt->max_intervals);
-        while (!atomic_load(&R->failed)) {
+        while (!atomic_load(&R->failed) && !atomic_load(&R->cancelled)) {
+            if (p->opt->cancelled && p->opt->cancelled(p->opt->cancel_ud)) {
+                atomic_store(&R->cancelled, 1);
+                break;
+            }
             int t = atomic_fetch_add(&R->next, 1);
             if (t >= p->ntiles) break;
             int x0 = (t % p->tiles_x) * TILE, y0 = (t / p->tiles_x) * TILE;
@@ -119,6 +126,7 @@ static int run(const render_pool *p)
     atomic_init(&R.next, 0);
     atomic_init(&R.done, 0);
     atomic_init(&R.failed, 0);
+    atomic_init(&R.cancelled, 0);
     if (p->ntiles <= 0) return 0;
     int nthreads = p->opt->threads;
     if (nthreads <= 0) {
@@ -144,6 +152,7 @@ static int run(const render_pool *p)
     }
     if (started == 0) draw(&R); /* no thread to be had: draw on this one */
     int failed = atomic_load(&R.failed);
+    if (!failed && atomic_load(&R.cancelled)) return RENDER_CANCELLED;
     if (!failed && p->opt->progress && reported != p->ntiles) p->opt->progress(p->opt->ud, 1.0);
     return failed;
 }
@@ -156,6 +165,10 @@ int render_tiles_draw(const render_options *opt, size_t state_size, render_tile_
     p.ntiles = p.tiles_x * ((opt->height + TILE - 1) / TILE);
     int failed = run(&p);
     if (!failed) return 0;
+    if (failed == RENDER_CANCELLED) {
+        if (err && errlen) snprintf(err, errlen, "render: cancelled");
+        return RAYSCAD_CANCELLED;
+    }
     if (failed == IV_ARENA_LIST_TOO_LONG) {
         if (err && errlen)
             snprintf(err, errlen, "render: a ray's interval list holds more than %d intervals",

@@ -42,6 +42,7 @@ typedef int (*render_tile_fn)(const void *job, iv_arena *a, void *state, int x0,
 /* Draws opt's width × height image in RENDER_TILE-pixel squares with opt's
  * threads (<= 0: one per online core), interval limit and progress
  * callback; progress reaches 1.0 only on success.  Returns 0;
+ * RAYSCAD_CANCELLED when opt's cancel hook said stop;
  * RAYSCAD_ERROR_INTERVALS when a ray's list outgrew the limit, or -1 when
  * memory ran out ("render: out of memory while <doing>"), each with its
  * message in err. */

@@ -103,8 +103,8 @@ typedef struct scad_eval {
     scad_args *builtin_params;
     scad_arena *arena; /* geometry */
     int depth, max_depth;
-    int max_list, max_string;  /* value size limits (scad_options) */
-    long steps, max_steps;     /* work done and its limit (scad_options.max_steps) */
+    int max_list, max_string; /* value size limits (scad_options) */
+    long steps, max_steps;    /* work done and its limit (scad_options.max_steps) */
     /* scad_options.progress, the main file's top-level scope and the share
      * of its statements done (scad_eval_file_scope) */
     void (*progress)(void *ud, double done);

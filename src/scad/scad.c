@@ -337,10 +337,13 @@ static void run_job(job *j)
         set_num(&ev, builtins, "$fs", 2);
         set_num(&ev, builtins, "$t", 0);
         set_value(&ev, builtins, "$preview", scad_bool(!ev.for_mesh));
-        set_num(&ev, builtins, "$vpd", 500);
+        const scad_options *vo = j->opt && j->opt->view_set ? j->opt : NULL;
+        set_num(&ev, builtins, "$vpd", vo ? vo->vpd : 500);
         set_num(&ev, builtins, "$vpf", 22.5);
-        set_vec3(&ev, builtins, "$vpr", 0, 0, 0);
-        set_vec3(&ev, builtins, "$vpt", 0, 0, 0);
+        set_vec3(&ev, builtins, "$vpr", vo ? vo->vpr[0] : 0, vo ? vo->vpr[1] : 0,
+                 vo ? vo->vpr[2] : 0);
+        set_vec3(&ev, builtins, "$vpt", vo ? vo->vpt[0] : 0, vo ? vo->vpt[1] : 0,
+                 vo ? vo->vpt[2] : 0);
     }
     scad_env *file = builtins ? scad_env_new(&ev, builtins, builtins, j->top) : NULL;
     ev.builtins = builtins;

@@ -145,6 +145,8 @@ typedef struct scad_options {
     void *parameters_ud;
     void (*progress)(void *ud, double done); /* rayscad_eval_options.progress */
     void *progress_ud;
+    int view_set; /* rayscad_eval_options: $vpr, $vpt, $vpd */
+    double vpr[3], vpt[3], vpd;
 } scad_options;
 
 /* What a file evaluates to.  Each tree may be NULL (nothing there). */

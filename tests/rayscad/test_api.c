@@ -254,6 +254,51 @@ Test(api, render_draws_the_model_over_the_scheme)
     rayscad_scene_free(scene);
 }
 
+/* The cancel hook: asked between tiles, it stops the render after the
+ * tiles it allowed; a hook that never asks to stop changes nothing. */
+static int stop_after(void *ud)
+{
+    int *left = ud;
+    return __atomic_sub_fetch(left, 1, __ATOMIC_SEQ_CST) < 0;
+}
+
+Test(api, render_stops_when_cancelled)
+{
+    rayscad_model *model;
+    cr_assert_eq(rayscad_model_load_string("t.scad", "sphere(10);", NULL, &model), RAYSCAD_OK);
+    rayscad_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
+    rayscad_scene *scene;
+    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
+    rayscad_model_free(model);
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.width = 256;
+    ro.height = 256; /* 64 tiles of 32 × 32 */
+    ro.threads = 1;
+    rayscad_camera cam;
+    cr_assert_eq(rayscad_camera_frame(scene, &v, ro.width, ro.height, &cam, NULL, 0), RAYSCAD_OK);
+    size_t n = (size_t)ro.width * ro.height * 4;
+    float *plain = malloc(n * sizeof *plain), *hooked = malloc(n * sizeof *hooked);
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, plain, NULL, 0), RAYSCAD_OK);
+    int left = 1 << 20;
+    ro.cancelled = stop_after;
+    ro.cancel_ud = &left;
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, hooked, NULL, 0), RAYSCAD_OK);
+    cr_expect_eq(memcmp(plain, hooked, n * sizeof *plain), 0, "a hook that never stops");
+    left = 3;
+    for (size_t i = 0; i < n; i++)
+        hooked[i] = -1;
+    char err[128];
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, hooked, err, sizeof err), RAYSCAD_CANCELLED);
+    size_t drawn = 0;
+    for (size_t i = 0; i < n; i += 4)
+        drawn += hooked[i] >= 0;
+    cr_expect_eq(drawn, (size_t)3 * 32 * 32, "three tiles drawn, then stopped");
+    free(plain);
+    free(hooked);
+    rayscad_scene_free(scene);
+}
+
 static double measured_volume(const char *src, rayscad_facets facets, double h)
 {
     rayscad_eval_options o = {.facets = facets};
