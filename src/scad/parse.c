@@ -144,8 +144,10 @@ static void add_stmt(parser *P, scad_scope *s, scad_stmt *st)
 static scad_scope *child_scope(parser *P)
 {
     scad_scope *c = new_scope(P);
-    if (!c || !statement(P, c)) return NULL;
-    return c;
+    P->block++;
+    int ok = c && statement(P, c);
+    P->block--;
+    return ok ? c : NULL;
 }
 
 static scad_stmt *instantiation(parser *P)
@@ -227,7 +229,10 @@ static int definition(parser *P, scad_scope *s)
         m->loc = kw->loc;
         m->params = params;
         m->body = body;
-        if (!statement(P, body)) return 0;
+        P->block++;
+        int ok = statement(P, body);
+        P->block--;
+        if (!ok) return 0;
         s->mods = scad_parse_grow(P, s->mods, s->nmods, &s->capmods, sizeof *s->mods);
         if (s->mods) s->mods[s->nmods++] = m;
         defining(P, s);
@@ -283,17 +288,23 @@ static int statement(parser *P, scad_scope *s)
     if (is_ch(t, '{')) {
         next(P);
         int ok = 1;
+        P->block++;
         while (!is_ch(peek(P), '}')) {
             if (peek(P)->kind == TK_EOF) {
                 scad_parse_syntax_error(P, "'}'");
+                P->block--;
                 return 0;
             }
             if (!statement(P, s)) {
                 ok = 0;
-                if (P->errors >= MAX_ERRORS || P->oom) return 0;
+                if (P->errors >= MAX_ERRORS || P->oom) {
+                    P->block--;
+                    return 0;
+                }
                 recover(P);
             }
         }
+        P->block--;
         next(P);
         return ok;
     }
@@ -304,6 +315,16 @@ static int statement(parser *P, scad_scope *s)
         return 1;
     }
     if (t->kind == TK_USE) {
+        if (P->block) {
+            scad_diag_syntax(P->d, t->loc);
+            if (P->errors < MAX_ERRORS)
+                scad_diag_error(P->d, t->loc,
+                                "syntax error: use <%s> is allowed only at the top level of a file",
+                                t->text);
+            P->errors++;
+            next(P);
+            return 0;
+        }
         next(P);
         use_file(P, s, t);
         return 1;
@@ -483,7 +504,7 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
                        const char *src)
 {
     shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file, NULL};
-    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, NULL, d->base_dir, &sh};
+    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, 0, NULL, d->base_dir, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);
     if (!P.t) {

@@ -23,6 +23,10 @@ typedef struct parser {
     int errors;
     int oom;
     int include_depth;
+    /* braces, module bodies and child statements around the statement
+     * being parsed (an included file's lie inside its include's): `use`
+     * is a statement of a file's top level only, as in 2021.01's grammar */
+    int block;
     /* the files being included (keys, innermost first): including one of
      * them again fails, as openscad 2021.01's circular-include check */
     const struct open_include *open;

@@ -477,6 +477,23 @@ Test(scad_errors, all_syntax_errors_reported)
     lines_free(&m);
 }
 
+/* `use` is a statement of a file's top level only (2021.01's grammar):
+ * in braces, a module's body or an instantiation's child it is an error
+ * at the `use`, found or not. */
+Test(scad_errors, use_only_at_top_level)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("module m() {\n  use <nowhere.scad>\n}\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:2:3: error: syntax error: use <nowhere.scad> is allowed only "
+                           "at the top level of a file"));
+    lines_free(&m);
+    cr_assert_eq(eval_src("translate([1, 0, 0]) use <nowhere.scad>\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:1:22: error: syntax error: use <nowhere.scad> is allowed only "
+                           "at the top level of a file"));
+    lines_free(&m);
+}
+
 Test(scad_errors, unterminated_string_and_comment)
 {
     lines m = {0};
