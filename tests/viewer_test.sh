@@ -129,6 +129,21 @@ xdotool key --window "$win" s
 sleep 1
 check "s saves a screenshot" test -s model/part-1.png -o -s part-1.png
 
+# The section plane (v) through the view centre shows the inside of the
+# hollow part; the printed --camera and --section draw the same picture.
+xdotool key --window "$win" v
+settle
+grab section.xwd
+cut=$(camera)
+"$rayscad" model/part.scad --imgsize=$SIZE --samples 3 -o section.png $cut --view=axes
+check "v cuts the model open ($cut)" "$shot" same section.xwd section.png
+check "the section changes the picture" "$shot" differ axes.xwd section.xwd
+xdotool key --window "$win" bracketright
+settle
+grab section2.xwd
+check "] moves the section plane" "$shot" differ section.xwd section2.xwd
+xdotool key --window "$win" v
+
 # Deleting the watched file, then its folder, does not stop the viewer.
 rm model/part.scad
 sleep 1

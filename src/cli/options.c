@@ -41,6 +41,8 @@ const char cli_usage[] =
     "  --imgsize=W,H           image size in pixels (default 512,512; the\n"
     "                          viewer's window 800,600)\n"
     "  --stats                 the viewer: a line per frame drawn on stderr\n"
+    "  --section=a,b,c,d       cut the model by the plane ax+by+cz=d, taking away\n"
+    "                          the side where ax+by+cz > d (cut faces coloured)\n"
     "  --projection=p|o        perspective (default) or orthographic\n"
     "  --viewall               fit the model in view\n"
     "  --autocenter            centre the model in view\n"
@@ -303,7 +305,8 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                                          "--max-pixels",
                                          "--max-intervals",
                                          "--max-mesh-cells",
-                                         "--max-memory"};
+                                         "--max-memory",
+                                         "--section"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = NULL;
@@ -398,6 +401,16 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
             o->width = (int)wh[0];
             o->height = (int)wh[1];
             o->imgsize_given = 1;
+        } else if (strcmp(flag, "--section") == 0) {
+            double *p = o->optics.section;
+            if (parse_numbers(val, p, 4) != 4 || !(p[0] != 0 || p[1] != 0 || p[2] != 0) ||
+                !isfinite(p[0] + p[1] + p[2] + p[3])) {
+                snprintf(err, errlen,
+                         "--section expects a,b,c,d: the plane ax+by+cz=d, (a,b,c) not 0, got "
+                         "'%s'",
+                         val);
+                return -1;
+            }
         } else if (strcmp(flag, "--projection") == 0) {
             if (val[0] == 'o' || val[0] == 'O')
                 o->view.ortho = 1;

@@ -55,6 +55,10 @@ typedef struct viewer {
     int flags;  /* RAYSCAD_VIEW_* */
     int scheme; /* rayscad_colors_name index */
     int shadows, xray;
+    /* the section plane (rayscad_render_options.section) when on; its
+     * direction: 0 the view's, 1..3 the x, y, z axis */
+    int section_on, section_dir;
+    double section[4];
     double moved_at; /* last input, seconds */
     rayscad_scene *scene, *pending;
     int have_model;
@@ -201,6 +205,7 @@ static void *render_main(void *arg)
         ro.threads = V->o->threads;
         ro.max_intervals = V->o->max_intervals;
         ro.view = V->flags;
+        if (V->section_on) memcpy(ro.section, V->section, sizeof ro.section);
         ro.shadows = V->shadows || ro.shadows;
         if (V->xray) ro.xray = 0.35;
         cancel_ctx cc = {V, gen};
@@ -397,6 +402,40 @@ static void view_all(viewer *V)
         from_camera(&cam, &V->v);
 }
 
+/* The world's right and up directions on screen now, and the size of a
+ * pixel at the view centre; also the view direction. */
+static int screen_axes(viewer *V, double right[3], double up[3], double *per_px, double forward[3])
+{
+    rayscad_view rv = to_view(&V->v);
+    rayscad_camera cam;
+    const rayscad_scene *s = V->scene ? V->scene : V->pending;
+    if (!s || rayscad_camera_frame(s, &rv, V->w, V->h, &cam, NULL, 0) != RAYSCAD_OK) return -1;
+    memcpy(right, cam.right, sizeof cam.right);
+    memcpy(up, cam.up, sizeof cam.up);
+    memcpy(forward, cam.forward, sizeof cam.forward);
+    double half = cam.ortho ? cam.ortho_half_height : V->v.d * tan(cam.fovy_deg / 2 * PI / 180);
+    *per_px = 2 * half / V->h;
+    return 0;
+}
+
+/* A section plane through the view centre: facing the viewer (the near
+ * half taken away) or across an axis (the positive side taken away). */
+static void section_here(viewer *V)
+{
+    double n[3] = {0, 0, 0}, right[3], up[3], fw[3], per_px;
+    if (V->section_dir > 0) {
+        n[V->section_dir - 1] = 1;
+    } else {
+        if (screen_axes(V, right, up, &per_px, fw) != 0) return;
+        for (int k = 0; k < 3; k++)
+            n[k] = -fw[k];
+    }
+    for (int k = 0; k < 3; k++)
+        V->section[k] = n[k];
+    V->section[3] = n[0] * V->v.t[0] + n[1] * V->v.t[1] + n[2] * V->v.t[2];
+    V->section_on = 1;
+}
+
 static void screenshot(viewer *V)
 {
     static int n;
@@ -420,6 +459,8 @@ static const char help[] =
     "  Ctrl+4 top  Ctrl+5 bottom  Ctrl+6 left  Ctrl+7 right  Ctrl+8 front  Ctrl+9 back\n"
     "  Ctrl+0 diagonal  Ctrl+P centre  Ctrl+Shift+V view all  Ctrl+Shift+0 reset view\n"
     "  o orthogonal/perspective  k next colour scheme  h shadows  x x-ray\n"
+    "  v section plane on/off (through the view centre)  a its direction: the\n"
+    "    view's, x, y, z  [ and ] move it\n"
     "  s save a screenshot (NAME-N.png)  c print --camera=…  r reload  q, Esc quit\n";
 
 static void key(viewer *V, const SDL_KeyboardEvent *k, int *quit)
@@ -505,6 +546,24 @@ static void key(viewer *V, const SDL_KeyboardEvent *k, int *quit)
     case SDLK_x:
         V->xray = !V->xray;
         break;
+    case SDLK_v:
+        if (V->section_on)
+            V->section_on = 0;
+        else
+            section_here(V);
+        break;
+    case SDLK_a:
+        V->section_dir = (V->section_dir + 1) % 4;
+        section_here(V);
+        break;
+    case SDLK_LEFTBRACKET:
+    case SDLK_RIGHTBRACKET: {
+        if (!V->section_on) return;
+        double len = sqrt(V->section[0] * V->section[0] + V->section[1] * V->section[1] +
+                          V->section[2] * V->section[2]);
+        V->section[3] += (c == SDLK_RIGHTBRACKET ? 1 : -1) * len * V->v.d / 40;
+        break;
+    }
     case SDLK_s:
         screenshot(V);
         return;
@@ -512,8 +571,12 @@ static void key(viewer *V, const SDL_KeyboardEvent *k, int *quit)
         V->reload = 1;
         return;
     case SDLK_c:
-        printf("--camera=%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g%s\n", V->v.t[0], V->v.t[1], V->v.t[2],
+        printf("--camera=%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g%s", V->v.t[0], V->v.t[1], V->v.t[2],
                V->v.r[0], V->v.r[1], V->v.r[2], V->v.d, V->v.ortho ? " --projection=o" : "");
+        if (V->section_on)
+            printf(" --section=%.9g,%.9g,%.9g,%.9g", V->section[0], V->section[1], V->section[2],
+                   V->section[3]);
+        printf("\n");
         fflush(stdout);
         return;
     case SDLK_SLASH:
@@ -526,20 +589,6 @@ static void key(viewer *V, const SDL_KeyboardEvent *k, int *quit)
         return;
     }
     changed(V);
-}
-
-/* The world's right and up directions on screen now. */
-static int screen_axes(viewer *V, double right[3], double up[3], double *per_px)
-{
-    rayscad_view rv = to_view(&V->v);
-    rayscad_camera cam;
-    const rayscad_scene *s = V->scene ? V->scene : V->pending;
-    if (!s || rayscad_camera_frame(s, &rv, V->w, V->h, &cam, NULL, 0) != RAYSCAD_OK) return -1;
-    memcpy(right, cam.right, sizeof cam.right);
-    memcpy(up, cam.up, sizeof cam.up);
-    double half = cam.ortho ? cam.ortho_half_height : V->v.d * tan(cam.fovy_deg / 2 * PI / 180);
-    *per_px = 2 * half / V->h;
-    return 0;
 }
 
 static void drag(viewer *V, int buttons, int shift, int dx, int dy)
@@ -556,8 +605,8 @@ static void drag(viewer *V, int buttons, int shift, int dx, int dy)
     } else if (shift) {
         V->v.d *= pow(ZOOM_STEP, -12.0 * dy / 120);
     } else {
-        double right[3], up[3], per_px;
-        if (screen_axes(V, right, up, &per_px) != 0) return;
+        double right[3], up[3], per_px, fw[3];
+        if (screen_axes(V, right, up, &per_px, fw) != 0) return;
         for (int k = 0; k < 3; k++) /* the model follows the pointer */
             V->v.t[k] -= per_px * (dx * right[k] - dy * up[k]);
     }

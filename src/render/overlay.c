@@ -26,7 +26,8 @@
  * showScalemarkers, showCrosshairs, at one pixel per dpi unit).  Lines are
  * drawn by stepping one pixel along their longer screen axis, as GL's
  * rasteriser does for one-pixel lines, and depth-tested against the first
- * surface each pixel's centre ray meets (the model and its '#' parts).
+ * surface each pixel's centre ray meets (the model and its '#' parts, as
+ * the section view leaves them).
  */
 #include "overlay.h"
 
@@ -36,6 +37,7 @@
 #include <string.h>
 
 #include "sampling.h"
+#include "section.h"
 #include "surface.h"
 #include "tiles.h"
 
@@ -68,6 +70,7 @@ static int gbuf_tile(const void *job, iv_arena *a, void *state, int x0, int y0, 
     const csg_scene *s = ov->f.scene;
     int nroots = csg_scene_root_count(s);
     if (nroots > RAYSCAD_ROOT_HIGHLIGHT + 1) nroots = RAYSCAD_ROOT_HIGHLIGHT + 1;
+    int section = render_section_on(ov->f.opt->section);
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             gpix *p = &ov->g[(size_t)y * ov->w + x];
@@ -80,7 +83,18 @@ static int gbuf_tile(const void *job, iv_arena *a, void *state, int x0, int y0, 
             for (int r = 0; r < nroots; r++) {
                 if (csg_scene_root_node(s, r) < 0) continue;
                 iv_bound b;
-                int rc = csg_trace_first(s, r, o, d, tmin, tmax, a, &b);
+                int rc;
+                if (section) { /* the first boundary the section leaves */
+                    iv_list l;
+                    rc = csg_trace(s, r, o, d, tmin, tmax, a, &l) != 0 ? -1 : 0;
+                    if (rc == 0) render_section_clip(ov->f.opt->section, o, d, &l);
+                    if (rc == 0 && l.n > 0) {
+                        b = l.v[0].enter;
+                        rc = 1;
+                    }
+                } else {
+                    rc = csg_trace_first(s, r, o, d, tmin, tmax, a, &b);
+                }
                 iv_arena_reset(a);
                 if (rc < 0) return -1;
                 if (rc == 1 && (root < 0 || b.t < best.t)) {
@@ -92,7 +106,10 @@ static int gbuf_tile(const void *job, iv_arena *a, void *state, int x0, int y0, 
             double n[3];
             float c[4];
             const csg_material *m;
-            csg_scene_normal(s, &best, o, d, n);
+            if (best.flip & RENDER_SECTION_FLIP)
+                render_section_normal(ov->f.opt->section, n);
+            else
+                csg_scene_normal(s, &best, o, d, n);
             render_surface_color(s, ov->f.opt, root, &best, c, &m);
             p->depth = (float)(best.t * dot3(d, ov->f.cam->forward));
             for (int k = 0; k < 3; k++) {

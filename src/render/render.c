@@ -37,6 +37,7 @@
 #include "render.h"
 #include "path_trace.h"
 #include "sampling.h"
+#include "section.h"
 #include "shade.h"
 #include "surface.h"
 #include "tiles.h"
@@ -254,6 +255,12 @@ static int surface_light(const job *J, worker_ctx *wk, const iv_bound *bb, const
                          const double d[3], int depth, double local[3], render_hit *h)
 {
     render_surface_hit(J->f.scene, sb, bb->t, o, d, RENDER_GRAZE_ENTERS, h);
+    if (bb->flip & RENDER_SECTION_FLIP) { /* a cut face: the plane's normal */
+        render_section_normal(J->f.opt->section, h->n);
+        h->entering = !(dot3(h->n, d) > 0);
+        for (int i = 0; i < 3; i++)
+            h->nf[i] = h->entering ? h->n[i] : -h->n[i];
+    }
 
     float lit[3];
     if (m->emit > 0) {
@@ -317,7 +324,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
                      double tmin, double tmax, int depth, double out[3])
 {
     double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
-    if (J->first_hit && !wk->full_primary) {
+    int section = depth == 0 && render_section_on(J->f.opt->section);
+    if (J->first_hit && !wk->full_primary && !section) {
         /* The walk below composites the nearest boundary of all roots
          * first; when that one is opaque it ends there, and the ray needs
          * that boundary alone. */
@@ -358,6 +366,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         pos[r] = 0;
         volume[r] = 0;
         if (csg_trace(J->f.scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
+        if (section) render_section_clip(J->f.opt->section, o, d, &lists[r]);
         if (lists[r].n > 0) first[r] = &lists[r].v[0].enter;
     }
     if (J->first_hit) {

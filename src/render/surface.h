@@ -45,7 +45,7 @@ static inline double render_surface_color(const csg_scene *s, const render_optio
     } else if (root == RAYSCAD_ROOT_BACKGROUND) {
         memcpy(c, cs->background_modifier, sizeof cs->background_modifier);
     } else {
-        memcpy(c, b->flip ? cs->back : cs->face, 3 * sizeof(float));
+        memcpy(c, (b->flip & 1) ? cs->back : cs->face, 3 * sizeof(float));
         c[3] = 1;
     }
     /* The caps in double: c[3] rounds the x-ray opacity to float, as the

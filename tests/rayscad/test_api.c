@@ -299,6 +299,42 @@ Test(api, render_stops_when_cancelled)
     rayscad_scene_free(scene);
 }
 
+/* A hollow box seen from the front (orthographic, 1 unit = 4 pixels) and
+ * cut at y = 0: inside |x| < 5 the cavity's far wall shows (a subtracted
+ * surface: the scheme's back colour, green); for 5 < |x| < 10 the cut face
+ * (the box's own colour, yellow); uncut, the front face (yellow) there. */
+Test(api, section_cuts_the_model_open)
+{
+    rayscad_model *model;
+    cr_assert_eq(rayscad_model_load_string(
+                     "t.scad", "difference() { cube(20, center = true); cube(10, center = true); }",
+                     NULL, &model),
+                 RAYSCAD_OK);
+    rayscad_scene *scene;
+    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
+    rayscad_model_free(model);
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.width = ro.height = 160;
+    rayscad_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 0, 90, 0, 0, 0}, .ortho = 1};
+    v.v[6] = 20 / tan(22.5 / 2 * 3.14159265358979323846 / 180); /* half height 20 */
+    rayscad_camera cam;
+    cr_assert_eq(rayscad_camera_frame(scene, &v, ro.width, ro.height, &cam, NULL, 0), RAYSCAD_OK);
+    float *px = malloc((size_t)ro.width * ro.height * 4 * sizeof *px);
+    const float *mid = px + ((size_t)80 * ro.width + 80) * 4;   /* x = 0 */
+    const float *wall = px + ((size_t)80 * ro.width + 110) * 4; /* x = 7.5 */
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, px, NULL, 0), RAYSCAD_OK);
+    cr_expect(mid[0] > mid[2] + 0.3f && mid[0] > 0.5f, "uncut: the yellow front face");
+    ro.section[1] = -1; /* -y > 0 taken away: the front half */
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, px, NULL, 0), RAYSCAD_OK);
+    cr_expect(mid[1] > mid[0] && mid[1] > mid[2],
+              "cut: the green far wall of the cavity (%g %g %g)", mid[0], mid[1], mid[2]);
+    cr_expect(wall[0] > wall[2] + 0.3f && wall[0] > 0.5f, "cut: the yellow cut face (%g %g %g)",
+              wall[0], wall[1], wall[2]);
+    free(px);
+    rayscad_scene_free(scene);
+}
+
 static double measured_volume(const char *src, rayscad_facets facets, double h)
 {
     rayscad_eval_options o = {.facets = facets};
