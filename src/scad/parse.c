@@ -145,7 +145,9 @@ static scad_scope *child_scope(parser *P)
 {
     scad_scope *c = new_scope(P);
     P->block++;
+    P->child++;
     int ok = c && statement(P, c);
+    P->child--;
     P->block--;
     return ok ? c : NULL;
 }
@@ -212,6 +214,17 @@ static void defining(parser *P, scad_scope *s)
 
 static int definition(parser *P, scad_scope *s)
 {
+    if (P->child) {
+        scad_token *t = peek(P);
+        scad_diag_syntax(P->d, t->loc);
+        if (P->errors < MAX_ERRORS)
+            scad_diag_error(P->d, t->loc,
+                            "syntax error: an instantiation's children cannot define a %s",
+                            t->kind == TK_MODULE ? "module" : "function");
+        P->errors++;
+        next(P);
+        return 0;
+    }
     scad_token *kw = next(P);
     scad_token *name = peek(P);
     if (name->kind != TK_ID) {
@@ -504,7 +517,7 @@ scad_scope *scad_parse(scad_arena *a, scad_diag *d, scad_names *names, const cha
                        const char *src)
 {
     shared sh = {names, d->opt, NULL, NULL, 0, 0, NULL, 0, 0, file, NULL};
-    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, 0, NULL, d->base_dir, &sh};
+    parser P = {a, d, NULL, 0, 0, 0, 0, 0, 0, 0, 0, NULL, d->base_dir, &sh};
     int errors_before = d->errors;
     P.ntok = scad_lex(a, d, names, file, src, &P.t);
     if (!P.t) {

@@ -27,6 +27,9 @@ typedef struct parser {
      * being parsed (an included file's lie inside its include's): `use`
      * is a statement of a file's top level only, as in 2021.01's grammar */
     int block;
+    /* instantiations' child statements around it: there 2021.01's grammar
+     * (child_statement) has no module or function definitions either */
+    int child;
     /* the files being included (keys, innermost first): including one of
      * them again fails, as openscad 2021.01's circular-include check */
     const struct open_include *open;

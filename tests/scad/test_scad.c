@@ -494,6 +494,29 @@ Test(scad_errors, use_only_at_top_level)
     lines_free(&m);
 }
 
+/* An instantiation's children (braced or not, an if's or else's too) hold
+ * no module or function definitions in 2021.01's grammar; a module's body
+ * and a bare block do. */
+Test(scad_errors, no_definitions_among_children)
+{
+    lines m = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("translate([1, 0, 0]) {\n  function f() = 1;\n  cube();\n}\n", &m, &r, 0),
+                 -1);
+    cr_expect(has_line(&m, "t.scad:2:3: error: syntax error: an instantiation's children cannot "
+                           "define a function"));
+    lines_free(&m);
+    cr_assert_eq(eval_src("if (true) cube(); else module q() cube();\n", &m, &r, 0), -1);
+    cr_expect(has_line(&m, "t.scad:1:24: error: syntax error: an instantiation's children cannot "
+                           "define a module"));
+    lines_free(&m);
+    cr_assert_eq(eval_src("module a() { module b() cube(); b(); }\n{ function g() = 1; }\na();\n",
+                          &m, &r, 0),
+                 0);
+    scad_result_free(&r);
+    lines_free(&m);
+}
+
 Test(scad_errors, unterminated_string_and_comment)
 {
     lines m = {0};
