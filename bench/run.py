@@ -31,6 +31,7 @@ import sys
 import time
 
 import eval_bench
+import viewer_bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -304,6 +305,11 @@ def main():
           f"povray {row['povray_s_median']} s")
     sys.stdout.flush()
 
+    # ---- the viewer: a scripted session under Xvfb (bench/viewer_bench.py) ---
+    if not a.quick:
+        result["viewer"] = viewer_bench.run(a.build)
+        sys.stdout.flush()
+
     # ---- evaluation: library code (BOSL2's test pass) ------------------------
     if not a.quick:
         result["evaluation"] = eval_bench.run(a.build, reps)
@@ -317,6 +323,11 @@ def main():
         S["eval_heaviest_worst_cpu_ratio"] = ev["heaviest_worst_ratio"]
         S["eval_startup_cpu_s"] = (f"rayscad {ev['startup']['rayscad_cpu_s']:.3f}, "
                                    f"openscad {ev['startup']['openscad_cpu_s']:.3f}")
+    views = [r for r in result.get("viewer", []) if "moving_fps" in r]
+    if views:
+        S["viewer_moving_fps_min"] = min(r["moving_fps"] for r in views)
+        S["viewer_rest_full_render_ms_max"] = max(r.get("rest_full_render_ms", 0) for r in views)
+        S["viewer_reload_overhead_ms_max"] = max(r.get("reload_overhead_ms", 0) for r in views)
     if result.get("animation", {}).get("speedup_whole"):
         S[f"animation_{result['animation']['frames']}_frames_whole_speedup"] = \
             result["animation"]["speedup_whole"]

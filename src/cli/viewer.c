@@ -280,8 +280,12 @@ static void *load_main(void *arg)
         memset(&file, 0, sizeof file);
         char **files = NULL, err[512] = "";
         int nfiles = 0;
+        double t0 = now_s();
         rayscad_status st =
             V->load(V->load_ud, v.r, v.t, v.d, &scene, &file, &files, &nfiles, err, sizeof err);
+        if (V->o->stats)
+            fprintf(stderr, "loaded in %.1f ms%s\n", 1000 * (now_s() - t0),
+                    st == RAYSCAD_OK ? "" : " (failed)");
         if (watch) cli_watch_set(watch, (const char *const *)files, nfiles);
         free_files(files, nfiles);
         pthread_mutex_lock(&V->mu);
@@ -690,9 +694,16 @@ int cli_viewer_run(const cli_options *o, cli_viewer_load load, void *ud)
                 key(&V, &e.key, &quit);
             } else if (e.type == V.wake_event) {
                 set_title(win, &V);
-                if (V.fresh && o->stats && V.img)
-                    fprintf(stderr, "frame %dx%d samples %d: %.1f ms\n", V.iw, V.ih,
-                            V.isamples * V.isamples, V.ims);
+                if (V.fresh && o->stats && V.img) {
+                    struct timespec t;
+                    clock_gettime(CLOCK_REALTIME, &t);
+                    fprintf(stderr,
+                            "frame %dx%d samples %d: %.1f ms, %.0f ms after the last input, at "
+                            "%.3f\n",
+                            V.iw, V.ih, V.isamples * V.isamples, V.ims,
+                            1000 * (now_s() - V.moved_at),
+                            (double)t.tv_sec + 1e-9 * (double)t.tv_nsec);
+                }
             }
         } while (!quit && SDL_PollEvent(&e));
         present(ren, &tex, &tw, &th, &V);
