@@ -254,6 +254,9 @@ static int write_trees(run *r, const rayscad_services *services)
         if (!(k ? term : ast)) continue;
         messages quiet = {.drop = 1, .o = r->o};
         eval_options(r, &quiet, services, 0, &params, &eo);
+        /* openscad sets an animation's $t in the evaluation, not as a -D
+         * line of the parse */
+        eo.define_count = r->o->define_count;
         rayscad_status st =
             k ? (r->src
                      ? rayscad_term_text_string("<stdin>", r->src, &eo, &parsed[k], &parsed_len[k])

@@ -150,6 +150,9 @@ both --export-format ast -o - ast.scad
 check "--export-format ast -o -: the same stdout" cmp -s o/out.txt r/out.txt
 both --export-format term -o - ast.scad
 check "--export-format term -o -: the same stdout" cmp -s o/out.txt r/out.txt
+both --animate 2 -o f.ast ast.scad
+check "--animate 2 -o f.ast: each frame as openscad's (\$t is no -D line)" \
+    sh -c "cmp -s o/f00000.ast r/f00000.ast && cmp -s o/f00001.ast r/f00001.ast"
 for ext in ast term; do
     both -o "x.$ext" bad.scad
     check ".$ext of a syntax error: fails in both, no file" \
