@@ -69,8 +69,8 @@ MESH_IMPORT_LIBS := $(or $(shell pkg-config --libs libxml-2.0 2>/dev/null),-lxml
 # command's, not the library's.
 JSON_CFLAGS := $(shell pkg-config --cflags json-c 2>/dev/null)
 # The viewer's window and input (src/cli/viewer.c only).
-SDL_CFLAGS := $(or $(shell pkg-config --cflags sdl2 2>/dev/null),-I/usr/include/SDL2)
-SDL_LIBS := $(or $(shell pkg-config --libs sdl2 2>/dev/null),-lSDL2)
+SDL_CFLAGS := $(or $(shell pkg-config --cflags sdl2 SDL2_ttf fontconfig 2>/dev/null),-I/usr/include/SDL2)
+SDL_LIBS := $(or $(shell pkg-config --libs sdl2 SDL2_ttf fontconfig 2>/dev/null),-lSDL2_ttf -lSDL2 -lfontconfig)
 JSON_LIBS := $(or $(shell pkg-config --libs json-c 2>/dev/null),-ljson-c)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
@@ -84,7 +84,8 @@ LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
 # toolchain.  make demo installs the first only.
 BUILD_DEBS = pkg-config g++ make libopenimageio-dev libopenmesh-dev \
 	libpolyclipping-dev libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation \
-	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev libcairo2-dev libsdl2-dev
+	libxml2-dev libzip-dev lib3mf-dev libjson-c-dev libcairo2-dev libsdl2-dev \
+	libsdl2-ttf-dev
 TEST_DEBS = openscad xvfb xauth povray openimageio-tools libcriterion-dev \
 	clang libclang-rt-dev man-db poppler-utils xdotool x11-apps
 DEBS = $(BUILD_DEBS) $(TEST_DEBS)
@@ -190,7 +191,7 @@ $(BUILD)/$(SO_NAME): $(LIB_PIC) $(BUILD)/exports.map
 $(BUILD)/rayscad: $(CLI_OBJ) $(BUILD)/librayscad.a
 	$(CXX) $(SANFLAGS) -o $@ $^ $(LDLIBS) $(JSON_LIBS) $(SDL_LIBS)
 
-$(BUILD)/obj/src/cli/viewer.o: CFLAGS += $(SDL_CFLAGS)
+$(BUILD)/obj/src/cli/viewer.o $(BUILD)/obj/src/cli/viewer_text.o: CFLAGS += $(SDL_CFLAGS)
 
 $(BUILD)/obj/src/cli/params.o: CFLAGS += $(JSON_CFLAGS)
 

@@ -114,8 +114,20 @@ xdotool getwindowname "$win" >title.txt
 check "a syntax error is in the title with its file:line:col" \
     grep -q 'part.scad:[0-9]*:[0-9]*: error' title.txt
 check "a syntax error frames the picture in red" "$shot" red-frame broken.xwd
-check "a syntax error keeps the last model" "$shot" same broken.xwd included.png --border 5
+check "a syntax error keeps the last model (and says so at the bottom)" \
+    "$shot" same broken.xwd included.png --border 5 --top 0.6
+check "the error's text is drawn in the window" "$shot" differ broken.xwd included.xwd
 check "the error is printed on the terminal too" grep -q 'error' viewer.err
+
+# ? shows the keys over the picture, and hides them again.
+xdotool key --window "$win" question
+sleep 0.5
+grab keys.xwd
+xdotool key --window "$win" question
+sleep 0.5
+grab nokeys.xwd
+check "? shows the keys in the window" "$shot" differ broken.xwd keys.xwd
+check "? again hides them" "$shot" same nokeys.xwd included.png --border 5 --top 0.6
 
 # Keys: axes on (Ctrl+2) as --view=axes draws them.
 sed -i '$d' model/part.scad

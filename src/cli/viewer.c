@@ -26,6 +26,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "viewer_text.h"
 #include "watch.h"
 
 #define FRAME_MS 25.0 /* a moving frame's budget */
@@ -65,6 +66,8 @@ typedef struct viewer {
     char error[512];    /* the last load's error, "" when it loaded */
     int view_from_file; /* the first scene sets the view */
     int reload;         /* r pressed: evaluate again */
+    int show_keys;      /* ? pressed: the keys drawn over the picture */
+    viewer_text *text;  /* NULL: no font, no text in the window */
     /* the render thread's result (under mu) */
     float *img;
     size_t icap; /* floats img holds */
@@ -337,6 +340,18 @@ static void set_title(SDL_Window *win, const viewer *V)
     SDL_SetWindowTitle(win, title);
 }
 
+static const char help[] =
+    "rayscad viewer keys (as openscad's View menu):\n"
+    "  left drag: rotate (shift: about the view axis)   right/middle drag: pan\n"
+    "  wheel, shift+right drag, + and -: zoom\n"
+    "  Ctrl+1 edges  Ctrl+2 axes  Ctrl+3 crosshairs  Ctrl+Shift+2 scales\n"
+    "  Ctrl+4 top  Ctrl+5 bottom  Ctrl+6 left  Ctrl+7 right  Ctrl+8 front  Ctrl+9 back\n"
+    "  Ctrl+0 diagonal  Ctrl+P centre  Ctrl+Shift+V view all  Ctrl+Shift+0 reset view\n"
+    "  o orthogonal/perspective  k next colour scheme  h shadows  x x-ray\n"
+    "  v section plane on/off (through the view centre)  a its direction: the\n"
+    "    view's, x, y, z  [ and ] move it\n"
+    "  s save a screenshot (NAME-N.png)  c print --camera=…  r reload  q, Esc quit\n";
+
 /* Show the last picture scaled to the window, with a red frame when the
  * last load failed. */
 static void present(SDL_Renderer *ren, SDL_Texture **tex, int *tw, int *th, viewer *V)
@@ -376,6 +391,12 @@ static void present(SDL_Renderer *ren, SDL_Texture **tex, int *tw, int *th, view
             SDL_Rect r = {k, k, V->w - 2 * k, V->h - 2 * k};
             SDL_RenderDrawRect(ren, &r);
         }
+        SDL_Color fg = {255, 255, 255, 255}, bg = {180, 20, 20, 220};
+        viewer_text_draw(V->text, ren, V->error, 4, V->h - 4, 1, V->w - 8, fg, bg);
+    }
+    if (V->show_keys) {
+        SDL_Color fg = {255, 255, 255, 255}, bg = {30, 30, 30, 210};
+        viewer_text_draw(V->text, ren, help, 10, 10, 0, V->w - 20, fg, bg);
     }
     SDL_RenderPresent(ren);
 }
@@ -454,18 +475,6 @@ static void screenshot(viewer *V)
     else
         fprintf(stderr, "rayscad: error: %s\n", V->img ? err : "nothing drawn yet");
 }
-
-static const char help[] =
-    "rayscad viewer keys (as openscad's View menu):\n"
-    "  left drag: rotate (shift: about the view axis)   right/middle drag: pan\n"
-    "  wheel, shift+right drag, + and -: zoom\n"
-    "  Ctrl+1 edges  Ctrl+2 axes  Ctrl+3 crosshairs  Ctrl+Shift+2 scales\n"
-    "  Ctrl+4 top  Ctrl+5 bottom  Ctrl+6 left  Ctrl+7 right  Ctrl+8 front  Ctrl+9 back\n"
-    "  Ctrl+0 diagonal  Ctrl+P centre  Ctrl+Shift+V view all  Ctrl+Shift+0 reset view\n"
-    "  o orthogonal/perspective  k next colour scheme  h shadows  x x-ray\n"
-    "  v section plane on/off (through the view centre)  a its direction: the\n"
-    "    view's, x, y, z  [ and ] move it\n"
-    "  s save a screenshot (NAME-N.png)  c print --camera=…  r reload  q, Esc quit\n";
 
 static void key(viewer *V, const SDL_KeyboardEvent *k, int *quit)
 {
@@ -584,10 +593,10 @@ static void key(viewer *V, const SDL_KeyboardEvent *k, int *quit)
         fflush(stdout);
         return;
     case SDLK_SLASH:
-        if (shift) fputs(help, stderr);
-        return;
     case SDLK_QUESTION:
-        fputs(help, stderr);
+        if (c == SDLK_SLASH && !shift) return;
+        V->show_keys = !V->show_keys;
+        V->fresh = 1; /* redraw */
         return;
     default:
         return;
@@ -660,6 +669,7 @@ int cli_viewer_run(const cli_options *o, cli_viewer_load load, void *ud)
         return 2;
     }
     set_title(win, &V);
+    V.text = viewer_text_new(14);
     pthread_t rt, lt;
     int have_rt = pthread_create(&rt, NULL, render_main, &V) == 0;
     int have_lt = pthread_create(&lt, NULL, load_main, &V) == 0;
@@ -720,6 +730,7 @@ int cli_viewer_run(const cli_options *o, cli_viewer_load load, void *ud)
     rayscad_scene_free(V.pending);
     free(V.img);
     if (tex) SDL_DestroyTexture(tex);
+    viewer_text_free(V.text);
     SDL_DestroyRenderer(ren);
     SDL_DestroyWindow(win);
     SDL_Quit();

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Screenshots of the viewer's window against command-line renders.
 
-  shot.py same XWD PNG [--border N] [--tol T] [--max-frac F]
+  shot.py same XWD PNG [--border N] [--tol T] [--max-frac F] [--top R]
       the window's picture (xwd -id WINDOW) and an image rayscad -o wrote
       agree: at most a fraction F (default 0.01) of the pixels differ by
       more than T (default 24) in a channel, the N-pixel border (default 0)
-      left out.  Prints the fraction; exits 1 when over.
+      and all but the top R of the rows (default 1: all) left out.  Prints
+      the fraction; exits 1 when over.
   shot.py differ XWD XWD  the two pictures differ in over 1 % of the pixels.
   shot.py red-frame XWD   the outermost pixels are the viewer's error red.
 
@@ -48,9 +49,9 @@ def read_png(path):
     return w, h, [tuple(data[3 * i:3 * i + 3]) for i in range(w * h)]
 
 
-def differing(a, b, w, h, border, tol):
+def differing(a, b, w, h, border, tol, top=1.0):
     n = bad = 0
-    for y in range(border, h - border):
+    for y in range(border, min(h - border, int(round(h * top)))):
         for x in range(border, w - border):
             i = y * w + x
             n += 1
@@ -59,7 +60,7 @@ def differing(a, b, w, h, border, tol):
 
 
 def main(argv):
-    opts = {"--border": 0, "--tol": 24, "--max-frac": 0.01}
+    opts = {"--border": 0, "--tol": 24, "--max-frac": 0.01, "--top": 1.0}
     args, i = [], 0
     while i < len(argv):
         if argv[i] in opts:
@@ -75,7 +76,7 @@ def main(argv):
         if (w, h) != (w2, h2):
             print("sizes differ: window %dx%d, image %dx%d" % (w, h, w2, h2))
             return 1
-        f = differing(a, b, w, h, int(opts["--border"]), opts["--tol"])
+        f = differing(a, b, w, h, int(opts["--border"]), opts["--tol"], opts["--top"])
         print("%.4f of the pixels differ" % f)
         return 0 if f <= opts["--max-frac"] else 1
     if what == "differ":
