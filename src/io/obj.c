@@ -8,11 +8,9 @@
 #include "io.h"
 #include "temp_file.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 const float io_default_rgba[4] = {0xf9 / 255.0f, 0xd7 / 255.0f, 0x2c / 255.0f, 1};
 
@@ -31,35 +29,6 @@ void io_color_bytes(const io_colors *c, int i, unsigned char out[4])
     }
 }
 
-/* Write through fn(f, ctx) to a temporary file beside path, then rename it
- * into place.  0 or -1 (message). */
-static int whole_file(const char *path, int (*fn)(FILE *, void *), void *ctx, char *err,
-                      size_t errlen)
-{
-    size_t n = strlen(path) + 64;
-    char *tmp = malloc(n);
-    if (!tmp) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
-    if (io_temp_beside(path, tmp, n, err, errlen) != 0) {
-        free(tmp);
-        return -1;
-    }
-    FILE *f = fopen(tmp, "w");
-    int ok = f && fn(f, ctx) == 0;
-    if (f) ok = !ferror(f) && fclose(f) == 0 && ok;
-    if (!ok) {
-        snprintf(err, errlen, "%s: writing failed: %s", path, strerror(errno ? errno : EIO));
-        unlink(tmp);
-        free(tmp);
-        return -1;
-    }
-    int rc = io_temp_commit(tmp, path, err, errlen);
-    free(tmp);
-    return rc;
-}
-
 typedef struct obj_job {
     const float *v;
     int nv;
@@ -69,8 +38,10 @@ typedef struct obj_job {
     const char *mtl_name; /* as the OBJ names it: no folder */
 } obj_job;
 
-static int write_mtl(FILE *f, void *ctx)
+static int write_mtl(FILE *f, void *ctx, char *why, size_t whylen)
 {
+    (void)why;
+    (void)whylen;
     const obj_job *j = ctx;
     fprintf(f, "# rayscad: the colours of the OBJ of the same name\n");
     for (int k = 0; k <= j->c->n; k++) {
@@ -80,8 +51,10 @@ static int write_mtl(FILE *f, void *ctx)
     return 0;
 }
 
-static int write_obj(FILE *f, void *ctx)
+static int write_obj(FILE *f, void *ctx, char *why, size_t whylen)
 {
+    (void)why;
+    (void)whylen;
     const obj_job *j = ctx;
     fprintf(f, "# rayscad\nmtllib %s\n", j->mtl_name);
     for (int i = 0; i < j->nv; i++)
@@ -122,8 +95,8 @@ int io_obj_write(const char *path, const float *v, int nv, const int32_t *t, int
     if (!dot || (slash && dot < slash)) dot = mtl + n;
     strcpy(dot, ".mtl");
     obj_job j = {v, nv, t, nt, c, slash ? slash + 1 : mtl};
-    int rc = whole_file(mtl, write_mtl, &j, err, errlen);
-    if (rc == 0) rc = whole_file(path, write_obj, &j, err, errlen);
+    int rc = io_write_through_temp(mtl, write_mtl, &j, err, errlen);
+    if (rc == 0) rc = io_write_through_temp(path, write_obj, &j, err, errlen);
     free(mtl);
     return rc;
 }

@@ -20,13 +20,11 @@
 #include "region_export.h"
 #include "io.h"
 
-#include <errno.h>
 #include <locale.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "pdf.h"
 #include "temp_file.h"
@@ -107,6 +105,25 @@ static void write_dxf(FILE *f, const double (*pts)[2], const int *start, int npa
           f);
 }
 
+typedef struct region_job {
+    io_region_format fmt;
+    const double (*pts)[2];
+    const int *start;
+    int npaths;
+} region_job;
+
+static int write_region(FILE *f, void *ctx, char *why, size_t whylen)
+{
+    const region_job *j = ctx;
+    if (j->fmt == IO_REGION_SVG)
+        write_svg(f, j->pts, j->start, j->npaths);
+    else if (j->fmt == IO_REGION_DXF)
+        write_dxf(f, j->pts, j->start, j->npaths);
+    else
+        return io_pdf_write(f, j->pts, j->start, j->npaths, why, whylen);
+    return 0;
+}
+
 int io_region_write(const char *path, io_region_format fmt, const double (*pts)[2],
                     const int *start, int npaths, char *err, size_t errlen)
 {
@@ -125,46 +142,6 @@ int io_region_write(const char *path, io_region_format fmt, const double (*pts)[
             snprintf(err, errlen, "%s: point %d has a coordinate that is not finite", path, k);
             return -1;
         }
-    size_t tmplen = strlen(path) + 64;
-    char *tmp = malloc(tmplen);
-    if (!tmp) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
-    if (io_temp_beside(path, tmp, tmplen, err, errlen) != 0) {
-        free(tmp);
-        return -1;
-    }
-    errno = 0;
-    FILE *f = fopen(tmp, "wb");
-    int saved = errno, failed = !f;
-    char why[256] = "";
-    if (f) {
-        errno = 0;
-        if (fmt == IO_REGION_SVG)
-            write_svg(f, pts, start, npaths);
-        else if (fmt == IO_REGION_DXF)
-            write_dxf(f, pts, start, npaths);
-        else if (io_pdf_write(f, pts, start, npaths, why, sizeof why) != 0)
-            failed = 1;
-        failed = failed || ferror(f);
-        saved = errno;
-        if (fclose(f) != 0 && !failed) {
-            failed = 1;
-            saved = errno;
-        }
-    }
-    if (failed) {
-        unlink(tmp);
-        free(tmp);
-        if (why[0])
-            snprintf(err, errlen, "%s: writing failed: %s", path, why);
-        else
-            snprintf(err, errlen, "%s: writing failed%s%s", path, saved ? ": " : "",
-                     saved ? strerror(saved) : "");
-        return -1;
-    }
-    int rc = io_temp_commit(tmp, path, err, errlen);
-    free(tmp);
-    return rc;
+    region_job job = {fmt, pts, start, npaths};
+    return io_write_through_temp(path, write_region, &job, err, errlen);
 }

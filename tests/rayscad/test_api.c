@@ -225,18 +225,24 @@ Test(api, ast_and_term_texts_are_openscads)
 
 /* ---- rendering and measuring ------------------------------------------------------ */
 
+/* The scene of source src (its file's view in *file, which may be NULL). */
+static rayscad_scene *scene_of(const char *src, rayscad_file_view *file)
+{
+    rayscad_model *model;
+    cr_assert_eq(rayscad_model_load_string("t.scad", src, NULL, &model), RAYSCAD_OK);
+    if (file) rayscad_model_file_view(model, file);
+    rayscad_scene *scene;
+    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
+    rayscad_model_free(model);
+    return scene;
+}
+
 /* Cornfield's background (#ffffe5) in a corner, and no background at the
  * centre, where the default view looks at the cube. */
 Test(api, render_draws_the_model_over_the_scheme)
 {
-    rayscad_model *model;
-    cr_assert_eq(rayscad_model_load_string("t.scad", "cube(10, center = true);", NULL, &model),
-                 RAYSCAD_OK);
     rayscad_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
-    rayscad_model_file_view(model, &v.file);
-    rayscad_scene *scene;
-    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
-    rayscad_model_free(model);
+    rayscad_scene *scene = scene_of("cube(10, center = true);", &v.file);
     rayscad_render_options ro;
     rayscad_render_options_default(&ro);
     ro.width = 80;
@@ -264,12 +270,8 @@ static int stop_after(void *ud)
 
 Test(api, render_stops_when_cancelled)
 {
-    rayscad_model *model;
-    cr_assert_eq(rayscad_model_load_string("t.scad", "sphere(10);", NULL, &model), RAYSCAD_OK);
     rayscad_view v = {.kind = RAYSCAD_CAMERA_DEFAULT};
-    rayscad_scene *scene;
-    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
-    rayscad_model_free(model);
+    rayscad_scene *scene = scene_of("sphere(10);", NULL);
     rayscad_render_options ro;
     rayscad_render_options_default(&ro);
     ro.width = 256;
@@ -305,14 +307,8 @@ Test(api, render_stops_when_cancelled)
  * (the box's own colour, yellow); uncut, the front face (yellow) there. */
 Test(api, section_cuts_the_model_open)
 {
-    rayscad_model *model;
-    cr_assert_eq(rayscad_model_load_string(
-                     "t.scad", "difference() { cube(20, center = true); cube(10, center = true); }",
-                     NULL, &model),
-                 RAYSCAD_OK);
-    rayscad_scene *scene;
-    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
-    rayscad_model_free(model);
+    rayscad_scene *scene =
+        scene_of("difference() { cube(20, center = true); cube(10, center = true); }", NULL);
     rayscad_render_options ro;
     rayscad_render_options_default(&ro);
     ro.width = ro.height = 160;
