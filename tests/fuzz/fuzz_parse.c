@@ -1,9 +1,11 @@
 /*
  * fuzz_parse.c — libFuzzer harness for the lexer and parser (src/scad/lex.c,
  * parse.c): any bytes, as a NUL-terminated source, are tokenised and parsed
- * into an AST in a fresh arena, which is then freed.  Nothing is evaluated;
- * include and use read their files (relative to the current folder) as the
- * parser does.  Checked besides the sanitizers: every error line reads
+ * into an AST in a fresh arena, which is printed as openscad's .ast (the
+ * printer and the customizer comments' grammar, ast_print.c and
+ * annotations.c) and then freed.  Nothing is evaluated; include and use
+ * read their files (relative to the current folder) as the parser does.
+ * Checked besides the sanitizers: every error line reads
  * "name:line:col: error: ..." (name: this input's or an included file's).
  */
 #include <stdint.h>
@@ -12,6 +14,7 @@
 #include <string.h>
 
 #include "../../src/scad/ast.h"
+#include "../../src/scad/ast_print.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -56,7 +59,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     d.base_dir = "";
     a = scad_arena_new();
     names = a ? scad_names_new(a) : NULL;
-    if (names) (void)scad_parse(a, &d, names, "fuzz.scad", src);
+    scad_scope *top = names ? scad_parse(a, &d, names, "fuzz.scad", src) : NULL;
+    if (top) {
+        scad_buf b = {0};
+        scad_ast_print(&b, top, scad_annotations_collect(a, top, "fuzz.scad", src));
+        scad_buf_free(&b);
+    }
     scad_arena_free(a);
     free(src);
     return 0;
