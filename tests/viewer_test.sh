@@ -5,6 +5,7 @@
 # `rayscad -o x.png` draws for the same file and camera.
 #   usage: tests/viewer_test.sh [BUILD]   (or run inside an X server)
 set -u
+. "$(dirname "$(realpath "$0")")/lib.sh" # check, summary
 build=${1:-build}
 rayscad=$(realpath "$build/rayscad")
 shot=$(realpath "$(dirname "$0")/viewer/shot.py")
@@ -19,18 +20,6 @@ if [ -z "${VIEWER_TEST_IN_X:-}" ]; then
 fi
 tmp=$(mktemp -d)
 cd "$tmp" || exit 1
-passed=0
-failed=0
-check() { # name, condition (a command)
-    local name=$1
-    shift
-    if "$@"; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL $name"
-        failed=$((failed + 1))
-    fi
-}
 SIZE=320,240
 mkdir model
 cat >model/part.scad <<'EOS'
@@ -172,5 +161,4 @@ rc=$?
 check "q closes the window with exit 0" test "$rc" -eq 0
 check "--stats: a line per frame" grep -q '^frame [0-9]*x[0-9]* samples' viewer.err
 
-echo "viewer: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary viewer

@@ -3,6 +3,7 @@
 # file:line:col, and outputs that are whole or absent.
 #   usage: tests/cli/cli_test.sh [BUILD]
 set -u
+. "$(dirname "$(realpath "$0")")/../lib.sh" # check, summary
 build=${1:-build}
 rayscad=$(realpath "$build/rayscad")
 meshcmp=$(realpath "$build/tools/meshcmp")
@@ -13,19 +14,6 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 umask 022
-passed=0
-failed=0
-
-check() { # name, condition (a command)
-    local name=$1
-    shift
-    if "$@"; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL $name"
-        failed=$((failed + 1))
-    fi
-}
 
 quiet() { "$@" >/dev/null; }
 
@@ -464,5 +452,4 @@ EOF
     check "no progress when stderr is no terminal" sh -c "! grep -q 'evaluating' err.txt"
 fi
 
-echo "cli: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary cli

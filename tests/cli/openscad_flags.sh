@@ -7,6 +7,7 @@
 # under xvfb-run).
 #   usage: tests/cli/openscad_flags.sh [BUILD]
 set -u
+. "$(dirname "$(realpath "$0")")/../lib.sh" # check, summary
 build=${1:-build}
 rayscad=$(realpath "$build/rayscad")
 meshcmp=$(realpath "$build/tools/meshcmp")
@@ -16,19 +17,6 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 umask 022
-passed=0
-failed=0
-
-check() { # name, condition (a command)
-    local name=$1
-    shift
-    if "$@"; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL $name"
-        failed=$((failed + 1))
-    fi
-}
 
 if ! command -v openscad >/dev/null; then
     echo "openscad_flags: openscad not found (make deps installs it)"
@@ -360,5 +348,4 @@ check "--help: exits 0 in both" same_status
 both --version
 check "--version: exits 0 in both" same_status
 
-echo "openscad_flags: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary openscad_flags

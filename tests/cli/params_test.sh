@@ -6,25 +6,13 @@
 # not) and our message.  src/cli/params.c lists the rules measured.
 #   usage: tests/cli/params_test.sh [BUILD | path/to/rayscad]
 set -u
+. "$(dirname "$(realpath "$0")")/../lib.sh" # check, summary
 arg=${1:-build}
 if [ -d "$arg" ]; then rayscad=$(realpath "$arg/rayscad"); else rayscad=$(realpath "$arg"); fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 ulimit -c 0 # openscad aborts on some files
-passed=0
-failed=0
-
-check() { # name, condition (a command)
-    local name=$1
-    shift
-    if "$@"; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL $name"
-        failed=$((failed + 1))
-    fi
-}
 
 # Both programs on the same arguments (-o x.echo added): o.echo and orc
 # openscad's, r.echo, rrc and r.err ours.
@@ -133,5 +121,4 @@ check "a folder: openscad aborts" test "$orc" -ne 0
 check "a folder: fails without a signal" test "$rrc" -ne 0 -a "$rrc" -lt 128
 check "a folder: names it" grep -q "folder.json" r.err
 
-echo "params: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary params
