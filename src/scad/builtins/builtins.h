@@ -67,8 +67,6 @@ int scad_arg_radius(scad_call *c, int d, int r, const char *dname, const char *r
 /* An ostream's default form of a double (6 significant digits: "1e+06"). */
 void scad_print_g(scad_buf *b, double x);
 void scad_print_bool(scad_buf *b, int x);
-/* Quotes around the bytes, nothing escaped (OpenSCAD's QuotedString). */
-void scad_print_quoted(scad_buf *b, const char *s, size_t n);
 /* before, "$fn = …, $fa = …, $fs = …", after. */
 void scad_print_facets(scad_buf *b, scad_facet_params f, const char *before, const char *after);
 /* OpenSCAD 2021.01's lookup_file: name relative to the folder of the file

@@ -432,7 +432,7 @@ static int surface_print(scad_call *c, const void *args, scad_buf *b)
     if (c->arg[SF_FILE].kind == SV_STR)
         scad_print_path(c->ev, c->st->loc.file ? c->st->loc.file : "", p->file, &path, &mtime);
     scad_buf_puts(b, "surface(file = ");
-    scad_print_quoted(b, scad_buf_str(&path), strlen(scad_buf_str(&path)));
+    scad_quote_escaped(b, scad_buf_str(&path), strlen(scad_buf_str(&path)));
     scad_buf_free(&path);
     scad_buf_puts(b, ", center = ");
     scad_print_bool(b, p->center);

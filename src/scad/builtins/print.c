@@ -1,8 +1,7 @@
 /*
  * print.c — the pieces of OpenSCAD 2021.01's .csg headers that several
  * builtin modules print: numbers as an ostream writes them (printf "%g":
- * "1e+06", "-0"), booleans, quoted strings (nothing escaped, as
- * QuotedString), the $fn/$fa/$fs triple, and the file, layer and origin
+ * "1e+06", "-0"), booleans, the $fn/$fa/$fs triple, and the file, layer and origin
  * of import() and the extrusions, with file names relative to the main
  * file's folder.
  */
@@ -23,28 +22,6 @@ void scad_print_g(scad_buf *b, double x)
 void scad_print_bool(scad_buf *b, int x)
 {
     scad_buf_puts(b, x ? "true" : "false");
-}
-
-void scad_print_quoted(scad_buf *b, const char *s, size_t n)
-{
-    /* OpenSCAD's QuotedString: tab, newline, return, quote and backslash
-     * escaped */
-    scad_buf_put(b, "\"", 1);
-    size_t from = 0;
-    for (size_t i = 0; i < n; i++) {
-        const char *esc = s[i] == '\t'   ? "\\t"
-                          : s[i] == '\n' ? "\\n"
-                          : s[i] == '\r' ? "\\r"
-                          : s[i] == '"'  ? "\\\""
-                          : s[i] == '\\' ? "\\\\"
-                                         : NULL;
-        if (!esc) continue;
-        scad_buf_put(b, s + from, i - from);
-        scad_buf_puts(b, esc);
-        from = i + 1;
-    }
-    scad_buf_put(b, s + from, n - from);
-    scad_buf_put(b, "\"", 1);
 }
 
 void scad_print_facets(scad_buf *b, scad_facet_params f, const char *before, const char *after)
@@ -205,17 +182,17 @@ void scad_file_arg_print(scad_call *c, const scad_file_arg *f, scad_buf *b, long
     scad_buf path = {0};
     scad_print_path(c->ev, c->st->loc.file ? c->st->loc.file : "", f->name, &path, mtime);
     scad_buf_puts(b, "file = ");
-    scad_print_quoted(b, scad_buf_str(&path), strlen(scad_buf_str(&path)));
+    scad_quote_escaped(b, scad_buf_str(&path), strlen(scad_buf_str(&path)));
     scad_buf_free(&path);
     scad_buf_puts(b, ", layer = ");
     if (f->layer.kind == SV_STR) {
-        scad_print_quoted(b, f->layer.u.str->s, f->layer.u.str->len);
+        scad_quote_escaped(b, f->layer.u.str->s, f->layer.u.str->len);
     } else if (f->layer.kind == SV_UNDEF) {
-        scad_print_quoted(b, "", 0);
+        scad_quote_escaped(b, "", 0);
     } else {
         scad_buf s = {0};
         scad_value_format(&s, f->layer, 0);
-        scad_print_quoted(b, scad_buf_str(&s), strlen(scad_buf_str(&s)));
+        scad_quote_escaped(b, scad_buf_str(&s), strlen(scad_buf_str(&s)));
         scad_buf_free(&s);
     }
     scad_buf_puts(b, ", origin = [");
