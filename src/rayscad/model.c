@@ -103,50 +103,48 @@ const char *rayscad_model_setting(const rayscad_model *m, int i, double *value)
     return m->r.settings[i].name;
 }
 
-static rayscad_status csg_text(const char *name, const char *src, const rayscad_eval_options *o,
-                               char **text, size_t *len)
+/* One of scad.h's text dumps (.csg, .ast) of a file (src NULL) or a string. */
+typedef struct dumper {
+    int (*file)(const char *path, const scad_options *opt, char **text, size_t *len);
+    int (*string)(const char *name, const char *src, const scad_options *opt, char **text,
+                  size_t *len);
+} dumper;
+
+static const dumper csg_dump = {scad_dump_csg_file, scad_dump_csg_string};
+static const dumper ast_dump = {scad_dump_ast_file, scad_dump_ast_string};
+
+static rayscad_status dump_text(const dumper *d, const char *name, const char *src,
+                                const rayscad_eval_options *o, char **text, size_t *len)
 {
     scad_services services;
     scad_options so;
     scad_options_of(o, &services, &so);
-    int rc = src ? scad_dump_csg_string(name, src, &so, text, len)
-                 : scad_dump_csg_file(name, &so, text, len);
+    int rc = src ? d->string(name, src, &so, text, len) : d->file(name, &so, text, len);
     return rc == 0 ? RAYSCAD_OK : RAYSCAD_ERROR;
 }
 
 rayscad_status rayscad_csg_text(const char *path, const rayscad_eval_options *o, char **text,
                                 size_t *len)
 {
-    return csg_text(path, NULL, o, text, len);
+    return dump_text(&csg_dump, path, NULL, o, text, len);
 }
 
 rayscad_status rayscad_csg_text_string(const char *name, const char *src,
                                        const rayscad_eval_options *o, char **text, size_t *len)
 {
-    return csg_text(name ? name : "<string>", src ? src : "", o, text, len);
-}
-
-static rayscad_status ast_text(const char *name, const char *src, const rayscad_eval_options *o,
-                               char **text, size_t *len)
-{
-    scad_services services;
-    scad_options so;
-    scad_options_of(o, &services, &so);
-    int rc = src ? scad_dump_ast_string(name, src, &so, text, len)
-                 : scad_dump_ast_file(name, &so, text, len);
-    return rc == 0 ? RAYSCAD_OK : RAYSCAD_ERROR;
+    return dump_text(&csg_dump, name ? name : "<string>", src ? src : "", o, text, len);
 }
 
 rayscad_status rayscad_ast_text(const char *path, const rayscad_eval_options *o, char **text,
                                 size_t *len)
 {
-    return ast_text(path, NULL, o, text, len);
+    return dump_text(&ast_dump, path, NULL, o, text, len);
 }
 
 rayscad_status rayscad_ast_text_string(const char *name, const char *src,
                                        const rayscad_eval_options *o, char **text, size_t *len)
 {
-    return ast_text(name ? name : "<string>", src ? src : "", o, text, len);
+    return dump_text(&ast_dump, name ? name : "<string>", src ? src : "", o, text, len);
 }
 
 /* openscad.cc 2021.01 builds the term with a CSGTreeEvaluator that has no
@@ -160,7 +158,7 @@ static rayscad_status term_text(const char *name, const char *src, const rayscad
 {
     static const char empty[] = "No top-level CSG object\n";
     char *ast;
-    rayscad_status rc = ast_text(name, src, o, &ast, NULL);
+    rayscad_status rc = dump_text(&ast_dump, name, src, o, &ast, NULL);
     *text = NULL;
     if (len) *len = 0;
     if (rc != RAYSCAD_OK) return rc;
