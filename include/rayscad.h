@@ -430,8 +430,8 @@ typedef struct rayscad_render_options {
     /* A section view: the model cut by the plane ax + by + cz = d given
      * as {a, b, c, d}, the side where ax + by + cz > d taken away; the cut
      * faces in the colour of the solid they cut, lit with the plane's
-     * normal.  {0, 0, 0, *}: none.  Primary rays only: shadows, mirrors
-     * and the path tracer see the whole model. */
+     * normal.  {0, 0, 0, *}: none.  Every ray sees the cut model: shadows,
+     * mirrors, refraction and the path tracer as well as the primary rays. */
     double section[4];
     /* What openscad's --view draws over the image (RAYSCAD_VIEW_*): crease
      * and silhouette lines, the axes (with scale ticks and numbers when

@@ -70,7 +70,6 @@ static int gbuf_tile(const void *job, iv_arena *a, void *state, int x0, int y0, 
     const csg_scene *s = ov->f.scene;
     int nroots = csg_scene_root_count(s);
     if (nroots > RAYSCAD_ROOT_HIGHLIGHT + 1) nroots = RAYSCAD_ROOT_HIGHLIGHT + 1;
-    int section = render_section_on(ov->f.opt->section);
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             gpix *p = &ov->g[(size_t)y * ov->w + x];
@@ -83,18 +82,7 @@ static int gbuf_tile(const void *job, iv_arena *a, void *state, int x0, int y0, 
             for (int r = 0; r < nroots; r++) {
                 if (csg_scene_root_node(s, r) < 0) continue;
                 iv_bound b;
-                int rc;
-                if (section) { /* the first boundary the section leaves */
-                    iv_list l;
-                    rc = csg_trace(s, r, o, d, tmin, tmax, a, &l) != 0 ? -1 : 0;
-                    if (rc == 0) render_section_clip(ov->f.opt->section, o, d, &l);
-                    if (rc == 0 && l.n > 0) {
-                        b = l.v[0].enter;
-                        rc = 1;
-                    }
-                } else {
-                    rc = csg_trace_first(s, r, o, d, tmin, tmax, a, &b);
-                }
+                int rc = render_trace_first(s, ov->f.opt->section, r, o, d, tmin, tmax, a, &b);
                 iv_arena_reset(a);
                 if (rc < 0) return -1;
                 if (rc == 1 && (root < 0 || b.t < best.t)) {

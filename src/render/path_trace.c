@@ -155,12 +155,14 @@ static void surface_of(const pt_job *J, const iv_bound *b, pt_surface *s)
 static int nearest(const pt_job *J, pt_worker *w, const double o[3], const double d[3], double tmin,
                    double tmax, iv_bound *hit)
 {
-    int rc = csg_trace_first(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
+    const double *cut = J->f.opt->section;
+    int rc = render_trace_first(J->f.scene, cut, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, hit);
     if (rc <= 0) return rc;
     if (hit->prim != IV_PRIM_NONE && isfinite(hit->t)) return 1;
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0) return -1;
+    if (render_trace(J->f.scene, cut, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
+        return -1;
     for (int i = 0; i < 2 * l.n; i++) {
         const iv_bound *b = (i & 1) ? &l.v[i / 2].exit : &l.v[i / 2].enter;
         if (b->prim != IV_PRIM_NONE && isfinite(b->t)) {
@@ -178,7 +180,8 @@ static int nearest(const pt_job *J, pt_worker *w, const double o[3], const doubl
  * sphere apart except at grazing angles, where the geometry term is ~0. */
 static int is_target(const pt_job *J, const iv_bound *b, int32_t target, double dist)
 {
-    return target >= 0 && b->prim == target && fabs(b->t - dist) <= 1e-6 * dist + 4 * J->eps;
+    return target >= 0 && b->prim == target && !(b->flip & RENDER_SECTION_FLIP) &&
+           fabs(b->t - dist) <= 1e-6 * dist + 4 * J->eps;
 }
 
 /* The fraction of light that travels along o + t·d from t = dist back to
@@ -192,7 +195,8 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
 {
     double tlim = target >= 0 ? dist * (1 + 2e-6) + 8 * J->eps : dist;
     iv_bound b;
-    int rc = csg_trace_first(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
+    const double *cut = J->f.opt->section;
+    int rc = render_trace_first(J->f.scene, cut, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &b);
     if (rc < 0) return -1;
     if (rc == 0) return target >= 0 ? 0 : 1;
     pt_surface s;
@@ -206,7 +210,7 @@ static double shadow(const pt_job *J, pt_worker *w, const double o[3], const dou
     }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
+    if (render_trace(J->f.scene, cut, RAYSCAD_ROOT_MODEL, o, d, 0, tlim, w->a, &l) != 0) return -1;
     double T = 1;
     for (int i = 0; i < l.n && T > 0; i++) {
         const iv_span *sp = &l.v[i];
@@ -376,7 +380,7 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             return 0;
         }
         render_hit h;
-        render_surface_hit(J->f.scene, &b, b.t, o, d, RENDER_GRAZE_LEAVES, &h);
+        render_surface_hit(J->f.scene, J->f.opt->section, &b, b.t, o, d, RENDER_GRAZE_LEAVES, &h);
         int entering = h.entering;
         pt_surface s;
         surface_of(J, &b, &s);
@@ -412,7 +416,8 @@ static int path(const pt_job *J, pt_worker *w, double o[3], double d[3], double 
             if (entering) {
                 iv_list l;
                 memset(&l, 0, sizeof l);
-                if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, tmin, tmax, w->a, &l) != 0)
+                if (render_trace(J->f.scene, J->f.opt->section, RAYSCAD_ROOT_MODEL, o, d, tmin,
+                                 tmax, w->a, &l) != 0)
                     return -1;
                 double len = INFINITY;
                 for (int i = 0; i < l.n; i++)

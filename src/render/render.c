@@ -120,7 +120,8 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
 {
     if (J->first_hit && !wk->full_shadow) {
         iv_bound b;
-        int rc = csg_trace_first(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &b);
+        int rc = render_trace_first(J->f.scene, J->f.opt->section, RAYSCAD_ROOT_MODEL, o, d, 0,
+                                    tmax, wk->a, &b);
         if (rc < 0) return -1;
         if (rc == 0) return 1; /* nothing in the way: the loop below leaves T = 1 */
         if (stops_light(J, &b)) return 0;
@@ -128,7 +129,9 @@ static double transmittance(const job *J, worker_ctx *wk, const double o[3], con
     }
     iv_list l;
     memset(&l, 0, sizeof l);
-    if (csg_trace(J->f.scene, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) != 0) return -1;
+    if (render_trace(J->f.scene, J->f.opt->section, RAYSCAD_ROOT_MODEL, o, d, 0, tmax, wk->a, &l) !=
+        0)
+        return -1;
     if (J->first_hit) wk->full_shadow = !(l.n == 0 || stops_light(J, &l.v[0].enter));
     double T = 1;
     for (int i = 0; i < l.n && T > RENDER_DARK; i++) {
@@ -254,13 +257,7 @@ static int surface_light(const job *J, worker_ctx *wk, const iv_bound *bb, const
                          const float c[4], const csg_material *m, const double o[3],
                          const double d[3], int depth, double local[3], render_hit *h)
 {
-    render_surface_hit(J->f.scene, sb, bb->t, o, d, RENDER_GRAZE_ENTERS, h);
-    if (bb->flip & RENDER_SECTION_FLIP) { /* a cut face: the plane's normal */
-        render_section_normal(J->f.opt->section, h->n);
-        h->entering = !(dot3(h->n, d) > 0);
-        for (int i = 0; i < 3; i++)
-            h->nf[i] = h->entering ? h->n[i] : -h->n[i];
-    }
+    render_surface_hit(J->f.scene, J->f.opt->section, sb, bb->t, o, d, RENDER_GRAZE_ENTERS, h);
 
     float lit[3];
     if (m->emit > 0) {
@@ -324,8 +321,8 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
                      double tmin, double tmax, int depth, double out[3])
 {
     double acc[3] = {0, 0, 0}, acc_a = 0; /* premultiplied */
-    int section = depth == 0 && render_section_on(J->f.opt->section);
-    if (J->first_hit && !wk->full_primary && !section) {
+    const double *cut = J->f.opt->section;
+    if (J->first_hit && !wk->full_primary) {
         /* The walk below composites the nearest boundary of all roots
          * first; when that one is opaque it ends there, and the ray needs
          * that boundary alone. */
@@ -333,7 +330,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         const iv_bound *have[MAX_ROOTS] = {NULL};
         for (int q = 0; q < J->nlive; q++) {
             int r = J->live[q];
-            int rc = csg_trace_first(J->f.scene, r, o, d, tmin, tmax, wk->a, &fb[r]);
+            int rc = render_trace_first(J->f.scene, cut, r, o, d, tmin, tmax, wk->a, &fb[r]);
             if (rc < 0) return -1;
             if (rc) have[r] = &fb[r];
         }
@@ -365,8 +362,7 @@ static int trace_ray(const job *J, worker_ctx *wk, const double o[3], const doub
         int r = J->live[q];
         pos[r] = 0;
         volume[r] = 0;
-        if (csg_trace(J->f.scene, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
-        if (section) render_section_clip(J->f.opt->section, o, d, &lists[r]);
+        if (render_trace(J->f.scene, cut, r, o, d, tmin, tmax, wk->a, &lists[r]) != 0) return -1;
         if (lists[r].n > 0) first[r] = &lists[r].v[0].enter;
     }
     if (J->first_hit) {

@@ -35,12 +35,33 @@ void render_section_clip(const double plane[4], const double o[3], const double 
         if (s.enter.t < lo) {
             s.enter.t = lo;
             s.enter.flip |= RENDER_SECTION_FLIP;
+            if (s.enter.prim == IV_PRIM_NONE) s.enter.prim = s.exit.prim;
         }
         if (s.exit.t > hi) {
             s.exit.t = hi;
             s.exit.flip |= RENDER_SECTION_FLIP;
+            if (s.exit.prim == IV_PRIM_NONE) s.exit.prim = s.enter.prim;
         }
         l->v[k++] = s;
     }
     l->n = k;
+}
+
+int render_trace(const csg_scene *s, const double plane[4], int r, const double o[3],
+                 const double d[3], double tmin, double tmax, iv_arena *a, iv_list *l)
+{
+    if (csg_trace(s, r, o, d, tmin, tmax, a, l) != 0) return -1;
+    if (render_section_on(plane)) render_section_clip(plane, o, d, l);
+    return 0;
+}
+
+int render_trace_first(const csg_scene *s, const double plane[4], int r, const double o[3],
+                       const double d[3], double tmin, double tmax, iv_arena *a, iv_bound *b)
+{
+    if (!render_section_on(plane)) return csg_trace_first(s, r, o, d, tmin, tmax, a, b);
+    iv_list l;
+    if (render_trace(s, plane, r, o, d, tmin, tmax, a, &l) != 0) return -1;
+    if (l.n == 0) return 0;
+    *b = l.v[0].enter;
+    return 1;
 }

@@ -11,6 +11,7 @@
 
 #include "../intervals/vec3.h"
 #include "render.h"
+#include "section.h"
 
 #include <math.h>
 #include <string.h>
@@ -127,22 +128,26 @@ typedef enum render_graze {
 
 typedef struct render_hit {
     double p[3];  /* the point, o + t·d */
-    double n[3];  /* the surface's unit normal there (csg_scene_normal) */
+    double n[3];  /* the surface's unit normal there (csg_scene_normal; a cut face's
+                     is the section plane's) */
     double nf[3]; /* n turned toward the side the ray arrives from */
     int entering; /* the ray passes into the solid: n·d < 0 (grazes: see render_graze) */
 } render_hit;
 
 /* The hit of the ray o + t·d (d unit) at parameter t on the surface of
- * boundary b of a list traced along it (b->t is t, or for a clip the
+ * boundary b of a list traced along it, cut by plane section (b->t is t, or for a clip the
  * surface is the exit of the span the clip opened).  Inline: the preview
  * asks this and render_surface_absorption on every primary ray, and as
  * calls the two cost its render loop 1 % more instructions (callgrind,
  * bench/scenes/few.scad). */
-static inline void render_surface_hit(const csg_scene *s, const iv_bound *b, double t,
-                                      const double o[3], const double d[3], render_graze graze,
-                                      render_hit *h)
+static inline void render_surface_hit(const csg_scene *s, const double section[4],
+                                      const iv_bound *b, double t, const double o[3],
+                                      const double d[3], render_graze graze, render_hit *h)
 {
-    csg_scene_normal(s, b, o, d, h->n);
+    if (b->flip & RENDER_SECTION_FLIP)
+        render_section_normal(section, h->n);
+    else
+        csg_scene_normal(s, b, o, d, h->n);
     for (int i = 0; i < 3; i++)
         h->p[i] = o[i] + t * d[i];
     double nd = dot3(h->n, d);

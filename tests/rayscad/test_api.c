@@ -331,6 +331,84 @@ Test(api, section_cuts_the_model_open)
     rayscad_scene_free(scene);
 }
 
+/* Scene src rendered 96×96 from (30°, 0°, 35°), orthographic, with plane
+ * cut as section, options as ro gives them; a malloc'd image. */
+static float *render_cut(const char *src, rayscad_render_options ro, const double cut[4])
+{
+    rayscad_scene *scene = scene_of(src, NULL);
+    ro.width = ro.height = 96;
+    memcpy(ro.section, cut, sizeof ro.section);
+    rayscad_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .v = {0, 0, 4, 30, 0, 35, 90}, .ortho = 1};
+    rayscad_camera cam;
+    cr_assert_eq(rayscad_camera_frame(scene, &v, ro.width, ro.height, &cam, NULL, 0), RAYSCAD_OK);
+    float *px = malloc((size_t)ro.width * ro.height * 4 * sizeof *px);
+    char err[256];
+    cr_assert_eq(rayscad_render(scene, &cam, &ro, px, err, sizeof err), RAYSCAD_OK, "%s", err);
+    rayscad_scene_free(scene);
+    return px;
+}
+
+/* Pixels of two 96×96 images whose channels differ by more than 2/255. */
+static int pixels_apart(const float *a, const float *b)
+{
+    int n = 0;
+    for (int i = 0; i < 96 * 96; i++)
+        for (int k = 0; k < 3; k++)
+            if (fabsf(a[4 * i + k] - b[4 * i + k]) > 2.0f / 255) {
+                n++;
+                break;
+            }
+    return n;
+}
+
+/* A part the section takes away wholly is gone for every ray: the picture
+ * equals that of the model without it (rendered with no section at all),
+ * whose shadows, mirror images and light paths never saw it.  The part
+ * here is a roof that shadows the floor and shows in its mirror; left in
+ * for the secondary rays, it changes most of the floor's pixels. */
+static void cut_equals_removed(rayscad_render_options ro, const char *floor)
+{
+    char whole[512];
+    snprintf(whole, sizeof whole, "%s translate([-14, -14, 9]) cube([28, 28, 2]);", floor);
+    const double none[4] = {0, 0, 0, 0}, roof[4] = {0, 0, 1, 6}; /* z > 6 taken away */
+    float *cut = render_cut(whole, ro, roof);
+    float *removed = render_cut(floor, ro, none);
+    float *uncut = render_cut(whole, ro, none);
+    int apart = pixels_apart(cut, removed);
+    cr_expect(apart <= 96 * 96 / 200, "%d pixels differ from the model without the roof", apart);
+    cr_expect(pixels_apart(uncut, removed) > 96 * 96 / 10,
+              "the roof, uncut, changes the picture (else the test shows nothing)");
+    free(cut);
+    free(removed);
+    free(uncut);
+}
+
+Test(api, section_cuts_shadow_rays)
+{
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.shadows = 1;
+    ro.lights[0] = (rayscad_light){.pos = {5, -8, 60}, .intensity = 1};
+    ro.nlights = 1;
+    cut_equals_removed(ro, "translate([-20, -20, 0]) cube([40, 40, 1]);");
+}
+
+Test(api, section_cuts_mirror_rays)
+{
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    cut_equals_removed(ro, "translate([-20, -20, 0]) cube([40, 40, 1], $rs_reflect = 0.8);");
+}
+
+Test(api, section_cuts_the_path_tracer)
+{
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.path_trace = 2; /* under the key light: a point light's strength follows
+                          the model's bounds, which the roof moves */
+    cut_equals_removed(ro, "translate([-20, -20, 0]) cube([40, 40, 1], $rs_reflect = 0.5);");
+}
+
 static double measured_volume(const char *src, rayscad_facets facets, double h)
 {
     rayscad_eval_options o = {.facets = facets};

@@ -525,7 +525,7 @@ Test(light_spawn, origin_is_eps_off_the_surface_on_the_side_the_ray_takes)
         cr_assert_eq(csg_trace_first(s, RAYSCAD_ROOT_MODEL, o, d, 0, INFINITY, a, &b), 1);
         cr_expect(fabs(b.t - t0) <= 1e-9 * r, "ray %d: entry at %.12g, expected %.12g", k, b.t, t0);
         render_hit h;
-        render_surface_hit(s, &b, b.t, o, d, RENDER_GRAZE_ENTERS, &h);
+        render_surface_hit(s, NULL, &b, b.t, o, d, RENDER_GRAZE_ENTERS, &h);
         iv_arena_reset(a);
         cr_expect(h.entering, "ray %d: the entry is not an entry", k);
         double cosi = -dot3(d, h.nf); /* the step along d, to the normal */
@@ -547,7 +547,7 @@ Test(light_spawn, origin_is_eps_off_the_surface_on_the_side_the_ray_takes)
         cr_assert_eq(l.n, 1);
         iv_bound out = l.v[0].exit;
         render_hit x;
-        render_surface_hit(s, &out, out.t, oi, td, RENDER_GRAZE_LEAVES, &x);
+        render_surface_hit(s, NULL, &out, out.t, oi, td, RENDER_GRAZE_LEAVES, &x);
         iv_arena_reset(a);
         cr_expect(!x.entering, "ray %d: the exit is not an exit", k);
         render_reflect_dir(td, x.nf, rd);
