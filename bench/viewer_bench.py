@@ -32,8 +32,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 SCENES = ["bench/scenes/few.scad", "bench/scenes/csg_deep.scad", "bench/scenes/glass.scad",
           "models/demo.scad", "models/gear.scad", "models/order_independence.scad"]
-FRAME = re.compile(r"^frame (\d+)x(\d+) samples (\d+): ([\d.]+) ms, (\d+) ms after the last "
-                   r"input, at ([\d.]+)$")
+FRAME = re.compile(r"^frame (\d+)x(\d+) samples (\d+) pass \d+: ([\d.]+) ms, (\d+) ms after the "
+                   r"last input, at ([\d.]+)$")
 LOADED = re.compile(r"^loaded in ([\d.]+) ms")
 
 

@@ -423,6 +423,16 @@ typedef struct rayscad_render_options {
     double absorb;     /* > 0: a transparent solid's alpha is the opacity of
                           this thickness, Beer–Lambert over its spans */
     unsigned seed;     /* the jitter's seed; pixels derive their own streams */
+    /* 0: the picture as always.  k > 0: pass k of a progressive series
+     * whose mean converges to the exact pixels: every sample moves within
+     * its stratum to the k-th point of the R2 sequence (the light model and
+     * the path tracer: their random numbers come from stream k), so the
+     * mean of passes 0..K samples each pixel ever more finely. */
+    int pass;
+    /* 1: the path tracer leaves pixels brighter than white above 1 (the
+     * sRGB curve continued), so that the mean of passes in linear light is
+     * the light's; 0: clamped to 1, for an image to show or save. */
+    int unclamped;
     int path_trace;    /* > 0: path-trace with this many samples per pixel
                           (interreflection, next-event estimation, Fresnel
                           glass); samples is then unused */

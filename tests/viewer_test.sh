@@ -62,6 +62,9 @@ settle 3
 grab first.xwd
 "$rayscad" model/part.scad --imgsize=$SIZE --samples 3 -o first.png
 check "the first full frame is the command line's image" "$shot" same first.xwd first.png
+check "--stats: the resting picture converges" grep -q '^converged after [0-9]* passes' viewer.err
+"$rayscad" model/part.scad --imgsize=$SIZE --samples 8 -o fine.png
+check "its passes refine past 3x3 samples a pixel, toward 8x8" "$shot" closer first.xwd first.png fine.png
 
 # A left drag turns the view; the printed camera draws the same picture.
 xdotool mousemove --window "$win" 160 120 mousedown 1 mousemove --window "$win" 200 140 \

@@ -7,12 +7,16 @@
  * The render thread draws the newest view: while the view moves, at a
  * reduced resolution sized from the last frame's cost so that a frame takes
  * about FRAME_MS; once it rests, at full resolution, then again with 2×2
- * and 3×3 samples a pixel.  A pass that a newer view makes useless is
- * cancelled (rayscad_render_options.cancelled).  The load thread evaluates
- * the file and every time one of the files it read changes (watch.h),
- * evaluates it again and hands the new scene over; a failed evaluation
- * keeps the last good scene and puts its error in the window's title with a
- * red frame around the picture.
+ * and 3×3 samples a pixel, and then it goes on adding passes that sample
+ * elsewhere in each pixel (rayscad_render_options.pass; the light model's
+ * and the path tracer's random numbers too) and shows their mean, until
+ * that mean's standard error falls below half a step of 8-bit colour
+ * (accumulate.h) or MAX_PASSES.  The path tracer skips the 2×2 and 3×3
+ * pictures and draws every pass with one path a pixel.  A pass that a
+ * newer view makes useless is cancelled (rayscad_render_options.cancelled).  The load thread
+ * evaluates the file and every time one of the files it read changes (watch.h), evaluates it again
+ * and hands the new scene over; a failed evaluation keeps the last good scene and puts its error in
+ * the window's title with a red frame around the picture.
  */
 #define _DEFAULT_SOURCE
 #include "viewer.h"
@@ -26,12 +30,16 @@
 #include <string.h>
 #include <time.h>
 
+#include "accumulate.h"
 #include "viewer_text.h"
 #include "watch.h"
 
-#define FRAME_MS 25.0 /* a moving frame's budget */
-#define REST_MS 150   /* no input for this long: the view rests */
-#define MAX_SAMPLES 3 /* the last refinement: 3×3 samples a pixel */
+#define FRAME_MS 25.0         /* a moving frame's budget */
+#define REST_MS 150           /* no input for this long: the view rests */
+#define MAX_SAMPLES 3         /* the last fixed refinement: 3×3 samples a pixel */
+#define CONVERGED (0.5 / 255) /* the mean's standard error where passes stop */
+#define MAX_PASSES 64         /* of 3×3 samples; the path tracer's of 1 path: */
+#define MAX_PATH_PASSES 1024
 #define ZOOM_STEP 0.9 /* a wheel notch, as openscad's Camera::zoom */
 #define DRAG_DEG 0.7  /* degrees a pixel of drag turns, as openscad */
 #define PI 3.14159265358979323846
@@ -71,14 +79,18 @@ typedef struct viewer {
     /* the render thread's result (under mu) */
     float *img;
     size_t icap; /* floats img holds */
-    int iw, ih, isamples;
+    int iw, ih, isamples, ipass;
     unsigned igen;
     double ims;
     int fresh;         /* a picture the event thread has not shown yet */
     Uint32 wake_event; /* SDL user event: a picture or a title to show */
     /* the render thread's own */
-    int level; /* of gen `level_gen`: 0 none, 1 reduced, 2.. full with level-1 samples */
+    /* of gen `level_gen`: 0 none, 1 reduced, 2 full, 3.. more samples or
+     * the passes after them */
+    int level;
     unsigned level_gen;
+    int settled;         /* converged, at MAX_PASSES, or failed: nothing more to draw */
+    cli_accum accum;     /* the passes' mean */
     double ms_per_pixel; /* of the last reduced frame */
 } viewer;
 
@@ -177,10 +189,13 @@ static void *render_main(void *arg)
         if (V->level_gen != gen) {
             V->level_gen = gen;
             V->level = 0;
+            V->settled = 0;
         }
         int moving = now_s() - V->moved_at < REST_MS / 1000.0;
         int next = moving ? 1 : V->level < 2 ? 2 : V->level + 1;
-        if (!V->scene || (moving && V->level >= 1) || next > MAX_SAMPLES + 1) {
+        int traced = V->o->optics.path_trace > 0;
+        int fixed = traced ? 2 : MAX_SAMPLES + 1; /* the last level drawn once; then passes */
+        if (!V->scene || (moving && V->level >= 1) || V->settled) {
             struct timespec ts;
             clock_gettime(CLOCK_REALTIME, &ts);
             ts.tv_nsec += 30 * 1000 * 1000;
@@ -192,7 +207,8 @@ static void *render_main(void *arg)
             continue;
         }
         /* this pass: its size, samples and options */
-        int w = V->w, h = V->h, samples = next == 1 ? 1 : next - 1;
+        int w = V->w, h = V->h, samples = next == 1 ? 1 : next > fixed ? MAX_SAMPLES : next - 1;
+        int pass = next > fixed ? next - fixed : 0;
         if (next == 1) {
             double f = 1;
             if (V->ms_per_pixel > 0) f = sqrt(w * (double)h * V->ms_per_pixel / FRAME_MS);
@@ -205,6 +221,11 @@ static void *render_main(void *arg)
         ro.width = w;
         ro.height = h;
         ro.samples = samples;
+        ro.pass = pass;
+        if (traced) {
+            ro.path_trace = 1;
+            ro.unclamped = 1; /* the mean of passes is the light's */
+        }
         ro.threads = V->o->threads;
         ro.max_intervals = V->o->max_intervals;
         ro.view = V->flags;
@@ -234,10 +255,26 @@ static void *render_main(void *arg)
                  rayscad_camera_frame(scene, &rv, w, h, &cam, NULL, 0) == RAYSCAD_OK &&
                  rayscad_render(scene, &cam, &ro, buf, NULL, 0) == RAYSCAD_OK;
         double ms = 1000 * (now_s() - t0);
+        /* the passes: their mean, from the last fixed level's picture on */
+        double err = INFINITY;
+        if (ok && next >= fixed) {
+            if (next == fixed) ok = cli_accum_reset(&V->accum, (size_t)w * h, traced) == 0;
+            if (ok) cli_accum_add(&V->accum, buf);
+            if (ok && next > fixed) {
+                cli_accum_mean(&V->accum, buf);
+                err = cli_accum_error(&V->accum);
+            }
+        }
 
         pthread_mutex_lock(&V->mu);
         if (ok && next == 1) V->ms_per_pixel = ms / ((double)w * h);
-        if (V->level_gen == gen) V->level = ok ? next : MAX_SAMPLES + 2; /* a failure: stop */
+        if (V->level_gen == gen) {
+            V->level = next;
+            V->settled = !ok || err < CONVERGED || pass >= (traced ? MAX_PATH_PASSES : MAX_PASSES);
+            if (ok && pass > 0 && V->settled && V->o->stats)
+                fprintf(stderr, "%s after %d passes: standard error %.2f/255\n",
+                        err < CONVERGED ? "converged" : "stopped", pass, 255 * err);
+        }
         if (!ok) continue;
         float *t = V->img; /* hand the picture over, take the old buffer */
         size_t tcap = V->icap;
@@ -247,7 +284,8 @@ static void *render_main(void *arg)
         cap = tcap;
         V->iw = w;
         V->ih = h;
-        V->isamples = samples;
+        V->isamples = traced ? 1 : samples;
+        V->ipass = pass;
         V->igen = gen;
         V->ims = ms;
         V->fresh = 1;
@@ -255,6 +293,7 @@ static void *render_main(void *arg)
     }
     pthread_mutex_unlock(&V->mu);
     free(buf);
+    cli_accum_free(&V->accum);
     return NULL;
 }
 
@@ -708,9 +747,9 @@ int cli_viewer_run(const cli_options *o, cli_viewer_load load, void *ud)
                     struct timespec t;
                     clock_gettime(CLOCK_REALTIME, &t);
                     fprintf(stderr,
-                            "frame %dx%d samples %d: %.1f ms, %.0f ms after the last input, at "
-                            "%.3f\n",
-                            V.iw, V.ih, V.isamples * V.isamples, V.ims,
+                            "frame %dx%d samples %d pass %d: %.1f ms, %.0f ms after the last "
+                            "input, at %.3f\n",
+                            V.iw, V.ih, V.isamples * V.isamples, V.ipass, V.ims,
                             1000 * (now_s() - V.moved_at),
                             (double)t.tv_sec + 1e-9 * (double)t.tv_nsec);
                 }

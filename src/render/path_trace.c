@@ -117,9 +117,11 @@ static double srgb_to_linear(double c)
     return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
 
-static double linear_to_srgb(double c)
+/* c encoded on the sRGB curve, clamped to [0, 1] unless `unclamped`
+ * (rayscad_render_options.unclamped), which only lifts the upper bound. */
+static double linear_to_srgb(double c, int unclamped)
 {
-    c = c < 0 ? 0 : c > 1 ? 1 : c;
+    c = c < 0 ? 0 : c > 1 && !unclamped ? 1 : c;
     return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1 / 2.4) - 0.055;
 }
 
@@ -509,7 +511,7 @@ static int render_tile(const void *job, iv_arena *a, void *state, int x0, int y0
     int ns = opt->path_trace;
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
-            w->g = rng_for_pixel(opt->seed, x, y, PT_STREAM);
+            w->g = rng_for_pixel(opt->seed, x, y, rng_pass_stream(PT_STREAM, opt->pass));
             double sum[3] = {0, 0, 0}, ox = rng_next(&w->g), oy = rng_next(&w->g);
             for (int k = 0; k < ns; k++) {
                 /* pixel positions from the R2 sequence (Roberts), shifted per
@@ -529,7 +531,7 @@ static int render_tile(const void *job, iv_arena *a, void *state, int x0, int y0
             }
             float *px = J->f.rgba + ((size_t)y * (size_t)opt->width + (size_t)x) * 4;
             for (int i = 0; i < 3; i++)
-                px[i] = (float)linear_to_srgb(sum[i] / ns);
+                px[i] = (float)linear_to_srgb(sum[i] / ns, opt->unclamped);
             px[3] = 1;
         }
     return 0;

@@ -474,18 +474,21 @@ static int render_tile(const void *job_, iv_arena *a, void *state, int x0, int y
                 put_pixel(J, x, y, sum, inv);
         return 0;
     }
+    double fx, fy; /* where the preview look samples its strata */
+    render_pass_offset(opt->pass, &fx, &fy);
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double sum[3] = {0, 0, 0};
             if (J->jitter) /* only the light model draws random numbers */
-                wk->g = rng_for_pixel(opt->seed, x, y, 0);
-            /* s×s strata.  The preview look samples each at its centre
-             * (deterministic, and s = 1 is the pixel centre where GL
-             * samples coverage); the light model jitters within them. */
+                wk->g = rng_for_pixel(opt->seed, x, y, rng_pass_stream(0, opt->pass));
+            /* s×s strata.  The preview look samples each at one point,
+             * the centre in pass 0 (deterministic, and s = 1 is the pixel
+             * centre where GL samples coverage); the light model jitters
+             * within them. */
             for (int j = 0; j < s; j++)
                 for (int i = 0; i < s; i++) {
-                    double jx = J->jitter ? rng_next(&wk->g) : 0.5;
-                    double jy = J->jitter ? rng_next(&wk->g) : 0.5;
+                    double jx = J->jitter ? rng_next(&wk->g) : fx;
+                    double jy = J->jitter ? rng_next(&wk->g) : fy;
                     double o[3], d[3], tmin, tmax, c[3], px = x + (i + jx) / s,
                                                          py = y + (j + jy) / s;
                     if (!J->covered && !(px >= J->cover[0] && px <= J->cover[1] &&
@@ -583,10 +586,10 @@ int render_image(const csg_scene *s, const render_camera *cam, const render_opti
                  float *rgba, char *err, size_t errlen)
 {
     if (!s || !cam || !opt || !rgba || opt->width < 1 || opt->height < 1 || opt->samples < 1 ||
-        opt->samples > MAX_SAMPLES) {
+        opt->samples > MAX_SAMPLES || opt->pass < 0) {
         set_err(err, errlen,
                 "render: bad options (need a scene, a camera, an image of at "
-                "least 1x1 pixels and 1 to 64 samples)");
+                "least 1x1 pixels, 1 to 64 samples and a pass >= 0)");
         return -1;
     }
     /* ---- the path-traced quality mode: a separate integrator -------------- */

@@ -36,6 +36,23 @@ static inline rng rng_for_pixel(unsigned seed, int x, int y, uint64_t stream)
     return g;
 }
 
+/* The stream a renderer's constant `stream` becomes in progressive pass
+ * `pass` (rayscad_render_options.pass): itself in pass 0, so that a
+ * single picture is as it always was. */
+static inline uint64_t rng_pass_stream(uint64_t stream, int pass)
+{
+    return pass ? stream ^ mix64(0x5851f42d4c957f2dULL * (uint64_t)pass) : stream;
+}
+
+/* Where pass `pass` samples each stratum, as a fraction of its width in
+ * x and y: the centre in pass 0, then the R2 sequence (Roberts) from it,
+ * which covers the square evenly for any number of passes. */
+static inline void render_pass_offset(int pass, double *jx, double *jy)
+{
+    *jx = fmod(0.5 + pass * 0.75487766624669276, 1.0);
+    *jy = fmod(0.5 + pass * 0.56984029099805327, 1.0);
+}
+
 /* Uniform in [0, 1): the top 53 bits. */
 static inline double rng_next(rng *g)
 {

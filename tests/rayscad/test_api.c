@@ -409,6 +409,75 @@ Test(api, section_cuts_the_path_tracer)
     cut_equals_removed(ro, "translate([-20, -20, 0]) cube([40, 40, 1], $rs_reflect = 0.5);");
 }
 
+/* Progressive passes converge to the exact pixel: a slab's edge runs down
+ * the middle of a pixel column, 0.7 of it covered.  One pass samples the
+ * pixel's centre and shows all or nothing; the mean of 64 passes shows
+ * 0.7 of the slab's colour over 0.3 of the background, as the area rule
+ * says, within 3/64 of the step (the R2 sequence's discrepancy). */
+Test(api, passes_converge_to_the_covered_fraction)
+{
+    rayscad_scene *scene = scene_of("translate([0.3, -15, -1]) cube([30, 30, 1]);", NULL);
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.width = ro.height = 20;
+    /* seen from above, orthographic, 1 unit a pixel, pixel edges on whole x */
+    rayscad_view v = {.kind = RAYSCAD_CAMERA_GIMBAL, .ortho = 1};
+    v.v[6] = 10 / tan(22.5 / 2 * 3.14159265358979323846 / 180);
+    rayscad_camera cam;
+    cr_assert_eq(rayscad_camera_frame(scene, &v, ro.width, ro.height, &cam, NULL, 0), RAYSCAD_OK);
+    size_t n = (size_t)ro.width * ro.height * 4;
+    float *px = malloc(n * sizeof *px);
+    double *mean = calloc(n, sizeof *mean);
+    const int passes = 64;
+    for (int k = 0; k < passes; k++) {
+        ro.pass = k;
+        cr_assert_eq(rayscad_render(scene, &cam, &ro, px, NULL, 0), RAYSCAD_OK);
+        for (size_t i = 0; i < n; i++)
+            mean[i] += px[i] / passes;
+    }
+    /* the row's middle: slab and background at either end, the edge between */
+    const double *row = mean + (size_t)10 * ro.width * 4;
+    int slab_left = fabs(row[4 * 19] - ro.colors.background[0]) < 1e-6;
+    double bg = row[4 * (slab_left ? 19 : 0)], fg = row[4 * (slab_left ? 0 : 19)];
+    cr_assert(fabs(bg - ro.colors.background[0]) < 1e-6, "one end shows the background");
+    cr_assert(fabs(fg - bg) > 0.1, "slab %g, background %g", fg, bg);
+    int edge = -1;
+    for (int x = 0; x < 20; x++)
+        if (fabs(row[4 * x] - fg) > 1e-6 && fabs(row[4 * x] - bg) > 1e-6) {
+            cr_expect_eq(edge, -1, "one column on the edge (%d and %d)", edge, x);
+            edge = x;
+        }
+    cr_assert_geq(edge, 0, "a column on the edge");
+    double covered = (row[4 * edge] - bg) / (fg - bg);
+    cr_expect(fabs(covered - 0.7) < 3.0 / passes, "the edge column shows %g of the slab", covered);
+    ro.pass = -1;
+    cr_expect_eq(rayscad_render(scene, &cam, &ro, px, NULL, 0), RAYSCAD_ERROR, "a negative pass");
+    free(px);
+    free(mean);
+    rayscad_scene_free(scene);
+}
+
+/* A light model's pass k draws its own random numbers: two passes of soft
+ * shadows differ, and the same pass twice does not. */
+Test(api, passes_draw_their_own_random_numbers)
+{
+    rayscad_render_options ro;
+    rayscad_render_options_default(&ro);
+    ro.lights[0] = (rayscad_light){.pos = {5, -8, 30}, .radius = 6, .intensity = 1};
+    ro.nlights = 1;
+    ro.light_samples = 1;
+    const char *src = "translate([-20, -20, 0]) cube([40, 40, 1]); translate([0, 0, 8]) cube(6);";
+    const double none[4] = {0};
+    float *a = render_cut(src, ro, none);
+    ro.pass = 1;
+    float *b = render_cut(src, ro, none), *c = render_cut(src, ro, none);
+    cr_expect_gt(pixels_apart(a, b), 50, "pass 1 samples the light elsewhere");
+    cr_expect_eq(pixels_apart(b, c), 0, "pass 1 is the same picture each time");
+    free(a);
+    free(b);
+    free(c);
+}
+
 static double measured_volume(const char *src, rayscad_facets facets, double h)
 {
     rayscad_eval_options o = {.facets = facets};

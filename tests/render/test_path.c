@@ -147,6 +147,52 @@ Test(path_converges, integrating_sphere_le_over_one_minus_rho)
     csg_scene_free(s);
 }
 
+/* The same sphere glowing brighter than white: Le/(1 − ρ) = 2.  Clamped,
+ * every pixel shows 1; unclamped, the mean over passes (rayscad's
+ * progressive refinement: pass k draws its own paths) of 4 paths each, in
+ * linear light, converges to 2 — within 1.5 % in the image's mean after
+ * 32 passes — and passes differ from one another. */
+Test(path_converges, unclamped_passes_average_to_the_light)
+{
+    const double rho = 0.5, i = 2, R = 20;
+    csg_material m = albedo(rho, rho, rho);
+    m.emit = (float)i;
+    m.light[3] = (float)R;
+    csg_node *shell = csg_node_op(CSG_OP_DIFFERENCE);
+    cr_assert_eq(csg_node_add(shell, sphere(R + 1, &m)), 0);
+    cr_assert_eq(csg_node_add(shell, sphere(R, &m)), 0);
+    csg_scene *s = scene_of(&shell, 1);
+    const render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {0, 0, 0, 10, 3, 2}};
+    render_options o = opts(8, 8, 4);
+    o.bounces = 64;
+    render_camera cam;
+    cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, o.width, o.height, &cam), 0);
+    const double want = i * rho / (1 - rho);
+    float *img = render(s, &cam, &o);
+    for (int p = 0; p < 4 * o.width * o.height; p++)
+        cr_assert(img[p] <= 1, "clamped: %g", img[p]);
+    free(img);
+    o.unclamped = 1;
+    const int passes = 32, n = o.width * o.height;
+    double mean = 0, first = -1;
+    int differ = 0;
+    for (int k = 0; k < passes; k++) {
+        o.pass = k;
+        img = render(s, &cam, &o);
+        double pm = 0;
+        for (int p = 0; p < n; p++)
+            for (int c = 0; c < 3; c++)
+                pm += srgb_to_linear(img[4 * p + c]) / (3.0 * n);
+        differ += first >= 0 && pm != first;
+        if (k == 0) first = pm;
+        mean += pm / passes;
+        free(img);
+    }
+    cr_expect(fabs(mean - want) <= 0.015 * want, "mean %.5f, expected %.5f", mean, want);
+    cr_expect_eq(differ, passes - 1, "every pass draws its own paths");
+    csg_scene_free(s);
+}
+
 /* A plane of albedo ρ = 0.5 (the top of a box, z = 0) under a point light
  * at height 30 with intensity i = 0.5: the light's radiant intensity is
  * I = π·i·d_c² (d_c = 30.5, from the light to the centre of the box), and

@@ -7,6 +7,9 @@
       more than T (default 24) in a channel, the N-pixel border (default 0)
       and all but the top R of the rows (default 1: all) left out.  Prints
       the fraction; exits 1 when over.
+  shot.py closer XWD COARSE FINE  the window's mean error per channel to the
+      finely sampled image FINE is under 0.8 of the coarse image's: the
+      viewer's passes refine past COARSE.
   shot.py differ XWD XWD  the two pictures differ in over 1 % of the pixels.
   shot.py red-frame XWD   the outermost pixels are the viewer's error red.
 
@@ -79,6 +82,16 @@ def main(argv):
         f = differing(a, b, w, h, int(opts["--border"]), opts["--tol"], opts["--top"])
         print("%.4f of the pixels differ" % f)
         return 0 if f <= opts["--max-frac"] else 1
+    if what == "closer":
+        # the window nearer to a finely sampled image than a coarse one is
+        w, h, a = read_xwd(args[1])
+        _, _, coarse = read_png(args[2])
+        _, _, fine = read_png(args[3])
+        def mean_error(x, y):
+            return sum(abs(p - q) for i in range(w * h) for p, q in zip(x[i], y[i])) / (3 * w * h)
+        ew, ec = mean_error(a, fine), mean_error(coarse, fine)
+        print("mean error to the fine image: window %.4f, coarse %.4f (of 255)" % (ew, ec))
+        return 0 if ew < 0.8 * ec else 1
     if what == "differ":
         w, h, a = read_xwd(args[1])
         _, _, b = read_xwd(args[2])
