@@ -166,7 +166,8 @@ def run(build):
               "reload: +%6s ms (eval %s ms)"
               % (x["scene"], fmt(x.get("moving_fps")), x.get("moving_size") or "-",
                  fmt(x.get("rest_full_render_ms")), fmt(x.get("rest_full_after_input_ms"), "%d"),
-                 fmt(x.get("reload_overhead_ms")), fmt(x.get("reload_eval_ms"))))
+                 fmt(x.get("reload_overhead_ms")), fmt(x.get("reload_eval_ms")))
+              + ("  (%s)" % x["error"] if x.get("error") else ""))
     return rows
 
 
