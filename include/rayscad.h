@@ -433,9 +433,9 @@ typedef struct rayscad_render_options {
      * sRGB curve continued), so that the mean of passes in linear light is
      * the light's; 0: clamped to 1, for an image to show or save. */
     int unclamped;
-    int path_trace;    /* > 0: path-trace with this many samples per pixel
-                          (interreflection, next-event estimation, Fresnel
-                          glass); samples is then unused */
+    int path_trace; /* > 0: path-trace with this many samples per pixel
+                       (interreflection, next-event estimation, Fresnel
+                       glass); samples is then unused */
 
     /* A section view: the model cut by the plane ax + by + cz = d given
      * as {a, b, c, d}, the side where ax + by + cz > d taken away; the cut
@@ -524,6 +524,12 @@ typedef struct rayscad_mesh_options {
      * to 16 times finer (a whole factor, within max_cells and about 2^20
      * crossings), so thin parts keep their shape.  1 by default. */
     int resolve_thin;
+    /* > 0: the contoured mesh is simplified (rayscad_sampling_mesh) for as
+     * long as its triangles stay within about this distance, model units,
+     * of the ones the contour drew: flat faces become a few large
+     * triangles, curved ones fewer, sharp edges and corners stay where
+     * they are.  <= 0: the contour as it is. */
+    double tolerance;
     /* May be NULL: told, on the calling thread, how far a phase has come
      * ("sampling": each grid's rays, again for a refined one; "contouring"),
      * done in [0, 1]. */

@@ -135,6 +135,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     rayscad_mesh_options mo;
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
+    mo.tolerance = o->mesh_tolerance;
     mo.threads = o->threads;
     mo.root = RAYSCAD_ROOT_MODEL;
     mo.max_cells = o->max_mesh_cells;

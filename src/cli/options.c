@@ -88,6 +88,10 @@ const char cli_usage_light[] =
     "                          part's longest side / 128, finer for thin walls)\n"
     "  --ascii                 text STL or PLY (STL is text by default, as\n"
     "                          openscad's; PLY binary; OFF, OBJ are text)\n"
+    "  --mesh-tolerance D      simplify the mesh by edge collapses while each kept\n"
+    "                          vertex's mean squared distance from the triangles it\n"
+    "                          stands for is under D²: flat faces become a few\n"
+    "                          triangles, sharp edges and corners stay\n"
     "  --decimate TOL          simplify the mesh within TOL model units (OpenMesh's\n"
     "                          quadric decimater)\n"
     "  --measure               print volume, surface area, bounding box and centre\n"
@@ -298,6 +302,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                                          "--facets",
                                          "--mesh-size",
                                          "--decimate",
+                                         "--mesh-tolerance",
                                          "--max-recursion",
                                          "--max-steps",
                                          "--max-list",
@@ -434,6 +439,11 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         } else if (strcmp(flag, "--mesh-size") == 0) {
             if (cli_parse_double(val, &o->mesh_size) != 0 || !(o->mesh_size > 0)) {
                 snprintf(err, errlen, "--mesh-size expects a grid spacing > 0, got '%s'", val);
+                return -1;
+            }
+        } else if (strcmp(flag, "--mesh-tolerance") == 0) {
+            if (cli_parse_double(val, &o->mesh_tolerance) != 0 || !(o->mesh_tolerance > 0)) {
+                snprintf(err, errlen, "--mesh-tolerance expects a distance > 0, got '%s'", val);
                 return -1;
             }
         } else if (strcmp(flag, "--decimate") == 0) {

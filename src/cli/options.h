@@ -67,11 +67,12 @@ typedef struct cli_options {
      * 0, and an image's options start from these. */
     rayscad_render_options optics;
     /* Meshes and measurement (mesh_output.h). */
-    double mesh_size; /* --mesh-size: grid spacing > 0; 0 = derived from the model */
-    double decimate;  /* --decimate TOL >= 0; < 0 when not asked for */
-    int ascii;        /* --ascii: text STL / PLY */
-    int measure;      /* --measure (also set by --json) */
-    int json;         /* --json: the measurement as JSON */
+    double mesh_size;      /* --mesh-size: grid spacing > 0; 0 = derived from the model */
+    double decimate;       /* --decimate TOL >= 0; < 0 when not asked for */
+    double mesh_tolerance; /* --mesh-tolerance D > 0; 0: not asked for */
+    int ascii;             /* --ascii: text STL / PLY */
+    int measure;           /* --measure (also set by --json) */
+    int json;              /* --json: the measurement as JSON */
     /* No -o and no --measure: the viewer (viewer.h), its window
      * --imgsize (800x600 when not given); --stats: a line per frame. */
     int viewer, imgsize_given, stats;

@@ -199,6 +199,18 @@ check "--decimate makes a smaller mesh" test "$(stat -c %s dec.stl)" -lt "$(stat
 check "decimated mesh stays closed, close to the sphere" quiet "$meshcmp" dec.stl ball.stl --h 0.1 \
     --vol-tol 0.01
 
+# --mesh-tolerance: a box is its 12 triangles, as openscad writes it.
+run box.scad -o tol.stl --mesh-tolerance 0.01
+openscad -o tol_ref.stl box.scad >/dev/null 2>&1
+check "--mesh-tolerance: a box is as many triangles as openscad's" \
+    test "$(grep -c 'facet normal' tol.stl)" -eq "$(grep -c 'facet normal' tol_ref.stl)"
+check "--mesh-tolerance: the box's volume, closed" quiet "$meshcmp" tol.stl tol_ref.stl --h 0.01 \
+    --vol-tol 1e-6
+for bad in 0 -1 nan abc; do
+    run box.scad -o x.stl --mesh-tolerance "$bad"
+    check "--mesh-tolerance $bad is a usage error" test "$rc" -eq 2
+done
+
 for bad in 0 -1 nan inf abc; do
     run box.scad -o x.stl --mesh-size "$bad"
     check "--mesh-size $bad is a usage error" test "$rc" -eq 2
