@@ -1144,3 +1144,45 @@ Test(mesh_simplify, random_scenes_stay_manifold)
     }
     cr_assert_gt(meshed, 2);
 }
+
+/* Two boxes of two colours side by side: their top, bottom, front and back
+ * faces are one plane each, and the colours' border across them stays
+ * where the contour drew it — within a cell of x = 10, as jagged as the
+ * contour's (whose triangles take one crossing's colour each) — while the
+ * rest collapses. */
+Test(mesh_simplify, colour_borders_keep_their_course)
+{
+    csg_material red = {.has_color = 1, .rgba = {1, 0, 0, 1}},
+                 blue = {.has_color = 1, .rgba = {0, 0, 1, 1}};
+    iv_shape a = {.kind = IV_SHAPE_BOX}, b = {.kind = IV_SHAPE_BOX};
+    for (int k = 0; k < 3; k++) {
+        a.u.box.hi[k] = b.u.box.hi[k] = 10;
+        a.u.box.lo[k] = b.u.box.lo[k] = 0;
+    }
+    b.u.box.lo[0] = 10;
+    b.u.box.hi[0] = 20.5;
+    csg_node *u = csg_node_op(CSG_OP_UNION);
+    cr_assert_eq(csg_node_add(u, csg_node_shape(&a, csg_affine_identity, &red)), 0);
+    cr_assert_eq(csg_node_add(u, csg_node_shape(&b, csg_affine_identity, &blue)), 0);
+    csg_scene *s = scene_of(u);
+    mesh_measure mm;
+    mesh *m = simplified(s, 0.3, 1e-3, &mm);
+    cr_assert_null(check_manifold(m));
+    cr_assert_eq(mesh_color_count(m), 2);
+    const float *v = mesh_vertices(m), *pal = mesh_colors(m);
+    const int32_t *t = mesh_triangles(m);
+    const uint16_t *tc = mesh_triangle_colors(m);
+    int wrong = 0;
+    for (int q = 0; q < mesh_triangle_count(m); q++) {
+        double x = (v[3 * t[3 * q]] + v[3 * t[3 * q + 1]] + v[3 * t[3 * q + 2]]) / 3;
+        int is_red = tc[q] > 0 && pal[4 * (tc[q] - 1)] > 0.5f;
+        wrong += is_red != (x < 10) && fabs(x - 10) > 0.3;
+    }
+    cr_log_info("two colours: %d triangles", mesh_triangle_count(m));
+    cr_expect_eq(wrong, 0, "%d of %d triangles a cell past the colours' border", wrong,
+                 mesh_triangle_count(m));
+    cr_expect_lt(mesh_triangle_count(m), 1000);
+    cr_expect_lt(fabs(volume_of(m) - 2050), 1e-3, "volume %.6f", volume_of(m));
+    mesh_free(m);
+    csg_scene_free(s);
+}
