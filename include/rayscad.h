@@ -524,11 +524,14 @@ typedef struct rayscad_mesh_options {
      * to 16 times finer (a whole factor, within max_cells and about 2^20
      * crossings), so thin parts keep their shape.  1 by default. */
     int resolve_thin;
-    /* > 0: the contoured mesh is simplified (rayscad_sampling_mesh) for as
-     * long as its triangles stay within about this distance, model units,
-     * of the ones the contour drew: flat faces become a few large
-     * triangles, curved ones fewer, sharp edges and corners stay where
-     * they are.  <= 0: the contour as it is. */
+    /* > 0: the contoured mesh is simplified (rayscad_sampling_mesh) by
+     * edge collapses for as long as every vertex and edge midpoint of the
+     * contour stays within this distance, model units, of the triangles
+     * that replace it: flat faces become a few large triangles spanning
+     * their corners, curved ones as few as the distance allows, sharp
+     * edges and corners stay where they are (measured: the mesh within
+     * about 1.2 times the distance of the exact surface).  <= 0: the
+     * contour as it is. */
     double tolerance;
     /* May be NULL: told, on the calling thread, how far a phase has come
      * ("sampling": each grid's rays, again for a refined one; "contouring"),

@@ -128,11 +128,10 @@ typedef struct mesh mesh;
 int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
                         size_t errlen);
 
-/* Simplify m in place by edge collapses (simplify.c) while the area-weighted
- * mean squared distance of each kept vertex from the planes of the
- * triangles it stands for stays within tol²: still closed, 2-manifold and
- * outward, every vertex one of m's own.  Returns 0, or -1 with a message
- * (out of memory; m is then unchanged). */
+/* Simplify m in place by edge collapses (simplify.c) while every vertex and
+ * edge midpoint of m stays within tol of the triangles that replace it:
+ * still closed, 2-manifold and outward, every vertex one of m's own.
+ * Returns 0, or -1 with a message (out of memory; m is then unchanged). */
 int mesh_simplify(mesh *m, double tol, char *err, size_t errlen);
 
 /* mesh_dexels_new + mesh_dexels_contour (+ measure when m is not NULL);

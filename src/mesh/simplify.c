@@ -2,33 +2,45 @@
  * simplify.c — a contoured mesh simplified to a tolerance (see mesh.h,
  * mesh_simplify).
  *
- * Method: half-edge collapses in order of a quadric error (Garland &
- * Heckbert 1997).  Each vertex starts with the planes of its triangles,
- * weighted by their area; a collapse of v into its neighbour u keeps u where
- * it is and gives it both quadrics, and its cost is the merged quadric at u
- * over the merged weight: the area-weighted mean squared distance of u from
- * the planes of every triangle the two stand for.  Kept vertices never
- * move, so every vertex of the result is one the contour placed (most of
- * them exact ray crossings on the surface, the rest its sharp-feature
- * points), and a plane's vertices leave it only when a neighbour off it
- * takes them: on a flat face every collapse costs nothing, along a sharp
- * edge only those along the edge, and a corner is never taken.  Edges
- * between two colours add a plane through the edge across the surface, so
- * a colour's border keeps its course.
+ * Method: half-edge collapses in the order of a quadric error (Garland &
+ * Heckbert 1997), each checked against the points it takes away.
  *
- * A collapse is refused when it would
- *   - cost more than tol² (costs only grow: refused for good);
+ * Order.  Each vertex starts with the planes of its triangles, weighted by
+ * their area; a collapse of v into its neighbour u keeps u where it is and
+ * gives it both quadrics, and costs the merged quadric at u over the merged
+ * weight (the mean squared distance of u from the planes of every triangle
+ * the two stand for).  On a flat face every collapse costs nothing; there
+ * the shorter edge goes first, so the face shrinks evenly instead of into
+ * one vertex of ever more triangles.
+ *
+ * The bound.  Kept vertices never move, so every vertex of the result is
+ * one the contour placed: most are exact ray crossings on the surface, the
+ * rest its sharp-feature points, within EPS·h of the features (contour.c).
+ * The contour's surface is kept as points: its vertices and the midpoints
+ * of its edges (on a curved sharp edge, a hole's rim, the vertices alone
+ * are too sparse), each on the triangle nearest to it.  A collapse is made
+ * only when v and every point on the triangles around v lie within tol of
+ * the triangles around u that replace them (the exact distance to a
+ * triangle), and the points move to those.  The points sample the surface
+ * at half the grid's spacing, so the result stays within about tol of the
+ * contour's surface, and of the exact one (measured: 1.2 tol).
+ *
+ * A collapse is refused, besides, when it would
+ *   - cost more than tol² (a mean beyond the bound; costs only grow);
  *   - break the surface's manifoldness: the two ends must share exactly
- *     the two neighbours opposite the edge (the link condition), and
- *     those must keep three neighbours each;
+ *     the two neighbours opposite the edge (the link condition), and those
+ *     must keep three neighbours each;
  *   - turn a triangle by more than 60°, or leave one of zero area;
- *   - make a triangle more needle-like than both the worst it replaces
- *     and MIN_QUALITY, unless it costs nothing (the triangles stay on one
- *     plane, where later collapses take the needles away again).
- * Refused collapses are looked at again only when one end changes.
+ *   - make a triangle more needle-like than both MIN_QUALITY and the worst
+ *     it replaces, unless it costs nothing (a plane, where later collapses
+ *     take the needles away again).
+ * Edges between two colours add a plane through the edge across the
+ * surface to both ends' quadrics, so a colour's border keeps its course.
+ * A refused collapse is looked at again when one of its ends changes.
  */
-#include "dexels.h"
+#include "../geom/closest.h"
 #include "../intervals/vec3.h"
+#include "dexels.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -38,6 +50,7 @@
 /* 4√3·area / Σ edge²: 1 for an equilateral triangle, 0 for a needle. */
 #define MIN_QUALITY 0.05
 #define COS_TURN 0.5 /* cos 60° */
+#define FAN_MAX 64   /* the most triangles a collapse may leave around a vertex */
 
 typedef struct quad {
     double a[10]; /* xx xy xz xw yy yz yw zz zw ww of Σ w·(n·x + d)² */
@@ -61,23 +74,28 @@ static double quad_at(const quad *q, const double p[3])
 }
 
 typedef struct entry {
-    double cost;
+    double key;
     int32_t v, u; /* collapse v into u */
     uint32_t sv, su;
 } entry;
 
 typedef struct simp {
     int nv, nt;
-    double *p; /* 3 per vertex */
+    double *p; /* 3 per vertex: where the contour put it */
     quad *q;
     double *w;     /* the weight (area) of each vertex's quadric */
     int32_t *t;    /* 3 per triangle; t[3i] < 0: gone */
-    int32_t *next; /* corner 3i+k's next corner of the same vertex */
-    int32_t *head; /* a vertex's first corner; -1: none (gone) */
+    int32_t *next; /* corner 3i+k's neighbours in its vertex's list */
+    int32_t *prev;
+    int32_t *head; /* a vertex's first corner; -1: taken away */
+    int32_t *val;  /* triangles around a vertex */
     uint32_t *stamp;
     uint32_t *mark; /* link-condition marks */
     uint32_t mark_now;
-    double tol2;
+    /* the points taken away: a list per triangle, through pnext */
+    int32_t *phead, *ptail, *pnext;
+    int32_t *best; /* scratch: a point's nearest new triangle */
+    double tol2, len_scale;
     entry *heap;
     size_t nheap, capheap;
 } simp;
@@ -94,7 +112,7 @@ static int heap_push(simp *s, entry e)
     size_t i = s->nheap++;
     while (i > 0) {
         size_t up = (i - 1) / 2;
-        if (s->heap[up].cost <= e.cost) break;
+        if (s->heap[up].key <= e.key) break;
         s->heap[i] = s->heap[up];
         i = up;
     }
@@ -109,8 +127,8 @@ static entry heap_pop(simp *s)
     for (;;) {
         size_t c = 2 * i + 1;
         if (c >= n) break;
-        if (c + 1 < n && s->heap[c + 1].cost < s->heap[c].cost) c++;
-        if (last.cost <= s->heap[c].cost) break;
+        if (c + 1 < n && s->heap[c + 1].key < s->heap[c].key) c++;
+        if (last.key <= s->heap[c].key) break;
         s->heap[i] = s->heap[c];
         i = c;
     }
@@ -135,13 +153,18 @@ static double cost(const simp *s, int32_t v, int32_t u)
     return e <= s->tol2 ? e : INFINITY;
 }
 
-/* Push the cheaper direction of edge a–b, if either is within tolerance. */
+/* Push the cheaper direction of edge a–b, if either is within tolerance;
+ * ties (a plane) go to the shorter edge. */
 static int push_edge(simp *s, int32_t a, int32_t b)
 {
     double ab = cost(s, a, b), ba = cost(s, b, a);
     if (ab == INFINITY && ba == INFINITY) return 0;
-    entry e = ab <= ba ? (entry){ab, a, b, s->stamp[a], s->stamp[b]}
-                       : (entry){ba, b, a, s->stamp[b], s->stamp[a]};
+    double l2 = 0;
+    for (int k = 0; k < 3; k++)
+        l2 += (P(s, a)[k] - P(s, b)[k]) * (P(s, a)[k] - P(s, b)[k]);
+    double tie = 1e-9 * s->tol2 * l2 * s->len_scale;
+    entry e = ab <= ba ? (entry){ab + tie, a, b, s->stamp[a], s->stamp[b]}
+                       : (entry){ba + tie, b, a, s->stamp[b], s->stamp[a]};
     return heap_push(s, e);
 }
 
@@ -165,105 +188,149 @@ static double quality(const double a[3], const double b[3], const double c[3])
     return l > 0 ? 2 * sqrt(3.0) * sqrt(dot3(n, n)) / l : 0;
 }
 
-/* Mark the neighbours of v (the other corners of its triangles). */
-static void mark_ring(simp *s, int32_t v)
+/* Whether point x (a vertex, where the contour put it) lies within the
+ * tolerance of one of the n triangles nt (moved[i] their indices); that
+ * one, the nearest, into s->best[x]. */
+static int near_enough(simp *s, int32_t x, double nt[][3][3], const int32_t *moved, int n)
 {
-    for (int32_t c = s->head[v]; c >= 0; c = s->next[c]) {
-        int32_t t = c / 3;
-        for (int k = 0; k < 3; k++)
-            s->mark[s->t[3 * t + k]] = s->mark_now;
+    double best = INFINITY;
+    for (int m = 0; m < n; m++) {
+        double d2 = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]);
+        if (d2 < best) {
+            best = d2;
+            s->best[x] = moved[m];
+        }
     }
+    return best <= s->tol2;
 }
 
-static int valence(const simp *s, int32_t v)
+/* Whether collapsing v into u (costing c) keeps the mesh manifold, its
+ * triangles sound and every point it moves within the tolerance; fills
+ * s->best for those points. */
+static int can_collapse(simp *s, int32_t v, int32_t u, double c)
 {
-    int n = 0;
-    for (int32_t c = s->head[v]; c >= 0; c = s->next[c])
-        n++;
-    return n; /* a closed manifold: as many neighbours as triangles */
-}
-
-/* Whether collapsing v into u keeps the mesh manifold and its triangles
- * sound. */
-static int can_collapse(simp *s, int32_t v, int32_t u, double cost)
-{
+    if (s->val[v] + s->val[u] - 4 > FAN_MAX) return 0;
     /* the link condition: v and u share exactly the two opposite vertices */
     s->mark_now++;
-    mark_ring(s, u);
+    for (int32_t k = s->head[u]; k >= 0; k = s->next[k])
+        for (int i = 0; i < 3; i++)
+            s->mark[s->t[3 * (k / 3) + i]] = s->mark_now;
     int shared = 0, edge = 0;
     int32_t opp[2] = {-1, -1};
-    for (int32_t c = s->head[v]; c >= 0; c = s->next[c]) {
-        int32_t t = c / 3, k = c % 3;
-        int32_t b = s->t[3 * t + (k + 1) % 3], d = s->t[3 * t + (k + 2) % 3];
+    int32_t moved[FAN_MAX], nmoved = 0; /* triangles around v that stay */
+    for (int32_t k = s->head[v]; k >= 0; k = s->next[k]) {
+        int32_t t = k / 3, i = k % 3;
+        int32_t b = s->t[3 * t + (i + 1) % 3], d = s->t[3 * t + (i + 2) % 3];
         if (b == u || d == u) {
             if (edge < 2) opp[edge] = b == u ? d : b;
             edge++;
+        } else {
+            moved[nmoved++] = t;
         }
-        /* each neighbour appears as the next corner of exactly one triangle */
+        /* each neighbour is the next corner of exactly one triangle */
         if (b != u && s->mark[b] == s->mark_now) shared++;
     }
     if (edge != 2 || shared != 2) return 0;
-    if (valence(s, opp[0]) <= 3 || valence(s, opp[1]) <= 3) return 0;
-    if (valence(s, v) + valence(s, u) - 4 < 3) return 0;
+    if (s->val[opp[0]] <= 3 || s->val[opp[1]] <= 3) return 0;
+    if (s->val[v] + s->val[u] - 4 < 3) return 0;
 
     /* the triangles that move */
-    double worst_old = 1, worst_new = 1;
+    double worst_old = 1, worst_new = 1, nt[FAN_MAX][3][3];
     const double *pu = P(s, u);
-    for (int32_t c = s->head[v]; c >= 0; c = s->next[c]) {
-        int32_t t = c / 3, k = c % 3;
-        int32_t b = s->t[3 * t + (k + 1) % 3], d = s->t[3 * t + (k + 2) % 3];
-        if (b == u || d == u) continue;
+    for (int m = 0; m < nmoved; m++) {
+        const int32_t *tv = s->t + 3 * moved[m];
+        const double *a[3], *an[3];
+        for (int i = 0; i < 3; i++) {
+            a[i] = P(s, tv[i]);
+            an[i] = tv[i] == v ? pu : a[i];
+            memcpy(nt[m][i], an[i], sizeof nt[m][i]);
+        }
         double n0[3], n1[3];
-        normal_of(P(s, v), P(s, b), P(s, d), n0);
-        normal_of(pu, P(s, b), P(s, d), n1);
+        normal_of(a[0], a[1], a[2], n0);
+        normal_of(an[0], an[1], an[2], n1);
         double l0 = sqrt(dot3(n0, n0)), l1 = sqrt(dot3(n1, n1));
         if (!(l1 > 0) || dot3(n0, n1) < COS_TURN * l0 * l1) return 0;
-        double q0 = quality(P(s, v), P(s, b), P(s, d)), q1 = quality(pu, P(s, b), P(s, d));
+        double q0 = quality(a[0], a[1], a[2]), q1 = quality(an[0], an[1], an[2]);
         if (q0 < worst_old) worst_old = q0;
         if (q1 < worst_new) worst_new = q1;
     }
-    /* on a plane (a collapse of no cost) needles may pass: later collapses
-     * on it take them away */
-    return cost <= 1e-6 * s->tol2 || !(worst_new < MIN_QUALITY && worst_new < worst_old);
+    if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
+
+    /* v and the points on v's triangles, against the triangles that stay */
+    if (!near_enough(s, v, nt, moved, nmoved)) return 0;
+    for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
+        for (int32_t x = s->phead[k / 3]; x >= 0; x = s->pnext[x])
+            if (!near_enough(s, x, nt, moved, nmoved)) return 0;
+    return 1;
 }
 
-/* Unlink corner c from vertex v's list. */
-static void unlink_corner(simp *s, int32_t v, int32_t c)
+static void unlink_corner(simp *s, int32_t v, int32_t k)
 {
-    int32_t *at = &s->head[v];
-    while (*at >= 0 && *at != c)
-        at = &s->next[*at];
-    if (*at == c) *at = s->next[c];
+    if (s->prev[k] >= 0)
+        s->next[s->prev[k]] = s->next[k];
+    else
+        s->head[v] = s->next[k];
+    if (s->next[k] >= 0) s->prev[s->next[k]] = s->prev[k];
+    s->val[v]--;
+}
+
+static void link_corner(simp *s, int32_t v, int32_t k)
+{
+    s->prev[k] = -1;
+    s->next[k] = s->head[v];
+    if (s->head[v] >= 0) s->prev[s->head[v]] = k;
+    s->head[v] = k;
+    s->val[v]++;
+}
+
+/* Append point x to triangle t's list. */
+static void attach(simp *s, int32_t t, int32_t x)
+{
+    s->pnext[x] = -1;
+    if (s->ptail[t] >= 0)
+        s->pnext[s->ptail[t]] = x;
+    else
+        s->phead[t] = x;
+    s->ptail[t] = x;
 }
 
 static int collapse(simp *s, int32_t v, int32_t u)
 {
-    int32_t c = s->head[v];
-    while (c >= 0) {
-        int32_t nc = s->next[c], t = c / 3;
+    /* the points first, to the triangles can_collapse found for them */
+    for (int32_t k = s->head[v]; k >= 0; k = s->next[k]) {
+        int32_t t = k / 3, x = s->phead[t];
+        s->phead[t] = s->ptail[t] = -1;
+        while (x >= 0) {
+            int32_t nx = s->pnext[x];
+            attach(s, s->best[x], x);
+            x = nx;
+        }
+    }
+    int32_t k = s->head[v];
+    while (k >= 0) {
+        int32_t nk = s->next[k], t = k / 3;
         int32_t *tv = s->t + 3 * t;
         if (tv[0] == u || tv[1] == u || tv[2] == u) { /* the edge's triangle: gone */
-            for (int k = 0; k < 3; k++)
-                if (tv[k] != v) unlink_corner(s, tv[k], 3 * t + k);
+            for (int i = 0; i < 3; i++)
+                if (tv[i] != v) unlink_corner(s, tv[i], 3 * t + i);
             tv[0] = tv[1] = tv[2] = -1;
         } else {
-            tv[c % 3] = u;
-            s->next[c] = s->head[u];
-            s->head[u] = c;
+            tv[k % 3] = u;
+            link_corner(s, u, k);
         }
-        c = nc;
+        k = nk;
     }
+    attach(s, s->best[v], v);
     s->head[v] = -1;
-    for (int k = 0; k < 10; k++)
-        s->q[u].a[k] += s->q[v].a[k];
+    s->val[v] = 0;
+    for (int i = 0; i < 10; i++)
+        s->q[u].a[i] += s->q[v].a[i];
     s->w[u] += s->w[v];
     s->stamp[u]++;
     s->stamp[v]++;
     /* u's edges, at their new costs */
-    for (c = s->head[u]; c >= 0; c = s->next[c]) {
-        int32_t t = c / 3, k = c % 3;
-        if (push_edge(s, u, s->t[3 * t + (k + 1) % 3]) != 0) return -1;
-    }
+    for (k = s->head[u]; k >= 0; k = s->next[k])
+        if (push_edge(s, u, s->t[3 * (k / 3) + (k % 3 + 1) % 3]) != 0) return -1;
     return 0;
 }
 
@@ -274,10 +341,35 @@ static void simp_free(simp *s)
     free(s->w);
     free(s->t);
     free(s->next);
+    free(s->prev);
     free(s->head);
+    free(s->val);
     free(s->stamp);
     free(s->mark);
+    free(s->phead);
+    free(s->ptail);
+    free(s->pnext);
+    free(s->best);
     free(s->heap);
+}
+
+/* A colour's border along edge a–b of triangle t (unit normal n): a plane
+ * through the edge, across the surface, in both ends' quadrics. */
+static void border_plane(simp *s, int32_t a, int32_t b, const double n[3])
+{
+    double e[3], x[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = P(s, b)[i] - P(s, a)[i];
+    cross3(e, n, x);
+    double l = sqrt(dot3(x, x));
+    if (!(l > 0)) return;
+    for (int i = 0; i < 3; i++)
+        x[i] /= l;
+    double w = dot3(e, e); /* each side adds one: the edge counts twice */
+    quad_plane(&s->q[a], x, -dot3(x, P(s, a)), w);
+    quad_plane(&s->q[b], x, -dot3(x, P(s, a)), w);
+    s->w[a] += w;
+    s->w[b] += w;
 }
 
 static int simp_init(simp *s, const mesh *m, double tol)
@@ -287,30 +379,51 @@ static int simp_init(simp *s, const mesh *m, double tol)
     s->nt = m->nt;
     s->tol2 = tol * tol;
     size_t nv = (size_t)m->nv, nt = (size_t)m->nt;
-    s->p = malloc(3 * nv * sizeof *s->p);
+    size_t np = nv + 3 * nt / 2; /* the vertices, then a point per edge */
+    s->p = malloc(3 * np * sizeof *s->p);
     s->q = calloc(nv, sizeof *s->q);
     s->w = calloc(nv, sizeof *s->w);
     s->t = malloc(3 * nt * sizeof *s->t);
     s->next = malloc(3 * nt * sizeof *s->next);
+    s->prev = malloc(3 * nt * sizeof *s->prev);
     s->head = malloc(nv * sizeof *s->head);
+    s->val = calloc(nv, sizeof *s->val);
     s->stamp = calloc(nv, sizeof *s->stamp);
     s->mark = calloc(nv, sizeof *s->mark);
-    if (!s->p || !s->q || !s->w || !s->t || !s->next || !s->head || !s->stamp || !s->mark)
+    s->phead = malloc(nt * sizeof *s->phead);
+    s->ptail = malloc(nt * sizeof *s->ptail);
+    s->pnext = malloc(np * sizeof *s->pnext);
+    s->best = malloc(np * sizeof *s->best);
+    if (!s->p || !s->q || !s->w || !s->t || !s->next || !s->prev || !s->head || !s->val ||
+        !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best)
         return -1;
     for (size_t i = 0; i < 3 * nv; i++)
         s->p[i] = m->v[i];
     memcpy(s->t, m->t, 3 * nt * sizeof *s->t);
     for (size_t i = 0; i < nv; i++)
         s->head[i] = -1;
-    for (size_t c = 3 * nt; c-- > 0;) {
-        s->next[c] = s->head[s->t[c]];
-        s->head[s->t[c]] = (int32_t)c;
-    }
+    for (size_t i = 0; i < nt; i++)
+        s->phead[i] = s->ptail[i] = -1;
+    for (size_t k = 3 * nt; k-- > 0;)
+        link_corner(s, s->t[k], (int32_t)k);
+    /* every edge's midpoint is a point to keep within the bound too: on a
+     * curved sharp edge (a hole's rim) the vertices alone are too few */
+    size_t x = nv;
+    for (size_t t = 0; t < nt; t++)
+        for (int k = 0; k < 3; k++) {
+            int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
+            if (a > b || x >= np) continue;
+            for (int i = 0; i < 3; i++)
+                s->p[3 * x + i] = (P(s, a)[i] + P(s, b)[i]) / 2;
+            attach(s, (int32_t)t, (int32_t)x++);
+        }
+    double total = 0;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *tv = s->t + 3 * t;
         double n[3];
         normal_of(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), n);
         double a2 = sqrt(dot3(n, n));
+        total += a2 / 2;
         if (!(a2 > 0)) continue;
         for (int k = 0; k < 3; k++)
             n[k] /= a2;
@@ -320,30 +433,15 @@ static int simp_init(simp *s, const mesh *m, double tol)
             s->w[tv[k]] += a2 / 2;
         }
         if (!m->npal) continue;
-        /* a colour's border: a plane through the edge, across the surface */
         for (int k = 0; k < 3; k++) {
-            int32_t a = tv[k], b = tv[(k + 1) % 3];
-            int32_t other = -1;
-            for (int32_t c = s->head[b]; c >= 0 && other < 0; c = s->next[c]) {
-                int32_t t2 = c / 3;
-                if ((size_t)t2 != t && s->t[3 * t2 + (c % 3 + 1) % 3] == a) other = t2;
-            }
-            if (other < 0 || m->tc[other] == m->tc[t]) continue;
-            double e[3], x[3];
-            for (int i = 0; i < 3; i++)
-                e[i] = P(s, b)[i] - P(s, a)[i];
-            cross3(e, n, x);
-            double l = sqrt(dot3(x, x));
-            if (!(l > 0)) continue;
-            for (int i = 0; i < 3; i++)
-                x[i] /= l;
-            double w = dot3(e, e); /* each side adds one: the edge counts twice */
-            quad_plane(&s->q[a], x, -dot3(x, P(s, a)), w);
-            quad_plane(&s->q[b], x, -dot3(x, P(s, a)), w);
-            s->w[a] += w;
-            s->w[b] += w;
+            int32_t a = tv[k], b = tv[(k + 1) % 3], other = -1;
+            for (int32_t c = s->head[b]; c >= 0 && other < 0; c = s->next[c])
+                if ((size_t)(c / 3) != t && s->t[c - c % 3 + (c % 3 + 1) % 3] == a) other = c / 3;
+            if (other >= 0 && m->tc[other] != m->tc[t]) border_plane(s, a, b, n);
         }
     }
+    /* the tie-break's scale: 1 / (the mean triangle's area) */
+    s->len_scale = total > 0 ? (double)nt / total : 1;
     for (size_t t = 0; t < nt; t++)
         for (int k = 0; k < 3; k++) {
             int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
@@ -361,17 +459,17 @@ int mesh_simplify(mesh *m, double tol, char *err, size_t errlen)
         entry e = heap_pop(&s);
         if (s.head[e.v] < 0 || s.head[e.u] < 0 || s.stamp[e.v] != e.sv || s.stamp[e.u] != e.su)
             continue;
-        if (!can_collapse(&s, e.v, e.u, e.cost)) continue;
+        double c = cost(&s, e.v, e.u);
+        if (!can_collapse(&s, e.v, e.u, c)) continue;
         if (collapse(&s, e.v, e.u) != 0) goto oom;
     }
     /* compact: the vertices still used, renumbered in order */
-    int32_t *map = s.head; /* reused: -1 gone, else the new index */
+    int32_t *map = s.val; /* reused: the new index of each kept vertex */
     int nv = 0;
     for (int v = 0; v < s.nv; v++)
         if (s.head[v] >= 0) {
-            m->v[3 * nv] = (float)s.p[3 * v];
-            m->v[3 * nv + 1] = (float)s.p[3 * v + 1];
-            m->v[3 * nv + 2] = (float)s.p[3 * v + 2];
+            for (int k = 0; k < 3; k++)
+                m->v[3 * nv + k] = (float)s.p[3 * v + k];
             map[v] = nv++;
         }
     int nt = 0;

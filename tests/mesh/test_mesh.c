@@ -1090,10 +1090,10 @@ Test(mesh_simplify, plate_with_a_hole_is_its_corners)
 }
 
 /* A sphere: far fewer triangles, still closed, the vertices the contour's
- * own.  The tolerance bounds a mean, not the largest distance: measured,
- * the triangles' insides come within 2.4 tolerances of the sphere and the
- * volume within 0.5 % (the bounds below), where issue 22 asks for one
- * tolerance. */
+ * own, and the triangles' insides within about the tolerance of the sphere:
+ * the bound holds the contour's vertices, which sample the sphere every h,
+ * and between them a triangle may stray a little further (measured: 1.1
+ * tolerances). */
 Test(mesh_simplify, sphere_fewer_triangles_close_to_it)
 {
     double c[4] = {0.3, -0.2, 0.1, 5};
@@ -1108,24 +1108,26 @@ Test(mesh_simplify, sphere_fewer_triangles_close_to_it)
     cr_assert_null(check_manifold(m));
     cr_expect_lt(mesh_triangle_count(m), mesh_triangle_count(full) / 8);
     cr_expect_lt(vd, max_dist(full, sd_sphere_ctx, c) + 1e-9, "kept vertices are the contour's");
-    cr_expect_lt(td, 3 * tol);
-    cr_expect_lt(fabs(volume_of(m) - v), 6e-3 * v, "volume %.6f", volume_of(m));
+    cr_expect_lt(td, 1.15 * tol);
+    cr_expect_lt(fabs(volume_of(m) - v), 3 * tol / 5 * v, "volume %.6f", volume_of(m));
     mesh_free(full);
     mesh_free(m);
     csg_scene_free(s);
 }
 
-/* Random CSG stays closed and 2-manifold through simplification. */
+/* Random CSG stays closed and 2-manifold through simplification, and
+ * keeps its volume within 1 %. */
 Test(mesh_simplify, random_scenes_stay_manifold)
 {
     rng = 20261203;
     int meshed = 0;
-    for (int trial = 0; trial < 6; trial++) {
+    for (int trial = 0; trial < 30; trial++) {
         csg_scene *s = scene_of(random_tree(3));
         mesh_options o;
         mesh_options_default(&o);
-        o.cells_per_side = 12 + (int)urand(0, 20);
+        o.cells_per_side = 12 + (int)urand(0, 40);
         o.threads = 2;
+        o.resolve_thin = 0; /* its finer grids make meshes of 10^6 triangles */
         mesh *m = NULL;
         mesh_measure mm;
         char err[256] = "";
@@ -1142,7 +1144,7 @@ Test(mesh_simplify, random_scenes_stay_manifold)
         mesh_free(m);
         csg_scene_free(s);
     }
-    cr_assert_gt(meshed, 2);
+    cr_assert_gt(meshed, 15);
 }
 
 /* Two boxes of two colours side by side: their top, bottom, front and back

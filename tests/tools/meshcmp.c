@@ -26,6 +26,7 @@
  * Prints one table row and exits 0 when every check passes, 1 when one
  * fails, 2 on bad input.
  */
+#include "../../src/geom/closest.h"
 #include "../../src/io/io.h"
 
 #include <math.h>
@@ -218,71 +219,6 @@ static void grid_free(grid *g)
     free(g->box);
 }
 
-static double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/* Squared distance from p to triangle abc (Ericson, Real-Time Collision
- * Detection 5.1.5: closest point by Voronoi regions). */
-static double tri_dist2(const double p[3], const double a[3], const double b[3], const double c[3])
-{
-    double ab[3], ac[3], ap[3], q[3];
-    for (int k = 0; k < 3; k++) {
-        ab[k] = b[k] - a[k];
-        ac[k] = c[k] - a[k];
-        ap[k] = p[k] - a[k];
-    }
-    double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) {
-        memcpy(q, a, sizeof q);
-        goto done;
-    }
-    double bp[3];
-    for (int k = 0; k < 3; k++)
-        bp[k] = p[k] - b[k];
-    double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) {
-        memcpy(q, b, sizeof q);
-        goto done;
-    }
-    double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-        double v = d1 / (d1 - d3);
-        for (int k = 0; k < 3; k++)
-            q[k] = a[k] + v * ab[k];
-        goto done;
-    }
-    double cp[3];
-    for (int k = 0; k < 3; k++)
-        cp[k] = p[k] - c[k];
-    double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) {
-        memcpy(q, c, sizeof q);
-        goto done;
-    }
-    double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-        double w = d2 / (d2 - d6);
-        for (int k = 0; k < 3; k++)
-            q[k] = a[k] + w * ac[k];
-        goto done;
-    }
-    double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int k = 0; k < 3; k++)
-            q[k] = b[k] + w * (c[k] - b[k]);
-        goto done;
-    }
-    double den = 1 / (va + vb + vc), v = vb * den, w = vc * den;
-    for (int k = 0; k < 3; k++)
-        q[k] = a[k] + ab[k] * v + ac[k] * w;
-done:;
-    double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-    return dot(d, d);
-}
-
 static void vertex(const tmesh *m, int32_t i, double out[3])
 {
     for (int c = 0; c < 3; c++)
@@ -323,7 +259,7 @@ static double grid_nearest(grid *g, const double p[3])
                             vertex(g->m, g->m->t[3 * q], a);
                             vertex(g->m, g->m->t[3 * q + 1], b);
                             vertex(g->m, g->m->t[3 * q + 2], cc);
-                            double d2 = tri_dist2(p, a, b, cc);
+                            double d2 = geom_triangle_dist2(p, a, b, cc);
                             if (d2 < best2) best2 = d2;
                         }
                     }
@@ -362,8 +298,9 @@ static double directed_hausdorff(const tmesh *from, grid *to, double s, double w
         vertex(from, from->t[3 * q], a);
         vertex(from, from->t[3 * q + 1], b);
         vertex(from, from->t[3 * q + 2], c);
-        double lmax = fmax(fmax(sqrt(tri_dist2(a, b, b, b)), sqrt(tri_dist2(b, c, c, c))),
-                           sqrt(tri_dist2(c, a, a, a)));
+        double lmax =
+            fmax(fmax(sqrt(geom_triangle_dist2(a, b, b, b)), sqrt(geom_triangle_dist2(b, c, c, c))),
+                 sqrt(geom_triangle_dist2(c, a, a, a)));
         int n = (int)ceil(lmax / s);
         if (n < 1) n = 1;
         if (n > 4096) n = 4096;
