@@ -62,6 +62,34 @@ OPENSCAD_FN = 64
 # ratio is also stated at equal or better accuracy; one rep (it takes ~40 s).
 OPENSCAD_FN_FINE = 192
 MANIFOLD_SEGMENTS = [64, 128]
+# rayscad --mesh-size 0.25 simplified to these --mesh-tolerance distances
+# (issue 22: as few triangles as manifold-3d at 128 segments, at no larger
+# deviation from the exact surface).
+MESH_TOLERANCES = [0.0075]
+
+
+def surface_deviation(scene, tris):
+    """The largest distance of points of the triangles (corners, centroid,
+    edge midpoints and four more) from the scene's exact surfaces, each taken
+    whole (a sphere, an infinite cylinder or plane), the nearest of them."""
+    if scene == "cube_holes":
+        def dist(p):
+            x, y, z = p
+            return min(abs(math.sqrt(x * x + y * y + z * z) - 11), abs(math.hypot(y, z) - 6.5),
+                       abs(math.hypot(x, z) - 6.5), abs(math.hypot(x, y) - 6.5),
+                       abs(max(abs(x), abs(y), abs(z)) - 10))
+    else:  # spheres: r = 10 at the origin and at x = 10
+        def dist(p):
+            x, y, z = p
+            return min(abs(math.sqrt(x * x + y * y + z * z) - 10),
+                       abs(math.sqrt((x - 10) ** 2 + y * y + z * z) - 10))
+    worst = 0.0
+    for a, b, c in tris:
+        for u, w in ((0, 0), (1, 0), (0, 1), (1 / 3, 1 / 3), (0.5, 0), (0, 0.5), (0.5, 0.5),
+                     (0.25, 0.25), (0.5, 0.25), (0.25, 0.5)):
+            worst = max(worst, dist([a[k] + u * (b[k] - a[k]) + w * (c[k] - a[k])
+                                     for k in range(3)]))
+    return worst
 
 
 def run(cmd, env=None, timeout=300):
@@ -80,8 +108,8 @@ def gmean(xs):
     return math.exp(sum(math.log(x) for x in xs) / len(xs)) if xs else None
 
 
-def stl_volume(path):
-    """Signed volume of a binary or ASCII STL (divergence theorem)."""
+def stl_triangles(path):
+    """The triangles of a binary or ASCII STL."""
     data = open(path, "rb").read()
     tris = []
     if len(data) >= 84 and 84 + 50 * struct.unpack_from("<I", data, 80)[0] == len(data):
@@ -93,6 +121,12 @@ def stl_volume(path):
         v = [tuple(map(float, m.groups())) for m in re.finditer(
             rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)", data)]
         tris = [(v[i], v[i + 1], v[i + 2]) for i in range(0, len(v) - 2, 3)]
+    return tris
+
+
+def stl_volume(path):
+    """Signed volume of a binary or ASCII STL (divergence theorem)."""
+    tris = stl_triangles(path)
     vol = 0.0
     for a, b, c in tris:
         vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
@@ -218,7 +252,7 @@ def main():
         print("mesh: this rayscad has no mesh output yet (--mesh-size); skipping rayscad meshing")
     print(f"mesh: {reps} alternating reps; volume error against the exact value")
     print(f"{'scene':12} {'tool':28} {'median s':>9} {'in-proc s':>9} {'triangles':>9} "
-          f"{'vol err %':>9}")
+          f"{'vol err %':>9} {'deviation':>9}")
     for name, rel, exact in mesh_scenes:
         path = os.path.join(HERE, "scenes", rel)
         runs = {}
@@ -233,6 +267,14 @@ def main():
                                 str(a.threads)])
                     if p.returncode == 0:
                         runs.setdefault(f"rayscad --mesh-size {h}", []).append((t, None, out))
+                for tol in MESH_TOLERANCES:
+                    out = os.path.join(work, f"{name}.rayscad-tol{tol}.stl")
+                    t, p = run([rayscad, path, "-o", out, "--export-format", "binstl",
+                                "--mesh-size", "0.25", "--mesh-tolerance", str(tol),
+                                "--threads", str(a.threads)])
+                    if p.returncode == 0:
+                        runs.setdefault(f"rayscad 0.25 tolerance {tol}", []).append(
+                            (t, None, out))
             if have["openscad"]:
                 out = os.path.join(work, f"{name}.openscad.stl")
                 t, p = run(["openscad", "-o", out, "-D", f"fn={OPENSCAD_FN}", path], timeout=600)
@@ -247,28 +289,36 @@ def main():
                             (t, None, out))
             if manifold_ok:
                 for seg in MANIFOLD_SEGMENTS:
-                    t, p = run(["node", os.path.join(HERE, "manifold_mesh.mjs"), name, str(seg)])
+                    out = os.path.join(work, f"{name}.manifold-{seg}.stl")
+                    t, p = run(["node", os.path.join(HERE, "manifold_mesh.mjs"), name, str(seg),
+                                out])
                     if p.returncode == 0:
                         j = json.loads(p.stdout.strip().splitlines()[-1])
+                        j["stl"] = out
                         runs.setdefault(f"manifold-3d {seg} segments", []).append(
                             (t, j["ms"] / 1000, j))
         for tool, rs in runs.items():
             last = rs[-1][2]
             if isinstance(last, dict):
                 vol, ntri = last["volume"], last["triangles"]
+                stl = last["stl"]
             else:
                 vol, ntri = stl_volume(last)
+                stl = last
             row = {"scene": name, "tool": tool, "exact_volume": exact,
                    "whole_s": [r[0] for r in rs], "inproc_s": [r[1] for r in rs],
                    "volume": vol, "triangles": ntri,
-                   "volume_error_pct": 100 * (vol - exact) / exact}
+                   "volume_error_pct": 100 * (vol - exact) / exact,
+                   "deviation": surface_deviation(name, stl_triangles(stl))
+                   if ntri <= 200000 else None}
             row["whole_s_median"] = med(row["whole_s"])
             row["inproc_s_median"] = med(row["inproc_s"])
             result["mesh"].append(row)
             ip = row["inproc_s_median"]
             print(f"{name:12} {tool:28} {row['whole_s_median']:9.3f} "
                   f"{(format(ip, '9.3f') if ip is not None else '-'.rjust(9))} {ntri:9d} "
-                  f"{row['volume_error_pct']:+9.3f}")
+                  f"{row['volume_error_pct']:+9.3f} "
+                  f"{(format(row['deviation'], '9.5f') if row['deviation'] is not None else '-'.rjust(9))}")
         sys.stdout.flush()
 
     # ---- animation: 60 frames, one process each side -----------------------

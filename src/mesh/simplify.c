@@ -17,12 +17,14 @@
  * one the contour placed: most are exact ray crossings on the surface, the
  * rest its sharp-feature points, within EPS·h of the features (contour.c).
  * The contour's surface is kept as points: its vertices and the midpoints
- * of its edges (on a curved sharp edge, a hole's rim, the vertices alone
- * are too sparse), each on the triangle nearest to it.  A collapse is made
+ * of its sharp edges (on a curved one, a hole's rim, the vertices alone are
+ * too sparse), each on a triangle near it.  A collapse is made
  * only when v and every point on the triangles around v lie within tol of
  * the triangles around u that replace them (the exact distance to a
- * triangle), and the points move to those.  The points sample the surface
- * at half the grid's spacing, so the result stays within about tol of the
+ * triangle; a point on a sharp edge, of one of their edges, so that a
+ * curved sharp edge is followed by the mesh's edges, not cut across), and the points move to one
+ * such (the one they lay on, when it stays and is near enough).  The points sample the surface at
+ * the grid's spacing, its sharp edges at half of it, so the result stays within about tol of the
  * contour's surface, and of the exact one (measured: 1.2 tol).
  *
  * A collapse is refused, besides, when it would
@@ -49,8 +51,9 @@
 
 /* 4√3·area / Σ edge²: 1 for an equilateral triangle, 0 for a needle. */
 #define MIN_QUALITY 0.05
-#define COS_TURN 0.5 /* cos 60° */
-#define FAN_MAX 64   /* the most triangles a collapse may leave around a vertex */
+#define COS_TURN 0.5   /* cos 60° */
+#define SHARP_COS 0.94 /* cos 20°: an edge that bends more is sharp */
+#define FAN_MAX 64     /* the most triangles a collapse may leave around a vertex */
 
 typedef struct quad {
     double a[10]; /* xx xy xz xw yy yz yw zz zw ww of Σ w·(n·x + d)² */
@@ -94,11 +97,32 @@ typedef struct simp {
     uint32_t mark_now;
     /* the points taken away: a list per triangle, through pnext */
     int32_t *phead, *ptail, *pnext;
-    int32_t *best; /* scratch: a point's nearest new triangle */
+    int32_t *best;   /* scratch: a point's nearest new triangle */
+    uint8_t *crease; /* a point on a sharp edge: it must stay near an edge */
     double tol2, len_scale;
     entry *heap;
     size_t nheap, capheap;
+    int heaped; /* the heap is in order (heapify has run) */
 } simp;
+
+/* A 4-ary min-heap of collapses by key (shallower than a binary one: fewer
+ * cache misses per pop).  Entries are only appended while s->heaped is 0
+ * (the first edges), then ordered at once by heapify. */
+static void sift_down(simp *s, size_t i)
+{
+    entry e = s->heap[i];
+    size_t n = s->nheap;
+    for (;;) {
+        size_t c = 4 * i + 1, best = c;
+        if (c >= n) break;
+        for (size_t k = c + 1; k < c + 4 && k < n; k++)
+            if (s->heap[k].key < s->heap[best].key) best = k;
+        if (e.key <= s->heap[best].key) break;
+        s->heap[i] = s->heap[best];
+        i = best;
+    }
+    s->heap[i] = e;
+}
 
 static int heap_push(simp *s, entry e)
 {
@@ -110,8 +134,8 @@ static int heap_push(simp *s, entry e)
         s->capheap = c;
     }
     size_t i = s->nheap++;
-    while (i > 0) {
-        size_t up = (i - 1) / 2;
+    while (s->heaped && i > 0) {
+        size_t up = (i - 1) / 4;
         if (s->heap[up].key <= e.key) break;
         s->heap[i] = s->heap[up];
         i = up;
@@ -120,19 +144,18 @@ static int heap_push(simp *s, entry e)
     return 0;
 }
 
+static void heapify(simp *s)
+{
+    for (size_t i = s->nheap / 4 + 1; i-- > 0;)
+        if (i < s->nheap) sift_down(s, i);
+    s->heaped = 1;
+}
+
 static entry heap_pop(simp *s)
 {
-    entry top = s->heap[0], last = s->heap[--s->nheap];
-    size_t i = 0, n = s->nheap;
-    for (;;) {
-        size_t c = 2 * i + 1;
-        if (c >= n) break;
-        if (c + 1 < n && s->heap[c + 1].key < s->heap[c].key) c++;
-        if (last.key <= s->heap[c].key) break;
-        s->heap[i] = s->heap[c];
-        i = c;
-    }
-    if (n) s->heap[i] = last;
+    entry top = s->heap[0];
+    s->heap[0] = s->heap[--s->nheap];
+    if (s->nheap) sift_down(s, 0);
     return top;
 }
 
@@ -188,20 +211,47 @@ static double quality(const double a[3], const double b[3], const double c[3])
     return l > 0 ? 2 * sqrt(3.0) * sqrt(dot3(n, n)) / l : 0;
 }
 
-/* Whether point x (a vertex, where the contour put it) lies within the
- * tolerance of one of the n triangles nt (moved[i] their indices); that
- * one, the nearest, into s->best[x]. */
-static int near_enough(simp *s, int32_t x, double nt[][3][3], const int32_t *moved, int n)
+/* The squared distance from p to segment ab. */
+static double segment_dist2(const double p[3], const double a[3], const double b[3])
 {
-    double best = INFINITY;
-    for (int m = 0; m < n; m++) {
-        double d2 = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]);
-        if (d2 < best) {
-            best = d2;
+    double ab[3], ap[3];
+    for (int k = 0; k < 3; k++) {
+        ab[k] = b[k] - a[k];
+        ap[k] = p[k] - a[k];
+    }
+    double l2 = dot3(ab, ab), f = l2 > 0 ? dot3(ap, ab) / l2 : 0;
+    f = f < 0 ? 0 : f > 1 ? 1 : f;
+    double d2 = 0;
+    for (int k = 0; k < 3; k++)
+        d2 += (ap[k] - f * ab[k]) * (ap[k] - f * ab[k]);
+    return d2;
+}
+
+/* Whether point x lies within the tolerance of one of the n triangles nt
+ * (moved[i] their indices) — a point on a sharp edge, of one of their
+ * edges — trying first the triangle it lies on now (`on`, if among them);
+ * the first near enough into s->best[x]. */
+static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const int32_t *moved,
+                       int n)
+{
+    int first = 0;
+    for (int m = 0; m < n; m++)
+        if (moved[m] == on) first = m;
+    for (int i = 0; i < n; i++) {
+        int m = (first + i) % n;
+        int near = 0;
+        if (s->crease[x]) {
+            for (int e = 0; e < 3 && !near; e++)
+                near = segment_dist2(P(s, x), nt[m][e], nt[m][(e + 1) % 3]) <= s->tol2;
+        } else {
+            near = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]) <= s->tol2;
+        }
+        if (near) {
             s->best[x] = moved[m];
+            return 1;
         }
     }
-    return best <= s->tol2;
+    return 0;
 }
 
 /* Whether collapsing v into u (costing c) keeps the mesh manifold, its
@@ -257,10 +307,10 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
-    if (!near_enough(s, v, nt, moved, nmoved)) return 0;
+    if (!near_enough(s, v, -1, nt, moved, nmoved)) return 0;
     for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
         for (int32_t x = s->phead[k / 3]; x >= 0; x = s->pnext[x])
-            if (!near_enough(s, x, nt, moved, nmoved)) return 0;
+            if (!near_enough(s, x, k / 3, nt, moved, nmoved)) return 0;
     return 1;
 }
 
@@ -350,6 +400,7 @@ static void simp_free(simp *s)
     free(s->ptail);
     free(s->pnext);
     free(s->best);
+    free(s->crease);
     free(s->heap);
 }
 
@@ -370,6 +421,22 @@ static void border_plane(simp *s, int32_t a, int32_t b, const double n[3])
     quad_plane(&s->q[b], x, -dot3(x, P(s, a)), w);
     s->w[a] += w;
     s->w[b] += w;
+}
+
+/* Whether edge a–b of triangle t bends by more than SHARP_COS between t
+ * and the triangle on its other side. */
+static int sharp(const simp *s, int32_t t, int32_t a, int32_t b)
+{
+    for (int32_t c = s->head[b]; c >= 0; c = s->next[c]) {
+        int32_t o = c / 3;
+        if (o == t || s->t[3 * o + (c % 3 + 1) % 3] != a) continue;
+        const int32_t *p = s->t + 3 * t, *q = s->t + 3 * o;
+        double n0[3], n1[3];
+        normal_of(P(s, p[0]), P(s, p[1]), P(s, p[2]), n0);
+        normal_of(P(s, q[0]), P(s, q[1]), P(s, q[2]), n1);
+        return dot3(n0, n1) < SHARP_COS * sqrt(dot3(n0, n0) * dot3(n1, n1));
+    }
+    return 1;
 }
 
 static int simp_init(simp *s, const mesh *m, double tol)
@@ -394,8 +461,9 @@ static int simp_init(simp *s, const mesh *m, double tol)
     s->ptail = malloc(nt * sizeof *s->ptail);
     s->pnext = malloc(np * sizeof *s->pnext);
     s->best = malloc(np * sizeof *s->best);
+    s->crease = calloc(np, 1);
     if (!s->p || !s->q || !s->w || !s->t || !s->next || !s->prev || !s->head || !s->val ||
-        !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best)
+        !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best || !s->crease)
         return -1;
     for (size_t i = 0; i < 3 * nv; i++)
         s->p[i] = m->v[i];
@@ -406,15 +474,16 @@ static int simp_init(simp *s, const mesh *m, double tol)
         s->phead[i] = s->ptail[i] = -1;
     for (size_t k = 3 * nt; k-- > 0;)
         link_corner(s, s->t[k], (int32_t)k);
-    /* every edge's midpoint is a point to keep within the bound too: on a
-     * curved sharp edge (a hole's rim) the vertices alone are too few */
+    /* the midpoint of every sharp edge is a point to keep within the bound
+     * too: on a curved one (a hole's rim) the vertices alone are too few */
     size_t x = nv;
     for (size_t t = 0; t < nt; t++)
         for (int k = 0; k < 3; k++) {
             int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
-            if (a > b || x >= np) continue;
+            if (a > b || x >= np || !sharp(s, (int32_t)t, a, b)) continue;
             for (int i = 0; i < 3; i++)
                 s->p[3 * x + i] = (P(s, a)[i] + P(s, b)[i]) / 2;
+            s->crease[a] = s->crease[b] = s->crease[x] = 1;
             attach(s, (int32_t)t, (int32_t)x++);
         }
     double total = 0;
@@ -447,6 +516,7 @@ static int simp_init(simp *s, const mesh *m, double tol)
             int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
             if (a < b && push_edge(s, a, b) != 0) return -1; /* each edge once */
         }
+    heapify(s);
     return 0;
 }
 
