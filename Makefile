@@ -74,7 +74,7 @@ SDL_LIBS := $(or $(shell pkg-config --libs sdl2 SDL2_ttf fontconfig 2>/dev/null)
 JSON_LIBS := $(or $(shell pkg-config --libs json-c 2>/dev/null),-ljson-c)
 # OpenImageIO is not linked: the image adapter loads it (IMAGE_SO below).
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null)
-LDLIBS   = -lOpenMeshCore -lOpenMeshTools \
+LDLIBS   = -lOpenMeshCore \
 	$(shell pkg-config --libs polyclipping freetype2 harfbuzz fontconfig 2>/dev/null) \
 	$(CAIRO_LIBS) $(MESH_IMPORT_LIBS) \
 	-lpthread -lm

@@ -605,15 +605,10 @@ double rayscad_mesh_volume(const rayscad_mesh *m);            /* signed: positiv
  * colour k - 1, or 0 where the surface had no color().  Each triangle
  * takes the colour of the primitive whose surface it lies on (a subtracted
  * primitive's on the faces it cuts), so colours meet along sharp edges.
- * Both borrowed from m; NULL without colours.  A decimated mesh has none. */
+ * Both borrowed from m; NULL without colours. */
 int rayscad_mesh_color_count(const rayscad_mesh *m);
 const float *rayscad_mesh_colors(const rayscad_mesh *m);
 const uint16_t *rayscad_mesh_triangle_colors(const rayscad_mesh *m);
-
-/* Simplify m within tol model units (OpenMesh's quadric decimater, no
- * face turned over by more than 60°) into a new mesh *out. */
-rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_mesh **out,
-                                     char *err, size_t errlen);
 
 /* 1 when the extension of path (any case) is a mesh format: stl, off,
  * obj, ply, amf, 3mf. */

@@ -2,7 +2,7 @@
  * mesh_output.c — see mesh_output.h.  One tri-dexel sampling serves every
  * request: the measurement integrates its intervals, the thin-feature scan
  * reads its chords, and the contour meshes it; the sampling is freed before
- * the mesh is decimated or written, so peak memory is the larger of the two.
+ * the mesh is written, so peak memory is the larger of the two.
  *
  * Thin walls: a contour on a grid of spacing h cannot keep a wall (or a gap)
  * thinner than h — both faces may fall between two rows of nodes, and the
@@ -185,16 +185,6 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
                     paths[0]);
             rayscad_mesh_free(msh);
             return 1;
-        }
-        if (o->decimate >= 0) {
-            rayscad_mesh *dec;
-            if (rayscad_mesh_decimate(msh, o->decimate, &dec, err, sizeof err) != RAYSCAD_OK) {
-                cli_print_error(o, err);
-                rayscad_mesh_free(msh);
-                return 1;
-            }
-            rayscad_mesh_free(msh);
-            msh = dec;
         }
         mesh_volume = rayscad_mesh_volume(msh);
         if (write_mesh_files(o, msh, outs, paths, n) != 0) {

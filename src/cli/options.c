@@ -92,8 +92,8 @@ const char cli_usage_light[] =
     "                          point of the contour stays within D of the new\n"
     "                          triangles: flat faces become a few triangles,\n"
     "                          sharp edges and corners stay\n"
-    "  --decimate TOL          simplify the mesh within TOL model units (OpenMesh's\n"
-    "                          quadric decimater)\n"
+    "  --decimate TOL          the older name of --mesh-tolerance (0: no\n"
+    "                          simplification)\n"
     "  --measure               print volume, surface area, bounding box and centre\n"
     "                          of mass, integrated over the ray intervals\n"
     "  --json                  the same as JSON on stdout (implies --measure)\n";
@@ -288,7 +288,6 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
     o->samples = 1;
     o->colorscheme = "Cornfield";
     o->view.kind = RAYSCAD_CAMERA_DEFAULT;
-    o->decimate = -1;
     o->check_parameters = 1;
 
     static const char *const valued[] = {"-o",
@@ -446,8 +445,8 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 snprintf(err, errlen, "--mesh-tolerance expects a distance > 0, got '%s'", val);
                 return -1;
             }
-        } else if (strcmp(flag, "--decimate") == 0) {
-            if (cli_parse_double(val, &o->decimate) != 0 || !(o->decimate >= 0)) {
+        } else if (strcmp(flag, "--decimate") == 0) { /* --mesh-tolerance, as it was */
+            if (cli_parse_double(val, &o->mesh_tolerance) != 0 || !(o->mesh_tolerance >= 0)) {
                 snprintf(err, errlen, "--decimate expects a tolerance >= 0, got '%s'", val);
                 return -1;
             }

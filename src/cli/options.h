@@ -68,8 +68,7 @@ typedef struct cli_options {
     rayscad_render_options optics;
     /* Meshes and measurement (mesh_output.h). */
     double mesh_size;      /* --mesh-size: grid spacing > 0; 0 = derived from the model */
-    double decimate;       /* --decimate TOL >= 0; < 0 when not asked for */
-    double mesh_tolerance; /* --mesh-tolerance D > 0; 0: not asked for */
+    double mesh_tolerance; /* --mesh-tolerance (or --decimate) D > 0; 0: none */
     int ascii;             /* --ascii: text STL / PLY */
     int measure;           /* --measure (also set by --json) */
     int json;              /* --json: the measurement as JSON */

@@ -141,15 +141,6 @@ int io_amf_write(const char *path, const float *v, int nv, const int32_t *t, int
 int io_3mf_write(const char *path, const float *v, int nv, const int32_t *t, int nt,
                  const io_colors *c, char *err, size_t errlen);
 
-/* Simplify a closed manifold mesh with OpenMesh's decimater (quadric error
- * metric, ModQuadricT, plus ModNormalFlippingT so no face turns over more
- * than 60°): edges collapse while the quadric distance stays within tol
- * (model units, >= 0).  The input is borrowed; the output arrays are
- * malloc'ed for the caller, with the same conventions.  Returns 0, or -1
- * with a message. */
-int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double tol, float **out_v,
-                     int *out_nv, int32_t **out_t, int *out_nt, char *err, size_t errlen);
-
 #ifdef __cplusplus
 }
 #endif

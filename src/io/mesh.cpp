@@ -4,7 +4,7 @@
  *
  * Our meshes are flat arrays (3 floats per vertex, 3 int32 indices per
  * triangle); each call copies them into an OpenMesh TriMesh, lets OpenMesh's
- * reader/writer/decimater work on it, and copies back.  Invariants kept at
+ * reader or writer work on it, and copies back.  Invariants kept at
  * this boundary: no C++ exception crosses it (every entry point catches all
  * and returns -1 with a message); nothing prints (OpenMesh's log streams are
  * disabled before each call); a written file appears complete or not at all
@@ -26,9 +26,6 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
-#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
-#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
-#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
 #include <algorithm>
 #include <charconv>
@@ -519,68 +516,6 @@ int io_mesh_read(const char *path, float **v, int *nv, int32_t **t, int *nt, cha
         return -1;
     } catch (...) {
         set_err(err, errlen, "mesh read failed");
-        return -1;
-    }
-}
-
-int io_mesh_decimate(const float *v, int nv, const int32_t *t, int nt, double tol, float **out_v,
-                     int *out_nv, int32_t **out_t, int *out_nt, char *err, size_t errlen)
-{
-    try {
-        quiet();
-        *out_v = nullptr;
-        *out_t = nullptr;
-        *out_nv = *out_nt = 0;
-        if (!(tol >= 0)) {
-            set_err(err, errlen, "decimation tolerance must be >= 0");
-            return -1;
-        }
-        TriMesh m;
-        std::string msg;
-        if (!build(m, v, nv, t, nt, msg)) {
-            set_err(err, errlen, "decimate: " + msg);
-            return -1;
-        }
-        typedef OpenMesh::Decimater::DecimaterT<TriMesh> Decimater;
-        typedef OpenMesh::Decimater::ModQuadricT<TriMesh>::Handle Quadric;
-        typedef OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle Flipping;
-        m.request_face_normals();
-        m.update_face_normals();
-        /* Held here too, so they outlive the decimater (which releases its
-         * own requests) until garbage_collection has used them. */
-        m.request_vertex_status();
-        m.request_edge_status();
-        m.request_halfedge_status();
-        m.request_face_status();
-        {
-            Decimater dec(m);
-            Quadric q;
-            Flipping f;
-            dec.add(q);
-            dec.add(f);
-            /* The quadric error is a squared distance. */
-            dec.module(q).set_max_err(tol * tol);
-            dec.module(f).set_max_normal_deviation(60.0);
-            if (!dec.initialize()) {
-                set_err(err, errlen, "decimate: the decimater did not initialise");
-                return -1;
-            }
-            dec.decimate();
-        }
-        m.garbage_collection();
-        if (!extract(m, out_v, out_nv, out_t, out_nt, msg)) {
-            set_err(err, errlen, "decimate: " + msg);
-            return -1;
-        }
-        return 0;
-    } catch (const std::bad_alloc &) {
-        if (err && errlen) std::snprintf(err, errlen, "decimate: out of memory");
-        return -1;
-    } catch (const std::exception &e) {
-        set_err(err, errlen, std::string("decimate: ") + e.what());
-        return -1;
-    } catch (...) {
-        set_err(err, errlen, "decimate failed");
         return -1;
     }
 }

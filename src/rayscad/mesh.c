@@ -1,6 +1,6 @@
 /*
  * mesh.c — sampling a scene by the three ray families, measuring and
- * contouring it (src/mesh), and decimating and writing meshes (src/io's
+ * contouring and simplifying it (src/mesh), and writing meshes (src/io's
  * OpenMesh adapter; AMF and 3MF through io_amf_write and io_3mf_write, by
  * extension).
  */
@@ -132,26 +132,6 @@ const float *rayscad_mesh_colors(const rayscad_mesh *m)
 const uint16_t *rayscad_mesh_triangle_colors(const rayscad_mesh *m)
 {
     return mesh_triangle_colors(m->m);
-}
-
-rayscad_status rayscad_mesh_decimate(const rayscad_mesh *m, double tol, rayscad_mesh **out,
-                                     char *err, size_t errlen)
-{
-    char local[1];
-    if (!err) err = local, errlen = sizeof local;
-    *out = NULL;
-    float *v;
-    int32_t *t;
-    int nv, nt;
-    if (io_mesh_decimate(mesh_vertices(m->m), mesh_vertex_count(m->m), mesh_triangles(m->m),
-                         mesh_triangle_count(m->m), tol, &v, &nv, &t, &nt, err, errlen) != 0)
-        return RAYSCAD_ERROR;
-    *out = wrap(mesh_new_from_arrays(v, nv, t, nt));
-    free(v);
-    free(t);
-    if (*out) return RAYSCAD_OK;
-    rayscad_say(err, errlen, "out of memory");
-    return RAYSCAD_ERROR_MEMORY;
 }
 
 int rayscad_mesh_format_supported(const char *path)

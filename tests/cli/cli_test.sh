@@ -195,9 +195,10 @@ check "--measure with an image output" sh -c "test $rc -eq 0 && test -s m.png &&
 run ball.scad -o dec.stl --decimate 0.05 --mesh-size 0.3
 check "--decimate exits 0" test "$rc" -eq 0
 check "--decimate makes a smaller mesh" test "$(stat -c %s dec.stl)" -lt "$(stat -c %s ball.stl)"
-# The quadric decimater trims convex surfaces a little: volume within 1 %.
 check "decimated mesh stays closed, close to the sphere" quiet "$meshcmp" dec.stl ball.stl --h 0.1 \
     --vol-tol 0.01
+run ball.scad -o tol5.stl --mesh-tolerance 0.05 --mesh-size 0.3
+check "--decimate is --mesh-tolerance's older name" cmp -s dec.stl tol5.stl
 
 # --mesh-tolerance: a box is its 12 triangles, as openscad writes it.
 run box.scad -o tol.stl --mesh-tolerance 0.01

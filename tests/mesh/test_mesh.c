@@ -736,35 +736,6 @@ Test(mesh_contour, random_scenes_are_manifold)
     cr_assert_gt(meshed, 20, "only %d of 40 random scenes were non-empty", meshed);
 }
 
-Test(mesh_io, decimate_keeps_shape)
-{
-    csg_scene *s = csg_example();
-    mesh_measure mm;
-    double h = 20.0 / 24;
-    mesh *m = contour(s, h, &mm);
-    float *v = NULL;
-    int32_t *t = NULL;
-    int nv = 0, nt = 0;
-    char err[256] = "";
-    cr_assert(io_mesh_decimate(mesh_vertices(m), mesh_vertex_count(m), mesh_triangles(m),
-                               mesh_triangle_count(m), h / 20, &v, &nv, &t, &nt, err,
-                               sizeof err) == 0,
-              "%s", err);
-    mesh *d = mesh_new_from_arrays(v, nv, t, nt);
-    cr_assert(d);
-    cr_log_info("decimate tol h/20: %d -> %d triangles", mesh_triangle_count(m), nt);
-    cr_assert_lt(nt, mesh_triangle_count(m) / 2, "decimation removed too little");
-    cr_assert_null(check_manifold(d));
-    cr_assert_lt(fabs(volume_of(d) - volume_of(m)), 5e-3 * volume_of(m), "volume %g vs %g",
-                 volume_of(d), volume_of(m));
-    cr_assert_lt(max_dist(d, sd_csg_ctx, NULL), h, "decimated vertex off the surface");
-    free(v);
-    free(t);
-    mesh_free(d);
-    mesh_free(m);
-    csg_scene_free(s);
-}
-
 /* ---- files through OpenMesh --------------------------------------------- */
 
 Test(mesh_io, write_read_round_trip)
