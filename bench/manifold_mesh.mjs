@@ -45,13 +45,3 @@ if (outPath) {
         buf.writeFloatLE(v[np * t[3 * i + c] + k], 84 + 50 * i + 12 + 12 * c + 4 * k);
   writeFileSync(outPath, buf);
 }
-if (outPath) {
-  const np = mesh.numProp, v = mesh.vertProperties, t = mesh.triVerts;
-  const n = t.length / 3, buf = Buffer.alloc(84 + 50 * n);
-  buf.writeUInt32LE(n, 80);
-  for (let i = 0; i < n; i++)
-    for (let c = 0; c < 3; c++)
-      for (let k = 0; k < 3; k++)
-        buf.writeFloatLE(v[np * t[3 * i + c] + k], 84 + 50 * i + 12 + 12 * c + 4 * k);
-  writeFileSync(outPath, buf);
-}

@@ -117,21 +117,32 @@ static void world_at(const render_camera *cam, int px, int py, double *x, double
  * every pixel converges to Le/(1 − ρ) = 0.4.  With 256 paths per pixel
  * (Russian roulette, up to 64 bounces) the image mean is within 1 % and
  * each pixel within 6 % (about 4 standard deviations, measured). */
-Test(path_converges, integrating_sphere_le_over_one_minus_rho)
+/* The shell of the next two tests: inner radius 20, albedo rho, emitting
+ * i·rho, seen from its centre in 8×8 pixels with spp paths each (up to 64
+ * bounces); the camera into *cam, the options into *o. */
+static csg_scene *integrating_sphere(double rho, double i, int spp, render_camera *cam,
+                                     render_options *o)
 {
-    const double rho = 0.5, i = 0.4, R = 20;
+    const double R = 20;
     csg_material m = albedo(rho, rho, rho);
     m.emit = (float)i;
     m.light[3] = (float)R;
     csg_node *shell = csg_node_op(CSG_OP_DIFFERENCE);
     cr_assert_eq(csg_node_add(shell, sphere(R + 1, &m)), 0);
     cr_assert_eq(csg_node_add(shell, sphere(R, &m)), 0);
-    csg_scene *s = scene_of(&shell, 1);
     const render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {0, 0, 0, 10, 3, 2}};
-    render_options o = opts(8, 8, 256);
-    o.bounces = 64;
+    *o = opts(8, 8, spp);
+    o->bounces = 64;
+    cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, o->width, o->height, cam), 0);
+    return scene_of(&shell, 1);
+}
+
+Test(path_converges, integrating_sphere_le_over_one_minus_rho)
+{
+    const double rho = 0.5, i = 0.4;
     render_camera cam;
-    cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, o.width, o.height, &cam), 0);
+    render_options o;
+    csg_scene *s = integrating_sphere(rho, i, 256, &cam, &o);
     float *img = render(s, &cam, &o);
     const double want = i * rho / (1 - rho);
     double mean = 0;
@@ -154,19 +165,10 @@ Test(path_converges, integrating_sphere_le_over_one_minus_rho)
  * 32 passes — and passes differ from one another. */
 Test(path_converges, unclamped_passes_average_to_the_light)
 {
-    const double rho = 0.5, i = 2, R = 20;
-    csg_material m = albedo(rho, rho, rho);
-    m.emit = (float)i;
-    m.light[3] = (float)R;
-    csg_node *shell = csg_node_op(CSG_OP_DIFFERENCE);
-    cr_assert_eq(csg_node_add(shell, sphere(R + 1, &m)), 0);
-    cr_assert_eq(csg_node_add(shell, sphere(R, &m)), 0);
-    csg_scene *s = scene_of(&shell, 1);
-    const render_view v = {.kind = RAYSCAD_CAMERA_EYE, .v = {0, 0, 0, 10, 3, 2}};
-    render_options o = opts(8, 8, 4);
-    o.bounces = 64;
+    const double rho = 0.5, i = 2;
     render_camera cam;
-    cr_assert_eq(render_camera_resolve(&v, NULL, NULL, 0, o.width, o.height, &cam), 0);
+    render_options o;
+    csg_scene *s = integrating_sphere(rho, i, 4, &cam, &o);
     const double want = i * rho / (1 - rho);
     float *img = render(s, &cam, &o);
     for (int p = 0; p < 4 * o.width * o.height; p++)
