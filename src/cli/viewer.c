@@ -13,10 +13,11 @@
  * that mean's standard error falls below half a step of 8-bit colour
  * (accumulate.h) or MAX_PASSES.  The path tracer skips the 2×2 and 3×3
  * pictures and draws every pass with one path a pixel.  A pass that a
- * newer view makes useless is cancelled (rayscad_render_options.cancelled).  The load thread
- * evaluates the file and every time one of the files it read changes (watch.h), evaluates it again
- * and hands the new scene over; a failed evaluation keeps the last good scene and puts its error in
- * the window's title with a red frame around the picture.
+ * newer view makes useless is cancelled (rayscad_render_options.cancelled).
+ * The load thread evaluates the file and every time one of the files it
+ * read changes (watch.h), evaluates it again and hands the new scene over;
+ * a failed evaluation keeps the last good scene and puts its error in the
+ * window's title with a red frame around the picture.
  */
 #define _DEFAULT_SOURCE
 #include "viewer.h"

@@ -201,30 +201,15 @@ static void normal_of(const double a[3], const double b[3], const double c[3], d
     cross3(e1, e2, n);
 }
 
-static double quality(const double a[3], const double b[3], const double c[3])
+/* The quality of triangle abc whose normal_of has length nlen (twice its
+ * area). */
+static double quality(const double a[3], const double b[3], const double c[3], double nlen)
 {
-    double n[3], l = 0;
-    normal_of(a, b, c, n);
+    double l = 0;
     for (int k = 0; k < 3; k++)
         l += (b[k] - a[k]) * (b[k] - a[k]) + (c[k] - b[k]) * (c[k] - b[k]) +
              (a[k] - c[k]) * (a[k] - c[k]);
-    return l > 0 ? 2 * sqrt(3.0) * sqrt(dot3(n, n)) / l : 0;
-}
-
-/* The squared distance from p to segment ab. */
-static double segment_dist2(const double p[3], const double a[3], const double b[3])
-{
-    double ab[3], ap[3];
-    for (int k = 0; k < 3; k++) {
-        ab[k] = b[k] - a[k];
-        ap[k] = p[k] - a[k];
-    }
-    double l2 = dot3(ab, ab), f = l2 > 0 ? dot3(ap, ab) / l2 : 0;
-    f = f < 0 ? 0 : f > 1 ? 1 : f;
-    double d2 = 0;
-    for (int k = 0; k < 3; k++)
-        d2 += (ap[k] - f * ab[k]) * (ap[k] - f * ab[k]);
-    return d2;
+    return l > 0 ? 2 * sqrt(3.0) * nlen / l : 0;
 }
 
 /* Whether point x lies within the tolerance of one of the n triangles nt
@@ -241,8 +226,9 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
         int m = (first + i) % n;
         int near = 0;
         if (s->crease[x]) {
-            for (int e = 0; e < 3 && !near; e++)
-                near = segment_dist2(P(s, x), nt[m][e], nt[m][(e + 1) % 3]) <= s->tol2;
+            for (int e = 0; e < 3 && !near; e++) /* a degenerate triangle: its segment */
+                near = geom_triangle_dist2(P(s, x), nt[m][e], nt[m][(e + 1) % 3],
+                                           nt[m][(e + 1) % 3]) <= s->tol2;
         } else {
             near = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]) <= s->tol2;
         }
@@ -300,7 +286,7 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
         normal_of(an[0], an[1], an[2], n1);
         double l0 = sqrt(dot3(n0, n0)), l1 = sqrt(dot3(n1, n1));
         if (!(l1 > 0) || dot3(n0, n1) < COS_TURN * l0 * l1) return 0;
-        double q0 = quality(a[0], a[1], a[2]), q1 = quality(an[0], an[1], an[2]);
+        double q0 = quality(a[0], a[1], a[2], l0), q1 = quality(an[0], an[1], an[2], l1);
         if (q0 < worst_old) worst_old = q0;
         if (q1 < worst_new) worst_new = q1;
     }
@@ -404,7 +390,7 @@ static void simp_free(simp *s)
     free(s->heap);
 }
 
-/* A colour's border along edge a–b of triangle t (unit normal n): a plane
+/* A colour's border along edge a–b of a triangle of unit normal n: a plane
  * through the edge, across the surface, in both ends' quadrics. */
 static void border_plane(simp *s, int32_t a, int32_t b, const double n[3])
 {
@@ -423,20 +409,24 @@ static void border_plane(simp *s, int32_t a, int32_t b, const double n[3])
     s->w[b] += w;
 }
 
-/* Whether edge a–b of triangle t bends by more than SHARP_COS between t
- * and the triangle on its other side. */
-static int sharp(const simp *s, int32_t t, int32_t a, int32_t b)
+/* The triangle on the other side of edge a–b of triangle t, or -1. */
+static int32_t across(const simp *s, int32_t t, int32_t a, int32_t b)
 {
     for (int32_t c = s->head[b]; c >= 0; c = s->next[c]) {
         int32_t o = c / 3;
-        if (o == t || s->t[3 * o + (c % 3 + 1) % 3] != a) continue;
-        const int32_t *p = s->t + 3 * t, *q = s->t + 3 * o;
-        double n0[3], n1[3];
-        normal_of(P(s, p[0]), P(s, p[1]), P(s, p[2]), n0);
-        normal_of(P(s, q[0]), P(s, q[1]), P(s, q[2]), n1);
-        return dot3(n0, n1) < SHARP_COS * sqrt(dot3(n0, n0) * dot3(n1, n1));
+        if (o != t && s->t[3 * o + (c % 3 + 1) % 3] == a) return o;
     }
-    return 1;
+    return -1;
+}
+
+/* Whether edge a–b of triangle t bends by more than SHARP_COS between t
+ * and the triangle on its other side (tn: every triangle's normal_of). */
+static int sharp(const simp *s, const double *tn, int32_t t, int32_t a, int32_t b)
+{
+    int32_t o = across(s, t, a, b);
+    if (o < 0) return 1;
+    const double *n0 = tn + 3 * (size_t)t, *n1 = tn + 3 * (size_t)o;
+    return dot3(n0, n1) < SHARP_COS * sqrt(dot3(n0, n0) * dot3(n1, n1));
 }
 
 static int simp_init(simp *s, const mesh *m, double tol)
@@ -446,7 +436,7 @@ static int simp_init(simp *s, const mesh *m, double tol)
     s->nt = m->nt;
     s->tol2 = tol * tol;
     size_t nv = (size_t)m->nv, nt = (size_t)m->nt;
-    size_t np = nv + 3 * nt / 2; /* the vertices, then a point per edge */
+    size_t np = nv + 3 * nt / 2; /* the vertices, then room for a point per edge */
     s->p = malloc(3 * np * sizeof *s->p);
     s->q = calloc(nv, sizeof *s->q);
     s->w = calloc(nv, sizeof *s->w);
@@ -474,13 +464,19 @@ static int simp_init(simp *s, const mesh *m, double tol)
         s->phead[i] = s->ptail[i] = -1;
     for (size_t k = 3 * nt; k-- > 0;)
         link_corner(s, s->t[k], (int32_t)k);
+    double *tn = malloc(3 * nt * sizeof *tn); /* each triangle's normal_of */
+    if (!tn) return -1;
+    for (size_t t = 0; t < nt; t++) {
+        const int32_t *tv = s->t + 3 * t;
+        normal_of(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), tn + 3 * t);
+    }
     /* the midpoint of every sharp edge is a point to keep within the bound
      * too: on a curved one (a hole's rim) the vertices alone are too few */
     size_t x = nv;
     for (size_t t = 0; t < nt; t++)
         for (int k = 0; k < 3; k++) {
             int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
-            if (a > b || x >= np || !sharp(s, (int32_t)t, a, b)) continue;
+            if (a > b || x >= np || !sharp(s, tn, (int32_t)t, a, b)) continue;
             for (int i = 0; i < 3; i++)
                 s->p[3 * x + i] = (P(s, a)[i] + P(s, b)[i]) / 2;
             s->crease[a] = s->crease[b] = s->crease[x] = 1;
@@ -489,8 +485,7 @@ static int simp_init(simp *s, const mesh *m, double tol)
     double total = 0;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *tv = s->t + 3 * t;
-        double n[3];
-        normal_of(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), n);
+        double n[3] = {tn[3 * t], tn[3 * t + 1], tn[3 * t + 2]};
         double a2 = sqrt(dot3(n, n));
         total += a2 / 2;
         if (!(a2 > 0)) continue;
@@ -503,12 +498,11 @@ static int simp_init(simp *s, const mesh *m, double tol)
         }
         if (!m->npal) continue;
         for (int k = 0; k < 3; k++) {
-            int32_t a = tv[k], b = tv[(k + 1) % 3], other = -1;
-            for (int32_t c = s->head[b]; c >= 0 && other < 0; c = s->next[c])
-                if ((size_t)(c / 3) != t && s->t[c - c % 3 + (c % 3 + 1) % 3] == a) other = c / 3;
+            int32_t a = tv[k], b = tv[(k + 1) % 3], other = across(s, (int32_t)t, a, b);
             if (other >= 0 && m->tc[other] != m->tc[t]) border_plane(s, a, b, n);
         }
     }
+    free(tn);
     /* the tie-break's scale: 1 / (the mean triangle's area) */
     s->len_scale = total > 0 ? (double)nt / total : 1;
     for (size_t t = 0; t < nt; t++)
