@@ -193,6 +193,8 @@ typedef struct sweep {
     int32_t *yv[2]; /* y-edge vertices: i + (nx+1) j */
     int32_t *zv;    /* z-edge vertices of slab k: i + (nx+1) j */
     fmap faces;
+    mesh_snapper snap;
+    mesh_vnormals vn; /* the edge samples' normals, for refine.c */
     int oom;
 } sweep;
 
@@ -341,7 +343,7 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     edge_sample(s, a, r, seg, enter, base, out);
     if (*slot < 0) {
         *slot = mesh_push_vertex(s->m, out->p[0], out->p[1], out->p[2]);
-        if (*slot < 0) return -1;
+        if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n) != 0) return -1;
     }
     out->vid = *slot;
     return 0;
@@ -387,7 +389,7 @@ static int face_point(const sweep *s, const sample *a, const sample *b, int f, c
  * below 5 % of the largest (those directions are left at the mass point:
  * a flat patch keeps its vertex at the patch centre, an edge keeps it on the
  * edge nearest the centre). */
-static void qef_solve(double a[3][3], const double b[3], double x[3])
+void mesh_qef_solve(double a[3][3], const double b[3], double x[3])
 {
     double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int sweep_i = 0; sweep_i < 12; sweep_i++) {
@@ -474,7 +476,7 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
             }
             if (fixed >> r & 1) br[r] = 0;
         }
-        qef_solve(ar, br, y);
+        mesh_qef_solve(ar, br, y);
         int moved = 0;
         for (int c = 0; c < 3; c++) {
             if (fixed >> c & 1) continue;
@@ -489,6 +491,24 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
     }
     for (int c = 0; c < 3; c++)
         out[c] = fmin(fmax(mass[c] + x[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
+}
+
+/* A face point moved onto its sharp edge's exact position in face f. */
+static void snap_face_point(sweep *s, const sample *a, const sample *b, int f, const double lo[3],
+                            double fp[3])
+{
+    double h = s->d->h, sp[2][3], nrm[2][3], blo[3], bhi[3];
+    for (int c = 0; c < 3; c++) {
+        sp[0][c] = a->p[c];
+        sp[1][c] = b->p[c];
+        nrm[0][c] = a->n[c];
+        nrm[1][c] = b->n[c];
+        blo[c] = lo[c] + EPS * h;
+        bhi[c] = lo[c] + (1 - EPS) * h;
+    }
+    blo[f / 2] = bhi[f / 2] = fp[f / 2];
+    mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, 2, f / 2, blo, bhi, fp,
+              NULL);
 }
 
 /* A loop vertex.  Its colour is its sample's, for a face point the next
@@ -508,6 +528,50 @@ static void tri_normal(const double a[3], const double b[3], const double c[3], 
     sub3(b, a, e1);
     sub3(c, a, e2);
     cross3(e1, e2, n);
+}
+
+/* 1 when moving the centre of the fan around the loop lv from x to y turns
+ * none of its triangles over or leaves one without area. */
+static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[3], double h)
+{
+    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    for (int q = 0; q < nv; q++) {
+        double n0[3], n1[3];
+        tri_normal(x, lv[q].p, lv[(q + 1) % nv].p, n0);
+        tri_normal(y, lv[q].p, lv[(q + 1) % nv].p, n1);
+        if (!(dot3(n0, n1) > 0 && dot3(n1, n1) > min2)) return 0;
+    }
+    return 1;
+}
+
+/* A loop vertex moved onto the exact surface, sharp edge or corner of its
+ * samples.  On a sharp edge it may leave its cell by up to half a cell:
+ * where a concave crease runs just beyond a face of the cell (the groove
+ * between two nodes the node signs do not see), the crease is where the
+ * vertex belongs.  Anywhere else, or where that would fold its fan (the
+ * loop lv), it stays in the cell shrunk by EPS·h, where no fan triangle
+ * folds (and no other cell's vertex is: a corner is one point, which only
+ * the cell holding it may take). */
+static void snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl, const lvert *lv,
+                             int nv, const double lo[3], double x[3])
+{
+    double h = s->d->h, sp[12][3], nrm[12][3], blo[3], bhi[3], y[3];
+    for (int q = 0; q < nl; q++)
+        for (int c = 0; c < 3; c++) {
+            sp[q][c] = smp[loop[q]].p[c];
+            nrm[q][c] = smp[loop[q]].n[c];
+        }
+    for (int c = 0; c < 3; c++) {
+        blo[c] = lo[c] - 0.5 * h;
+        bhi[c] = lo[c] + 1.5 * h;
+        y[c] = x[c];
+    }
+    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, nl, -1, blo,
+                             bhi, y, NULL);
+    if (!(surfaces == 2 && fan_keeps(lv, nv, x, y, h)))
+        for (int c = 0; c < 3; c++)
+            y[c] = fmin(fmax(y[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
+    memcpy(x, y, sizeof y);
 }
 
 /* Triangulate a featureless loop among its own vertices, as a fan from some
@@ -614,9 +678,15 @@ static void cell(sweep *s, int i, int j, int mask)
                     s->oom = 1;
                     return;
                 }
-                if (fresh && (*slot = mesh_push_vertex(s->m, fp[0], fp[1], fp[2])) < 0) {
-                    s->oom = 1;
-                    return;
+                if (fresh) {
+                    snap_face_point(s, a, b, segface[loop[q]], lo, fp);
+                    if ((*slot = mesh_push_vertex(s->m, fp[0], fp[1], fp[2])) < 0) {
+                        s->oom = 1;
+                        return;
+                    }
+                } else {
+                    for (int c = 0; c < 3; c++) /* where the first cell put it */
+                        fp[c] = s->m->v[3 * (size_t)*slot + c];
                 }
                 lv[nv].vid = *slot;
                 lv[nv].edge = -1;
@@ -629,6 +699,7 @@ static void cell(sweep *s, int i, int j, int mask)
         if (!feature && fan_plain(s, lv, nv, navg)) continue;
         double c[3];
         loop_vertex(s, smp, loop, nl, lo, c);
+        snap_loop_vertex(s, smp, loop, nl, lv, nv, lo, c);
         for (int q = 0; q < nplaced; q++) {
             double dd[3];
             sub3(c, placed[q], dd);
@@ -657,6 +728,7 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
                         size_t errlen)
 {
     if (!d->off[0]) return 0;
+    int first_tri = m->nt;
     sweep s;
     memset(&s, 0, sizeof s);
     s.d = d;
@@ -676,8 +748,8 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
         s.yv[l] = malloc(nye * sizeof *s.yv[l]);
     }
     int rc = -1;
-    if (flips_init(&s) != 0 || !s.zv || !s.sign[0] || !s.sign[1] || !s.xv[0] || !s.xv[1] ||
-        !s.yv[0] || !s.yv[1]) {
+    if (mesh_snapper_init(&s.snap, d, s.cos_feature) != 0 || flips_init(&s) != 0 || !s.zv ||
+        !s.sign[0] || !s.sign[1] || !s.xv[0] || !s.xv[1] || !s.yv[0] || !s.yv[1]) {
         snprintf(err, errlen, "out of memory contouring");
         goto done;
     }
@@ -731,12 +803,14 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
         }
     }
     if (o && o->progress && !s.oom) o->progress(o->progress_ud, "contouring", 1);
-    if (s.oom) {
+    if (s.oom || mesh_refine_edges(m, first_tri, &s.snap, &s.vn) != 0) {
         snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");
         goto done;
     }
     rc = 0;
 done:
+    mesh_snapper_free(&s.snap);
+    free(s.vn.n);
     free(s.flip);
     free(s.flip_at);
     free(s.zv);

@@ -315,6 +315,8 @@ int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const 
         return -1;
     }
     d->h = h;
+    d->scene = s;
+    d->root = o->root;
     size_t rays = 1;
     double cells[3], total = 1;
     for (int a = 0; a < 3; a++) {

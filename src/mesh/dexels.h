@@ -46,6 +46,11 @@ struct mesh_dexels {
     mesh_hit *hit[3];
     size_t nhit[3];
     mesh_palette pal; /* what the crossings' colours mean */
+    /* The scene and root the rays were cast into (borrowed: the caller
+     * keeps the scene while it has the sampling); contouring asks it for
+     * exact points on sharp edges (snap.c). */
+    const csg_scene *scene;
+    int root;
     /* The next grid, over a part of the model far from this one's
      * (mesh_dexels_new samples such parts each on its own grid). */
     struct mesh_dexels *next;
@@ -96,5 +101,48 @@ int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c, uint16_t color)
 /* Give m (still without triangles) the colours of palette p; 0 or -1 (out
  * of memory). */
 int mesh_set_palette(mesh *m, const mesh_palette *p);
+
+/* The minimum-norm least-squares solution x of a x = b for a symmetric 3×3
+ * a (destroyed), eigenvalues below 5 % of the largest dropped (contour.c). */
+void mesh_qef_solve(double a[3][3], const double b[3], double x[3]);
+
+/* Contour vertices moved onto the exact surface (snap.c). */
+typedef struct mesh_snapper {
+    const mesh_dexels *d;
+    double cos_feature;
+    iv_arena *arena; /* NULL: the sampling has no scene; nothing moves */
+} mesh_snapper;
+
+/* 0, or -1 when out of memory. */
+int mesh_snapper_init(mesh_snapper *sn, const mesh_dexels *d, double cos_feature);
+void mesh_snapper_free(mesh_snapper *sn);
+/* The crossing of the line x + t·n, |t| <= reach (n a unit vector), nearest
+ * x whose normal is within acos(min_cos) of n: into p and pn, 1; 0 when
+ * there is none (or the sampling has no scene). */
+int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
+                    double min_cos, double p[3], double pn[3]);
+/* The exact normals of the contour's vertices that are ray crossings (the
+ * others: 0, 0, 0), by vertex index; n NULL and cap 0 to start, free(n). */
+typedef struct mesh_vnormals {
+    float (*n)[3];
+    size_t cap;
+} mesh_vnormals;
+/* 0, or -1 when out of memory. */
+int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3]);
+/* Split the edges of triangles [t0, m->nt) of m (made on sampling grid
+ * sn->d) whose midpoints lie off the exact surface where it bends
+ * (refine.c); vn gets the new vertices' normals.  0 or -1 when out of
+ * memory. */
+int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn);
+/* Move x (a vertex placed from the ns samples sp, with normals nrm, of its
+ * cell) onto the exact surfaces those samples lie on — up to three, told
+ * apart by the feature angle: the surface, a sharp edge, a corner — as
+ * nearly as the box [lo, hi] allows, the coordinate `fixed` (an axis, or
+ * -1) kept.  Left where it is when it fits the surfaces there better, or
+ * the samples hold more than three surfaces (0); else the number of
+ * surfaces.  group (may be NULL) is told which surface, 0 .. 2, each
+ * sample is on. */
+int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], int ns, int fixed,
+              const double lo[3], const double hi[3], double x[3], int *group);
 
 #endif

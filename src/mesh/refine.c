@@ -1,0 +1,222 @@
+/*
+ * refine.c — edges of the contour split where the exact surface bends away
+ * from them (see dexels.h, mesh_refine_edges).
+ *
+ * The contour joins the samples of a cell by edges, and where a concave
+ * sharp edge runs between two grid nodes without changing their signs (the
+ * groove between two spheres, a cell away from where the node signs would
+ * see it), an edge of the contour bridges the groove: its midpoint is off
+ * the surface by the groove's depth (0.06 of a cell of 0.25 there).  A ray
+ * through the midpoint along the two triangles' mean normal finds the
+ * surface under it; where it is farther than a hundredth of a cell, the
+ * edge is split there (each of its two triangles in two).  An edge between
+ * two samples of surfaces that meet at a sharp edge (a convex rim that
+ * passes between two nodes, which a chord between its two sides cuts off)
+ * is split on that sharp edge instead, found as contour vertices are
+ * (mesh_snap).  Only edges whose triangles meet at more than 10°, or whose
+ * ends' normals do, are looked at — on smooth parts the contour is already
+ * within a small fraction of a cell — and each round splits at most one
+ * edge of a triangle, so the split is checked on the triangles it makes:
+ * neither may turn against its parent or have no area.  Three rounds.
+ */
+#include "../intervals/vec3.h"
+#include "dexels.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define ROUNDS 3
+#define COS_BENT 0.985 /* cos 10° */
+#define OFF 0.01       /* cells: a midpoint farther from the surface is split there */
+
+typedef struct edge_map {
+    uint64_t *key; /* (a + 1) << 32 | (b + 1), a < b; 0 = empty */
+    int32_t *half; /* 3·triangle + corner of the first side seen */
+    int32_t *other;
+    size_t cap;
+} edge_map;
+
+static uint64_t mix(uint64_t k)
+{
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdULL;
+    k ^= k >> 33;
+    return k;
+}
+
+int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3])
+{
+    if ((size_t)v >= vn->cap) {
+        size_t cap = vn->cap ? vn->cap : 1024;
+        while (cap <= (size_t)v)
+            cap *= 2;
+        float(*g)[3] = realloc(vn->n, cap * sizeof *g);
+        if (!g) return -1;
+        memset(g + vn->cap, 0, (cap - vn->cap) * sizeof *g);
+        vn->n = g;
+        vn->cap = cap;
+    }
+    for (int c = 0; c < 3; c++)
+        vn->n[v][c] = (float)n[c];
+    return 0;
+}
+
+/* Vertex v's normal into n; 0 when it has none. */
+static int vnormal(const mesh_vnormals *vn, int32_t v, double n[3])
+{
+    if ((size_t)v >= vn->cap) return 0;
+    for (int c = 0; c < 3; c++)
+        n[c] = vn->n[v][c];
+    return dot3(n, n) > 0.25;
+}
+
+static void vtx(const mesh *m, int32_t i, double p[3])
+{
+    for (int c = 0; c < 3; c++)
+        p[c] = m->v[3 * (size_t)i + c];
+}
+
+static void normal_of(const double a[3], const double b[3], const double c[3], double n[3])
+{
+    double e1[3], e2[3];
+    sub3(b, a, e1);
+    sub3(c, a, e2);
+    cross3(e1, e2, n);
+}
+
+/* Triangle t's corners with the edge (ea, eb) of corner k replaced by p:
+ * the two triangles it becomes, each turned less than 90° from t and with
+ * some area; 1 when both are. */
+static int halves_ok(const mesh *m, int32_t t, int k, const double p[3], double h)
+{
+    const int32_t *tv = &m->t[3 * (size_t)t];
+    double a[3], b[3], c[3], n[3], n1[3], n2[3];
+    vtx(m, tv[k], a);
+    vtx(m, tv[(k + 1) % 3], b);
+    vtx(m, tv[(k + 2) % 3], c);
+    normal_of(a, b, c, n);
+    normal_of(a, p, c, n1);
+    normal_of(p, b, c, n2);
+    double min2 = 1e-10 * h * h * h * h;
+    return dot3(n, n1) > 0 && dot3(n, n2) > 0 && dot3(n1, n1) > min2 && dot3(n2, n2) > min2;
+}
+
+/* One round; *split set when it split an edge.  0 or -1 (out of memory). */
+static int round_once(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn, int *split)
+{
+    int nt = m->nt - t0;
+    double h = sn->d->h;
+    edge_map em;
+    em.cap = 16;
+    while (em.cap < 3 * (size_t)nt)
+        em.cap *= 2;
+    em.key = calloc(em.cap, sizeof *em.key);
+    em.half = malloc(em.cap * sizeof *em.half);
+    em.other = malloc(em.cap * sizeof *em.other);
+    uint8_t *used = calloc((size_t)nt, 1);
+    int rc = -1;
+    if (!em.key || !em.half || !em.other || !used) goto done;
+    for (int32_t t = 0; t < nt; t++)
+        for (int k = 0; k < 3; k++) {
+            int32_t a = m->t[3 * (size_t)(t0 + t) + k],
+                    b = m->t[3 * (size_t)(t0 + t) + (k + 1) % 3];
+            uint64_t key = a < b ? (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1)
+                                 : (uint64_t)(b + 1) << 32 | (uint64_t)(a + 1);
+            size_t p = mix(key) & (em.cap - 1);
+            while (em.key[p] && em.key[p] != key)
+                p = (p + 1) & (em.cap - 1);
+            if (!em.key[p]) {
+                em.key[p] = key;
+                em.half[p] = 3 * t + k;
+                em.other[p] = -1;
+            } else {
+                em.other[p] = 3 * t + k;
+            }
+        }
+    for (size_t p = 0; p < em.cap; p++) {
+        if (!em.key[p] || em.other[p] < 0) continue;
+        int32_t ta = em.half[p] / 3, tb = em.other[p] / 3;
+        int ka = em.half[p] % 3, kb = em.other[p] % 3;
+        if (used[ta] || used[tb]) continue;
+        const int32_t *va = &m->t[3 * (size_t)(t0 + ta)], *vb = &m->t[3 * (size_t)(t0 + tb)];
+        double a[3], b[3], c[3], d[3], na[3], nb[3];
+        vtx(m, va[ka], a);
+        vtx(m, va[(ka + 1) % 3], b);
+        vtx(m, va[(ka + 2) % 3], c);
+        vtx(m, vb[(kb + 2) % 3], d);
+        normal_of(a, b, c, na);
+        normal_of(b, a, d, nb);
+        double la = sqrt(dot3(na, na)), lb = sqrt(dot3(nb, nb)), ends[2][3], ep[2][3];
+        int known = vnormal(vn, va[ka], ends[0]) && vnormal(vn, va[(ka + 1) % 3], ends[1]);
+        double cos_ends = known ? dot3(ends[0], ends[1]) : 1;
+        if (!(la > 0 && lb > 0) || (dot3(na, nb) >= COS_BENT * la * lb && cos_ends >= COS_BENT))
+            continue;
+        double dir[3], mid[3];
+        for (int q = 0; q < 3; q++) {
+            dir[q] = na[q] / la + nb[q] / lb;
+            mid[q] = 0.5 * (a[q] + b[q]);
+        }
+        double dl = sqrt(dot3(dir, dir));
+        if (!(dl > 1e-6)) continue;
+        for (int q = 0; q < 3; q++)
+            dir[q] /= dl;
+        /* Where to split: on the sharp edge of the ends' two surfaces, else
+         * on the surface under the midpoint; the first that is off the edge
+         * and keeps both triangles' halves the right way up. */
+        double hit[3], hn[3] = {0, 0, 0}, off[3];
+        int found = 0;
+        for (int how = cos_ends < sn->cos_feature ? 0 : 1; how < 2 && !found; how++) {
+            if (how == 0) {
+                double blo[3], bhi[3];
+                for (int q = 0; q < 3; q++) {
+                    ep[0][q] = a[q];
+                    ep[1][q] = b[q];
+                    blo[q] = mid[q] - 0.5 * h;
+                    bhi[q] = mid[q] + 0.5 * h;
+                    hit[q] = mid[q];
+                }
+                if (mesh_snap(sn, (const double(*)[3])ep, (const double(*)[3])ends, 2, -1, blo, bhi,
+                              hit, NULL) != 2)
+                    continue;
+            } else if (!mesh_snap_probe(sn, mid, dir, 0.5 * h, -1, hit, hn)) {
+                continue;
+            }
+            sub3(hit, mid, off);
+            found = dot3(off, off) > OFF * OFF * h * h && halves_ok(m, t0 + ta, ka, hit, h) &&
+                    halves_ok(m, t0 + tb, kb, hit, h);
+        }
+        if (!found) continue;
+        int32_t v = mesh_push_vertex(m, hit[0], hit[1], hit[2]);
+        if (v < 0 || mesh_vnormal_set(vn, v, hn) != 0) goto done;
+        int32_t tri[2] = {t0 + ta, t0 + tb};
+        int kk[2] = {ka, kb};
+        for (int s = 0; s < 2; s++) {
+            int32_t *tv = &m->t[3 * (size_t)tri[s]];
+            int32_t e1 = tv[(kk[s] + 1) % 3], e2 = tv[(kk[s] + 2) % 3];
+            uint16_t color = m->tc && m->npal ? m->tc[tri[s]] : 0;
+            tv[(kk[s] + 1) % 3] = v; /* (e0, v, e2) */
+            if (mesh_push_triangle(m, v, e1, e2, color) < 0) goto done;
+        }
+        used[ta] = used[tb] = 1;
+        *split = 1;
+    }
+    rc = 0;
+done:
+    free(em.key);
+    free(em.half);
+    free(em.other);
+    free(used);
+    return rc;
+}
+
+int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)
+{
+    if (!sn->arena) return 0;
+    for (int r = 0; r < ROUNDS; r++) {
+        int split = 0;
+        if (round_once(m, t0, sn, vn, &split) != 0) return -1;
+        if (!split) break;
+    }
+    return 0;
+}
