@@ -547,7 +547,8 @@ void rayscad_mesh_options_default(rayscad_mesh_options *o);
  * surface and its normal are exact. */
 typedef struct rayscad_sampling rayscad_sampling;
 
-/* Cast the rays (s borrowed for the call).  RAYSCAD_OK and *out
+/* Cast the rays.  s is borrowed until the sampling is freed: meshing it
+ * asks the scene for exact points on sharp edges.  RAYSCAD_OK and *out
  * (rayscad_sampling_free), or an error with a message:
  * RAYSCAD_ERROR_CELLS (checked before anything is cast or allocated),
  * RAYSCAD_ERROR_INTERVALS, RAYSCAD_ERROR (an unbounded root, a grid over

@@ -54,7 +54,8 @@ typedef struct mesh_dexels mesh_dexels;
 /* Cast the rays through root o->root of s (o may be NULL: defaults), on one
  * grid for each far-apart part of the model, of spacing o->h or chosen as
  * grids.c says (refined for thin parts when o->resolve_thin).  The
- * scene is borrowed for the duration of the call only.  An empty root, or a
+ * scene is borrowed until the sampling is freed: contouring casts rays of
+ * its own into it (snap.c, refine.c).  An empty root, or a
  * root index out of range, gives an empty sampling (volume 0, empty mesh).
  * The result does not depend on the number of threads.  Returns 0 and the sampling in
  * *out (owned by the caller, free with mesh_dexels_free), or with a message
