@@ -134,6 +134,10 @@ int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3]);
  * (refine.c); vn gets the new vertices' normals.  0 or -1 when out of
  * memory. */
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn);
+/* Move the smooth vertices of simplified mesh m out by half the largest
+ * sag of their triangles, measured by rays up to reach from them
+ * (balance.c); 0 or -1 when out of memory. */
+int mesh_balance(mesh *m, mesh_snapper *sn, double reach);
 /* Move x (a vertex placed from the ns samples sp, with normals nrm, of its
  * cell) onto the exact surfaces those samples lie on — up to three, told
  * apart by the feature angle: the surface, a sharp edge, a corner — as

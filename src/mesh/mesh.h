@@ -130,12 +130,21 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
                         size_t errlen);
 
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
- * edge midpoint of m stays within tol of the triangles that replace it:
- * still closed, 2-manifold and outward, every vertex one of m's own.
- * Returns 0, or -1 with a message (out of memory; m is then unchanged). */
-int mesh_simplify(mesh *m, double tol, char *err, size_t errlen);
+ * sharp edge's midpoint of m stays within tol of the triangles that replace
+ * it — within edge_tol, a point on a sharp edge or near a triangle with a
+ * corner on one: still closed, 2-manifold and outward, every vertex one of
+ * m's own.  Returns 0, or -1 with a message (out of memory; m is then
+ * unchanged). */
+int mesh_simplify(mesh *m, double tol, double edge_tol, char *err, size_t errlen);
 
-/* mesh_dexels_new + mesh_dexels_contour (+ measure when m is not NULL);
+/* The contour m of d simplified to within about tol of the exact surface
+ * (balance.c): mesh_simplify, the smooth parts' sag then split between
+ * both sides of the surface by moving their vertices out (measured: within
+ * 1.3 tol).  d's scene must still be there.  0, or -1 with a message. */
+int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, char *err, size_t errlen);
+
+/* mesh_dexels_new + mesh_dexels_contour (+ mesh_dexels_simplify when
+ * o->tolerance > 0) (+ measure when m is not NULL);
  * either's failure code. */
 int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_measure *m,
                     char *err, size_t errlen);

@@ -99,7 +99,7 @@ typedef struct simp {
     int32_t *phead, *ptail, *pnext;
     int32_t *best;   /* scratch: a point's nearest new triangle */
     uint8_t *crease; /* a point on a sharp edge: it must stay near an edge */
-    double tol2, len_scale;
+    double tol2, crease_tol2, len_scale;
     entry *heap;
     size_t nheap, capheap;
     int heaped; /* the heap is in order (heapify has run) */
@@ -217,7 +217,7 @@ static double quality(const double a[3], const double b[3], const double c[3], d
  * edges — trying first the triangle it lies on now (`on`, if among them);
  * the first near enough into s->best[x]. */
 static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const int32_t *moved,
-                       int n)
+                       const uint8_t *edgy, int n)
 {
     int first = 0;
     for (int m = 0; m < n; m++)
@@ -228,9 +228,10 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
         if (s->crease[x]) {
             for (int e = 0; e < 3 && !near; e++) /* a degenerate triangle: its segment */
                 near = geom_triangle_dist2(P(s, x), nt[m][e], nt[m][(e + 1) % 3],
-                                           nt[m][(e + 1) % 3]) <= s->tol2;
+                                           nt[m][(e + 1) % 3]) <= s->crease_tol2;
         } else {
-            near = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]) <= s->tol2;
+            near = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]) <=
+                   (edgy[m] ? s->crease_tol2 : s->tol2);
         }
         if (near) {
             s->best[x] = moved[m];
@@ -272,11 +273,14 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
 
     /* the triangles that move */
     double worst_old = 1, worst_new = 1, nt[FAN_MAX][3][3];
+    uint8_t edgy[FAN_MAX];
     const double *pu = P(s, u);
     for (int m = 0; m < nmoved; m++) {
         const int32_t *tv = s->t + 3 * moved[m];
         const double *a[3], *an[3];
+        edgy[m] = 0;
         for (int i = 0; i < 3; i++) {
+            edgy[m] |= s->crease[tv[i] == v ? u : tv[i]];
             a[i] = P(s, tv[i]);
             an[i] = tv[i] == v ? pu : a[i];
             memcpy(nt[m][i], an[i], sizeof nt[m][i]);
@@ -293,10 +297,10 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
-    if (!near_enough(s, v, -1, nt, moved, nmoved)) return 0;
+    if (!near_enough(s, v, -1, nt, moved, edgy, nmoved)) return 0;
     for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
         for (int32_t x = s->phead[k / 3]; x >= 0; x = s->pnext[x])
-            if (!near_enough(s, x, k / 3, nt, moved, nmoved)) return 0;
+            if (!near_enough(s, x, k / 3, nt, moved, edgy, nmoved)) return 0;
     return 1;
 }
 
@@ -429,12 +433,13 @@ static int sharp(const simp *s, const double *tn, int32_t t, int32_t a, int32_t 
     return dot3(n0, n1) < SHARP_COS * sqrt(dot3(n0, n0) * dot3(n1, n1));
 }
 
-static int simp_init(simp *s, const mesh *m, double tol)
+static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
 {
     memset(s, 0, sizeof *s);
     s->nv = m->nv;
     s->nt = m->nt;
     s->tol2 = tol * tol;
+    s->crease_tol2 = edge_tol * edge_tol;
     size_t nv = (size_t)m->nv, nt = (size_t)m->nt;
     size_t np = nv + 3 * nt / 2; /* the vertices, then room for a point per edge */
     s->p = malloc(3 * np * sizeof *s->p);
@@ -514,11 +519,11 @@ static int simp_init(simp *s, const mesh *m, double tol)
     return 0;
 }
 
-int mesh_simplify(mesh *m, double tol, char *err, size_t errlen)
+int mesh_simplify(mesh *m, double tol, double edge_tol, char *err, size_t errlen)
 {
-    if (!(tol > 0) || m->nt == 0) return 0;
+    if (!(tol > 0) || !(edge_tol > 0) || m->nt == 0) return 0;
     simp s;
-    if (simp_init(&s, m, tol) != 0) goto oom;
+    if (simp_init(&s, m, tol, edge_tol) != 0) goto oom;
     while (s.nheap > 0) {
         entry e = heap_pop(&s);
         if (s.head[e.v] < 0 || s.head[e.u] < 0 || s.stamp[e.v] != e.sv || s.stamp[e.u] != e.su)
