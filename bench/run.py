@@ -64,8 +64,8 @@ OPENSCAD_FN_FINE = 192
 MANIFOLD_SEGMENTS = [64, 128]
 # rayscad --mesh-size 0.25 simplified to these --mesh-tolerance distances
 # (issue 22: as few triangles as manifold-3d at 128 segments, at no larger
-# deviation from the exact surface).
-MESH_TOLERANCES = [0.0075]
+# deviation from the exact surface; the mesh lies within about 1.3 D).
+MESH_TOLERANCES = [0.006]
 
 
 def surface_deviation(scene, tris):
