@@ -131,8 +131,8 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
 
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
- * it — within edge_tol, a point on a sharp edge or near a triangle with a
- * corner on one: still closed, 2-manifold and outward, every vertex one of
+ * it where m is curved, within edge_tol on flat faces, on sharp edges and
+ * near triangles with a corner on one: still closed, 2-manifold and outward, every vertex one of
  * m's own.  Returns 0, or -1 with a message (out of memory; m is then
  * unchanged). */
 int mesh_simplify(mesh *m, double tol, double edge_tol, char *err, size_t errlen);

