@@ -124,14 +124,6 @@ typedef struct fmap {
     size_t cap, n;
 } fmap;
 
-static uint64_t mix(uint64_t k)
-{
-    k ^= k >> 33;
-    k *= 0xff51afd7ed558ccdULL;
-    k ^= k >> 33;
-    return k;
-}
-
 static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
 {
     if (2 * (m->n + 1) > m->cap) {
@@ -145,7 +137,7 @@ static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
         }
         for (size_t i = 0; i < m->cap; i++) {
             if (!m->key[i]) continue;
-            size_t p = mix(m->key[i]) & (cap - 1);
+            size_t p = mesh_hash_mix(m->key[i]) & (cap - 1);
             while (k[p])
                 p = (p + 1) & (cap - 1);
             k[p] = m->key[i];
@@ -157,7 +149,7 @@ static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
         m->val = v;
         m->cap = cap;
     }
-    size_t p = mix(key) & (m->cap - 1);
+    size_t p = mesh_hash_mix(key) & (m->cap - 1);
     while (m->key[p] && m->key[p] != key)
         p = (p + 1) & (m->cap - 1);
     *fresh = !m->key[p];

@@ -74,6 +74,16 @@ double mesh_piece_longest(const mesh_piece *p);
 int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const double lo[3],
                      const double hi[3], mesh_dexels **out, char *err, size_t errlen);
 
+/* A 64-bit key's hash (MurmurHash3's finaliser, half of it), for the
+ * open-addressing maps of contour.c and refine.c. */
+static inline uint64_t mesh_hash_mix(uint64_t k)
+{
+    k ^= k >> 33;
+    k *= 0xff51afd7ed558ccdULL;
+    k ^= k >> 33;
+    return k;
+}
+
 /* The other two axes of a, in increasing order. */
 static inline void mesh_axes_other(int a, int *u, int *v)
 {

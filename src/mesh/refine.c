@@ -37,14 +37,6 @@ typedef struct edge_map {
     size_t cap;
 } edge_map;
 
-static uint64_t mix(uint64_t k)
-{
-    k ^= k >> 33;
-    k *= 0xff51afd7ed558ccdULL;
-    k ^= k >> 33;
-    return k;
-}
-
 int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3])
 {
     if ((size_t)v >= vn->cap) {
@@ -123,7 +115,7 @@ static int round_once(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn, int 
                     b = m->t[3 * (size_t)(t0 + t) + (k + 1) % 3];
             uint64_t key = a < b ? (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1)
                                  : (uint64_t)(b + 1) << 32 | (uint64_t)(a + 1);
-            size_t p = mix(key) & (em.cap - 1);
+            size_t p = mesh_hash_mix(key) & (em.cap - 1);
             while (em.key[p] && em.key[p] != key)
                 p = (p + 1) & (em.cap - 1);
             if (!em.key[p]) {

@@ -518,11 +518,10 @@ Test(mesh_contour, sphere)
     csg_scene_free(s);
 }
 
-/* The largest distance from the surface sd of the points of each triangle:
- * corners, edge midpoints, centroid (an edge that bridges a groove has its
- * midpoint off the surface though its ends are on it). */
-static double max_tri_dist(const mesh *m, double (*sd)(const double p[3], const void *ctx),
-                           const void *ctx)
+/* The signed distances of the mesh's points (vertices, edge midpoints,
+ * centroids) from sd, the most negative and the most positive. */
+static void signed_extremes(const mesh *m, double (*sd)(const double p[3], const void *ctx),
+                            const void *ctx, double *lo, double *hi)
 {
     static const double w[7][3] = {{1, 0, 0},
                                    {0, 1, 0},
@@ -533,16 +532,28 @@ static double max_tri_dist(const mesh *m, double (*sd)(const double p[3], const 
                                    {1. / 3, 1. / 3, 1. / 3}};
     const float *v = mesh_vertices(m);
     const int32_t *t = mesh_triangles(m);
-    double worst = 0;
+    *lo = *hi = 0;
     for (int q = 0; q < mesh_triangle_count(m); q++)
         for (int k = 0; k < 7; k++) {
             double p[3] = {0, 0, 0};
             for (int c = 0; c < 3; c++)
                 for (int j = 0; j < 3; j++)
                     p[c] += w[k][j] * v[3 * t[3 * q + j] + c];
-            worst = fmax(worst, fabs(sd(p, ctx)));
+            double d = sd(p, ctx);
+            *lo = fmin(*lo, d);
+            *hi = fmax(*hi, d);
         }
-    return worst;
+}
+
+/* The largest distance from the surface sd of the points of each triangle
+ * (an edge that bridges a groove has its midpoint off the surface though
+ * its ends are on it). */
+static double max_tri_dist(const mesh *m, double (*sd)(const double p[3], const void *ctx),
+                           const void *ctx)
+{
+    double lo, hi;
+    signed_extremes(m, sd, ctx, &lo, &hi);
+    return fmax(-lo, hi);
 }
 
 /* Two spheres r = 10, centres 10 apart on x: their union (op 0), a concave
@@ -1108,33 +1119,6 @@ Test(mesh_simplify, plate_with_a_hole_is_its_corners)
     cr_expect_lt(fabs(volume_of(m) - 1500), 1e-3, "volume %.9f", volume_of(m));
     mesh_free(m);
     csg_scene_free(s);
-}
-
-/* The signed distances of the mesh's points (vertices, edge midpoints,
- * centroids) from sd, the most negative and the most positive. */
-static void signed_extremes(const mesh *m, double (*sd)(const double p[3], const void *ctx),
-                            const void *ctx, double *lo, double *hi)
-{
-    static const double w[7][3] = {{1, 0, 0},
-                                   {0, 1, 0},
-                                   {0, 0, 1},
-                                   {.5, .5, 0},
-                                   {0, .5, .5},
-                                   {.5, 0, .5},
-                                   {1. / 3, 1. / 3, 1. / 3}};
-    const float *v = mesh_vertices(m);
-    const int32_t *t = mesh_triangles(m);
-    *lo = *hi = 0;
-    for (int q = 0; q < mesh_triangle_count(m); q++)
-        for (int k = 0; k < 7; k++) {
-            double p[3] = {0, 0, 0};
-            for (int c = 0; c < 3; c++)
-                for (int j = 0; j < 3; j++)
-                    p[c] += w[k][j] * v[3 * t[3 * q + j] + c];
-            double d = sd(p, ctx);
-            *lo = fmin(*lo, d);
-            *hi = fmax(*hi, d);
-        }
 }
 
 /* A sphere: far fewer triangles, still closed, and within about the
