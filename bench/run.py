@@ -262,11 +262,21 @@ def main():
                     out = os.path.join(work, f"{name}.rayscad-{h}.stl")
                     # binary STL, as the diary's earlier runs wrote (manifold-3d
                     # writes no file; openscad its default, text)
+                    # the contour itself (--mesh-tolerance 0), as the diary's
+                    # earlier runs wrote it before meshes were simplified by
+                    # default
                     t, p = run([rayscad, path, "-o", out, "--export-format", "binstl",
-                                "--mesh-size", str(h), "--threads",
+                                "--mesh-size", str(h), "--mesh-tolerance", "0", "--threads",
                                 str(a.threads)])
                     if p.returncode == 0:
                         runs.setdefault(f"rayscad --mesh-size {h}", []).append((t, None, out))
+                # out of the box: the default grid and tolerance (the facets'
+                # deviation at the scene's $fn = 64)
+                out = os.path.join(work, f"{name}.rayscad-default.stl")
+                t, p = run([rayscad, path, "-o", out, "--export-format", "binstl", "--threads",
+                            str(a.threads)])
+                if p.returncode == 0:
+                    runs.setdefault("rayscad default", []).append((t, None, out))
                 for tol in MESH_TOLERANCES:
                     out = os.path.join(work, f"{name}.rayscad-tol{tol}.stl")
                     t, p = run([rayscad, path, "-o", out, "--export-format", "binstl",

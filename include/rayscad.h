@@ -310,6 +310,14 @@ enum { RAYSCAD_ROOT_MODEL = 0, RAYSCAD_ROOT_HIGHLIGHT = 1, RAYSCAD_ROOT_BACKGROU
  * RAYSCAD_OK and *out (rayscad_scene_free), or an error with a message. */
 rayscad_status rayscad_scene_new(rayscad_model *m, rayscad_scene **out, char *err, size_t errlen);
 void rayscad_scene_free(rayscad_scene *s);
+/* The least deviation from the true surface that OpenSCAD's facets would
+ * give one of the model's round primitives (spheres, cylinders and discs
+ * kept round, revolves): r·(1 − cos(180°/n)) for n fragments at its
+ * $fn/$fa/$fs and radius r in world units.  0 when the model has none.  A
+ * mesh simplified to it (rayscad_mesh_options.tolerance) is as close to
+ * the model as OpenSCAD's own would be. */
+double rayscad_scene_facet_deviation(const rayscad_scene *s);
+
 /* The bounds of root r, padded outward by a relative 1e-9 (so that no
  * rounding of a ray's test ever clips the solid): 0, or -1 when the root is
  * empty.  Components may be infinite (an unbounded intersection). */

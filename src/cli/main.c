@@ -528,7 +528,7 @@ static const char *misplaced_flag(const cli_options *o, const run *r)
 {
     int mesh = has_kind(r, OUTPUT_MESH);
     if (!mesh && o->ascii) return "--ascii applies to mesh outputs";
-    if (!mesh && o->mesh_tolerance > 0)
+    if (!mesh && o->mesh_tolerance >= 0)
         return "--mesh-tolerance (--decimate) applies to mesh outputs";
     if (!mesh && !o->measure && o->mesh_size > 0)
         return "--mesh-size applies to mesh outputs and --measure";

@@ -20,6 +20,7 @@
 #include "memory.h"
 #include "progress.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,6 +129,21 @@ static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_o
     return 0;
 }
 
+/* The tolerance a mesh is simplified to: the user's, else the deviation
+ * OpenSCAD's facets would give the model's round parts (so the mesh is as
+ * close to the model as openscad's), else — a model of flat faces, which
+ * simplify exactly — a ten-thousandth of its longest side, above the
+ * contour's own placement noise (EPS·h, 1/256 of a cell). */
+static double mesh_tolerance(const cli_options *o, const rayscad_scene *scene)
+{
+    if (o->mesh_tolerance >= 0) return o->mesh_tolerance;
+    double sag = rayscad_scene_facet_deviation(scene), lo[3], hi[3], size = 0;
+    if (rayscad_scene_bounds(scene, RAYSCAD_ROOT_MODEL, lo, hi) == 0)
+        for (int k = 0; k < 3; k++)
+            if (isfinite(hi[k] - lo[k])) size = fmax(size, hi[k] - lo[k]);
+    return sag > 0 ? sag : 1e-4 * size;
+}
+
 int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output *outs,
                     const char *const *paths, int n)
 {
@@ -135,7 +151,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     rayscad_mesh_options mo;
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
-    mo.tolerance = o->mesh_tolerance;
+    mo.tolerance = mesh_tolerance(o, scene);
     mo.threads = o->threads;
     mo.root = RAYSCAD_ROOT_MODEL;
     mo.max_cells = o->max_mesh_cells;

@@ -91,7 +91,10 @@ const char cli_usage_light[] =
     "  --mesh-tolerance D      simplify the mesh to within about D of the exact\n"
     "                          surface: flat faces become a few triangles,\n"
     "                          curves as few as D allows, sharp edges and\n"
-    "                          corners stay\n"
+    "                          corners stay (default: the deviation OpenSCAD's\n"
+    "                          facets would give the model's round parts at\n"
+    "                          their $fn/$fa/$fs, else 1e-4 of its size; 0: the\n"
+    "                          contour unsimplified)\n"
     "  --decimate TOL          the older name of --mesh-tolerance (0: no\n"
     "                          simplification)\n"
     "  --measure               print volume, surface area, bounding box and centre\n"
@@ -289,6 +292,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
     o->colorscheme = "Cornfield";
     o->view.kind = RAYSCAD_CAMERA_DEFAULT;
     o->check_parameters = 1;
+    o->mesh_tolerance = -1; /* the model's own (mesh_output.c) */
 
     static const char *const valued[] = {"-o",
                                          "-D",
@@ -441,8 +445,8 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                 return -1;
             }
         } else if (strcmp(flag, "--mesh-tolerance") == 0) {
-            if (cli_parse_double(val, &o->mesh_tolerance) != 0 || !(o->mesh_tolerance > 0)) {
-                snprintf(err, errlen, "--mesh-tolerance expects a distance > 0, got '%s'", val);
+            if (cli_parse_double(val, &o->mesh_tolerance) != 0 || !(o->mesh_tolerance >= 0)) {
+                snprintf(err, errlen, "--mesh-tolerance expects a distance >= 0, got '%s'", val);
                 return -1;
             }
         } else if (strcmp(flag, "--decimate") == 0) { /* --mesh-tolerance, as it was */

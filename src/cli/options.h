@@ -68,7 +68,7 @@ typedef struct cli_options {
     rayscad_render_options optics;
     /* Meshes and measurement (mesh_output.h). */
     double mesh_size;      /* --mesh-size: grid spacing > 0; 0 = derived from the model */
-    double mesh_tolerance; /* --mesh-tolerance (or --decimate) D > 0; 0: none */
+    double mesh_tolerance; /* --mesh-tolerance (or --decimate) D; 0: none; < 0: the model's */
     int ascii;             /* --ascii: text STL / PLY */
     int measure;           /* --measure (also set by --json) */
     int json;              /* --json: the measurement as JSON */

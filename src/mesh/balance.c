@@ -151,7 +151,7 @@ int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, char *err, s
     if (mesh_simplify(m, SMOOTH * tol, tol, err, errlen) != 0) return -1;
     mesh_snapper sn;
     int rc = mesh_snapper_init(&sn, d, cos(3.14159265358979323846 / 6));
-    if (rc == 0 && !getenv("NOBAL")) rc = mesh_balance(m, &sn, 4 * SMOOTH * tol);
+    if (rc == 0) rc = mesh_balance(m, &sn, 4 * SMOOTH * tol);
     mesh_snapper_free(&sn);
     if (rc != 0) snprintf(err, errlen, "out of memory simplifying the mesh");
     return rc;

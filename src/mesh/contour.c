@@ -335,7 +335,7 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     edge_sample(s, a, r, seg, enter, base, out);
     if (*slot < 0) {
         *slot = mesh_push_vertex(s->m, out->p[0], out->p[1], out->p[2]);
-        if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n) != 0) return -1;
+        if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n, 0) != 0) return -1;
     }
     out->vid = *slot;
     return 0;
@@ -485,9 +485,10 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
         out[c] = fmin(fmax(mass[c] + x[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
 }
 
-/* A face point moved onto its sharp edge's exact position in face f. */
-static void snap_face_point(sweep *s, const sample *a, const sample *b, int f, const double lo[3],
-                            double fp[3])
+/* A face point moved onto its sharp edge's exact position in face f; 1
+ * when it is on it (not held in the face short of it). */
+static int snap_face_point(sweep *s, const sample *a, const sample *b, int f, const double lo[3],
+                           double fp[3])
 {
     double h = s->d->h, sp[2][3], nrm[2][3], blo[3], bhi[3];
     for (int c = 0; c < 3; c++) {
@@ -499,8 +500,14 @@ static void snap_face_point(sweep *s, const sample *a, const sample *b, int f, c
         bhi[c] = lo[c] + (1 - EPS) * h;
     }
     blo[f / 2] = bhi[f / 2] = fp[f / 2];
-    mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, 2, f / 2, blo, bhi, fp,
-              NULL);
+    double want[3] = {fp[0], fp[1], fp[2]};
+    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, 2, f / 2,
+                             blo, bhi, want, NULL);
+    int inside = 1;
+    for (int c = 0; c < 3; c++)
+        inside &= (want[c] > blo[c] && want[c] < bhi[c]) || c == f / 2;
+    memcpy(fp, want, sizeof want);
+    return surfaces == 2 && inside;
 }
 
 /* A loop vertex.  Its colour is its sample's, for a face point the next
@@ -544,8 +551,8 @@ static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[
  * loop lv), it stays in the cell shrunk by EPS·h, where no fan triangle
  * folds (and no other cell's vertex is: a corner is one point, which only
  * the cell holding it may take). */
-static void snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl, const lvert *lv,
-                             int nv, const double lo[3], double x[3])
+static int snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl, const lvert *lv,
+                            int nv, const double lo[3], double x[3])
 {
     double h = s->d->h, sp[12][3], nrm[12][3], blo[3], bhi[3], y[3];
     for (int q = 0; q < nl; q++)
@@ -560,10 +567,13 @@ static void snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int n
     }
     int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, nl, -1, blo,
                              bhi, y, NULL);
-    if (!(surfaces == 2 && fan_keeps(lv, nv, x, y, h)))
-        for (int c = 0; c < 3; c++)
-            y[c] = fmin(fmax(y[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
+    int kept = surfaces == 2 && fan_keeps(lv, nv, x, y, h), inside = 1;
+    for (int c = 0; c < 3; c++) {
+        inside &= y[c] >= lo[c] + EPS * h && y[c] <= lo[c] + (1 - EPS) * h;
+        if (!kept) y[c] = fmin(fmax(y[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
+    }
     memcpy(x, y, sizeof y);
+    return surfaces >= 2 && (kept || inside);
 }
 
 /* Triangulate a featureless loop among its own vertices, as a fan from some
@@ -671,8 +681,10 @@ static void cell(sweep *s, int i, int j, int mask)
                     return;
                 }
                 if (fresh) {
-                    snap_face_point(s, a, b, segface[loop[q]], lo, fp);
-                    if ((*slot = mesh_push_vertex(s->m, fp[0], fp[1], fp[2])) < 0) {
+                    int on = snap_face_point(s, a, b, segface[loop[q]], lo, fp);
+                    static const double none[3] = {0, 0, 0};
+                    if ((*slot = mesh_push_vertex(s->m, fp[0], fp[1], fp[2])) < 0 ||
+                        mesh_vnormal_set(&s->vn, *slot, none, on) != 0) {
                         s->oom = 1;
                         return;
                     }
@@ -691,7 +703,7 @@ static void cell(sweep *s, int i, int j, int mask)
         if (!feature && fan_plain(s, lv, nv, navg)) continue;
         double c[3];
         loop_vertex(s, smp, loop, nl, lo, c);
-        snap_loop_vertex(s, smp, loop, nl, lv, nv, lo, c);
+        int on = snap_loop_vertex(s, smp, loop, nl, lv, nv, lo, c);
         for (int q = 0; q < nplaced; q++) {
             double dd[3];
             sub3(c, placed[q], dd);
@@ -700,12 +712,14 @@ static void cell(sweep *s, int i, int j, int mask)
                 loop_mass(smp, loop, nl, c);
                 for (int k = 0; k < 3; k++)
                     c[k] = fmin(fmax(c[k], lo[k] + EPS * h), lo[k] + (1 - EPS) * h);
+                on = 0;
                 break;
             }
         }
         if (nplaced < 6) memcpy(placed[nplaced++], c, sizeof c);
+        static const double none[3] = {0, 0, 0};
         int32_t cv = mesh_push_vertex(s->m, c[0], c[1], c[2]);
-        if (cv < 0) {
+        if (cv < 0 || mesh_vnormal_set(&s->vn, cv, none, on) != 0) {
             s->oom = 1;
             return;
         }
@@ -802,7 +816,7 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
     rc = 0;
 done:
     mesh_snapper_free(&s.snap);
-    free(s.vn.n);
+    mesh_vnormals_free(&s.vn);
     free(s.flip);
     free(s.flip_at);
     free(s.zv);

@@ -132,13 +132,17 @@ void mesh_snapper_free(mesh_snapper *sn);
 int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
                     double min_cos, double p[3], double pn[3]);
 /* The exact normals of the contour's vertices that are ray crossings (the
- * others: 0, 0, 0), by vertex index; n NULL and cap 0 to start, free(n). */
+ * others: 0, 0, 0), and which vertices lie on a sharp edge (put there by
+ * mesh_snap), by vertex index; all NULL and cap 0 to start, then
+ * mesh_vnormals_free. */
 typedef struct mesh_vnormals {
     float (*n)[3];
+    uint8_t *edge;
     size_t cap;
 } mesh_vnormals;
 /* 0, or -1 when out of memory. */
-int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3]);
+int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge);
+void mesh_vnormals_free(mesh_vnormals *vn);
 /* Split the edges of triangles [t0, m->nt) of m (made on sampling grid
  * sn->d) whose midpoints lie off the exact surface where it bends
  * (refine.c); vn gets the new vertices' normals.  0 or -1 when out of

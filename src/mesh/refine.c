@@ -37,21 +37,40 @@ typedef struct edge_map {
     size_t cap;
 } edge_map;
 
-int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3])
+int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge)
 {
     if ((size_t)v >= vn->cap) {
         size_t cap = vn->cap ? vn->cap : 1024;
         while (cap <= (size_t)v)
             cap *= 2;
         float(*g)[3] = realloc(vn->n, cap * sizeof *g);
-        if (!g) return -1;
+        if (g) vn->n = g;
+        uint8_t *e = realloc(vn->edge, cap);
+        if (e) vn->edge = e;
+        if (!g || !e) return -1;
         memset(g + vn->cap, 0, (cap - vn->cap) * sizeof *g);
-        vn->n = g;
+        memset(e + vn->cap, 0, cap - vn->cap);
         vn->cap = cap;
     }
     for (int c = 0; c < 3; c++)
         vn->n[v][c] = (float)n[c];
+    vn->edge[v] = (uint8_t)on_edge;
     return 0;
+}
+
+void mesh_vnormals_free(mesh_vnormals *vn)
+{
+    free(vn->n);
+    free(vn->edge);
+    vn->n = NULL;
+    vn->edge = NULL;
+    vn->cap = 0;
+}
+
+/* Whether vertex v lies on a sharp edge (mesh_snap put it there). */
+static int on_edge(const mesh_vnormals *vn, int32_t v)
+{
+    return (size_t)v < vn->cap && vn->edge[v];
 }
 
 /* Vertex v's normal into n; 0 when it has none. */
@@ -144,6 +163,9 @@ static int round_once(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn, int 
         double cos_ends = known ? dot3(ends[0], ends[1]) : 1;
         if (!(la > 0 && lb > 0) || (dot3(na, nb) >= COS_BENT * la * lb && cos_ends >= COS_BENT))
             continue;
+        /* along a sharp edge: its ends are on it, its middle within the
+         * edge's own sag over a cell */
+        if (on_edge(vn, va[ka]) && on_edge(vn, va[(ka + 1) % 3])) continue;
         double dir[3], mid[3];
         for (int q = 0; q < 3; q++) {
             dir[q] = na[q] / la + nb[q] / lb;
@@ -180,7 +202,7 @@ static int round_once(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn, int 
         }
         if (!found) continue;
         int32_t v = mesh_push_vertex(m, hit[0], hit[1], hit[2]);
-        if (v < 0 || mesh_vnormal_set(vn, v, hn) != 0) goto done;
+        if (v < 0 || mesh_vnormal_set(vn, v, hn, 0) != 0) goto done;
         int32_t tri[2] = {t0 + ta, t0 + tb};
         int kk[2] = {ka, kb};
         for (int s = 0; s < 2; s++) {
@@ -204,7 +226,7 @@ done:
 
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)
 {
-    if (!sn->arena || getenv("NOREF")) return 0;
+    if (!sn->arena) return 0;
     for (int r = 0; r < ROUNDS; r++) {
         int split = 0;
         if (round_once(m, t0, sn, vn, &split) != 0) return -1;

@@ -549,13 +549,30 @@ int mesh_simplify(mesh *m, double tol, double edge_tol, char *err, size_t errlen
     if (!(tol > 0) || !(edge_tol > 0) || m->nt == 0) return 0;
     simp s;
     if (simp_init(&s, m, tol, edge_tol) != 0) goto oom;
-    while (s.nheap > 0) {
-        entry e = heap_pop(&s);
-        if (s.head[e.v] < 0 || s.head[e.u] < 0 || s.stamp[e.v] != e.sv || s.stamp[e.u] != e.su)
-            continue;
-        double c = cost(&s, e.v, e.u);
-        if (!can_collapse(&s, e.v, e.u, c)) continue;
-        if (collapse(&s, e.v, e.u) != 0) goto oom;
+    /* A collapse refused is looked at again when one of its ends changes,
+     * but it may have been refused for a neighbour that changed since (a
+     * link, a needle): once the heap is empty, every edge left is tried
+     * again, until a pass collapses nothing (a box's last vertex on an
+     * edge goes so; trying the dearer direction too let triangles across a
+     * curved sharp edge through). */
+    for (int pass = 0; pass < 4; pass++) {
+        int collapsed = 0;
+        if (pass)
+            for (int t = 0; t < s.nt; t++)
+                for (int k = 0; k < 3 && s.t[3 * t] >= 0; k++) {
+                    int32_t a = s.t[3 * t + k], b = s.t[3 * t + (k + 1) % 3];
+                    if (a < b && push_edge(&s, a, b) != 0) goto oom;
+                }
+        while (s.nheap > 0) {
+            entry e = heap_pop(&s);
+            if (s.head[e.v] < 0 || s.head[e.u] < 0 || s.stamp[e.v] != e.sv || s.stamp[e.u] != e.su)
+                continue;
+            double c = cost(&s, e.v, e.u);
+            if (!can_collapse(&s, e.v, e.u, c)) continue;
+            if (collapse(&s, e.v, e.u) != 0) goto oom;
+            collapsed++;
+        }
+        if (pass && !collapsed) break;
     }
     /* compact: the vertices still used, renumbered in order */
     int32_t *map = s.val; /* reused: the new index of each kept vertex */

@@ -106,7 +106,7 @@ static double residual(const double (*p)[3], const double (*n)[3], int np, const
 int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], int ns, int fixed,
               const double lo[3], const double hi[3], double x[3], int *group)
 {
-    if (!sn->arena || ns <= 0 || getenv("NOSNAP")) return 0;
+    if (!sn->arena || ns <= 0) return 0;
     double h = sn->d->h;
     /* The surfaces: samples grouped by normal, each group's first sample
      * its representative; more than MAX_SURF surfaces: left as it is. */

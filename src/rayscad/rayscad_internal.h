@@ -16,6 +16,7 @@ struct rayscad_model {
 
 struct rayscad_scene {
     csg_scene *s;
+    double facet_sag; /* the model's scad_result.facet_sag */
 };
 
 struct rayscad_sampling {

@@ -29,6 +29,7 @@ rayscad_status rayscad_scene_new(rayscad_model *m, rayscad_scene **out, char *er
         rayscad_say(err, errlen, "out of memory");
         return RAYSCAD_ERROR_MEMORY;
     }
+    s->facet_sag = m->r.facet_sag;
     csg_node *roots[3] = {m->r.model, m->r.highlight, m->r.background};
     m->r.model = m->r.highlight = m->r.background = NULL;
     s->s = csg_scene_new(roots, 3, err, errlen);
@@ -45,6 +46,11 @@ void rayscad_scene_free(rayscad_scene *s)
     if (!s) return;
     csg_scene_free(s->s);
     free(s);
+}
+
+double rayscad_scene_facet_deviation(const rayscad_scene *s)
+{
+    return s->facet_sag;
 }
 
 int rayscad_scene_bounds(const rayscad_scene *s, int r, double lo[3], double hi[3])

@@ -58,6 +58,50 @@ static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
     return n;
 }
 
+#define PI 3.14159265358979323846
+
+/* The largest factor by which affine xf stretches a length (its linear
+ * part's largest column norm: exact for rotations and axis scales). */
+static double stretch(const csg_affine xf)
+{
+    double best = 0;
+    for (int c = 0; c < 3; c++)
+        best = fmax(best, sqrt(xf[c] * xf[c] + xf[4 + c] * xf[4 + c] + xf[8 + c] * xf[8 + c]));
+    return best;
+}
+
+/* The least facet sag of g's round leaves (scad_result.facet_sag); INFINITY
+ * when none.  A leaf's fragments are those recorded when it was made
+ * (g->cap); a revolve's, its steps over its angle at the region's widest
+ * radius. */
+static double facet_sag(const scad_geom *g)
+{
+    if (!g) return INFINITY;
+    if (!g->is_leaf) {
+        double best = INFINITY;
+        for (int i = 0; i < g->n; i++)
+            best = fmin(best, facet_sag(g->kids[i]));
+        return best;
+    }
+    const iv_shape *sh = &g->shape;
+    double r = 0, half = 0; /* radius, half the angle of one fragment (radians) */
+    if (g->cap >= 3 && (sh->kind == IV_SHAPE_SPHERE || sh->kind == IV_SHAPE_CONE ||
+                        (sh->kind == IV_SHAPE_PRISM && !sh->u.prism.g))) {
+        r = sh->kind == IV_SHAPE_SPHERE ? sh->u.sphere.r
+            : sh->kind == IV_SHAPE_CONE ? fmax(sh->u.cone.r1, sh->u.cone.r2)
+                                        : sh->u.prism.r;
+        half = PI / g->cap;
+    } else if (sh->kind == IV_SHAPE_REVOLVE && sh->u.revolve.fragments > 0 && sh->u.revolve.g) {
+        int n;
+        const double(*P)[2] = iv_region_points(sh->u.revolve.g, &n);
+        for (int i = 0; i < n; i++)
+            r = fmax(r, fabs(P[i][0]));
+        half = sh->u.revolve.angle * PI / 360 / sh->u.revolve.fragments;
+    }
+    double sag = r * stretch(g->xf) * (1 - cos(half));
+    return sag > 0 ? sag : INFINITY;
+}
+
 /* What openscad's render (a mesh export) makes of g, in place; returns
  * the dimension it gives g: 3, 2, or 0 (nothing).  As 2021.01's
  * GeometryEvaluator: an operation takes the dimension of its first child
@@ -393,6 +437,8 @@ static void run_job(job *j)
         } else if (!ev.aborted) {
             const scad_geom *oom = NULL;
             if (ev.has_root) model = ev.root;
+            double sag = facet_sag(model);
+            j->out->facet_sag = sag < INFINITY ? sag : 0;
             j->out->model = to_csg(model, &oom);
             j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, &oom);
             j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, &oom);

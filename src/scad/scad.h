@@ -171,6 +171,11 @@ typedef struct scad_result {
         double value;
     } settings[16];
     int nsettings;
+    /* The least deviation OpenSCAD's facets would give a round primitive of
+     * the model (a sphere, cylinder or disc kept round, a revolve): the
+     * sag r·(1 − cos(180°/n)) of a chord over one of its n fragments, r
+     * its radius in world units; 0 when the model has none. */
+    double facet_sag;
     /* With scad_options.for_2d: the 2D model as one polygon set,
      * normalised by the paths_clip service (no overlaps, outlines
      * counter-clockwise, holes clockwise, at least one path), or a lone

@@ -207,10 +207,25 @@ check "--mesh-tolerance: a box is as many triangles as openscad's" \
     test "$(grep -c 'facet normal' tol.stl)" -eq "$(grep -c 'facet normal' tol_ref.stl)"
 check "--mesh-tolerance: the box's volume, closed" quiet "$meshcmp" tol.stl tol_ref.stl --h 0.01 \
     --vol-tol 1e-6
-for bad in 0 -1 nan abc; do
+for bad in -1 nan abc; do
     run box.scad -o x.stl --mesh-tolerance "$bad"
     check "--mesh-tolerance $bad is a usage error" test "$rc" -eq 2
 done
+
+# Without --mesh-tolerance a mesh is simplified to the deviation OpenSCAD's
+# facets would give the model (a flat one: 1e-4 of its size); 0 keeps the
+# contour as it is.
+run box.scad -o def.stl
+check "by default a box is as many triangles as openscad's" \
+    test "$(grep -c 'facet normal' def.stl)" -eq "$(grep -c 'facet normal' tol_ref.stl)"
+run box.scad -o raw.stl --mesh-tolerance 0
+check "--mesh-tolerance 0: the contour, unsimplified" \
+    test "$(grep -c 'facet normal' raw.stl)" -gt 1000
+run ball.scad -o ball0.stl --mesh-tolerance 0 --mesh-size 0.3
+check "by default a sphere is simplified (to its facets' 0.0049)" \
+    test "$(stat -c %s ball.stl)" -lt "$(stat -c %s ball0.stl)"
+check "the default-simplified sphere stays closed, close to the contour" quiet "$meshcmp" \
+    ball.stl ball0.stl --h 0.1 --vol-tol 0.001
 
 for bad in 0 -1 nan inf abc; do
     run box.scad -o x.stl --mesh-size "$bad"

@@ -515,3 +515,50 @@ Test(api, volumes_against_closed_forms)
     double prism = 3 * sqrt(3) / 4 * 100;
     cr_expect(fabs(v - prism) < 0.005 * prism, "prism %g, closed form %g", v, prism);
 }
+
+/* OpenSCAD 2021.01's get_fragments_from_r, restated. */
+static int fragments(double r, double fn, double fs, double fa)
+{
+    if (fn > 0) return fn >= 3 ? (int)fn : 3;
+    return (int)ceil(fmax(fmin(360.0 / fa, r * 2 * 3.14159265358979323846 / fs), 5));
+}
+
+static double sag(double r, int n)
+{
+    return r * (1 - cos(3.14159265358979323846 / n));
+}
+
+/* The facet deviation: the least chord sag of the model's round primitives
+ * at their own $fn/$fa/$fs, in world units; 0 with none (a sphere whose
+ * user asked for 8 fragments is built as OpenSCAD's polytope: flat).  The
+ * default $fa/$fs give sphere(1) 5 fragments, and it stays round. */
+Test(api, facet_deviation_is_openscads_chord_sag)
+{
+    static const char *const src[8] = {
+        "sphere(10);",
+        "sphere(10); translate([30, 0, 0]) cylinder(r = 5, h = 3, $fn = 40);",
+        "scale([3, 1, 1]) sphere(10, $fn = 64);",
+        "$fa = 5; $fs = 0.5; cylinder(r1 = 4, r2 = 2, h = 10);",
+        "rotate_extrude($fn = 48) translate([10, 0]) square(2);",
+        "cube(5);",
+        "sphere(1);",
+        "sphere(1, $fn = 8);",
+    };
+    double want[8] = {
+        sag(10, fragments(10, 0, 2, 12)),
+        fmin(sag(10, fragments(10, 0, 2, 12)), sag(5, 40)),
+        sag(30, 64),
+        sag(4, fragments(4, 0, 0.5, 5)),
+        sag(12, 48),
+        0,
+        sag(1, 5),
+        0,
+    };
+    for (int i = 0; i < 8; i++) {
+        rayscad_scene *scene = scene_of(src[i], NULL);
+        double got = rayscad_scene_facet_deviation(scene);
+        cr_expect(fabs(got - want[i]) <= 1e-12 * (1 + want[i]), "%s: %.15g, want %.15g", src[i],
+                  got, want[i]);
+        rayscad_scene_free(scene);
+    }
+}
