@@ -17,7 +17,8 @@
  * ends' normals do, are looked at — on smooth parts the contour is already
  * within a small fraction of a cell — and each round splits at most one
  * edge of a triangle, so the split is checked on the triangles it makes:
- * neither may turn against its parent or have no area.  Three rounds.
+ * neither may turn against its parent or have no area.  Three rounds, the
+ * later ones over the edges of the vertices the one before added.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -113,14 +114,27 @@ static int halves_ok(const mesh *m, int32_t t, int k, const double p[3], double 
     return dot3(n, n1) > 0 && dot3(n, n2) > 0 && dot3(n1, n1) > min2 && dot3(n2, n2) > min2;
 }
 
-/* One round; *split set when it split an edge.  0 or -1 (out of memory). */
-static int round_once(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn, int *split)
+/* Whether triangle t has a corner numbered v0 or above. */
+static int has_new(const mesh *m, int32_t t, int32_t v0)
+{
+    const int32_t *tv = &m->t[3 * (size_t)t];
+    return tv[0] >= v0 || tv[1] >= v0 || tv[2] >= v0;
+}
+
+/* One round over the edges of the triangles with a corner numbered v0 or
+ * above (the vertices the last round added; all in the first); *split
+ * set when it split an edge.  0 or -1 (out of memory). */
+static int round_once(mesh *m, int t0, int32_t v0, mesh_snapper *sn, mesh_vnormals *vn, int *split)
 {
     int nt = m->nt - t0;
+    if (nt <= 0) return 0;
     double h = sn->d->h;
+    size_t nin = 0;
+    for (int32_t t = 0; t < nt; t++)
+        nin += has_new(m, t0 + t, v0);
     edge_map em;
     em.cap = 16;
-    while (em.cap < 3 * (size_t)nt)
+    while (em.cap < 3 * nin)
         em.cap *= 2;
     em.key = calloc(em.cap, sizeof *em.key);
     em.half = malloc(em.cap * sizeof *em.half);
@@ -129,7 +143,7 @@ static int round_once(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn, int 
     int rc = -1;
     if (!em.key || !em.half || !em.other || !used) goto done;
     for (int32_t t = 0; t < nt; t++)
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 3 && has_new(m, t0 + t, v0); k++) {
             int32_t a = m->t[3 * (size_t)(t0 + t) + k],
                     b = m->t[3 * (size_t)(t0 + t) + (k + 1) % 3];
             uint64_t key = a < b ? (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1)
@@ -227,10 +241,13 @@ done:
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)
 {
     if (!sn->arena) return 0;
+    int32_t v0 = 0;
     for (int r = 0; r < ROUNDS; r++) {
         int split = 0;
-        if (round_once(m, t0, sn, vn, &split) != 0) return -1;
+        int32_t nv = m->nv;
+        if (round_once(m, t0, v0, sn, vn, &split) != 0) return -1;
         if (!split) break;
+        v0 = nv;
     }
     return 0;
 }
