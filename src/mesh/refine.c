@@ -193,7 +193,7 @@ static int round_once(mesh *m, int t0, int32_t v0, mesh_snapper *sn, mesh_vnorma
          * on the surface under the midpoint; the first that is off the edge
          * and keeps both triangles' halves the right way up. */
         double hit[3], hn[3] = {0, 0, 0}, off[3];
-        int found = 0;
+        int found = 0, crease = 0;
         for (int how = cos_ends < sn->cos_feature ? 0 : 1; how < 2 && !found; how++) {
             if (how == 0) {
                 double blo[3], bhi[3];
@@ -213,10 +213,11 @@ static int round_once(mesh *m, int t0, int32_t v0, mesh_snapper *sn, mesh_vnorma
             sub3(hit, mid, off);
             found = dot3(off, off) > OFF * OFF * h * h && halves_ok(m, t0 + ta, ka, hit, h) &&
                     halves_ok(m, t0 + tb, kb, hit, h);
+            crease = how == 0;
         }
         if (!found) continue;
         int32_t v = mesh_push_vertex(m, hit[0], hit[1], hit[2]);
-        if (v < 0 || mesh_vnormal_set(vn, v, hn, 0) != 0) goto done;
+        if (v < 0 || mesh_vnormal_set(vn, v, hn, crease) != 0) goto done;
         int32_t tri[2] = {t0 + ta, t0 + tb};
         int kk[2] = {ka, kb};
         for (int s = 0; s < 2; s++) {
@@ -238,6 +239,104 @@ done:
     return rc;
 }
 
+/* The loose vertices near a sharp edge — fan centres and face points
+ * (vertices without a normal) not on the edge themselves, that share a
+ * triangle with a vertex on it — moved to the nearest surface along the
+ * normals of their neighbours that are ray crossings, within a cell, unless
+ * that turns one of their triangles over.  Where a sharp edge passes beyond its
+ * cell, the contour left such a centre off both surfaces (clamped into the
+ * cell); with the edge now split onto the sharp edge, its place is on the
+ * nearer of them. */
+static int project_loose(mesh *m, int t0, mesh_snapper *sn, const mesh_vnormals *vn)
+{
+    int nt = m->nt - t0, nv = m->nv;
+    if (nt <= 0) return 0;
+    double h = sn->d->h;
+    int32_t *start = calloc((size_t)nv + 1, sizeof *start);
+    int32_t *fan = malloc(3 * (size_t)nt * sizeof *fan);
+    uint8_t *near = calloc((size_t)nv, 1);
+    int rc = -1;
+    if (!start || !fan || !near) goto done;
+    for (int32_t t = t0; t < m->nt; t++) {
+        const int32_t *tv = &m->t[3 * (size_t)t];
+        int edgy = on_edge(vn, tv[0]) || on_edge(vn, tv[1]) || on_edge(vn, tv[2]);
+        for (int k = 0; k < 3; k++) {
+            start[tv[k] + 1]++;
+            if (edgy) near[tv[k]] = 1;
+        }
+    }
+    for (int v = 0; v < nv; v++)
+        start[v + 1] += start[v];
+    {
+        int32_t *at = malloc((size_t)nv * sizeof *at);
+        if (!at) goto done;
+        memcpy(at, start, (size_t)nv * sizeof *at);
+        for (int32_t t = t0; t < m->nt; t++)
+            for (int k = 0; k < 3; k++)
+                fan[at[m->t[3 * (size_t)t + k]]++] = t;
+        free(at);
+    }
+    for (int32_t v = 0; v < nv; v++) {
+        double nn[3];
+        if (!near[v] || on_edge(vn, v) || vnormal(vn, v, nn) || start[v + 1] == start[v]) continue;
+        int nf = start[v + 1] - start[v];
+        if (nf > 64) continue;
+        double before[64][3], p[3][3];
+        for (int f = 0; f < nf; f++) {
+            const int32_t *tv = &m->t[3 * (size_t)fan[start[v] + f]];
+            for (int k = 0; k < 3; k++)
+                vtx(m, tv[k], p[k]);
+            normal_of(p[0], p[1], p[2], before[f]);
+        }
+        /* the nearest surface along the normals of its neighbours that
+         * are ray crossings (their surfaces) */
+        double x[3], hit[3] = {0, 0, 0}, best = INFINITY, tried[4][3];
+        int ntried = 0;
+        vtx(m, v, x);
+        for (int f = 0; f < nf; f++) {
+            const int32_t *tv = &m->t[3 * (size_t)fan[start[v] + f]];
+            for (int k = 0; k < 3; k++) {
+                double dn[3], q[3], qn[3], d[3];
+                if (tv[k] == v || !vnormal(vn, tv[k], dn)) continue;
+                int seen = 0;
+                for (int i = 0; i < ntried && !seen; i++)
+                    seen = dot3(dn, tried[i]) > 0.999;
+                if (seen || ntried == 4) continue;
+                memcpy(tried[ntried++], dn, sizeof dn);
+                if (!mesh_snap_probe(sn, x, dn, h, -1, q, qn)) continue;
+                sub3(q, x, d);
+                if (dot3(d, d) < best) {
+                    best = dot3(d, d);
+                    memcpy(hit, q, sizeof q);
+                }
+            }
+        }
+        if (best == INFINITY) continue;
+        float *pv = &m->v[3 * (size_t)v];
+        for (int c = 0; c < 3; c++)
+            pv[c] = (float)hit[c];
+        int ok = 1;
+        double min2 = 1e-10 * h * h * h * h;
+        for (int f = 0; f < nf && ok; f++) {
+            double n1[3];
+            const int32_t *tv = &m->t[3 * (size_t)fan[start[v] + f]];
+            for (int k = 0; k < 3; k++)
+                vtx(m, tv[k], p[k]);
+            normal_of(p[0], p[1], p[2], n1);
+            ok = dot3(n1, before[f]) > 0 && dot3(n1, n1) > min2;
+        }
+        if (!ok)
+            for (int c = 0; c < 3; c++)
+                pv[c] = (float)x[c];
+    }
+    rc = 0;
+done:
+    free(start);
+    free(fan);
+    free(near);
+    return rc;
+}
+
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)
 {
     if (!sn->arena) return 0;
@@ -249,5 +348,5 @@ int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)
         if (!split) break;
         v0 = nv;
     }
-    return 0;
+    return project_loose(m, t0, sn, vn);
 }

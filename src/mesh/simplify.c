@@ -40,6 +40,8 @@
  *     the two neighbours opposite the edge (the link condition), and those
  *     must keep three neighbours each;
  *   - turn a triangle by more than 60°, or leave one of zero area;
+ *   - fold the surface: put a moved triangle back to back with one across
+ *     an edge (more than 150° apart) where they were not;
  *   - make a triangle more needle-like than both MIN_QUALITY and the worst
  *     it replaces, unless it costs nothing (a plane, where later collapses
  *     take the needles away again).
@@ -61,6 +63,7 @@
 #define COS_TURN 0.5       /* cos 60° */
 #define SHARP_COS 0.94     /* cos 20°: an edge that bends more is sharp */
 #define COS_CURVED 0.99996 /* cos 0.5° */
+#define COS_FOLD 0.866     /* cos 30°: normals more than 150° apart are folded */
 #define FAN_MAX 64         /* the most triangles a collapse may leave around a vertex */
 
 typedef struct quad {
@@ -250,6 +253,49 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
     return 0;
 }
 
+static int32_t across(const simp *s, int32_t t, int32_t a, int32_t b);
+
+/* Triangle t's normal, its corner v read as at pu. */
+static void moved_normal(const simp *s, int32_t t, int32_t v, const double *pu, double n[3])
+{
+    const double *p[3];
+    for (int i = 0; i < 3; i++)
+        p[i] = s->t[3 * t + i] == v ? pu : P(s, s->t[3 * t + i]);
+    normal_of(p[0], p[1], p[2], n);
+}
+
+/* Whether collapsing v into u folds the surface: a moved triangle (nt, the
+ * new corners of triangles moved[]) and one across an edge of it turned
+ * back to back (normals more than COS_FOLD apart) where they were not.  The
+ * turn bound alone lets two triangles on either side of a narrow notch
+ * each turn less than 60° and meet as a flat flap across it. */
+static int folds(const simp *s, int32_t v, int32_t u, const int32_t *moved, double nt[][3][3],
+                 int nmoved)
+{
+    const double *pu = P(s, u);
+    for (int m = 0; m < nmoved; m++) {
+        const int32_t *tv = s->t + 3 * moved[m];
+        double n1[3], o1[3];
+        normal_of(nt[m][0], nt[m][1], nt[m][2], n1);
+        normal_of(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), o1);
+        for (int e = 0; e < 3; e++) {
+            int32_t o = across(s, moved[m], tv[e], tv[(e + 1) % 3]);
+            if (o < 0) continue;
+            const int32_t *ov = s->t + 3 * o;
+            int hv = ov[0] == v || ov[1] == v || ov[2] == v;
+            int hu = ov[0] == u || ov[1] == u || ov[2] == u;
+            if (hv && hu) continue; /* goes with the edge */
+            double n2[3], o2[3];
+            moved_normal(s, o, v, pu, n2);
+            normal_of(P(s, ov[0]), P(s, ov[1]), P(s, ov[2]), o2);
+            double now = dot3(n1, n2), was = dot3(o1, o2);
+            double ln = sqrt(dot3(n1, n1) * dot3(n2, n2)), lw = sqrt(dot3(o1, o1) * dot3(o2, o2));
+            if (now < -COS_FOLD * ln && !(was < -COS_FOLD * lw)) return 1;
+        }
+    }
+    return 0;
+}
+
 /* Whether collapsing v into u (costing c) keeps the mesh manifold, its
  * triangles sound and every point it moves within the tolerance; fills
  * s->best for those points. */
@@ -304,6 +350,7 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
         if (q1 < worst_new) worst_new = q1;
     }
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
+    if (folds(s, v, u, moved, nt, nmoved)) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
     if (!near_enough(s, v, -1, nt, moved, edgy, nmoved)) return 0;
