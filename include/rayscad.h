@@ -532,15 +532,17 @@ typedef struct rayscad_mesh_options {
      * to 16 times finer (a whole factor, within max_cells and about 2^20
      * crossings), so thin parts keep their shape.  1 by default. */
     int resolve_thin;
-    /* > 0: the contoured mesh is simplified (rayscad_sampling_mesh) by
-     * edge collapses for as long as every vertex and edge midpoint of the
-     * contour stays within this distance, model units, of the triangles
-     * that replace it: flat faces become a few large triangles spanning
-     * their corners, curved ones as few as the distance allows, sharp
-     * edges and corners stay where they are (measured: the mesh within
-     * about 1.2 times the distance of the exact surface).  <= 0: the
-     * contour as it is. */
+    /* > 0: the contoured mesh is simplified (rayscad_sampling_mesh) to
+     * within about this distance, model units, of the exact surface: flat
+     * faces become a few large triangles spanning their corners, curved
+     * ones as few as the distance allows (approximated from both sides),
+     * sharp edges and corners stay where they are (measured: within about
+     * 1.3 times the distance).  <= 0: the contour as it is. */
     double tolerance;
+    /* > 0: a contour of more triangles than this is left as it is whatever
+     * `tolerance` says (simplifying takes about 5 µs a triangle, two to
+     * three times the contouring).  0: no limit. */
+    long long simplify_max_triangles;
     /* May be NULL: told, on the calling thread, how far a phase has come
      * ("sampling": each grid's rays, again for a refined one; "contouring"),
      * done in [0, 1]. */

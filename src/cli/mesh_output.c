@@ -129,6 +129,9 @@ static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_o
     return 0;
 }
 
+/* The largest contour simplified without --mesh-tolerance (about 3 s). */
+#define DEFAULT_SIMPLIFY_MAX (1LL << 19)
+
 /* The tolerance a mesh is simplified to: the user's, else the deviation
  * OpenSCAD's facets would give the model's round parts (so the mesh is as
  * close to the model as openscad's), else — a model of flat faces, which
@@ -152,6 +155,9 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
     mo.tolerance = mesh_tolerance(o, scene);
+    /* unasked, a contour of millions of triangles is written as it is:
+     * simplifying it would take several times as long as the rest */
+    if (o->mesh_tolerance < 0) mo.simplify_max_triangles = DEFAULT_SIMPLIFY_MAX;
     mo.threads = o->threads;
     mo.root = RAYSCAD_ROOT_MODEL;
     mo.max_cells = o->max_mesh_cells;

@@ -562,3 +562,37 @@ Test(api, facet_deviation_is_openscads_chord_sag)
         rayscad_scene_free(scene);
     }
 }
+
+/* The number of triangles rayscad_sampling_mesh makes of src at tolerance
+ * tol with at most max contour triangles simplified. */
+static int mesh_triangles_of(const char *src, double tol, long long max)
+{
+    rayscad_scene *scene = scene_of(src, NULL);
+    rayscad_mesh_options mo;
+    rayscad_mesh_options_default(&mo);
+    mo.h = 0.25;
+    mo.tolerance = tol;
+    mo.simplify_max_triangles = max;
+    rayscad_sampling *d;
+    char err[256];
+    cr_assert_eq(rayscad_sampling_new(scene, &mo, &d, err, sizeof err), RAYSCAD_OK, "%s", err);
+    rayscad_mesh *mesh;
+    cr_assert_eq(rayscad_sampling_mesh(d, &mo, &mesh, err, sizeof err), RAYSCAD_OK, "%s", err);
+    int n = rayscad_mesh_triangle_count(mesh);
+    rayscad_mesh_free(mesh);
+    rayscad_sampling_free(d);
+    rayscad_scene_free(scene);
+    return n;
+}
+
+/* A box simplifies to its 12 triangles; over simplify_max_triangles its
+ * contour is kept, as with no tolerance. */
+Test(api, simplification_has_a_size_limit)
+{
+    const char *box = "cube([10, 20, 30]);";
+    int raw = mesh_triangles_of(box, 0, 0);
+    cr_expect_gt(raw, 1000);
+    cr_expect_eq(mesh_triangles_of(box, 0.01, 0), 12);
+    cr_expect_eq(mesh_triangles_of(box, 0.01, raw), 12);
+    cr_expect_eq(mesh_triangles_of(box, 0.01, raw - 1), raw);
+}
