@@ -160,6 +160,21 @@ static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
     return &m->val[p];
 }
 
+/* 64 bits that tell the float positions of vertices apart (+0 and -0
+ * alike, as a reader welding by position sees them); never 0. */
+static uint64_t pos_key(const double p[3])
+{
+    uint64_t k = 0x9e3779b97f4a7c15ULL;
+    for (int c = 0; c < 3; c++) {
+        float f = (float)p[c];
+        if (f == 0) f = 0;
+        uint32_t b;
+        memcpy(&b, &f, sizeof b);
+        k = mesh_hash_mix(k ^ b);
+    }
+    return k | 1;
+}
+
 /* ---- the sweep state ---------------------------------------------------- */
 
 typedef struct sample {
@@ -185,10 +200,30 @@ typedef struct sweep {
     int32_t *yv[2]; /* y-edge vertices: i + (nx+1) j */
     int32_t *zv;    /* z-edge vertices of slab k: i + (nx+1) j */
     fmap faces;
+    fmap pos; /* every vertex by its float position (pos_key) */
     mesh_snapper snap;
     mesh_vnormals vn; /* the edge samples' normals, for refine.c */
     int oom;
 } sweep;
+
+/* Push a vertex at p, or where a vertex is at p's float position already
+ * (two cells' vertices snapped to one point of a sharp edge, which a reader
+ * welding by position would join into one vertex of two fans) at fallback
+ * (copied into p; NULL: at p all the same); its index, or -1 when out of
+ * memory. */
+static int32_t push_unique(sweep *s, double p[3], const double *fallback)
+{
+    int fresh;
+    int32_t *slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+    if (slot && !fresh && fallback) {
+        memcpy(p, fallback, 3 * sizeof *p);
+        slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+    }
+    if (!slot) return -1;
+    int32_t v = mesh_push_vertex(s->m, p[0], p[1], p[2]);
+    if (v >= 0 && fresh) *slot = v;
+    return v;
+}
 
 /* The first layer k with t <= k·h, decided by the same comparison the
  * edge search makes (t <= seg·h), not by a rounded quotient alone. */
@@ -334,7 +369,7 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     }
     edge_sample(s, a, r, seg, enter, base, out);
     if (*slot < 0) {
-        *slot = mesh_push_vertex(s->m, out->p[0], out->p[1], out->p[2]);
+        *slot = push_unique(s, out->p, NULL);
         if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n, 0) != 0) return -1;
     }
     out->vid = *slot;
@@ -681,10 +716,13 @@ static void cell(sweep *s, int i, int j, int mask)
                     return;
                 }
                 if (fresh) {
+                    double unsnapped[3] = {fp[0], fp[1], fp[2]};
                     int on = snap_face_point(s, a, b, segface[loop[q]], lo, fp);
                     static const double none[3] = {0, 0, 0};
-                    if ((*slot = mesh_push_vertex(s->m, fp[0], fp[1], fp[2])) < 0 ||
-                        mesh_vnormal_set(&s->vn, *slot, none, on) != 0) {
+                    double snapped[3] = {fp[0], fp[1], fp[2]};
+                    if ((*slot = push_unique(s, fp, unsnapped)) < 0 ||
+                        mesh_vnormal_set(&s->vn, *slot, none,
+                                         on && !memcmp(fp, snapped, sizeof snapped)) != 0) {
                         s->oom = 1;
                         return;
                     }
@@ -703,6 +741,7 @@ static void cell(sweep *s, int i, int j, int mask)
         if (!feature && fan_plain(s, lv, nv, navg)) continue;
         double c[3];
         loop_vertex(s, smp, loop, nl, lo, c);
+        double unsnapped[3] = {c[0], c[1], c[2]};
         int on = snap_loop_vertex(s, smp, loop, nl, lv, nv, lo, c);
         for (int q = 0; q < nplaced; q++) {
             double dd[3];
@@ -716,10 +755,12 @@ static void cell(sweep *s, int i, int j, int mask)
                 break;
             }
         }
-        if (nplaced < 6) memcpy(placed[nplaced++], c, sizeof c);
         static const double none[3] = {0, 0, 0};
-        int32_t cv = mesh_push_vertex(s->m, c[0], c[1], c[2]);
-        if (cv < 0 || mesh_vnormal_set(&s->vn, cv, none, on) != 0) {
+        double snapped[3] = {c[0], c[1], c[2]};
+        int32_t cv = push_unique(s, c, unsnapped);
+        if (nplaced < 6) memcpy(placed[nplaced++], c, sizeof c);
+        if (cv < 0 ||
+            mesh_vnormal_set(&s->vn, cv, none, on && !memcmp(c, snapped, sizeof snapped)) != 0) {
             s->oom = 1;
             return;
         }
@@ -827,6 +868,8 @@ done:
     }
     free(s.faces.key);
     free(s.faces.val);
+    free(s.pos.key);
+    free(s.pos.val);
     return rc;
 }
 
