@@ -34,6 +34,16 @@ static inline double triple3(const double a[3], const double b[3], const double 
     return dot3(a, x);
 }
 
+/* The normal of triangle a, b, c (counter-clockwise seen from the side it
+ * points to), as long as twice the triangle's area. */
+static inline void tri_normal3(const double a[3], const double b[3], const double c[3], double n[3])
+{
+    double u[3], v[3];
+    sub3(b, a, u);
+    sub3(c, a, v);
+    cross3(u, v, n);
+}
+
 /* The plane through P[a], P[b], P[c] (counter-clockwise seen from the side
  * n points to): unit normal n and offset d = n·P[a]; -1 when the triangle
  * has no area.  The convex hulls (polytope.c, src/scad/hull3d.c) both take
@@ -41,10 +51,7 @@ static inline double triple3(const double a[3], const double b[3], const double 
  * planes in either. */
 static inline int vec3_plane(const double (*P)[3], int a, int b, int c, double n[3], double *d)
 {
-    double u[3], v[3];
-    sub3(P[b], P[a], u);
-    sub3(P[c], P[a], v);
-    cross3(u, v, n);
+    tri_normal3(P[a], P[b], P[c], n);
     double l = sqrt(dot3(n, n));
     if (!(l > 0)) return -1;
     for (int k = 0; k < 3; k++)

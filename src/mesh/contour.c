@@ -225,6 +225,19 @@ static int32_t push_unique(sweep *s, double p[3], const double *fallback)
     return v;
 }
 
+/* Push a vertex mesh_snap placed at p (on: on a sharp edge) by push_unique,
+ * at unsnapped where p is taken (then not on the edge), with its entry in
+ * s->vn; its index, or -1 when out of memory. */
+static int32_t push_snapped(sweep *s, double p[3], const double unsnapped[3], int on)
+{
+    static const double none[3] = {0, 0, 0};
+    double snapped[3] = {p[0], p[1], p[2]};
+    int32_t v = push_unique(s, p, unsnapped);
+    if (v < 0 || mesh_vnormal_set(&s->vn, v, none, on && !memcmp(p, snapped, sizeof snapped)) != 0)
+        return -1;
+    return v;
+}
+
 /* The first layer k with t <= k·h, decided by the same comparison the
  * edge search makes (t <= seg·h), not by a rounded quotient alone. */
 static int layer_of(double t, double h)
@@ -537,7 +550,7 @@ static int snap_face_point(sweep *s, const sample *a, const sample *b, int f, co
     blo[f / 2] = bhi[f / 2] = fp[f / 2];
     double want[3] = {fp[0], fp[1], fp[2]};
     int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, 2, f / 2,
-                             blo, bhi, want, NULL);
+                             blo, bhi, want);
     int inside = 1;
     for (int c = 0; c < 3; c++)
         inside &= (want[c] > blo[c] && want[c] < bhi[c]) || c == f / 2;
@@ -555,15 +568,6 @@ typedef struct lvert {
     uint16_t color;
 } lvert;
 
-/* Normal (twice the area) of triangle a, b, c. */
-static void tri_normal(const double a[3], const double b[3], const double c[3], double n[3])
-{
-    double e1[3], e2[3];
-    sub3(b, a, e1);
-    sub3(c, a, e2);
-    cross3(e1, e2, n);
-}
-
 /* 1 when moving the centre of the fan around the loop lv from x to y turns
  * none of its triangles over or leaves one without area. */
 static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[3], double h)
@@ -571,8 +575,8 @@ static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[
     double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
     for (int q = 0; q < nv; q++) {
         double n0[3], n1[3];
-        tri_normal(x, lv[q].p, lv[(q + 1) % nv].p, n0);
-        tri_normal(y, lv[q].p, lv[(q + 1) % nv].p, n1);
+        tri_normal3(x, lv[q].p, lv[(q + 1) % nv].p, n0);
+        tri_normal3(y, lv[q].p, lv[(q + 1) % nv].p, n1);
         if (!(dot3(n0, n1) > 0 && dot3(n1, n1) > min2)) return 0;
     }
     return 1;
@@ -600,8 +604,8 @@ static int snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl
         bhi[c] = lo[c] + 1.5 * h;
         y[c] = x[c];
     }
-    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, nl, -1, blo,
-                             bhi, y, NULL);
+    int surfaces =
+        mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, nl, -1, blo, bhi, y);
     int kept = surfaces == 2 && fan_keeps(lv, nv, x, y, h), inside = 1;
     for (int c = 0; c < 3; c++) {
         inside &= y[c] >= lo[c] + EPS * h && y[c] <= lo[c] + (1 - EPS) * h;
@@ -627,7 +631,7 @@ static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
         }
         for (int q = 1; q + 1 < nl && ok; q++) {
             double n[3];
-            tri_normal(lv[st].p, lv[(st + q) % nl].p, lv[(st + q + 1) % nl].p, n);
+            tri_normal3(lv[st].p, lv[(st + q) % nl].p, lv[(st + q + 1) % nl].p, n);
             if (!(dot3(n, n) > min2) || !(dot3(n, navg) > 0)) ok = 0;
         }
         if (!ok) continue;
@@ -718,11 +722,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 if (fresh) {
                     double unsnapped[3] = {fp[0], fp[1], fp[2]};
                     int on = snap_face_point(s, a, b, segface[loop[q]], lo, fp);
-                    static const double none[3] = {0, 0, 0};
-                    double snapped[3] = {fp[0], fp[1], fp[2]};
-                    if ((*slot = push_unique(s, fp, unsnapped)) < 0 ||
-                        mesh_vnormal_set(&s->vn, *slot, none,
-                                         on && !memcmp(fp, snapped, sizeof snapped)) != 0) {
+                    if ((*slot = push_snapped(s, fp, unsnapped, on)) < 0) {
                         s->oom = 1;
                         return;
                     }
@@ -755,12 +755,9 @@ static void cell(sweep *s, int i, int j, int mask)
                 break;
             }
         }
-        static const double none[3] = {0, 0, 0};
-        double snapped[3] = {c[0], c[1], c[2]};
-        int32_t cv = push_unique(s, c, unsnapped);
+        int32_t cv = push_snapped(s, c, unsnapped, on);
         if (nplaced < 6) memcpy(placed[nplaced++], c, sizeof c);
-        if (cv < 0 ||
-            mesh_vnormal_set(&s->vn, cv, none, on && !memcmp(c, snapped, sizeof snapped)) != 0) {
+        if (cv < 0) {
             s->oom = 1;
             return;
         }

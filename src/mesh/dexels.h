@@ -104,6 +104,25 @@ struct mesh {
     int npal;
 };
 
+/* Vertex i of m, in doubles. */
+static inline void mesh_vertex_at(const mesh *m, int32_t i, double p[3])
+{
+    for (int c = 0; c < 3; c++)
+        p[c] = m->v[3 * (size_t)i + c];
+}
+
+/* The triangles [t0, m->nt) around each vertex: fan[start[v] .. start[v +
+ * 1]) for vertex v (both free by the caller); 0, or -1 when out of memory
+ * (nothing to free). */
+int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan);
+
+/* Move vertex v to `to`, unless that turns one of the nf triangles fan
+ * around it by acos(min_cos) or more from its normal now, or leaves one
+ * with twice its area squared at most min2 (a fan of more than 64: never);
+ * 1 when moved. */
+int mesh_vertex_move(mesh *m, int32_t v, const int32_t *fan, int nf, const double to[3],
+                     double min_cos, double min2);
+
 /* Append a vertex / a triangle (of colour `color`, kept when the mesh has
  * colours); return its index, or -1 when out of memory or past INT32_MAX. */
 int mesh_push_vertex(mesh *m, double x, double y, double z);
@@ -158,9 +177,8 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach);
  * nearly as the box [lo, hi] allows, the coordinate `fixed` (an axis, or
  * -1) kept.  Left where it is when it fits the surfaces there better, or
  * the samples hold more than three surfaces (0); else the number of
- * surfaces.  group (may be NULL) is told which surface, 0 .. 2, each
- * sample is on. */
+ * surfaces. */
 int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], int ns, int fixed,
-              const double lo[3], const double hi[3], double x[3], int *group);
+              const double lo[3], const double hi[3], double x[3]);
 
 #endif

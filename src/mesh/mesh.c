@@ -7,6 +7,7 @@
  * O(1) and the mesh never holds more than twice what it uses.
  */
 #include "dexels.h"
+#include "../intervals/vec3.h"
 
 #include <stdint.h>
 #include <stdlib.h>
@@ -36,6 +37,65 @@ int mesh_push_vertex(mesh *m, double x, double y, double z)
     p[1] = (float)y;
     p[2] = (float)z;
     return m->nv++;
+}
+
+int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan)
+{
+    int32_t *st = calloc((size_t)m->nv + 1, sizeof *st);
+    int32_t *f = malloc(3 * (size_t)(m->nt > t0 ? m->nt - t0 : 1) * sizeof *f);
+    int32_t *at = malloc(((size_t)m->nv + 1) * sizeof *at);
+    if (!st || !f || !at) {
+        free(st);
+        free(f);
+        free(at);
+        return -1;
+    }
+    for (int32_t t = t0; t < m->nt; t++)
+        for (int k = 0; k < 3; k++)
+            st[m->t[3 * (size_t)t + k] + 1]++;
+    for (int v = 0; v < m->nv; v++)
+        st[v + 1] += st[v];
+    memcpy(at, st, ((size_t)m->nv + 1) * sizeof *at);
+    for (int32_t t = t0; t < m->nt; t++)
+        for (int k = 0; k < 3; k++)
+            f[at[m->t[3 * (size_t)t + k]]++] = t;
+    free(at);
+    *start = st;
+    *fan = f;
+    return 0;
+}
+
+/* The tri_normal3 of triangle t of m. */
+static void triangle_normal(const mesh *m, int32_t t, double n[3])
+{
+    double p[3][3];
+    for (int k = 0; k < 3; k++)
+        mesh_vertex_at(m, m->t[3 * (size_t)t + k], p[k]);
+    tri_normal3(p[0], p[1], p[2], n);
+}
+
+int mesh_vertex_move(mesh *m, int32_t v, const int32_t *fan, int nf, const double to[3],
+                     double min_cos, double min2)
+{
+    if (nf > 64) return 0;
+    double before[64][3], old[3];
+    for (int f = 0; f < nf; f++)
+        triangle_normal(m, fan[f], before[f]);
+    mesh_vertex_at(m, v, old);
+    float *pv = &m->v[3 * (size_t)v];
+    for (int c = 0; c < 3; c++)
+        pv[c] = (float)to[c];
+    for (int f = 0; f < nf; f++) {
+        double n[3];
+        triangle_normal(m, fan[f], n);
+        double l0 = sqrt(dot3(before[f], before[f])), l1 = sqrt(dot3(n, n));
+        if (!(dot3(n, before[f]) > min_cos * l0 * l1 && dot3(n, n) > min2)) {
+            for (int c = 0; c < 3; c++)
+                pv[c] = (float)old[c];
+            return 0;
+        }
+    }
+    return 1;
 }
 
 int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c, uint16_t color)

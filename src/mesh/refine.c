@@ -83,20 +83,6 @@ static int vnormal(const mesh_vnormals *vn, int32_t v, double n[3])
     return dot3(n, n) > 0.25;
 }
 
-static void vtx(const mesh *m, int32_t i, double p[3])
-{
-    for (int c = 0; c < 3; c++)
-        p[c] = m->v[3 * (size_t)i + c];
-}
-
-static void normal_of(const double a[3], const double b[3], const double c[3], double n[3])
-{
-    double e1[3], e2[3];
-    sub3(b, a, e1);
-    sub3(c, a, e2);
-    cross3(e1, e2, n);
-}
-
 /* Triangle t's corners with the edge (ea, eb) of corner k replaced by p:
  * the two triangles it becomes, each turned less than 90° from t and with
  * some area; 1 when both are. */
@@ -104,12 +90,12 @@ static int halves_ok(const mesh *m, int32_t t, int k, const double p[3], double 
 {
     const int32_t *tv = &m->t[3 * (size_t)t];
     double a[3], b[3], c[3], n[3], n1[3], n2[3];
-    vtx(m, tv[k], a);
-    vtx(m, tv[(k + 1) % 3], b);
-    vtx(m, tv[(k + 2) % 3], c);
-    normal_of(a, b, c, n);
-    normal_of(a, p, c, n1);
-    normal_of(p, b, c, n2);
+    mesh_vertex_at(m, tv[k], a);
+    mesh_vertex_at(m, tv[(k + 1) % 3], b);
+    mesh_vertex_at(m, tv[(k + 2) % 3], c);
+    tri_normal3(a, b, c, n);
+    tri_normal3(a, p, c, n1);
+    tri_normal3(p, b, c, n2);
     double min2 = 1e-10 * h * h * h * h;
     return dot3(n, n1) > 0 && dot3(n, n2) > 0 && dot3(n1, n1) > min2 && dot3(n2, n2) > min2;
 }
@@ -166,12 +152,12 @@ static int round_once(mesh *m, int t0, int32_t v0, mesh_snapper *sn, mesh_vnorma
         if (used[ta] || used[tb]) continue;
         const int32_t *va = &m->t[3 * (size_t)(t0 + ta)], *vb = &m->t[3 * (size_t)(t0 + tb)];
         double a[3], b[3], c[3], d[3], na[3], nb[3];
-        vtx(m, va[ka], a);
-        vtx(m, va[(ka + 1) % 3], b);
-        vtx(m, va[(ka + 2) % 3], c);
-        vtx(m, vb[(kb + 2) % 3], d);
-        normal_of(a, b, c, na);
-        normal_of(b, a, d, nb);
+        mesh_vertex_at(m, va[ka], a);
+        mesh_vertex_at(m, va[(ka + 1) % 3], b);
+        mesh_vertex_at(m, va[(ka + 2) % 3], c);
+        mesh_vertex_at(m, vb[(kb + 2) % 3], d);
+        tri_normal3(a, b, c, na);
+        tri_normal3(b, a, d, nb);
         double la = sqrt(dot3(na, na)), lb = sqrt(dot3(nb, nb)), ends[2][3], ep[2][3];
         int known = vnormal(vn, va[ka], ends[0]) && vnormal(vn, va[(ka + 1) % 3], ends[1]);
         double cos_ends = known ? dot3(ends[0], ends[1]) : 1;
@@ -205,7 +191,7 @@ static int round_once(mesh *m, int t0, int32_t v0, mesh_snapper *sn, mesh_vnorma
                     hit[q] = mid[q];
                 }
                 if (mesh_snap(sn, (const double(*)[3])ep, (const double(*)[3])ends, 2, -1, blo, bhi,
-                              hit, NULL) != 2)
+                              hit) != 2)
                     continue;
             } else if (!mesh_snap_probe(sn, mid, dir, 0.5 * h, -1, hit, hn)) {
                 continue;
@@ -249,52 +235,29 @@ done:
  * nearer of them. */
 static int project_loose(mesh *m, int t0, mesh_snapper *sn, const mesh_vnormals *vn)
 {
-    int nt = m->nt - t0, nv = m->nv;
-    if (nt <= 0) return 0;
+    if (m->nt <= t0) return 0;
     double h = sn->d->h;
-    int32_t *start = calloc((size_t)nv + 1, sizeof *start);
-    int32_t *fan = malloc(3 * (size_t)nt * sizeof *fan);
-    uint8_t *near = calloc((size_t)nv, 1);
-    int rc = -1;
-    if (!start || !fan || !near) goto done;
+    uint8_t *near = calloc((size_t)m->nv, 1);
+    int32_t *start = NULL, *fan = NULL;
+    if (!near || mesh_vertex_fans(m, t0, &start, &fan) != 0) {
+        free(near);
+        return -1;
+    }
     for (int32_t t = t0; t < m->nt; t++) {
         const int32_t *tv = &m->t[3 * (size_t)t];
-        int edgy = on_edge(vn, tv[0]) || on_edge(vn, tv[1]) || on_edge(vn, tv[2]);
-        for (int k = 0; k < 3; k++) {
-            start[tv[k] + 1]++;
-            if (edgy) near[tv[k]] = 1;
-        }
+        if (on_edge(vn, tv[0]) || on_edge(vn, tv[1]) || on_edge(vn, tv[2]))
+            near[tv[0]] = near[tv[1]] = near[tv[2]] = 1;
     }
-    for (int v = 0; v < nv; v++)
-        start[v + 1] += start[v];
-    {
-        int32_t *at = malloc((size_t)nv * sizeof *at);
-        if (!at) goto done;
-        memcpy(at, start, (size_t)nv * sizeof *at);
-        for (int32_t t = t0; t < m->nt; t++)
-            for (int k = 0; k < 3; k++)
-                fan[at[m->t[3 * (size_t)t + k]]++] = t;
-        free(at);
-    }
-    for (int32_t v = 0; v < nv; v++) {
+    for (int32_t v = 0; v < m->nv; v++) {
         double nn[3];
-        if (!near[v] || on_edge(vn, v) || vnormal(vn, v, nn) || start[v + 1] == start[v]) continue;
-        int nf = start[v + 1] - start[v];
-        if (nf > 64) continue;
-        double before[64][3], p[3][3];
-        for (int f = 0; f < nf; f++) {
-            const int32_t *tv = &m->t[3 * (size_t)fan[start[v] + f]];
-            for (int k = 0; k < 3; k++)
-                vtx(m, tv[k], p[k]);
-            normal_of(p[0], p[1], p[2], before[f]);
-        }
+        if (!near[v] || on_edge(vn, v) || vnormal(vn, v, nn)) continue;
         /* the nearest surface along the normals of its neighbours that
          * are ray crossings (their surfaces) */
         double x[3], hit[3] = {0, 0, 0}, best = INFINITY, tried[4][3];
         int ntried = 0;
-        vtx(m, v, x);
-        for (int f = 0; f < nf; f++) {
-            const int32_t *tv = &m->t[3 * (size_t)fan[start[v] + f]];
+        mesh_vertex_at(m, v, x);
+        for (int f = start[v]; f < start[v + 1]; f++) {
+            const int32_t *tv = &m->t[3 * (size_t)fan[f]];
             for (int k = 0; k < 3; k++) {
                 double dn[3], q[3], qn[3], d[3];
                 if (tv[k] == v || !vnormal(vn, tv[k], dn)) continue;
@@ -311,30 +274,14 @@ static int project_loose(mesh *m, int t0, mesh_snapper *sn, const mesh_vnormals 
                 }
             }
         }
-        if (best == INFINITY) continue;
-        float *pv = &m->v[3 * (size_t)v];
-        for (int c = 0; c < 3; c++)
-            pv[c] = (float)hit[c];
-        int ok = 1;
-        double min2 = 1e-10 * h * h * h * h;
-        for (int f = 0; f < nf && ok; f++) {
-            double n1[3];
-            const int32_t *tv = &m->t[3 * (size_t)fan[start[v] + f]];
-            for (int k = 0; k < 3; k++)
-                vtx(m, tv[k], p[k]);
-            normal_of(p[0], p[1], p[2], n1);
-            ok = dot3(n1, before[f]) > 0 && dot3(n1, n1) > min2;
-        }
-        if (!ok)
-            for (int c = 0; c < 3; c++)
-                pv[c] = (float)x[c];
+        if (best < INFINITY)
+            mesh_vertex_move(m, v, fan + start[v], start[v + 1] - start[v], hit, 0,
+                             1e-10 * h * h * h * h);
     }
-    rc = 0;
-done:
+    free(near);
     free(start);
     free(fan);
-    free(near);
-    return rc;
+    return 0;
 }
 
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn)

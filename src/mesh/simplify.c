@@ -203,17 +203,7 @@ static int push_edge(simp *s, int32_t a, int32_t b)
     return heap_push(s, e);
 }
 
-static void normal_of(const double a[3], const double b[3], const double c[3], double n[3])
-{
-    double e1[3], e2[3];
-    for (int k = 0; k < 3; k++) {
-        e1[k] = b[k] - a[k];
-        e2[k] = c[k] - a[k];
-    }
-    cross3(e1, e2, n);
-}
-
-/* The quality of triangle abc whose normal_of has length nlen (twice its
+/* The quality of triangle abc whose tri_normal3 has length nlen (twice its
  * area). */
 static double quality(const double a[3], const double b[3], const double c[3], double nlen)
 {
@@ -261,23 +251,21 @@ static void moved_normal(const simp *s, int32_t t, int32_t v, const double *pu, 
     const double *p[3];
     for (int i = 0; i < 3; i++)
         p[i] = s->t[3 * t + i] == v ? pu : P(s, s->t[3 * t + i]);
-    normal_of(p[0], p[1], p[2], n);
+    tri_normal3(p[0], p[1], p[2], n);
 }
 
-/* Whether collapsing v into u folds the surface: a moved triangle (nt, the
- * new corners of triangles moved[]) and one across an edge of it turned
+/* Whether collapsing v into u folds the surface: a moved triangle (moved[],
+ * its normal was[] before and now[] after) and one across an edge of it turned
  * back to back (normals more than COS_FOLD apart) where they were not.  The
  * turn bound alone lets two triangles on either side of a narrow notch
  * each turn less than 60° and meet as a flat flap across it. */
-static int folds(const simp *s, int32_t v, int32_t u, const int32_t *moved, double nt[][3][3],
-                 int nmoved)
+static int folds(const simp *s, int32_t v, int32_t u, const int32_t *moved, double (*was)[3],
+                 double (*now)[3], int nmoved)
 {
     const double *pu = P(s, u);
     for (int m = 0; m < nmoved; m++) {
         const int32_t *tv = s->t + 3 * moved[m];
-        double n1[3], o1[3];
-        normal_of(nt[m][0], nt[m][1], nt[m][2], n1);
-        normal_of(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), o1);
+        const double *n1 = now[m], *o1 = was[m];
         for (int e = 0; e < 3; e++) {
             int32_t o = across(s, moved[m], tv[e], tv[(e + 1) % 3]);
             if (o < 0) continue;
@@ -287,10 +275,9 @@ static int folds(const simp *s, int32_t v, int32_t u, const int32_t *moved, doub
             if (hv && hu) continue; /* goes with the edge */
             double n2[3], o2[3];
             moved_normal(s, o, v, pu, n2);
-            normal_of(P(s, ov[0]), P(s, ov[1]), P(s, ov[2]), o2);
-            double now = dot3(n1, n2), was = dot3(o1, o2);
+            tri_normal3(P(s, ov[0]), P(s, ov[1]), P(s, ov[2]), o2);
             double ln = sqrt(dot3(n1, n1) * dot3(n2, n2)), lw = sqrt(dot3(o1, o1) * dot3(o2, o2));
-            if (now < -COS_FOLD * ln && !(was < -COS_FOLD * lw)) return 1;
+            if (dot3(n1, n2) < -COS_FOLD * ln && !(dot3(o1, o2) < -COS_FOLD * lw)) return 1;
         }
     }
     return 0;
@@ -327,7 +314,7 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
     if (s->val[v] + s->val[u] - 4 < 3) return 0;
 
     /* the triangles that move */
-    double worst_old = 1, worst_new = 1, nt[FAN_MAX][3][3];
+    double worst_old = 1, worst_new = 1, nt[FAN_MAX][3][3], was[FAN_MAX][3], now[FAN_MAX][3];
     uint8_t edgy[FAN_MAX];
     const double *pu = P(s, u);
     for (int m = 0; m < nmoved; m++) {
@@ -340,9 +327,9 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
             an[i] = tv[i] == v ? pu : a[i];
             memcpy(nt[m][i], an[i], sizeof nt[m][i]);
         }
-        double n0[3], n1[3];
-        normal_of(a[0], a[1], a[2], n0);
-        normal_of(an[0], an[1], an[2], n1);
+        double *n0 = was[m], *n1 = now[m];
+        tri_normal3(a[0], a[1], a[2], n0);
+        tri_normal3(an[0], an[1], an[2], n1);
         double l0 = sqrt(dot3(n0, n0)), l1 = sqrt(dot3(n1, n1));
         if (!(l1 > 0) || dot3(n0, n1) < COS_TURN * l0 * l1) return 0;
         double q0 = quality(a[0], a[1], a[2], l0), q1 = quality(an[0], an[1], an[2], l1);
@@ -350,7 +337,7 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
         if (q1 < worst_new) worst_new = q1;
     }
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
-    if (folds(s, v, u, moved, nt, nmoved)) return 0;
+    if (folds(s, v, u, moved, was, now, nmoved)) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
     if (!near_enough(s, v, -1, nt, moved, edgy, nmoved)) return 0;
@@ -481,7 +468,7 @@ static int32_t across(const simp *s, int32_t t, int32_t a, int32_t b)
 }
 
 /* Whether edge a–b of triangle t bends by more than SHARP_COS between t
- * and the triangle on its other side (tn: every triangle's normal_of). */
+ * and the triangle on its other side (tn: every triangle's tri_normal3). */
 static int sharp(const simp *s, const double *tn, int32_t t, int32_t a, int32_t b)
 {
     int32_t o = across(s, t, a, b);
@@ -528,11 +515,11 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
         s->phead[i] = s->ptail[i] = -1;
     for (size_t k = 3 * nt; k-- > 0;)
         link_corner(s, s->t[k], (int32_t)k);
-    double *tn = malloc(3 * nt * sizeof *tn); /* each triangle's normal_of */
+    double *tn = malloc(3 * nt * sizeof *tn); /* each triangle's tri_normal3 */
     if (!tn) return -1;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *tv = s->t + 3 * t;
-        normal_of(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), tn + 3 * t);
+        tri_normal3(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), tn + 3 * t);
     }
     /* the midpoint of every sharp edge is a point to keep within the bound
      * too: on a curved one (a hole's rim) the vertices alone are too few */

@@ -69,6 +69,14 @@ int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], doub
     return best < INFINITY;
 }
 
+/* How far x lies behind the plane through p with unit normal n. */
+static double behind(const double p[3], const double n[3], const double x[3])
+{
+    double d[3];
+    sub3(p, x, d);
+    return dot3(n, d);
+}
+
 /* The symmetric solve of contour.c (mesh_qef_solve) for the nearest point
  * to x on the planes (p[i], n[i]), the coordinate `fixed` (or none: -1)
  * kept: x moves by the minimum-norm least-squares step. */
@@ -77,8 +85,7 @@ static void nearest_on_planes(const double (*p)[3], const double (*n)[3], int np
 {
     double a[3][3] = {{0}}, b[3] = {0, 0, 0}, dx[3];
     for (int i = 0; i < np; i++) {
-        double r =
-            n[i][0] * (p[i][0] - x[0]) + n[i][1] * (p[i][1] - x[1]) + n[i][2] * (p[i][2] - x[2]);
+        double r = behind(p[i], n[i], x);
         for (int u = 0; u < 3; u++) {
             if (u == fixed) continue;
             b[u] += n[i][u] * r;
@@ -96,15 +103,14 @@ static double residual(const double (*p)[3], const double (*n)[3], int np, const
 {
     double s = 0;
     for (int i = 0; i < np; i++) {
-        double r =
-            n[i][0] * (p[i][0] - x[0]) + n[i][1] * (p[i][1] - x[1]) + n[i][2] * (p[i][2] - x[2]);
+        double r = behind(p[i], n[i], x);
         s += r * r;
     }
     return s;
 }
 
 int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], int ns, int fixed,
-              const double lo[3], const double hi[3], double x[3], int *group)
+              const double lo[3], const double hi[3], double x[3])
 {
     if (!sn->arena || ns <= 0) return 0;
     double h = sn->d->h;
@@ -132,7 +138,6 @@ int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], i
             double dp[3] = {sp[i][0] - p[g][0], sp[i][1] - p[g][1], sp[i][2] - p[g][2]};
             if (dot3(dn, dn) > 1e-12 || fabs(dot3(dp, n[g])) > 1e-6 * h) flat[g] = 0;
         }
-        if (group) group[i] = g;
     }
     double start[3] = {x[0], x[1], x[2]};
     double step = 0.05 * h;
