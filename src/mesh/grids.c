@@ -12,7 +12,8 @@
  *     predicts each one's crossings, which grow as 1/h²); over that, the
  *     model is sampled on one grid, its longest side / cells_per_side.
  *   - Thin walls and gaps: where those thinner than MESH_REFINE_CELLS cells
- *     hold more than MESH_REFINE_SHARE of a part's volume, the part is cast
+ *     hold more than MESH_REFINE_SHARE of a part's volume, and are not only
+ *     a taper (only_a_taper), the part is cast
  *     again up to MESH_REFINE_MAX times finer (a whole factor), while its
  *     share of MESH_REFINE_CROSSINGS allows, in up to MESH_REFINE_ROUNDS
  *     rounds (a finer grid can find thin parts a coarser one missed).
@@ -38,18 +39,54 @@ static long long crossings(const mesh_dexels *d)
     return m.crossings;
 }
 
-/* How much finer than h0 the thin walls and gaps of *d ask for: 1 when they
- * hold too little of the volume to matter (or none are found), else the
- * whole factor that puts MESH_REFINE_CELLS cells across the thinnest,
- * within MESH_REFINE_MAX and `budget` crossings. */
-static int refine_factor(const mesh_dexels *d, double h0, double budget)
+/* The share of the volume that walls and gaps thinner than w hold in *d. */
+static double thin_share(const mesh_dexels *d, double w, double volume)
 {
     mesh_thin t;
+    mesh_dexels_thin(d, w, &t);
+    return volume > 0 ? t.volume / volume : 0;
+}
+
+/* Whether the thin walls and gaps of *d are only a taper, with shares s[k]
+ * of the volume below 4, 2, 1 and 1/2 cells.  A taper (the thin edge of a
+ * wedge, a pyramid's apex, a cone's tip) has walls of every thickness down
+ * to none, and the share below w falls as w² or faster (w³ at a tip): what
+ * a grid loses there shrinks with the spacing as any other sampling error
+ * does, and no finer grid resolves it all.  Walls or gaps of one thickness
+ * (a plate or a slot thinner than the grid), which a grid is either fine
+ * enough for or loses whole, keep the share steady over a halving of w, or
+ * in a mixture make it fall more slowly than TAPER_FALL over the three
+ * halvings from 4 cells to 1/2. */
+#define TAPER_FALL 30.0 /* 8^1.65 */
+static int only_a_taper(const double s[4])
+{
+    for (int k = 0; k < 2; k++)
+        if (s[k + 1] > MESH_REFINE_SHARE && s[k + 1] >= 0.5 * s[k]) return 0;
+    return !(s[3] * TAPER_FALL > s[0]);
+}
+
+/* How much finer than h0 the thin walls and gaps of *d ask for: 1 when they
+ * hold too little of the volume to matter, or are only a taper, else the
+ * whole factor that puts MESH_REFINE_CELLS cells across the thinnest that
+ * hold MESH_REFINE_SHARE of it, within MESH_REFINE_MAX and `budget`
+ * crossings. */
+static int refine_factor(const mesh_dexels *d, double h0, double budget)
+{
     mesh_measure m;
-    mesh_dexels_thin(d, MESH_REFINE_CELLS * d->h, &t);
     mesh_dexels_measure(d, &m);
-    if (!(t.volume > MESH_REFINE_SHARE * m.volume)) return 1;
-    double want = h0 * MESH_REFINE_CELLS / fmin(t.min_wall, t.min_gap);
+    double limit = MESH_REFINE_CELLS * d->h, s[4];
+    for (int k = 0; k < 4; k++)
+        s[k] = thin_share(d, limit / (1 << k), m.volume);
+    if (!(s[0] > MESH_REFINE_SHARE) || only_a_taper(s)) return 1;
+    double lo = 0, hi = limit; /* the thinnest that hold the share: bisected */
+    for (int i = 0; i < 16; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (thin_share(d, mid, m.volume) > MESH_REFINE_SHARE)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    double want = h0 * MESH_REFINE_CELLS / fmax(lo, 1e-9 * limit);
     double room = h0 / d->h * sqrt(budget / (double)(m.crossings + 1));
     double k = floor(fmin(ceil(want), fmin(room, MESH_REFINE_MAX)));
     return k > 1 ? (int)k : 1;
