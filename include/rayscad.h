@@ -71,7 +71,10 @@ typedef enum rayscad_status {
      * whose eye and centre coincide, an unknown output format. */
     RAYSCAD_ERROR_ARGUMENT = -5,
     /* The caller's cancel hook asked to stop (rayscad_render_options). */
-    RAYSCAD_CANCELLED = -6
+    RAYSCAD_CANCELLED = -6,
+    /* An exact measurement needed more rays than max_rays
+     * (rayscad_measure_options). */
+    RAYSCAD_ERROR_RAYS = -7
 } rayscad_status;
 
 /* ---- evaluation --------------------------------------------------------------- */
@@ -580,6 +583,27 @@ typedef struct rayscad_measurement {
 } rayscad_measurement;
 
 void rayscad_sampling_measure(const rayscad_sampling *d, rayscad_measurement *out);
+
+/* The exact measurement of a scene, without a grid (src/mesh/exact.c):
+ * volume, centre of mass and surface area integrated from rays, exact to
+ * rounding for a model of plane faces and within about `tolerance` of the
+ * bounding sphere's volume and area for a curved one, converging as the
+ * tolerance falls; the bounds of the surface from rays along the axes
+ * (within about 1e-9 of the span, 1e-7 where an extreme lies at the end
+ * of a ridge nearly level across its axis).  crossings is the number of
+ * rays cast. */
+#define RAYSCAD_MEASURE_TOLERANCE 1e-6
+typedef struct rayscad_measure_options {
+    int root;           /* which root (RAYSCAD_ROOT_MODEL) */
+    double tolerance;   /* relative; <= 0: RAYSCAD_MEASURE_TOLERANCE */
+    long long max_rays; /* past it: RAYSCAD_ERROR_RAYS; <= 0: no limit */
+    int max_intervals;  /* a ray's interval list past it: RAYSCAD_ERROR_INTERVALS; 0: the default */
+} rayscad_measure_options;
+void rayscad_measure_options_default(rayscad_measure_options *o);
+/* RAYSCAD_OK, RAYSCAD_ERROR_RAYS, RAYSCAD_ERROR_INTERVALS or RAYSCAD_ERROR
+ * (an unbounded model, out of memory), with a message in err. */
+rayscad_status rayscad_scene_measure(const rayscad_scene *s, const rayscad_measure_options *o,
+                                     rayscad_measurement *out, char *err, size_t errlen);
 
 /* Walls (of solid) and gaps (of empty space) thinner than a thickness,
  * found along the rays: parallel opposite faces a contour of that spacing

@@ -532,6 +532,7 @@ static const char *misplaced_flag(const cli_options *o, const run *r)
         return "--mesh-tolerance (--decimate) applies to mesh outputs";
     if (!mesh && !o->measure && o->mesh_size > 0)
         return "--mesh-size applies to mesh outputs and --measure";
+    if (!o->measure && o->measure_tolerance > 0) return "--measure-tolerance applies to --measure";
     return NULL;
 }
 

@@ -30,7 +30,13 @@ static void print_vec(const char *fmt, const double v[3])
     printf(fmt, v[0], v[1], v[2]);
 }
 
-static void print_measure(const cli_options *o, const rayscad_measurement *m, double h,
+/* How a measurement was made: exactly from rays to a tolerance (h = 0),
+ * or on a grid of spacing h. */
+typedef struct how {
+    double h, tolerance;
+} how;
+
+static void print_measure(const cli_options *o, const rayscad_measurement *m, how w,
                           const rayscad_mesh *msh, double mesh_volume)
 {
     int empty = !(m->lo[0] <= m->hi[0]);
@@ -40,32 +46,75 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, do
         hi[k] = empty ? 0 : m->hi[k];
     }
     if (o->json) {
-        printf("{\n  \"volume\": %.10g,\n  \"area\": %.10g,\n", m->volume, m->area);
-        print_vec("  \"bounds\": {\"min\": [%.10g, %.10g, %.10g], ", lo);
-        print_vec("\"max\": [%.10g, %.10g, %.10g]},\n", hi);
-        print_vec("  \"centroid\": [%.10g, %.10g, %.10g],\n", m->centroid);
-        printf("  \"empty\": %s,\n  \"grid_spacing\": %.10g,\n  \"crossings\": %lld",
-               empty ? "true" : "false", h, m->crossings);
+        printf("{\n  \"volume\": %.15g,\n  \"area\": %.15g,\n", m->volume, m->area);
+        print_vec("  \"bounds\": {\"min\": [%.15g, %.15g, %.15g], ", lo);
+        print_vec("\"max\": [%.15g, %.15g, %.15g]},\n", hi);
+        print_vec("  \"centroid\": [%.15g, %.15g, %.15g],\n", m->centroid);
+        printf("  \"empty\": %s,\n", empty ? "true" : "false");
+        if (w.h > 0)
+            printf("  \"method\": \"grid\",\n  \"grid_spacing\": %.10g,\n  \"crossings\": %lld",
+                   w.h, m->crossings);
+        else
+            printf("  \"method\": \"exact\",\n  \"tolerance\": %.3g,\n  \"rays\": %lld",
+                   w.tolerance, m->crossings);
         if (msh)
             printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g}",
                    rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
         printf("\n}\n");
         return;
     }
-    printf("volume:         %.10g\n", m->volume);
-    printf("surface area:   %.10g\n", m->area);
+    printf("volume:         %.12g\n", m->volume);
+    printf("surface area:   %.12g\n", m->area);
     if (empty) {
         printf("bounding box:   (empty)\n");
     } else {
-        print_vec("bounding box:   [%.8g, %.8g, %.8g]", lo);
-        print_vec(" to [%.8g, %.8g, %.8g]", hi);
-        printf(" (size %.8g x %.8g x %.8g)\n", hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+        print_vec("bounding box:   [%.10g, %.10g, %.10g]", lo);
+        print_vec(" to [%.10g, %.10g, %.10g]", hi);
+        printf(" (size %.10g x %.10g x %.10g)\n", hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
     }
-    print_vec("centre of mass: [%.10g, %.10g, %.10g]\n", m->centroid);
-    printf("grid spacing:   %.10g\n", h);
+    print_vec("centre of mass: [%.12g, %.12g, %.12g]\n", m->centroid);
+    if (w.h > 0)
+        printf("grid spacing:   %.10g\n", w.h);
+    else
+        printf("method:         exact, tolerance %.3g (%lld rays)\n", w.tolerance, m->crossings);
     if (msh)
         printf("mesh:           %d vertices, %d triangles, volume %.10g\n",
                rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
+}
+
+/* The most rays an exact --measure casts before it gives way to the grid
+ * (about 15 s on two cores). */
+#define MEASURE_MAX_RAYS (1LL << 26)
+
+/* --measure without --mesh-size (or with --measure-tolerance): exactly,
+ * into *m; 1 when measured, 0 when it needs more than MEASURE_MAX_RAYS
+ * (said; the grid measures instead), -1 on an error (said). */
+static int measure_exact(const cli_options *o, const rayscad_scene *scene, rayscad_measurement *m,
+                         how *w)
+{
+    rayscad_measure_options mo;
+    rayscad_measure_options_default(&mo);
+    if (o->measure_tolerance > 0) mo.tolerance = o->measure_tolerance;
+    mo.max_rays = MEASURE_MAX_RAYS;
+    mo.max_intervals = o->max_intervals;
+    char err[512];
+    rayscad_status rc = rayscad_scene_measure(scene, &mo, m, err, sizeof err);
+    w->h = 0;
+    w->tolerance = mo.tolerance;
+    if (rc == RAYSCAD_OK) return 1;
+    if (rc == RAYSCAD_ERROR_RAYS) {
+        if (!o->quiet)
+            fprintf(stderr,
+                    "rayscad: warning: %s; measured on a grid instead (a larger "
+                    "--measure-tolerance needs fewer)\n",
+                    err);
+        return 0;
+    }
+    if (rc == RAYSCAD_ERROR_INTERVALS)
+        fprintf(stderr, "rayscad: error: %s (--max-intervals)\n", err);
+    else
+        cli_print_error(o, err);
+    return -1;
 }
 
 /* One kind of thin-feature warning: "walls thinner", "the thinnest", "thick",
@@ -151,6 +200,17 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
                     const char *const *paths, int n)
 {
     int write_mesh = n > 0;
+    rayscad_measurement m;
+    how w = {0, 0};
+    int exact = 0;
+    if (o->measure && (o->measure_tolerance > 0 || !(o->mesh_size > 0))) {
+        exact = measure_exact(o, scene, &m, &w);
+        if (exact < 0) return 1;
+        if (exact && !write_mesh) {
+            print_measure(o, &m, w, NULL, 0);
+            return 0;
+        }
+    }
     rayscad_mesh_options mo;
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
@@ -186,8 +246,10 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     double h, org[3];
     int cells[3];
     rayscad_sampling_grid(d, &h, org, cells);
-    rayscad_measurement m;
-    rayscad_sampling_measure(d, &m);
+    if (!exact) {
+        rayscad_sampling_measure(d, &m);
+        w.h = h;
+    }
     rayscad_mesh *msh = NULL;
     double mesh_volume = 0;
     if (write_mesh) {
@@ -215,7 +277,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
         }
     }
     rayscad_sampling_free(d);
-    if (o->measure) print_measure(o, &m, h, msh, mesh_volume);
+    if (o->measure) print_measure(o, &m, w, msh, mesh_volume);
     rayscad_mesh_free(msh);
     return 0;
 }

@@ -99,7 +99,11 @@ const char cli_usage_light[] =
     "  --decimate TOL          the older name of --mesh-tolerance (0: no\n"
     "                          simplification)\n"
     "  --measure               print volume, surface area, bounding box and centre\n"
-    "                          of mass, integrated over the ray intervals\n"
+    "                          of mass, integrated exactly from rays: exact for\n"
+    "                          plane faces, curved ones to --measure-tolerance\n"
+    "                          (with --mesh-size H alone: on the mesh's grid)\n"
+    "  --measure-tolerance T   relative error of --measure on curved surfaces\n"
+    "                          (default 1e-6 of the bounding sphere's)\n"
     "  --json                  the same as JSON on stdout (implies --measure)\n";
 
 int cli_parse_double(const char *s, double *out)
@@ -307,6 +311,7 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
                                          "--mesh-size",
                                          "--decimate",
                                          "--mesh-tolerance",
+                                         "--measure-tolerance",
                                          "--max-recursion",
                                          "--max-steps",
                                          "--max-list",
@@ -443,6 +448,13 @@ int cli_options_parse(int argc, char **argv, cli_options *o, char *err, size_t e
         } else if (strcmp(flag, "--mesh-size") == 0) {
             if (cli_parse_double(val, &o->mesh_size) != 0 || !(o->mesh_size > 0)) {
                 snprintf(err, errlen, "--mesh-size expects a grid spacing > 0, got '%s'", val);
+                return -1;
+            }
+        } else if (strcmp(flag, "--measure-tolerance") == 0) {
+            if (cli_parse_double(val, &o->measure_tolerance) != 0 ||
+                !(o->measure_tolerance > 0 && o->measure_tolerance < 1)) {
+                snprintf(err, errlen, "--measure-tolerance expects a fraction in (0, 1), got '%s'",
+                         val);
                 return -1;
             }
         } else if (strcmp(flag, "--mesh-tolerance") == 0) {

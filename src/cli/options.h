@@ -67,11 +67,12 @@ typedef struct cli_options {
      * 0, and an image's options start from these. */
     rayscad_render_options optics;
     /* Meshes and measurement (mesh_output.h). */
-    double mesh_size;      /* --mesh-size: grid spacing > 0; 0 = derived from the model */
-    double mesh_tolerance; /* --mesh-tolerance (or --decimate) D; 0: none; < 0: the model's */
-    int ascii;             /* --ascii: text STL / PLY */
-    int measure;           /* --measure (also set by --json) */
-    int json;              /* --json: the measurement as JSON */
+    double mesh_size;         /* --mesh-size: grid spacing > 0; 0 = derived from the model */
+    double mesh_tolerance;    /* --mesh-tolerance (or --decimate) D; 0: none; < 0: the model's */
+    int ascii;                /* --ascii: text STL / PLY */
+    int measure;              /* --measure (also set by --json) */
+    double measure_tolerance; /* --measure-tolerance T > 0; 0: the library's */
+    int json;                 /* --json: the measurement as JSON */
     /* No -o and no --measure: the viewer (viewer.h), its window
      * --imgsize (800x600 when not given); --stats: a line per frame. */
     int viewer, imgsize_given, stats;

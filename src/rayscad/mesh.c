@@ -53,6 +53,33 @@ void rayscad_sampling_measure(const rayscad_sampling *d, rayscad_measurement *ou
     mesh_dexels_measure(d->d, out);
 }
 
+void rayscad_measure_options_default(rayscad_measure_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->root = RAYSCAD_ROOT_MODEL;
+    o->tolerance = RAYSCAD_MEASURE_TOLERANCE;
+}
+
+rayscad_status rayscad_scene_measure(const rayscad_scene *s, const rayscad_measure_options *o,
+                                     rayscad_measurement *out, char *err, size_t errlen)
+{
+    char local[1];
+    if (!err) err = local, errlen = sizeof local;
+    rayscad_measure_options def;
+    if (!o) {
+        rayscad_measure_options_default(&def);
+        o = &def;
+    }
+    long long rays = 0;
+    int rc = mesh_measure_exact(s->s, o->root,
+                                o->tolerance > 0 ? o->tolerance : RAYSCAD_MEASURE_TOLERANCE,
+                                o->max_rays, o->max_intervals, out, &rays, err, errlen);
+    out->crossings = rays;
+    return rc == 0                                                     ? RAYSCAD_OK
+           : rc == RAYSCAD_ERROR_RAYS || rc == RAYSCAD_ERROR_INTERVALS ? (rayscad_status)rc
+                                                                       : RAYSCAD_ERROR;
+}
+
 void rayscad_sampling_thin(const rayscad_sampling *d, double thickness, rayscad_thin *out)
 {
     mesh_dexels_thin(d->d, thickness, out);

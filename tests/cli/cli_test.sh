@@ -155,21 +155,34 @@ check "--ascii writes text PLY" grep -q "format ascii" boxa.ply
 run box.scad -o bin.ply --mesh-size 0.5
 check "PLY is binary by default" grep -aq "format binary" bin.ply
 
-# --measure against closed forms.  The midpoint rule over the rays is exact
-# along each ray and off by up to h/2 at faces parallel to a ray family, so
-# a box with sides off the grid is within 0.5 % (h = 30/128 here); a sphere
-# converges faster (0.1 %, area 0.5 %).
+# --measure against closed forms.  Exact (rays, no grid): a box to rounding,
+# its bounds and centre included.
 run box.scad --measure --json
 check "--measure alone exits 0" test "$rc" -eq 0
-check "--json: box volume, area, bounds, centroid" "$py" - out.txt <<'PY'
+check "--json: box volume, area, bounds, centroid exact" "$py" - out.txt <<'PY'
 import json, sys
 m = json.load(open(sys.argv[1]))
-ok = abs(m["volume"] - 6000) <= 0.005 * 6000 and abs(m["area"] - 2200) <= 0.005 * 2200
-ok = ok and all(abs(a - b) <= 1e-6 for a, b in zip(m["bounds"]["min"], [0, 0, 0]))
-ok = ok and all(abs(a - b) <= 1e-6 for a, b in zip(m["bounds"]["max"], [10, 20, 30]))
-ok = ok and all(abs(a - b) <= m["grid_spacing"] / 4 for a, b in zip(m["centroid"], [5, 10, 15]))
+ok = abs(m["volume"] - 6000) <= 1e-9 * 6000 and abs(m["area"] - 2200) <= 1e-9 * 2200
+ok = ok and all(abs(a - b) <= 1e-9 for a, b in zip(m["bounds"]["min"], [0, 0, 0]))
+ok = ok and all(abs(a - b) <= 1e-9 for a, b in zip(m["bounds"]["max"], [10, 20, 30]))
+ok = ok and all(abs(a - b) <= 1e-9 for a, b in zip(m["centroid"], [5, 10, 15]))
+ok = ok and m["method"] == "exact" and m["tolerance"] == 1e-6 and m["rays"] > 0
 sys.exit(0 if ok and not m["empty"] and "mesh" not in m else 1)
 PY
+run ball.scad --measure --measure-tolerance 1e-8 --json
+check "--measure-tolerance: sphere volume and area within 1e-8" "$py" - out.txt <<'PY'
+import json, math, sys
+m = json.load(open(sys.argv[1]))
+v, a = 4 / 3 * math.pi * 1000, 4 * math.pi * 100
+ok = abs(m["volume"] - v) <= 1e-8 * v and abs(m["area"] - a) <= 1e-8 * a
+sys.exit(0 if ok and m["tolerance"] == 1e-8 else 1)
+PY
+run box.scad --measure-tolerance 1e-3 -o x.stl
+check "--measure-tolerance without --measure is a usage error" sh -c "test $rc -eq 2 && grep -q 'measure-tolerance applies to --measure' err.txt"
+run box.scad --measure --measure-tolerance 2
+check "--measure-tolerance 2 is a usage error" test "$rc" -eq 2
+# --mesh-size alone measures on that grid: the midpoint rule over the rays
+# is exact along each ray and converges across them.
 run ball.scad --json --mesh-size 0.25
 check "--json: sphere volume and area within 0.1 % / 0.5 %" "$py" - out.txt <<'PY'
 import json, math, sys
