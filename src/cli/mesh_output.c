@@ -30,10 +30,11 @@ static void print_vec(const char *fmt, const double v[3])
     printf(fmt, v[0], v[1], v[2]);
 }
 
-/* How a measurement was made: exactly from rays to a tolerance (h = 0),
- * or on a grid of spacing h. */
+/* How a measurement was made: exactly from rays to a tolerance (> 0), or
+ * on the grid of spacing h (said as well where a mesh was made on one). */
 typedef struct how {
     double h, tolerance;
+    long long over; /* the exact measurement needed more rays than this */
 } how;
 
 static void print_measure(const cli_options *o, const rayscad_measurement *m, how w,
@@ -51,12 +52,13 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
         print_vec("\"max\": [%.15g, %.15g, %.15g]},\n", hi);
         print_vec("  \"centroid\": [%.15g, %.15g, %.15g],\n", m->centroid);
         printf("  \"empty\": %s,\n", empty ? "true" : "false");
-        if (w.h > 0)
-            printf("  \"method\": \"grid\",\n  \"grid_spacing\": %.10g,\n  \"crossings\": %lld",
-                   w.h, m->crossings);
-        else
+        if (w.tolerance > 0)
             printf("  \"method\": \"exact\",\n  \"tolerance\": %.3g,\n  \"rays\": %lld",
                    w.tolerance, m->crossings);
+        else
+            printf("  \"method\": \"grid\",\n  \"crossings\": %lld", m->crossings);
+        if (w.over) printf(",\n  \"exact_needs_more_rays_than\": %lld", w.over);
+        if (w.h > 0) printf(",\n  \"grid_spacing\": %.10g", w.h);
         if (msh)
             printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g}",
                    rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
@@ -73,22 +75,28 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
         printf(" (size %.10g x %.10g x %.10g)\n", hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
     }
     print_vec("centre of mass: [%.12g, %.12g, %.12g]\n", m->centroid);
-    if (w.h > 0)
-        printf("grid spacing:   %.10g\n", w.h);
-    else
+    if (w.tolerance > 0)
         printf("method:         exact, tolerance %.3g (%lld rays)\n", w.tolerance, m->crossings);
+    if (w.over)
+        printf("method:         grid (exact needs more than %lld rays; a larger "
+               "--measure-tolerance fewer)\n",
+               w.over);
+    if (w.h > 0) printf("grid spacing:   %.10g\n", w.h);
     if (msh)
         printf("mesh:           %d vertices, %d triangles, volume %.10g\n",
                rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
 }
 
-/* The most rays an exact --measure casts before it gives way to the grid
- * (about 15 s on two cores). */
-#define MEASURE_MAX_RAYS (1LL << 26)
+/* The most rays an exact --measure casts before it gives way to the grid:
+ * about 2 s on two cores.  A model of many faces has as many events along
+ * and across the lines (every crossing of a front edge over a back one
+ * seen along the rays), and the grid measures it in a fraction of that. */
+#define MEASURE_MAX_RAYS (1LL << 24)
 
 /* --measure without --mesh-size (or with --measure-tolerance): exactly,
  * into *m; 1 when measured, 0 when it needs more than MEASURE_MAX_RAYS
- * (said; the grid measures instead), -1 on an error (said). */
+ * (the grid measures instead, and the output says so; a warning too where
+ * the tolerance was asked for), -1 on an error (said). */
 static int measure_exact(const cli_options *o, const rayscad_scene *scene, rayscad_measurement *m,
                          how *w)
 {
@@ -103,7 +111,9 @@ static int measure_exact(const cli_options *o, const rayscad_scene *scene, raysc
     w->tolerance = mo.tolerance;
     if (rc == RAYSCAD_OK) return 1;
     if (rc == RAYSCAD_ERROR_RAYS) {
-        if (!o->quiet)
+        w->tolerance = 0;
+        w->over = MEASURE_MAX_RAYS;
+        if (!o->quiet && o->measure_tolerance > 0)
             fprintf(stderr,
                     "rayscad: warning: %s; measured on a grid instead (a larger "
                     "--measure-tolerance needs fewer)\n",
@@ -201,7 +211,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
 {
     int write_mesh = n > 0;
     rayscad_measurement m;
-    how w = {0, 0};
+    how w = {0, 0, 0};
     int exact = 0;
     if (o->measure && (o->measure_tolerance > 0 || !(o->mesh_size > 0))) {
         exact = measure_exact(o, scene, &m, &w);
@@ -246,10 +256,8 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     double h, org[3];
     int cells[3];
     rayscad_sampling_grid(d, &h, org, cells);
-    if (!exact) {
-        rayscad_sampling_measure(d, &m);
-        w.h = h;
-    }
+    if (!exact) rayscad_sampling_measure(d, &m);
+    w.h = h;
     rayscad_mesh *msh = NULL;
     double mesh_volume = 0;
     if (write_mesh) {

@@ -6,7 +6,8 @@
 # within 0.5 %, bounding boxes within h, symmetric Hausdorff distance <= 2 h.
 # Ours must also print no warning (none of these models has a wall thinner
 # than h).  The model (cube_sphere_cylinders.scad) must also measure
-# (--measure, interval integration) within 0.1 % of its exact volume.
+# (--measure: exact, or on the grid past its ray budget) within 0.1 % of its
+# exact volume.
 #   usage: tests/cli/mesh_compare.sh [BUILD]
 set -u
 build=${1:-build}
