@@ -42,7 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define NF 5           /* per ray: length, moment (3), area */
+#define NF 6           /* per ray: length, moment (3), area, d(length)/dv */
 #define SAMPLES 24     /* first samples along each line */
 #define EPS 1e-11      /* event brackets along a line, relative to the span */
 #define OUTER_EPS 1e-6 /* across the lines (see below) */
@@ -235,6 +235,23 @@ static double kink(const sample *a, const sample *b)
     return (b->f[0] - a->f[0] + a->slope * a->x - b->slope * b->x) / ds;
 }
 
+/* Across the lines: where the section areas on the two sides, each a
+ * quadratic through a sample's value and slope and an earlier sample's
+ * value (a2, b2 of the same signatures), join with one slope — the event
+ * between plane-faced pieces, exactly; NAN where it cannot tell. */
+static double join(const sample *a, const sample *a2, const sample *b, const sample *b2)
+{
+    if (!(a2->x < a->x) || !(b2->x > b->x) || !isfinite(a->slope + b->slope)) return NAN;
+    double da = a2->x - a->x, db = b2->x - b->x;
+    double cl = (a2->f[0] - a->f[0] - a->slope * da) / (da * da);
+    double cr = (b2->f[0] - b->f[0] - b->slope * db) / (db * db);
+    double al = cl - cr, be = (a->slope - 2 * cl * a->x) - (b->slope - 2 * cr * b->x);
+    double ga = (a->f[0] - a->slope * a->x + cl * a->x * a->x) -
+                (b->f[0] - b->slope * b->x + cr * b->x * b->x);
+    if (fabs(al) > 1e-12 * (fabs(cl) + fabs(cr))) return -be / (2 * al);
+    return be != 0 ? -ga / be : NAN;
+}
+
 /* Events found between two samples: brackets [a, b] of width L->eps or
  * less, in order. */
 typedef struct events {
@@ -263,10 +280,10 @@ static int push_event(events *E, const sample *a, const sample *b)
  * pieces are plane-faced — and halves the bracket when the try did not. */
 static int bracket(level *L, const sample *l, const sample *r, int depth, events *E)
 {
-    sample a = *l, b = *r;
+    sample a = *l, b = *r, a2 = {.x = NAN}, b2 = {.x = NAN};
     int tries = 0;
     while (b.x - a.x > L->eps) {
-        double k = kink(&a, &b), h = 0.5 * L->eps;
+        double k = L->twice ? join(&a, &a2, &b, &b2) : kink(&a, &b), h = 0.5 * L->eps;
         sample m[2];
         int n = 1;
         if (tries < 2 && k - h > a.x && k + h < b.x) {
@@ -281,8 +298,10 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
         for (int i = 0; i < n; i++) {
             if (L->eval(L->ctx, &m[i]) != 0) return -1;
             if (m[i].sig == a.sig && m[i].x > a.x) {
+                a2 = a;
                 a = m[i];
             } else if (m[i].sig == b.sig && m[i].x < b.x) {
+                b2 = b;
                 b = m[i];
             } else if (m[i].sig != a.sig && m[i].sig != b.sig && depth < MAX_DEPTH) {
                 /* a third signature: two events or more */
@@ -324,7 +343,7 @@ static int stretch(level *L, const sample *s, int n, int depth)
         for (int e = 0; e < E.n && rc == 0; e++) {
             const sample *a = &E.ab[e][0], *b = &E.ab[e][1];
             if (a->x > start.x) rc = panel(L, &start, a, depth);
-            double k = kink(a, b);
+            double k = L->twice ? NAN : kink(a, b);
             if (!(k >= a->x && k <= b->x)) k = 0.5 * (a->x + b->x);
             for (int c = 0; c < NF; c++)
                 L->sum[c] += (k - a->x) * a->f[c] + (b->x - k) * b->f[c];
@@ -378,7 +397,7 @@ static int integrate(level *L, double a, double b)
      * sample goes where their lines cross. */
     int na = 0;
     for (int i = 0; i < m && rc == 0; i++) {
-        if (i > 0 && sm[i].sig == sm[i - 1].sig && isfinite(sm[i].slope)) {
+        if (i > 0 && !L->twice && sm[i].sig == sm[i - 1].sig && isfinite(sm[i].slope)) {
             const sample *p = &sm[i - 1], *q = &sm[i];
             double w = q->x - p->x, scale = fabs(p->f[0]) + fabs(q->f[0]) + fabs(p->slope * w);
             if (fabs(p->f[0] + p->slope * w - q->f[0]) > 1e-9 * scale) {
@@ -505,7 +524,7 @@ static int ray_eval(void *ctx, sample *sm)
     }
     P->count++;
     if (csg_trace(P->s, P->root, o, P->d, 0, 2 * P->reach, P->arena, &l) != 0) return -1;
-    double len = 0, tt = 0, area = 0, slope = 0;
+    double len = 0, tt = 0, area = 0, slope = 0, across = 0;
     uint64_t h = 0x2545f4914f6cdd1dULL;
     for (int i = 0; i < l.n; i++)
         for (int e = 0; e < 2; e++) {
@@ -517,6 +536,7 @@ static int ray_eval(void *ctx, sample *sm)
             area += w > 0 ? 1 / w : 0;
             /* t on the plane of b as u moves: dt/du = −(n·e1)/(n·d) */
             slope += (e ? -1 : 1) * dot3(n, P->e1) / dot3(n, P->d);
+            across += (e ? -1 : 1) * dot3(n, P->e2) / dot3(n, P->d);
             h = mix(h, (uint64_t)(uint32_t)b->prim << 32 | (uint64_t)b->part << 1 | b->flip);
             for (int a = 0; a < 3; a++) {
                 double x = o[a] + b->t * P->d[a];
@@ -535,6 +555,7 @@ static int ray_eval(void *ctx, sample *sm)
     for (int k = 0; k < 3; k++)
         f[1 + k] = (o[k] - P->c[k]) * len + P->d[k] * tt;
     f[4] = area;
+    f[5] = across;
     sm->slope = slope;
     sm->sig = h;
     return 0;
@@ -588,7 +609,7 @@ static int line_eval(void *ctx, sample *sm)
     pass *P = ctx;
     double v = sm->x, *f = sm->f;
     uint64_t *sig = &sm->sig;
-    sm->slope = NAN;
+    sm->slope = NAN; /* set below: d(area of the line's section)/dv */
     double ua, ub;
     if (!box_span((const double(*)[2])P->corner, v, PAD * 2 * P->reach, &ua, &ub)) {
         memset(f, 0, NF * sizeof *f);
@@ -617,6 +638,7 @@ static int line_eval(void *ctx, sample *sm)
     P->inner.nhints = n;
     if (integrate(&P->inner, ua, ub) != 0) return -1;
     memcpy(f, P->inner.sum, sizeof P->inner.sum);
+    sm->slope = f[5];
     /* The line's signature: its pieces in order, less slivers narrower
      * than SLIVER of the span.  Where bisection lands decides whether it
      * sees a sliver at all (one that exists only next to an event), and a
