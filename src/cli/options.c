@@ -101,7 +101,8 @@ const char cli_usage_light[] =
     "  --measure               print volume, surface area, bounding box and centre\n"
     "                          of mass, integrated exactly from rays: exact for\n"
     "                          plane faces, curved ones to --measure-tolerance\n"
-    "                          (with --mesh-size H alone: on the mesh's grid)\n"
+    "                          (with --mesh-size and no --measure-tolerance:\n"
+    "                          on the mesh's grid)\n"
     "  --measure-tolerance T   relative error of --measure on curved surfaces\n"
     "                          (default 1e-6 of the bounding sphere's)\n"
     "  --json                  the same as JSON on stdout (implies --measure)\n";

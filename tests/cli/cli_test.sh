@@ -169,6 +169,13 @@ ok = ok and all(abs(a - b) <= 1e-9 for a, b in zip(m["centroid"], [5, 10, 15]))
 ok = ok and m["method"] == "exact" and m["tolerance"] == 1e-6 and m["rays"] > 0
 sys.exit(0 if ok and not m["empty"] and "mesh" not in m else 1)
 PY
+run box.scad -o mb.stl --json
+check "--measure with a mesh output: exact where it is cheap, and the mesh" "$py" - out.txt <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+ok = m["method"] == "exact" and abs(m["volume"] - 6000) <= 1e-9 * 6000
+sys.exit(0 if ok and m["mesh"]["triangles"] == 12 and m["grid_spacing"] > 0 else 1)
+PY
 run ball.scad --measure --measure-tolerance 1e-8 --json
 check "--measure-tolerance: sphere volume and area within 1e-8" "$py" - out.txt <<'PY'
 import json, math, sys
