@@ -109,7 +109,6 @@ static int measure_exact(const cli_options *o, const rayscad_scene *scene, long 
     mo.max_intervals = o->max_intervals;
     char err[512];
     rayscad_status rc = rayscad_scene_measure(scene, &mo, m, err, sizeof err);
-    w->h = 0;
     w->tolerance = mo.tolerance;
     if (rc == RAYSCAD_OK) return 1;
     if (rc == RAYSCAD_ERROR_RAYS) {

@@ -1,36 +1,43 @@
 /*
- * exact.c — volume, centre of mass and surface area as nested integrals of
- * ray queries, to a tolerance (mesh_measure_exact).
+ * exact.c — volume, centre of mass, surface area and bounds from ray
+ * queries, to a tolerance, without a grid (mesh_measure_exact).
  *
- * Rays along one fixed direction d, oblique to every axis, through the
- * points (u, v) of a plane across it:
+ * Rays along a direction d, oblique to every axis, through the points
+ * (u, v) of a plane across it:
  *
  *   V = ∫∫ L(u, v) du dv       L: the length of solid along the ray
  *   ∫ p dV = ∫∫ ∫ p(t) dt du dv over the ray's intervals
- *   A = ∫∫ Σ 1 / |n·d| du dv   over the ray's crossings (n: unit normal)
+ *   A = Σ_k ∫∫ Σ w(n) du dv    over the crossings, in three passes along
+ *                              the three directions d_k of an orthonormal
+ *                              frame, w = 1 / Σ_j |n·d_j|
+ *
+ * (each pass's crossings weigh |n·d_k| dA, so the three sum to dA; w is
+ * bounded, unlike the 1 / |n·d| of one pass at a silhouette).
  *
  * Along a line v = const the ray's interval list changes its make-up (which
  * faces of which primitives bound it, in order: its signature) only at
  * isolated events, and between two events every quantity is a smooth
  * function of u — on plane faces a linear one.  So the inner integral over u
- * is a sum over pieces of one signature each: the events between samples of
- * differing signatures are found by bisection to EPS of the span, and each
- * piece is integrated by Gauss–Kronrod (7/15 points), halved until the two
- * rules agree.  Each piece is integrated through u = a + (b − a)(3s² − 2s³),
- * which keeps the rules exact on a linear piece (the integrand becomes a
- * polynomial of degree 5) and turns the square-root edge of a curved
- * silhouette, where L goes as √(u − a), into a smooth function.  The outer
- * integral over v is the same scheme again, its signature the sequence of
- * the inner pieces'; the inner integral of a polyhedral model is piecewise
- * quadratic in v, which the rules also integrate exactly.  The oblique
- * direction leaves no face of an ordinary model parallel to the rays, so L
- * has no jumps inside the model and a bracketed event costs at most its
- * width times a kink's slope.
+ * is a sum over pieces of one signature each.  Events between samples of
+ * differing signatures are bracketed to EPS of the span, each step first
+ * trying where the two sides' lines (length and its slope, from the
+ * normals) meet — the event itself between plane faces — then halving.
+ * Each piece is integrated whole: by Simpson's rule when it agrees with its
+ * two halves to rounding (plane faces: a polynomial of degree 3 at most),
+ * else by Gauss–Kronrod (7/15 points), halved until the rules agree.  The
+ * Kronrod rule runs through u = a + (b − a)(3s² − 2s³), which turns the
+ * square-root edge of a curved silhouette, where L goes as √(u − a), into a
+ * smooth function.  The outer integral over v is the same scheme again
+ * (the level `across`), its signature the sequence of a line's pieces, its
+ * events tried where the two sides' section areas join with one slope.
+ * The oblique direction leaves no face of an ordinary model parallel to
+ * the rays, so L has no jumps inside the model and a bracketed event costs
+ * at most its width times a kink's slope.
  *
  * A polyhedral model comes out exact to rounding; a curved one converges
- * as the tolerance falls.  Features smaller than the first sampling (SAMPLES
- * per side) can slip between its samples when both neighbours agree — the
- * Kronrod nodes usually catch them, and the tolerance's halving does.
+ * as the tolerance falls.  A feature narrower than the first samples can
+ * slip between two that agree: lines are hinted by their neighbours' pieces
+ * and by the primitives' boxes, and the Kronrod nodes catch what they can.
  */
 #include "mesh.h"
 
@@ -78,11 +85,10 @@ typedef struct level {
     double eps;       /* event bracket width */
     double min_panel; /* a panel narrower is not split at a node of another signature */
     double sum[NF];
-    uint64_t seq;  /* hash of the sequence of piece signatures */
     piece *pieces; /* the pieces of the last integration, in order */
     int npieces, cap;
     int failed;          /* out of memory for pieces or hints */
-    int twice;           /* evaluate the first samples twice (see integrate) */
+    int across;          /* the level across the lines (see integrate, bracket) */
     int samples;         /* even first samples */
     const double *hints; /* points to sample first, besides the even ones */
     int nhints;
@@ -130,7 +136,6 @@ static void add_piece(level *L, uint64_t sig, double x0, double x1)
         L->cap = cap;
     }
     L->pieces[L->npieces++] = (piece){sig, x0, x1};
-    L->seq = mix(L->seq, sig);
 }
 
 /* The error of the Kronrod sum k of a panel of width w, from its Gauss
@@ -154,8 +159,6 @@ static double err_norm(const level *L, const double k[NF], const double g[NF], d
 
 static int stretch(level *L, const sample *s, int n, int depth);
 
-/* Integrate the piece between samples l and r of one signature, halved
- * until the two rules agree; a node of another signature splits it there. */
 /* A piece of plane faces is a polynomial of degree 3 at most (a line's
  * length linear in u, its moments quadratic; across the lines one degree
  * more), which Simpson's rule integrates exactly: when it gives the same
@@ -190,6 +193,8 @@ static int cubic_piece(level *L, const sample *l, const sample *r, int depth, in
     return 0;
 }
 
+/* Integrate the piece between samples l and r of one signature, halved
+ * until the two rules agree; a node of another signature splits it there. */
 static int panel(level *L, const sample *l, const sample *r, int depth)
 {
     int done;
@@ -283,7 +288,7 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
     sample a = *l, b = *r, a2 = {.x = NAN}, b2 = {.x = NAN};
     int tries = 0;
     while (b.x - a.x > L->eps) {
-        double k = L->twice ? join(&a, &a2, &b, &b2) : kink(&a, &b), h = 0.5 * L->eps;
+        double k = L->across ? join(&a, &a2, &b, &b2) : kink(&a, &b), h = 0.5 * L->eps;
         sample m[2];
         int n = 1;
         if (tries < 2 && k - h > a.x && k + h < b.x) {
@@ -310,7 +315,7 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
             }
         }
     }
-    if (L->twice && depth < MAX_DEPTH) {
+    if (L->across && depth < MAX_DEPTH) {
         /* A line is only as good as its hints: one integrated while its
          * nearest neighbours were far may have missed a narrow piece that
          * the lines now either side of it show.  Integrated again, an end
@@ -343,7 +348,7 @@ static int stretch(level *L, const sample *s, int n, int depth)
         for (int e = 0; e < E.n && rc == 0; e++) {
             const sample *a = &E.ab[e][0], *b = &E.ab[e][1];
             if (a->x > start.x) rc = panel(L, &start, a, depth);
-            double k = L->twice ? NAN : kink(a, b);
+            double k = L->across ? NAN : kink(a, b);
             if (!(k >= a->x && k <= b->x)) k = 0.5 * (a->x + b->x);
             for (int c = 0; c < NF; c++)
                 L->sum[c] += (k - a->x) * a->f[c] + (b->x - k) * b->f[c];
@@ -368,7 +373,6 @@ static int by_x(const void *a, const void *b)
 static int integrate(level *L, double a, double b)
 {
     memset(L->sum, 0, sizeof L->sum);
-    L->seq = 0;
     L->npieces = 0;
     int ns = L->samples;
     int n = ns + 1 + L->nhints;
@@ -380,36 +384,17 @@ static int integrate(level *L, double a, double b)
     for (int i = 0; i < L->nhints; i++)
         if (L->hints[i] > a && L->hints[i] < b) x[m++] = L->hints[i];
     qsort(x, (size_t)m, sizeof *x, by_x);
-    sample *sm = malloc(3 * (size_t)m * sizeof *sm), *all = sm + m;
+    sample *sm = malloc((size_t)m * sizeof *sm);
     int rc = sm ? 0 : -1;
     for (int i = 0; i < m && rc == 0; i++) {
         sm[i].x = x[i];
         rc = L->eval(L->ctx, &sm[i]);
     }
-    /* once more from the other end where the level asks (the lines: each
-     * then has hints from both sides) */
-    for (int i = m - 1; i >= 0 && rc == 0 && L->twice; i--)
+    /* the lines once more from the other end: each then has hints from
+     * both sides */
+    for (int i = m - 1; i >= 0 && rc == 0 && L->across; i--)
         rc = L->eval(L->ctx, &sm[i]);
-    /* Two neighbours of one signature whose lines (value and slope) do not
-     * meet each other's values bend between them: on plane faces only an
-     * event does that — a narrow piece the even samples stepped over, such
-     * as the sliver at a silhouette edge seen nearly end-on — so one more
-     * sample goes where their lines cross. */
-    int na = 0;
-    for (int i = 0; i < m && rc == 0; i++) {
-        if (i > 0 && !L->twice && sm[i].sig == sm[i - 1].sig && isfinite(sm[i].slope)) {
-            const sample *p = &sm[i - 1], *q = &sm[i];
-            double w = q->x - p->x, scale = fabs(p->f[0]) + fabs(q->f[0]) + fabs(p->slope * w);
-            if (fabs(p->f[0] + p->slope * w - q->f[0]) > 1e-9 * scale) {
-                double k = kink(p, q);
-                all[na].x = k > p->x && k < q->x ? k : p->x + 0.5 * w;
-                rc = L->eval(L->ctx, &all[na]);
-                na++;
-            }
-        }
-        all[na++] = sm[i];
-    }
-    if (rc == 0) rc = stretch(L, all, na, 0);
+    if (rc == 0) rc = stretch(L, sm, m, 0);
     free(sm);
     free(x);
     return rc == 0 && !L->failed ? 0 : -1;
@@ -435,8 +420,8 @@ typedef struct pass {
     const csg_scene *s;
     int root;
     double c[3], d[3], e1[3], e2[3], reach;
-    double corner[8][2]; /* the model's box seen along d: (u, v) of its corners */
-    double frame[3][3];  /* the three directions of the area weight */
+    seed box;           /* the model's box seen along d */
+    double frame[3][3]; /* the three directions of the area weight */
     iv_arena *arena;
     long long count;
     double v; /* the current line's v */
@@ -453,15 +438,15 @@ typedef struct pass {
     int rc;
 } pass;
 
-/* The stretch [*lo, *hi] of u on the line at v that the model's box covers
- * (padded by PAD of the span); 0 when the line misses it. */
-static int box_span(const double corner[8][2], double v, double pad, double *lo, double *hi)
+/* The stretch [*lo, *hi] of u on the line at v that box q covers, padded
+ * by pad; 0 when the line misses it. */
+static int box_span(const seed *q, double v, double pad, double *lo, double *hi)
 {
     *lo = INFINITY;
     *hi = -INFINITY;
     for (int i = 0; i < 8; i++)
         for (int j = i; j < 8; j++) {
-            const double *a = corner[i], *b = corner[j];
+            const double *a = q->corner[i], *b = q->corner[j];
             if ((a[1] - v) * (b[1] - v) > 0) continue;
             double u = a[1] == b[1] ? a[0] : a[0] + (b[0] - a[0]) * (v - a[1]) / (b[1] - a[1]);
             double u2 = a[1] == b[1] ? b[0] : u;
@@ -473,25 +458,24 @@ static int box_span(const double corner[8][2], double v, double pad, double *lo,
     return *lo <= *hi;
 }
 
-/* The corners of box lo..hi seen along P's direction, and the least and
- * greatest v among them. */
-static void project_box(const pass *P, const double lo[3], const double hi[3], double corner[8][2],
-                        double *vlo, double *vhi)
+/* Box lo..hi seen along P's direction: its corners (u, v) and the least
+ * and greatest v among them. */
+static void project_box(const pass *P, const double lo[3], const double hi[3], seed *q)
 {
-    *vlo = INFINITY;
-    *vhi = -INFINITY;
+    q->vlo = INFINITY;
+    q->vhi = -INFINITY;
     for (int i = 0; i < 8; i++) {
-        double q[3];
+        double x[3];
         for (int a = 0; a < 3; a++)
-            q[a] = ((i >> a) & 1 ? hi[a] : lo[a]) - P->c[a];
-        corner[i][0] = dot3(q, P->e1);
-        corner[i][1] = dot3(q, P->e2);
-        *vlo = fmin(*vlo, corner[i][1]);
-        *vhi = fmax(*vhi, corner[i][1]);
+            x[a] = ((i >> a) & 1 ? hi[a] : lo[a]) - P->c[a];
+        q->corner[i][0] = dot3(x, P->e1);
+        q->corner[i][1] = dot3(x, P->e2);
+        q->vlo = fmin(q->vlo, q->corner[i][1]);
+        q->vhi = fmax(q->vhi, q->corner[i][1]);
     }
 }
 
-/* Hints from the primitives' boxes (leaf *L of the seeds) narrower than
+/* Hints from the primitives' boxes (P->seeds) narrower than
  * `spacing` along the line at v (or, v NAN, across the lines): their
  * middles, appended to h[*n] up to cap.  Even samples can step over a
  * small part far from the rest; these cannot. */
@@ -504,7 +488,7 @@ static void seed_hints(const pass *P, double v, double spacing, double *h, int *
             continue;
         }
         double lo, hi;
-        if (v < q->vlo || v > q->vhi || !box_span(q->corner, v, 0, &lo, &hi)) continue;
+        if (v < q->vlo || v > q->vhi || !box_span(q, v, 0, &lo, &hi)) continue;
         if (hi - lo < spacing) h[(*n)++] = 0.5 * (lo + hi);
     }
 }
@@ -611,7 +595,7 @@ static int line_eval(void *ctx, sample *sm)
     uint64_t *sig = &sm->sig;
     sm->slope = NAN; /* set below: d(area of the line's section)/dv */
     double ua, ub;
-    if (!box_span((const double(*)[2])P->corner, v, PAD * 2 * P->reach, &ua, &ub)) {
+    if (!box_span(&P->box, v, PAD * 2 * P->reach, &ua, &ub)) {
         memset(f, 0, NF * sizeof *f);
         *sig = 0;
         return 0;
@@ -668,12 +652,7 @@ static int line_eval(void *ctx, sample *sm)
 static void *run_pass(void *arg)
 {
     pass *P = arg;
-    double va = INFINITY, vb = -INFINITY;
-    for (int i = 0; i < 8; i++) {
-        va = fmin(va, P->corner[i][1]);
-        vb = fmax(vb, P->corner[i][1]);
-    }
-    double pad = PAD * 2 * P->reach;
+    double va = P->box.vlo, vb = P->box.vhi, pad = PAD * 2 * P->reach;
     int n = 0;
     seed_hints(P, NAN, (vb - va) / SAMPLES, P->outer_hints, &n, MAX_HINTS);
     P->outer.hints = P->outer_hints;
@@ -704,8 +683,7 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
         P->ext[0][a][a] = INFINITY;
         P->ext[1][a][a] = -INFINITY;
     }
-    double vlo, vhi;
-    project_box(P, lo, hi, P->corner, &vlo, &vhi);
+    project_box(P, lo, hi, &P->box);
     double span = 2 * P->reach;
     /* Error norms: the volume and moments in units of the bounding
      * sphere's, the area in its. */
@@ -722,7 +700,7 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
     P->inner.eval = ray_eval;
     P->inner.tol = 0.1 * tol * span;
     P->inner.eps = EPS * span;
-    P->outer.twice = 1;
+    P->outer.across = 1;
     P->outer.samples = P->inner.samples = SAMPLES;
 }
 
@@ -739,7 +717,8 @@ static void pass_free(pass *P)
 
 /* The first hit of the ray along axis a (direction sgn, from outside the
  * model's box) through the point with x's other two coordinates shifted by
- * (du, dv): 1 with its point p and normal n, 0 when it misses, -1. */
+ * (du, dv): 1 with its point p and (n not NULL) normal n, 0 when it
+ * misses, -1. */
 static int probe_axis(pass *P, int a, int sgn, const double x[3], double du, double dv, double p[3],
                       double n[3])
 {
@@ -755,7 +734,7 @@ static int probe_axis(pass *P, int a, int sgn, const double x[3], double du, dou
     if (rc <= 0) return rc;
     for (int c = 0; c < 3; c++)
         p[c] = o[c] + hit.t * d[c];
-    csg_scene_normal(P->s, &hit, o, d, n);
+    if (n) csg_scene_normal(P->s, &hit, o, d, n);
     return 1;
 }
 
@@ -813,28 +792,20 @@ static int corner(pass *P, int a, int sgn, double x[3], long long *count)
  * farther.  *x is updated; rays counted in *count; 0 or -1. */
 static int extreme(pass *P, int a, int sgn, double x[3], long long *count)
 {
-    int u = (a + 1) % 3, v = (a + 2) % 3;
-    double d[3] = {0, 0, 0}, span = 2 * P->reach;
-    d[a] = -sgn;
+    double span = 2 * P->reach;
     for (double step = 1e-2 * span; step > 1e-12 * span;) {
         double best = x[a] * sgn, at[3];
         int moved = 0;
         for (int k = 0; k < 8; k++) {
             static const int du[8] = {1, 1, 0, -1, -1, -1, 0, 1},
                              dv[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-            double o[3];
-            o[a] = P->c[a] + sgn * P->reach;
-            o[u] = x[u] + du[k] * step;
-            o[v] = x[v] + dv[k] * step;
-            iv_arena_reset(P->arena);
-            iv_bound hit;
+            double p[3];
             (*count)++;
-            int rc = csg_trace_first(P->s, P->root, o, d, 0, 2 * P->reach, P->arena, &hit);
+            int rc = probe_axis(P, a, sgn, x, du[k] * step, dv[k] * step, p, NULL);
             if (rc < 0) return -1;
-            if (rc == 0 || !((o[a] + hit.t * d[a]) * sgn > best)) continue;
-            best = (o[a] + hit.t * d[a]) * sgn;
-            for (int c = 0; c < 3; c++)
-                at[c] = o[c] + hit.t * d[c];
+            if (rc == 0 || !(p[a] * sgn > best)) continue;
+            best = p[a] * sgn;
+            memcpy(at, p, sizeof p);
             moved = 1;
         }
         if (moved)
@@ -845,16 +816,46 @@ static int extreme(pass *P, int a, int sgn, double x[3], long long *count)
     return corner(P, a, sgn, x, count);
 }
 
+/* The boxes of root's primitives (finite ones, up to MAX_SEEDS; none
+ * past that) into *box (lo, hi; free); their number, or -1. */
+static int leaf_boxes(const csg_scene *s, int root, double (**box)[2][3])
+{
+    *box = NULL;
+    int32_t top = csg_scene_root_node(s, root);
+    if (top < 0) return 0;
+    csg_scene_node_info t;
+    csg_scene_node_get(s, top, &t);
+    int n = 0;
+    for (int32_t i = top; i < t.end; i++) {
+        csg_scene_node_info f;
+        csg_scene_node_get(s, i, &f);
+        if (!f.is_leaf || !isfinite(f.lo[0] + f.lo[1] + f.lo[2] + f.hi[0] + f.hi[1] + f.hi[2]))
+            continue;
+        if (n == MAX_SEEDS) {
+            free(*box);
+            *box = NULL;
+            return 0;
+        }
+        if (n % 64 == 0) {
+            double(*g)[2][3] = realloc(*box, (size_t)(n + 64) * sizeof *g);
+            if (!g) return -1;
+            *box = g;
+        }
+        memcpy((*box)[n][0], f.lo, sizeof f.lo);
+        memcpy((*box)[n][1], f.hi, sizeof f.hi);
+        n++;
+    }
+    return n;
+}
+
 int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_rays,
-                       int max_intervals, mesh_measure *out, long long *nrays, char *err,
-                       size_t errlen)
+                       int max_intervals, mesh_measure *out, char *err, size_t errlen)
 {
     memset(out, 0, sizeof *out);
     for (int k = 0; k < 3; k++) {
         out->lo[k] = INFINITY;
         out->hi[k] = -INFINITY;
     }
-    if (nrays) *nrays = 0;
     double lo[3], hi[3];
     if (root < 0 || root >= csg_scene_root_count(s) || csg_scene_bounds(s, root, lo, hi) != 0)
         return 0; /* empty */
@@ -874,33 +875,21 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_r
     pass P[3];
     pthread_t th[3];
     int started[3] = {0, 0, 0}, rc = 0;
-    /* the primitives' boxes (up to MAX_SEEDS), for seed_hints */
-    int32_t top = csg_scene_root_node(s, root), nleaf = 0;
-    csg_scene_node_info top_info;
-    if (top >= 0) csg_scene_node_get(s, top, &top_info);
-    for (int32_t i = top; top >= 0 && i < top_info.end; i++) {
-        csg_scene_node_info f;
-        csg_scene_node_get(s, i, &f);
-        nleaf += f.is_leaf && isfinite(f.lo[0] + f.lo[1] + f.lo[2] + f.hi[0] + f.hi[1] + f.hi[2]);
-    }
-    if (nleaf > MAX_SEEDS) nleaf = 0;
+    double(*leaf)[2][3];
+    int nleaf = leaf_boxes(s, root, &leaf); /* for seed_hints */
+    if (nleaf < 0) rc = -1;
     for (int k = 0; k < 3; k++) {
         pass_init(&P[k], s, root, frame, k, lo, hi, tol);
-        P[k].seeds = nleaf ? malloc((size_t)nleaf * sizeof(seed)) : NULL;
-        if (nleaf && !P[k].seeds) rc = -1;
-        for (int32_t i = top; P[k].seeds && i < top_info.end; i++) {
-            csg_scene_node_info f;
-            csg_scene_node_get(s, i, &f);
-            if (!f.is_leaf || !isfinite(f.lo[0] + f.lo[1] + f.lo[2] + f.hi[0] + f.hi[1] + f.hi[2]))
-                continue;
-            seed *q = &P[k].seeds[P[k].nseeds++];
-            project_box(&P[k], f.lo, f.hi, q->corner, &q->vlo, &q->vhi);
-        }
+        P[k].seeds = nleaf > 0 ? malloc((size_t)nleaf * sizeof(seed)) : NULL;
+        if (nleaf > 0 && !P[k].seeds) rc = -1;
+        for (int i = 0; P[k].seeds && i < nleaf; i++)
+            project_box(&P[k], leaf[i][0], leaf[i][1], &P[k].seeds[P[k].nseeds++]);
         P[k].arena = iv_arena_new(0);
         if (!P[k].arena) rc = -1;
         if (P[k].arena && max_intervals > 0) iv_arena_set_list_limit(P[k].arena, max_intervals);
         P[k].budget = max_rays > 0 ? max_rays / 3 + 1 : -1;
     }
+    free(leaf);
     for (int k = 1; k < 3 && rc == 0; k++)
         started[k] = pthread_create(&th[k], NULL, run_pass, &P[k]) == 0;
     if (rc == 0) run_pass(&P[0]);
@@ -927,7 +916,7 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_r
             rc = extreme(&P[0], a, e ? 1 : -1, x, &count);
             (e ? out->hi : out->lo)[a] = x[a];
         }
-    if (nrays) *nrays = count;
+    out->crossings = count;
     if (rc == 0) {
         out->volume = P[0].outer.sum[0];
         for (int k = 0; k < 3; k++) {

@@ -155,11 +155,10 @@ int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *
 /* Volume, surface area, centre of mass and bounds of root `root` of s
  * integrated from rays to a relative tolerance tol (exact.c), casting at
  * most max_rays (<= 0: no limit) whose lists hold at most max_intervals
- * (0: the default); the rays cast into *nrays when not NULL.  0,
+ * (0: the default); out->crossings is the number of rays cast.  0,
  * RAYSCAD_ERROR_RAYS, RAYSCAD_ERROR_INTERVALS or -1, with a message. */
 int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_rays,
-                       int max_intervals, mesh_measure *out, long long *nrays, char *err,
-                       size_t errlen);
+                       int max_intervals, mesh_measure *out, char *err, size_t errlen);
 
 void mesh_free(mesh *m);
 int mesh_vertex_count(const mesh *m);

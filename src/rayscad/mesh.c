@@ -70,11 +70,9 @@ rayscad_status rayscad_scene_measure(const rayscad_scene *s, const rayscad_measu
         rayscad_measure_options_default(&def);
         o = &def;
     }
-    long long rays = 0;
     int rc = mesh_measure_exact(s->s, o->root,
                                 o->tolerance > 0 ? o->tolerance : RAYSCAD_MEASURE_TOLERANCE,
-                                o->max_rays, o->max_intervals, out, &rays, err, errlen);
-    out->crossings = rays;
+                                o->max_rays, o->max_intervals, out, err, errlen);
     return rc == 0                                                     ? RAYSCAD_OK
            : rc == RAYSCAD_ERROR_RAYS || rc == RAYSCAD_ERROR_INTERVALS ? (rayscad_status)rc
                                                                        : RAYSCAD_ERROR;
