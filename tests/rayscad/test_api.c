@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "../../include/rayscad.h"
+#include "scene_of.h"
 
 /* ---- files from memory -------------------------------------------------------- */
 
@@ -224,18 +225,6 @@ Test(api, ast_and_term_texts_are_openscads)
 }
 
 /* ---- rendering and measuring ------------------------------------------------------ */
-
-/* The scene of source src (its file's view in *file, which may be NULL). */
-static rayscad_scene *scene_of(const char *src, rayscad_file_view *file)
-{
-    rayscad_model *model;
-    cr_assert_eq(rayscad_model_load_string("t.scad", src, NULL, &model), RAYSCAD_OK);
-    if (file) rayscad_model_file_view(model, file);
-    rayscad_scene *scene;
-    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
-    rayscad_model_free(model);
-    return scene;
-}
 
 /* Cornfield's background (#ffffe5) in a corner, and no background at the
  * centre, where the default view looks at the cube. */

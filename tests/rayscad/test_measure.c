@@ -9,22 +9,13 @@
 #include <stdlib.h>
 
 #include "../../include/rayscad.h"
+#include "scene_of.h"
 
 #define PI 3.14159265358979323846
 
-static rayscad_scene *scene_of(const char *src)
-{
-    rayscad_model *model;
-    cr_assert_eq(rayscad_model_load_string("t.scad", src, NULL, &model), RAYSCAD_OK, "%s", src);
-    rayscad_scene *scene;
-    cr_assert_eq(rayscad_scene_new(model, &scene, NULL, 0), RAYSCAD_OK);
-    rayscad_model_free(model);
-    return scene;
-}
-
 static rayscad_measurement measure(const char *src, double tol)
 {
-    rayscad_scene *scene = scene_of(src);
+    rayscad_scene *scene = scene_of(src, NULL);
     rayscad_measure_options o;
     rayscad_measure_options_default(&o);
     o.tolerance = tol;
@@ -217,7 +208,7 @@ Test(measure, empty_and_limits)
     rayscad_measurement m = measure("cube(0);", 0);
     cr_expect_eq(m.volume, 0);
     cr_expect(!(m.lo[0] <= m.hi[0]), "an empty model has no bounds");
-    rayscad_scene *scene = scene_of("sphere(10);");
+    rayscad_scene *scene = scene_of("sphere(10);", NULL);
     rayscad_measure_options o;
     rayscad_measure_options_default(&o);
     o.max_rays = 1000;
