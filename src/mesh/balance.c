@@ -95,9 +95,10 @@ done:
  * for the surface between the contour's points. */
 #define SMOOTH 1.8
 
-int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, char *err, size_t errlen)
+int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_options *o,
+                         char *err, size_t errlen)
 {
-    if (mesh_simplify(m, SMOOTH * tol, tol, err, errlen) != 0) return -1;
+    if (mesh_simplify(m, SMOOTH * tol, tol, mesh_thread_count(o), err, errlen) != 0) return -1;
     mesh_snapper sn;
     int rc = mesh_snapper_init(&sn, d, cos(3.14159265358979323846 / 6));
     if (rc == 0) rc = mesh_balance(m, &sn, 4 * SMOOTH * tol);

@@ -297,9 +297,9 @@ done:
     return rc;
 }
 
-static int thread_count(const mesh_options *o)
+int mesh_thread_count(const mesh_options *o)
 {
-    int n = o->threads;
+    int n = o ? o->threads : 0;
     if (n <= 0) {
         long c = sysconf(_SC_NPROCESSORS_ONLN);
         n = c > 0 ? (int)c : 1;
@@ -360,7 +360,7 @@ int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const 
         free(d);
         return -1;
     }
-    int nt = thread_count(o);
+    int nt = mesh_thread_count(o);
     for (int a = 0; a < 3; a++) {
         int rc = cast_family(s, o, d, a, nt, err, errlen);
         if (rc != 0) {

@@ -235,7 +235,7 @@ int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_
     if (m) mesh_dexels_measure(d, m);
     rc = mesh_dexels_contour(d, o, out, err, errlen);
     if (rc == 0 && o && o->tolerance > 0 &&
-        (rc = mesh_dexels_simplify(d, *out, o->tolerance, err, errlen)) != 0) {
+        (rc = mesh_dexels_simplify(d, *out, o->tolerance, o, err, errlen)) != 0) {
         mesh_free(*out);
         *out = NULL;
     }

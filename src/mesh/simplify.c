@@ -48,12 +48,22 @@
  * Edges between two colours add a plane through the edge across the
  * surface to both ends' quadrics, so a colour's border keeps its course.
  * A refused collapse is looked at again when one of its ends changes.
+ *
+ * Threads.  A mesh of more than 2·REGION_VERTICES vertices is cut into
+ * slabs of about equal vertex counts across its longest side, each with
+ * its own queue, run on the threads; a slab collapses only where every
+ * triangle around both ends is its own, so no two touch the same
+ * triangles, corner lists or points.  Then the whole mesh's queue takes
+ * what is left (the slabs' borders).  The slabs are a rule of the mesh,
+ * not of the threads: the result is the same on any number of them.
  */
 #include "../geom/closest.h"
 #include "../intervals/vec3.h"
 #include "dexels.h"
 
 #include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -87,10 +97,15 @@ static double quad_at(const quad *q, const double p[3])
            2 * a[5] * y * z + 2 * a[6] * y + a[7] * z * z + 2 * a[8] * z + a[9];
 }
 
+/* A collapse in the queue: 16 bytes, four to a cache line.  The key is a
+ * float (the order of costs within 1e-7 of each other does not matter) and
+ * the ends' stamps are their low 16 bits: an entry taken for current after
+ * 65536 changes of an end is only tried out of turn (its cost is computed
+ * afresh). */
 typedef struct entry {
-    double key;
+    float key;
     int32_t v, u; /* collapse v into u */
-    uint32_t sv, su;
+    uint16_t sv, su;
 } entry;
 
 typedef struct simp {
@@ -104,23 +119,34 @@ typedef struct simp {
     int32_t *head; /* a vertex's first corner; -1: taken away */
     int32_t *val;  /* triangles around a vertex */
     uint32_t *stamp;
-    uint32_t *mark; /* link-condition marks */
-    uint32_t mark_now;
+    uint32_t *mark;  /* link-condition marks, of each region's own vertices */
+    uint8_t *region; /* each vertex's region: only its queue collapses it */
     /* the points taken away: a list per triangle, through pnext */
     int32_t *phead, *ptail, *pnext;
     int32_t *best;   /* scratch: a point's nearest new triangle */
     uint8_t *crease; /* a point on a sharp edge: it must stay near an edge */
     uint8_t *curved; /* a vertex whose triangles bend (by 0.5° to 20°): on a curve */
     double tol2, crease_tol2, len_scale;
-    entry *heap;
-    size_t nheap, capheap;
-    int heaped; /* the heap is in order (heapify has run) */
+    int nregions;
 } simp;
 
-/* A 4-ary min-heap of collapses by key (shallower than a binary one: fewer
- * cache misses per pop).  Entries are only appended while s->heaped is 0
- * (the first edges), then ordered at once by heapify. */
-static void sift_down(simp *s, size_t i)
+/* One region's collapses in order of cost: a 4-ary min-heap (shallower than
+ * a binary one: fewer cache misses per pop).  Entries are only appended
+ * while heaped is 0 (the first edges), then ordered at once by heapify. */
+typedef struct queue {
+    simp *s;
+    int region;
+    int32_t *tris; /* the triangles whose three corners are the region's */
+    int ntris;
+    uint32_t mark_now;
+    int live; /* the region's vertices not yet taken away */
+    entry *heap;
+    size_t nheap, capheap;
+    int heaped;
+    int oom;
+} queue;
+
+static void sift_down(queue *s, size_t i)
 {
     entry e = s->heap[i];
     size_t n = s->nheap;
@@ -136,7 +162,7 @@ static void sift_down(simp *s, size_t i)
     s->heap[i] = e;
 }
 
-static int heap_push(simp *s, entry e)
+static int heap_push(queue *s, entry e)
 {
     if (s->nheap == s->capheap) {
         size_t c = s->capheap ? 2 * s->capheap : 1024;
@@ -156,14 +182,14 @@ static int heap_push(simp *s, entry e)
     return 0;
 }
 
-static void heapify(simp *s)
+static void heapify(queue *s)
 {
     for (size_t i = s->nheap / 4 + 1; i-- > 0;)
         if (i < s->nheap) sift_down(s, i);
     s->heaped = 1;
 }
 
-static entry heap_pop(simp *s)
+static entry heap_pop(queue *s)
 {
     entry top = s->heap[0];
     s->heap[0] = s->heap[--s->nheap];
@@ -188,19 +214,34 @@ static double cost(const simp *s, int32_t v, int32_t u)
     return e <= (s->curved[v] && s->curved[u] ? s->tol2 : s->crease_tol2) ? e : INFINITY;
 }
 
+/* A number in [0, 1) fixed by edge a–b: the order of edges that cost the
+ * same (a grid's on a plane), which the heap would otherwise leave to the
+ * order they came in - a sweep across a face that drew its triangles into
+ * long fans and doubled the points checked (cube_holes cut in two slabs). */
+static double jitter(int32_t a, int32_t b)
+{
+    uint32_t h = (uint32_t)(a < b ? a : b) * 2654435761u ^ (uint32_t)(a < b ? b : a) * 2246822519u;
+    h ^= h >> 15;
+    h *= 2654435761u;
+    h ^= h >> 13;
+    return h / 4294967296.0;
+}
+
 /* Push the cheaper direction of edge a–b, if either is within tolerance;
  * ties (a plane) go to the shorter edge. */
-static int push_edge(simp *s, int32_t a, int32_t b)
+static int push_edge(queue *qu, int32_t a, int32_t b)
 {
+    const simp *s = qu->s;
     double ab = cost(s, a, b), ba = cost(s, b, a);
     if (ab == INFINITY && ba == INFINITY) return 0;
     double l2 = 0;
     for (int k = 0; k < 3; k++)
         l2 += (P(s, a)[k] - P(s, b)[k]) * (P(s, a)[k] - P(s, b)[k]);
-    double tie = 1e-9 * s->tol2 * l2 * s->len_scale;
-    entry e = ab <= ba ? (entry){ab + tie, a, b, s->stamp[a], s->stamp[b]}
-                       : (entry){ba + tie, b, a, s->stamp[b], s->stamp[a]};
-    return heap_push(s, e);
+    double tie = 1e-9 * s->tol2 * l2 * s->len_scale * (1 + 0.01 * jitter(a, b));
+    entry e = ab <= ba
+                  ? (entry){(float)(ab + tie), a, b, (uint16_t)s->stamp[a], (uint16_t)s->stamp[b]}
+                  : (entry){(float)(ba + tie), b, a, (uint16_t)s->stamp[b], (uint16_t)s->stamp[a]};
+    return heap_push(qu, e);
 }
 
 /* The quality of triangle abc whose tri_normal3 has length nlen (twice its
@@ -245,55 +286,69 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
 
 static int32_t across(const simp *s, int32_t t, int32_t a, int32_t b);
 
-/* Triangle t's normal, its corner v read as at pu. */
-static void moved_normal(const simp *s, int32_t t, int32_t v, const double *pu, double n[3])
+/* Whether a triangle (normal now n1, before o1) and one across an edge of it
+ * (n2, o2) turned back to back (normals more than COS_FOLD apart) where
+ * they were not. */
+static int turned_over(const double *n1, const double *n2, const double *o1, const double *o2)
 {
-    const double *p[3];
-    for (int i = 0; i < 3; i++)
-        p[i] = s->t[3 * t + i] == v ? pu : P(s, s->t[3 * t + i]);
-    tri_normal3(p[0], p[1], p[2], n);
+    double ln = sqrt(dot3(n1, n1) * dot3(n2, n2)), lw = sqrt(dot3(o1, o1) * dot3(o2, o2));
+    return dot3(n1, n2) < -COS_FOLD * ln && !(dot3(o1, o2) < -COS_FOLD * lw);
 }
 
 /* Whether collapsing v into u folds the surface: a moved triangle (moved[],
- * its normal was[] before and now[] after) and one across an edge of it turned
- * back to back (normals more than COS_FOLD apart) where they were not.  The
- * turn bound alone lets two triangles on either side of a narrow notch
- * each turn less than 60° and meet as a flat flap across it. */
-static int folds(const simp *s, int32_t v, int32_t u, const int32_t *moved, double (*was)[3],
-                 double (*now)[3], int nmoved)
+ * its normal was[] before and now[] after) and one across an edge of it
+ * turned over.  The turn bound alone lets two triangles on either side of a
+ * narrow notch each turn less than 60° and meet as a flat flap across it.
+ * Across an edge through v lies another moved triangle (or one of the
+ * edge's, which go); across the third, one that stays as it is. */
+static int folds(const simp *s, int32_t v, const int32_t *moved, double (*was)[3], double (*now)[3],
+                 int nmoved)
 {
-    const double *pu = P(s, u);
+    int32_t b[FAN_MAX], d[FAN_MAX]; /* moved[m] is v, b[m], d[m] in order */
     for (int m = 0; m < nmoved; m++) {
         const int32_t *tv = s->t + 3 * moved[m];
-        const double *n1 = now[m], *o1 = was[m];
-        for (int e = 0; e < 3; e++) {
-            int32_t o = across(s, moved[m], tv[e], tv[(e + 1) % 3]);
-            if (o < 0) continue;
-            const int32_t *ov = s->t + 3 * o;
-            int hv = ov[0] == v || ov[1] == v || ov[2] == v;
-            int hu = ov[0] == u || ov[1] == u || ov[2] == u;
-            if (hv && hu) continue; /* goes with the edge */
-            double n2[3], o2[3];
-            moved_normal(s, o, v, pu, n2);
-            tri_normal3(P(s, ov[0]), P(s, ov[1]), P(s, ov[2]), o2);
-            double ln = sqrt(dot3(n1, n1) * dot3(n2, n2)), lw = sqrt(dot3(o1, o1) * dot3(o2, o2));
-            if (dot3(n1, n2) < -COS_FOLD * ln && !(dot3(o1, o2) < -COS_FOLD * lw)) return 1;
-        }
+        int iv = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        b[m] = tv[(iv + 1) % 3];
+        d[m] = tv[(iv + 2) % 3];
+    }
+    for (int m = 0; m < nmoved; m++) {
+        for (int j = m + 1; j < nmoved; j++)
+            if ((b[j] == d[m] || d[j] == b[m]) && turned_over(now[m], now[j], was[m], was[j]))
+                return 1;
+        int32_t o = across(s, moved[m], b[m], d[m]);
+        if (o < 0) continue;
+        const int32_t *ov = s->t + 3 * o;
+        double n2[3];
+        tri_normal3(P(s, ov[0]), P(s, ov[1]), P(s, ov[2]), n2);
+        if (turned_over(now[m], n2, was[m], n2)) return 1;
     }
     return 0;
+}
+
+/* Whether every triangle around v is region r's alone: a collapse there
+ * changes nothing another region's queue reads (its triangles, their
+ * vertices' corner lists and points) or writes. */
+static int owned(const simp *s, int r, int32_t v)
+{
+    for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
+        for (int i = 0; i < 3; i++)
+            if (s->region[s->t[3 * (k / 3) + i]] != r) return 0;
+    return 1;
 }
 
 /* Whether collapsing v into u (costing c) keeps the mesh manifold, its
  * triangles sound and every point it moves within the tolerance; fills
  * s->best for those points. */
-static int can_collapse(simp *s, int32_t v, int32_t u, double c)
+static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
 {
+    simp *s = qu->s;
     if (s->val[v] + s->val[u] - 4 > FAN_MAX) return 0;
+    if (s->nregions > 1 && !(owned(s, qu->region, v) && owned(s, qu->region, u))) return 0;
     /* the link condition: v and u share exactly the two opposite vertices */
-    s->mark_now++;
+    uint32_t mk = ++qu->mark_now;
     for (int32_t k = s->head[u]; k >= 0; k = s->next[k])
         for (int i = 0; i < 3; i++)
-            s->mark[s->t[3 * (k / 3) + i]] = s->mark_now;
+            s->mark[s->t[3 * (k / 3) + i]] = mk;
     int shared = 0, edge = 0;
     int32_t opp[2] = {-1, -1};
     int32_t moved[FAN_MAX], nmoved = 0; /* triangles around v that stay */
@@ -307,7 +362,7 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
             moved[nmoved++] = t;
         }
         /* each neighbour is the next corner of exactly one triangle */
-        if (b != u && s->mark[b] == s->mark_now) shared++;
+        if (b != u && s->mark[b] == mk) shared++;
     }
     if (edge != 2 || shared != 2) return 0;
     if (s->val[opp[0]] <= 3 || s->val[opp[1]] <= 3) return 0;
@@ -337,7 +392,7 @@ static int can_collapse(simp *s, int32_t v, int32_t u, double c)
         if (q1 < worst_new) worst_new = q1;
     }
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
-    if (folds(s, v, u, moved, was, now, nmoved)) return 0;
+    if (folds(s, v, moved, was, now, nmoved)) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
     if (!near_enough(s, v, -1, nt, moved, edgy, nmoved)) return 0;
@@ -377,8 +432,9 @@ static void attach(simp *s, int32_t t, int32_t x)
     s->ptail[t] = x;
 }
 
-static int collapse(simp *s, int32_t v, int32_t u)
+static int collapse(queue *qu, int32_t v, int32_t u)
 {
+    simp *s = qu->s;
     /* the points first, to the triangles can_collapse found for them */
     for (int32_t k = s->head[v]; k >= 0; k = s->next[k]) {
         int32_t t = k / 3, x = s->phead[t];
@@ -413,7 +469,7 @@ static int collapse(simp *s, int32_t v, int32_t u)
     s->stamp[v]++;
     /* u's edges, at their new costs */
     for (k = s->head[u]; k >= 0; k = s->next[k])
-        if (push_edge(s, u, s->t[3 * (k / 3) + (k % 3 + 1) % 3]) != 0) return -1;
+        if (push_edge(qu, u, s->t[3 * (k / 3) + (k % 3 + 1) % 3]) != 0) return -1;
     return 0;
 }
 
@@ -435,7 +491,7 @@ static void simp_free(simp *s)
     free(s->best);
     free(s->crease);
     free(s->curved);
-    free(s->heap);
+    free(s->region);
 }
 
 /* A colour's border along edge a–b of a triangle of unit normal n: a plane
@@ -502,9 +558,11 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
     s->best = malloc(np * sizeof *s->best);
     s->crease = calloc(np, 1);
     s->curved = calloc(np, 1);
-    if (!s->p || !s->q || !s->w || !s->t || !s->next || !s->prev || !s->head || !s->val ||
-        !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best || !s->crease ||
-        !s->curved)
+    s->region = calloc(nv ? nv : 1, 1);
+    s->nregions = 1;
+    if (!s->region || !s->p || !s->q || !s->w || !s->t || !s->next || !s->prev || !s->head ||
+        !s->val || !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best ||
+        !s->crease || !s->curved)
         return -1;
     for (size_t i = 0; i < 3 * nv; i++)
         s->p[i] = m->v[i];
@@ -569,45 +627,191 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
     free(tn);
     /* the tie-break's scale: 1 / (the mean triangle's area) */
     s->len_scale = total > 0 ? (double)nt / total : 1;
-    for (size_t t = 0; t < nt; t++)
-        for (int k = 0; k < 3; k++) {
-            int32_t a = s->t[3 * t + k], b = s->t[3 * t + (k + 1) % 3];
-            if (a < b && push_edge(s, a, b) != 0) return -1; /* each edge once */
-        }
-    heapify(s);
     return 0;
 }
 
-int mesh_simplify(mesh *m, double tol, double edge_tol, char *err, size_t errlen)
+/* Collapse what region q->region can, cheapest first.  A collapse refused
+ * is looked at again when one of its ends changes, but it may have been
+ * refused for a neighbour that changed since (a link, a needle): once the
+ * heap is empty, every edge left is tried again, until a pass collapses
+ * nothing (a box's last vertex on an edge goes so; trying the dearer
+ * direction too let triangles across a curved sharp edge through). */
+/* Whether e's ends are there and unchanged since it was pushed. */
+static int current(const simp *s, const entry *e)
 {
-    if (!(tol > 0) || !(edge_tol > 0) || m->nt == 0) return 0;
-    simp s;
-    if (simp_init(&s, m, tol, edge_tol) != 0) goto oom;
-    /* A collapse refused is looked at again when one of its ends changes,
-     * but it may have been refused for a neighbour that changed since (a
-     * link, a needle): once the heap is empty, every edge left is tried
-     * again, until a pass collapses nothing (a box's last vertex on an
-     * edge goes so; trying the dearer direction too let triangles across a
-     * curved sharp edge through). */
+    return s->head[e->v] >= 0 && s->head[e->u] >= 0 && (uint16_t)s->stamp[e->v] == e->sv &&
+           (uint16_t)s->stamp[e->u] == e->su;
+}
+
+static void run_queue(queue *q)
+{
+    simp *s = q->s;
     for (int pass = 0; pass < 4; pass++) {
         int collapsed = 0;
-        if (pass)
-            for (int t = 0; t < s.nt; t++)
-                for (int k = 0; k < 3 && s.t[3 * t] >= 0; k++) {
-                    int32_t a = s.t[3 * t + k], b = s.t[3 * t + (k + 1) % 3];
-                    if (a < b && push_edge(&s, a, b) != 0) goto oom;
-                }
-        while (s.nheap > 0) {
-            entry e = heap_pop(&s);
-            if (s.head[e.v] < 0 || s.head[e.u] < 0 || s.stamp[e.v] != e.sv || s.stamp[e.u] != e.su)
-                continue;
-            double c = cost(&s, e.v, e.u);
-            if (!can_collapse(&s, e.v, e.u, c)) continue;
-            if (collapse(&s, e.v, e.u) != 0) goto oom;
+        for (int i = 0; i < q->ntris; i++) {
+            const int32_t *tv = s->t + 3 * q->tris[i];
+            for (int k = 0; k < 3 && tv[0] >= 0; k++)
+                if (tv[k] < tv[(k + 1) % 3] && push_edge(q, tv[k], tv[(k + 1) % 3]) != 0)
+                    goto oom; /* each edge once (or twice, when shared with a mixed one) */
+        }
+        if (!q->heaped) heapify(q);
+        /* A closed mesh has three edges a vertex, and a collapse leaves
+         * about six entries stale: past four entries a vertex, those are
+         * dropped at once rather than popped one by one (a fifth of the
+         * time; a looser bound saves less).  At least an eighth more than
+         * the entries kept, each time, so that this stays linear. */
+        size_t floor = 1024;
+        while (q->nheap > 0) {
+            if (q->nheap > floor && q->nheap > 4 * (size_t)q->live) {
+                size_t n = 0;
+                for (size_t i = 0; i < q->nheap; i++)
+                    if (current(s, &q->heap[i])) q->heap[n++] = q->heap[i];
+                q->nheap = n;
+                heapify(q);
+                floor = n + n / 8 > 1024 ? n + n / 8 : 1024;
+            }
+            entry e = heap_pop(q);
+            if (!current(s, &e)) continue;
+            double c = cost(s, e.v, e.u);
+            if (!can_collapse(q, e.v, e.u, c)) continue;
+            if (collapse(q, e.v, e.u) != 0) goto oom;
             collapsed++;
+            q->live--;
         }
         if (pass && !collapsed) break;
     }
+    return;
+oom:
+    q->oom = 1;
+}
+
+typedef struct team {
+    queue *q;
+    int nq;
+    atomic_int next;
+} team;
+
+static void *run_team(void *arg)
+{
+    team *tm = arg;
+    for (int r; (r = atomic_fetch_add(&tm->next, 1)) < tm->nq;)
+        run_queue(&tm->q[r]);
+    return NULL;
+}
+
+/* Regions: slabs of about equal vertex counts across the mesh's longest
+ * side, at least REGION_VERTICES each, at most MAX_REGIONS (a fixed rule,
+ * so the result does not depend on the number of threads). */
+#define REGION_VERTICES 20000
+#define MAX_REGIONS 16
+#define REGION_BINS 4096
+
+static int split_regions(simp *s)
+{
+    int n = s->nv / REGION_VERTICES;
+    if (n > MAX_REGIONS) n = MAX_REGIONS;
+    if (n < 2) return 1;
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++)
+        lo[k] = hi[k] = s->p[k];
+    for (int v = 0; v < s->nv; v++)
+        for (int k = 0; k < 3; k++) {
+            double x = P(s, v)[k];
+            lo[k] = x < lo[k] ? x : lo[k];
+            hi[k] = x > hi[k] ? x : hi[k];
+        }
+    int ax = 0;
+    for (int k = 1; k < 3; k++)
+        if (hi[k] - lo[k] > hi[ax] - lo[ax]) ax = k;
+    double span = hi[ax] - lo[ax];
+    if (!(span > 0)) return 1;
+    int count[REGION_BINS] = {0}, of[REGION_BINS];
+    for (int v = 0; v < s->nv; v++) {
+        int b = (int)((P(s, v)[ax] - lo[ax]) / span * REGION_BINS);
+        count[b < REGION_BINS ? b : REGION_BINS - 1]++;
+    }
+    for (int b = 0, seen = 0; b < REGION_BINS; b++) {
+        of[b] = (int)((long long)(seen + count[b] / 2) * n / s->nv);
+        seen += count[b];
+    }
+    for (int v = 0; v < s->nv; v++) {
+        int b = (int)((P(s, v)[ax] - lo[ax]) / span * REGION_BINS);
+        s->region[v] = (uint8_t)of[b < REGION_BINS ? b : REGION_BINS - 1];
+    }
+    return n;
+}
+
+/* Each region's queue run on `threads` threads, then (regions' borders)
+ * the whole mesh on one; 0 or -1 (out of memory). */
+static int run_regions(simp *s, int threads)
+{
+    int n = split_regions(s), rc = 0;
+    queue *q = calloc((size_t)n, sizeof *q);
+    int32_t *tris = malloc((size_t)s->nt * sizeof *tris);
+    if (!q || !tris) {
+        free(q);
+        free(tris);
+        return -1;
+    }
+    if (n > 1) {
+        s->nregions = n;
+        for (int t = 0; t < s->nt; t++) { /* counted, then filled */
+            int r = s->region[s->t[3 * t]];
+            if (r == s->region[s->t[3 * t + 1]] && r == s->region[s->t[3 * t + 2]]) q[r].ntris++;
+        }
+        for (int r = 0, at = 0; r < n; r++) {
+            q[r].tris = tris + at;
+            at += q[r].ntris;
+            q[r].ntris = 0;
+        }
+        for (int t = 0; t < s->nt; t++) {
+            int r = s->region[s->t[3 * t]];
+            if (r == s->region[s->t[3 * t + 1]] && r == s->region[s->t[3 * t + 2]])
+                q[r].tris[q[r].ntris++] = t;
+        }
+        team tm = {q, n, 0};
+        for (int r = 0; r < n; r++) {
+            q[r].s = s;
+            q[r].region = r;
+        }
+        for (int v = 0; v < s->nv; v++)
+            q[s->region[v]].live++;
+        if (threads > n) threads = n;
+        pthread_t th[MAX_REGIONS];
+        int started = 0;
+        for (; started < threads - 1; started++)
+            if (pthread_create(&th[started], NULL, run_team, &tm) != 0) break;
+        run_team(&tm);
+        for (int i = 0; i < started; i++)
+            pthread_join(th[i], NULL);
+        for (int r = 0; r < n; r++) {
+            rc |= q[r].oom ? -1 : 0;
+            free(q[r].heap);
+        }
+        memset(q, 0, sizeof *q);
+        memset(s->region, 0, (size_t)s->nv);
+        memset(s->mark, 0, (size_t)s->nv * sizeof *s->mark);
+        s->nregions = 1;
+    }
+    q->s = s;
+    q->live = s->nv; /* at most */
+    q->tris = tris;
+    q->ntris = s->nt;
+    for (int t = 0; t < s->nt; t++)
+        tris[t] = t;
+    if (rc == 0) run_queue(q);
+    rc |= q->oom ? -1 : 0;
+    free(q->heap);
+    free(q);
+    free(tris);
+    return rc;
+}
+
+int mesh_simplify(mesh *m, double tol, double edge_tol, int threads, char *err, size_t errlen)
+{
+    if (!(tol > 0) || !(edge_tol > 0) || m->nt == 0) return 0;
+    simp s;
+    if (simp_init(&s, m, tol, edge_tol) != 0 || run_regions(&s, threads) != 0) goto oom;
     /* compact: the vertices still used, renumbered in order */
     int32_t *map = s.val; /* reused: the new index of each kept vertex */
     int nv = 0;

@@ -104,7 +104,7 @@ rayscad_status rayscad_sampling_mesh(const rayscad_sampling *d, const rayscad_me
     if (mesh_dexels_contour(d->d, o, &m, err, errlen) != 0) return RAYSCAD_ERROR;
     if (o && o->tolerance > 0 &&
         !(o->simplify_max_triangles > 0 && mesh_triangle_count(m) > o->simplify_max_triangles) &&
-        mesh_dexels_simplify(d->d, m, o->tolerance, err, errlen) != 0) {
+        mesh_dexels_simplify(d->d, m, o->tolerance, o, err, errlen) != 0) {
         mesh_free(m);
         return RAYSCAD_ERROR_MEMORY;
     }
