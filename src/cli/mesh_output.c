@@ -34,7 +34,8 @@ static void print_vec(const char *fmt, const double v[3])
  * on the grid of spacing h (said as well where a mesh was made on one). */
 typedef struct how {
     double h, tolerance;
-    long long over; /* the exact measurement needed more rays than this */
+    double mesh_tolerance; /* what the mesh was simplified to (0: not) */
+    long long over;        /* the exact measurement needed more rays than this */
 } how;
 
 static void print_measure(const cli_options *o, const rayscad_measurement *m, how w,
@@ -60,8 +61,10 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
         if (w.over) printf(",\n  \"exact_needs_more_rays_than\": %lld", w.over);
         if (w.h > 0) printf(",\n  \"grid_spacing\": %.10g", w.h);
         if (msh)
-            printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g}",
-                   rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume);
+            printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g, "
+                   "\"tolerance\": %.6g}",
+                   rayscad_mesh_vertex_count(msh), rayscad_mesh_triangle_count(msh), mesh_volume,
+                   w.mesh_tolerance);
         printf("\n}\n");
         return;
     }
@@ -212,7 +215,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
 {
     int write_mesh = n > 0;
     rayscad_measurement m;
-    how w = {0, 0, 0};
+    how w = {0, 0, 0, 0};
     int exact = 0;
     if (o->measure && (o->measure_tolerance > 0 || !(o->mesh_size > 0))) {
         /* where a mesh's grid measures anyway, exact only while cheap */
@@ -282,6 +285,11 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
             return 1;
         }
         mesh_volume = rayscad_mesh_volume(msh);
+        /* a contour past the limit was left as it is, and only those are
+         * past it */
+        if (!(mo.simplify_max_triangles > 0 &&
+              rayscad_mesh_triangle_count(msh) > mo.simplify_max_triangles))
+            w.mesh_tolerance = mo.tolerance;
         if (write_mesh_files(o, msh, outs, paths, n) != 0) {
             rayscad_mesh_free(msh);
             return 1;

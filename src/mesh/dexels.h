@@ -167,6 +167,17 @@ void mesh_vnormals_free(mesh_vnormals *vn);
  * (refine.c); vn gets the new vertices' normals.  0 or -1 when out of
  * memory. */
 int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn);
+/* Simplify m in place by edge collapses (simplify.c) while every vertex and
+ * sharp edge's midpoint of m stays within tol of the triangles that replace
+ * it where m is curved, within edge_tol on flat faces, on sharp edges and
+ * near triangles with a corner on one: still closed, 2-manifold and outward, every vertex one of
+ * m's own.  With a snapper (sn, else NULL) the sharp edges' midpoints are
+ * first put on the exact edges.  Slabs of the mesh are simplified on up to `threads` threads,
+ * then the whole; the result does not depend on the number of threads.
+ * Returns 0, or -1 with a message (out of memory; m is then unchanged). */
+int mesh_simplify(mesh *m, double tol, double edge_tol, mesh_snapper *sn, int threads, char *err,
+                  size_t errlen);
+
 /* Move the smooth vertices of simplified mesh m out by half the largest
  * sag of their triangles, measured by rays up to reach from them
  * (balance.c); 0 or -1 when out of memory. */

@@ -129,15 +129,6 @@ typedef struct mesh mesh;
 int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out, char *err,
                         size_t errlen);
 
-/* Simplify m in place by edge collapses (simplify.c) while every vertex and
- * sharp edge's midpoint of m stays within tol of the triangles that replace
- * it where m is curved, within edge_tol on flat faces, on sharp edges and
- * near triangles with a corner on one: still closed, 2-manifold and outward, every vertex one of
- * m's own.  Slabs of the mesh are simplified on up to `threads` threads,
- * then the whole; the result does not depend on the number of threads.
- * Returns 0, or -1 with a message (out of memory; m is then unchanged). */
-int mesh_simplify(mesh *m, double tol, double edge_tol, int threads, char *err, size_t errlen);
-
 /* The contour m of d simplified to within about tol of the exact surface
  * (balance.c): mesh_simplify, the smooth parts' sag then split between
  * both sides of the surface by moving their vertices out (measured: within

@@ -325,6 +325,54 @@ static int folds(const simp *s, int32_t v, const int32_t *moved, double (*was)[3
     return 0;
 }
 
+/* Whether point x lies beside segment a–b, as a point of the curve the
+ * segment is a chord of would (its foot in the middle four fifths, nearer
+ * than an eighth of the length: a chord of an arc turning up to about 55°),
+ * but further than the sharp-edge tolerance.  Points of another sharp edge
+ * through a (a box's corner) lie off to the side, not beside. */
+static int strays(const simp *s, const double a[3], const double b[3], int32_t x)
+{
+    double ab[3], ax[3];
+    sub3(b, a, ab);
+    sub3(P(s, x), a, ax);
+    double l2 = dot3(ab, ab), t = dot3(ax, ab);
+    if (!(t > 0.1 * l2 && t < 0.9 * l2)) return 0;
+    double d2 = dot3(ax, ax) - t * t / l2;
+    return d2 > s->crease_tol2 && d2 < l2 / 64;
+}
+
+/* Whether a new sharp edge strays from the sharp edge it stands for: an
+ * edge u–x that was v–x between two moved triangles, now bent by more than
+ * 20°, with v or a sharp edge's point on v's triangles beside it but
+ * further than the tolerance (strays).  The points' own check is one-sided
+ * (each near some edge): at the rim of a round hole, collapses along the
+ * rim once left a sliver across the hole's mouth, all three corners on the
+ * rim, one edge a chord twice the tolerance from it. */
+static int sharp_chord_strays(const simp *s, int32_t v, int32_t u, const int32_t *moved,
+                              double (*now)[3], int nmoved)
+{
+    if (!s->crease[u]) return 0;
+    for (int m = 0; m < nmoved; m++) {
+        const int32_t *tv = s->t + 3 * moved[m];
+        int iv = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        int32_t x = tv[(iv + 2) % 3]; /* edge x–v of moved[m] */
+        if (!s->crease[x]) continue;
+        for (int j = 0; j < nmoved; j++) {
+            const int32_t *tj = s->t + 3 * moved[j];
+            int jv = tj[0] == v ? 0 : tj[1] == v ? 1 : 2;
+            if (j == m || tj[(jv + 1) % 3] != x) continue; /* v–x of moved[j] */
+            double l = sqrt(dot3(now[m], now[m]) * dot3(now[j], now[j]));
+            if (!(dot3(now[m], now[j]) < SHARP_COS * l)) break;
+            if (s->crease[v] && strays(s, P(s, u), P(s, x), v)) return 1;
+            for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
+                for (int32_t p = s->phead[k / 3]; p >= 0; p = s->pnext[p])
+                    if (s->crease[p] && strays(s, P(s, u), P(s, x), p)) return 1;
+            break;
+        }
+    }
+    return 0;
+}
+
 /* Whether every triangle around v is region r's alone: a collapse there
  * changes nothing another region's queue reads (its triangles, their
  * vertices' corner lists and points) or writes. */
@@ -399,7 +447,7 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
     for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
         for (int32_t x = s->phead[k / 3]; x >= 0; x = s->pnext[x])
             if (!near_enough(s, x, k / 3, nt, moved, edgy, nmoved)) return 0;
-    return 1;
+    return !sharp_chord_strays(s, v, u, moved, now, nmoved);
 }
 
 static void unlink_corner(simp *s, int32_t v, int32_t k)
@@ -533,7 +581,57 @@ static int sharp(const simp *s, const double *tn, int32_t t, int32_t a, int32_t 
     return dot3(n0, n1) < SHARP_COS * sqrt(dot3(n0, n0) * dot3(n1, n1));
 }
 
-static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
+/* Midpoint x of sharp edge a–b between triangles t and o (tn: every
+ * triangle's tri_normal3) moved onto the exact edge between their surfaces:
+ * where the planes touching the two surfaces meet the plane across the edge
+ * through x, the planes found by rays along the surfaces' normals from
+ * points on each triangle's side, a half, a tenth, then a fiftieth of the
+ * way from the edge to its centroid; left where it is when a ray finds
+ * nothing, or the move is longer than half the edge. */
+static void on_edge(const simp *s, mesh_snapper *sn, const double *tn, int32_t t, int32_t o,
+                    int32_t a, int32_t b, double x[3])
+{
+    if (o < 0) return;
+    double n[3][3], d[3], y[3] = {x[0], x[1], x[2]}, c[2][3], dir[2][3];
+    sub3(P(s, b), P(s, a), n[2]);
+    double len = sqrt(dot3(n[2], n[2]));
+    const int32_t tri[2] = {t, o};
+    for (int i = 0; i < 2; i++) {
+        const int32_t *tv = s->t + 3 * tri[i];
+        const double *m = tn + 3 * (size_t)tri[i];
+        double l = sqrt(dot3(m, m));
+        if (!(l > 0)) return;
+        for (int k = 0; k < 3; k++) {
+            c[i][k] = (P(s, tv[0])[k] + P(s, tv[1])[k] + P(s, tv[2])[k]) / 3;
+            dir[i][k] = m[k] / l;
+        }
+    }
+    static const double toward[3] = {0.5, 0.1, 0.02};
+    for (int it = 0; it < 3; it++) {
+        for (int i = 0; i < 2; i++) {
+            double q[3], hit[3];
+            for (int k = 0; k < 3; k++)
+                q[k] = y[k] + toward[it] * (c[i][k] - y[k]);
+            if (!mesh_snap_probe(sn, q, dir[i], len, sn->cos_feature, hit, n[i])) return;
+            memcpy(dir[i], n[i], sizeof dir[i]);
+            d[i] = dot3(n[i], hit);
+        }
+        d[2] = dot3(n[2], x);
+        double c01[3], c12[3], c20[3];
+        cross3(n[0], n[1], c01);
+        cross3(n[1], n[2], c12);
+        cross3(n[2], n[0], c20);
+        double det = dot3(n[0], c12);
+        if (!(fabs(det) > 1e-3 * len)) return; /* the surfaces meet too flat to tell */
+        for (int k = 0; k < 3; k++)
+            y[k] = (d[0] * c12[k] + d[1] * c20[k] + d[2] * c01[k]) / det;
+    }
+    double mv[3];
+    sub3(y, x, mv);
+    if (dot3(mv, mv) < 0.25 * len * len) memcpy(x, y, sizeof y);
+}
+
+static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_snapper *sn)
 {
     memset(s, 0, sizeof *s);
     s->nv = m->nv;
@@ -580,7 +678,10 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
         tri_normal3(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), tn + 3 * t);
     }
     /* the midpoint of every sharp edge is a point to keep within the bound
-     * too: on a curved one (a hole's rim) the vertices alone are too few */
+     * too: on a curved one (a hole's rim) the vertices alone are too few.
+     * With a snapper it is moved onto the exact sharp edge: the chord's
+     * midpoint lies inside a curved one by the chord's sag (h²/8r: a fifth
+     * of the tolerance at a cube_holes rim, at h 0.25, tolerance 0.006) */
     size_t x = nv;
     for (size_t t = 0; t < nt; t++)
         for (int k = 0; k < 3; k++) {
@@ -588,6 +689,7 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol)
             if (a > b || x >= np || !sharp(s, tn, (int32_t)t, a, b)) continue;
             for (int i = 0; i < 3; i++)
                 s->p[3 * x + i] = (P(s, a)[i] + P(s, b)[i]) / 2;
+            if (sn) on_edge(s, sn, tn, (int32_t)t, across(s, (int32_t)t, a, b), a, b, s->p + 3 * x);
             s->crease[a] = s->crease[b] = s->crease[x] = 1;
             attach(s, (int32_t)t, (int32_t)x++);
         }
@@ -807,11 +909,12 @@ static int run_regions(simp *s, int threads)
     return rc;
 }
 
-int mesh_simplify(mesh *m, double tol, double edge_tol, int threads, char *err, size_t errlen)
+int mesh_simplify(mesh *m, double tol, double edge_tol, mesh_snapper *sn, int threads, char *err,
+                  size_t errlen)
 {
     if (!(tol > 0) || !(edge_tol > 0) || m->nt == 0) return 0;
     simp s;
-    if (simp_init(&s, m, tol, edge_tol) != 0 || run_regions(&s, threads) != 0) goto oom;
+    if (simp_init(&s, m, tol, edge_tol, sn) != 0 || run_regions(&s, threads) != 0) goto oom;
     /* compact: the vertices still used, renumbered in order */
     int32_t *map = s.val; /* reused: the new index of each kept vertex */
     int nv = 0;

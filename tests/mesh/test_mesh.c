@@ -18,6 +18,7 @@
 
 #include "../../src/csg/csg.h"
 #include "../../src/io/io.h"
+#include "../../src/mesh/dexels.h"
 #include "../../src/mesh/mesh.h"
 
 #define PI 3.14159265358979323846
@@ -1194,7 +1195,7 @@ Test(mesh_simplify, random_scenes_stay_manifold)
             meshed++;
             double before = volume_of(m);
             cr_assert(mesh_simplify(m, 1e-3 * pow(mm.volume, 1 / 3.0),
-                                    1e-3 * pow(mm.volume, 1 / 3.0), 2, err, sizeof err) == 0);
+                                    1e-3 * pow(mm.volume, 1 / 3.0), NULL, 2, err, sizeof err) == 0);
             const char *msg = check_manifold(m);
             cr_assert_null(msg, "trial %d: %s", trial, msg);
             cr_expect_lt(fabs(volume_of(m) - before), 0.01 * before, "trial %d: volume %g -> %g",
@@ -1219,8 +1220,8 @@ Test(mesh_simplify, slabs_on_threads_as_on_one)
     int nt = mesh_triangle_count(m1);
     cr_assert_gt(mesh_vertex_count(m1), 60000, "%d vertices: one slab", mesh_vertex_count(m1));
     char err[256] = "";
-    cr_assert(mesh_simplify(m1, tol, tol, 1, err, sizeof err) == 0, "%s", err);
-    cr_assert(mesh_simplify(m3, tol, tol, 3, err, sizeof err) == 0, "%s", err);
+    cr_assert(mesh_simplify(m1, tol, tol, NULL, 1, err, sizeof err) == 0, "%s", err);
+    cr_assert(mesh_simplify(m3, tol, tol, NULL, 3, err, sizeof err) == 0, "%s", err);
     cr_log_info("slabs: %d -> %d triangles", nt, mesh_triangle_count(m1));
     cr_assert_null(check_manifold(m3));
     cr_assert_eq(mesh_vertex_count(m1), mesh_vertex_count(m3));
