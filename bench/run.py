@@ -64,8 +64,10 @@ OPENSCAD_FN_FINE = 192
 MANIFOLD_SEGMENTS = [64, 128]
 # rayscad --mesh-size 0.25 simplified to these --mesh-tolerance distances
 # (issue 22: as few triangles as manifold-3d at 128 segments, at no larger
-# deviation from the exact surface; the mesh lies within about 1.3 D).
-MESH_TOLERANCES = [0.006]
+# deviation from the exact surface; the mesh lies within D, measured by
+# tests/tools/meshdev: 0.93-0.94 D on both scenes at 0.008, against
+# manifold-3d's 0.0089 and 0.0081).
+MESH_TOLERANCES = [0.008]
 
 
 def surface_deviation(scene, tris):
