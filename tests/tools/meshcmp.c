@@ -99,11 +99,7 @@ static double directed_hausdorff(const tmesh *from, grid *to, double s, double w
     for (int i = 0; i < from->nv; i++) {
         double p[3];
         vertex(from, i, p);
-        double d = grid_nearest(to, p);
-        if (d > worst) {
-            worst = d;
-            memcpy(where, p, sizeof p);
-        }
+        keep_worst(grid_nearest(to, p), p, &worst, where);
     }
     for (int q = 0; q < from->nt; q++) {
         double a[3], b[3], c[3];
@@ -122,11 +118,7 @@ static double directed_hausdorff(const tmesh *from, grid *to, double s, double w
                 double u = (double)i / n, v = (double)j / n, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = a[k] + u * (b[k] - a[k]) + v * (c[k] - a[k]);
-                double d = grid_nearest(to, p);
-                if (d > worst) {
-                    worst = d;
-                    memcpy(where, p, sizeof p);
-                }
+                keep_worst(grid_nearest(to, p), p, &worst, where);
             }
     }
     return worst;

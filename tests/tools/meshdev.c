@@ -77,11 +77,7 @@ static double mesh_to_surface(const tmesh *m, mesh_snapper *sn, double h, double
                 double u = (double)i / steps, v = (double)j / steps, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = a[k] + u * ab[k] + v * ac[k];
-                double d = to_surface(sn, p, n, e, reach, enough);
-                if (d > worst) {
-                    worst = d;
-                    memcpy(where, p, sizeof p);
-                }
+                keep_worst(to_surface(sn, p, n, e, reach, enough), p, &worst, where);
             }
     }
     return worst;
@@ -107,11 +103,7 @@ static double surface_to_mesh(const mesh_dexels *d, grid *g, double where[3])
                     p[a] = d->org[a] + d->hit[a][k].t;
                     p[u] = d->org[u] + d->h * (double)(r % (size_t)(d->n[u] + 1));
                     p[v] = d->org[v] + d->h * (double)(r / (size_t)(d->n[u] + 1));
-                    double dist = grid_nearest(g, p);
-                    if (dist > worst) {
-                        worst = dist;
-                        memcpy(where, p, sizeof p);
-                    }
+                    keep_worst(grid_nearest(g, p), p, &worst, where);
                 }
         }
     return worst;

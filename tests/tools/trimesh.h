@@ -199,6 +199,15 @@ static double grid_nearest(grid *g, const double p[3])
     return sqrt(best2);
 }
 
+/* Keep distance d, found at p, when it is the largest yet. */
+static void keep_worst(double d, const double p[3], double *worst, double where[3])
+{
+    if (d > *worst) {
+        *worst = d;
+        memcpy(where, p, 3 * sizeof *p);
+    }
+}
+
 /* Read path into m (and its bounds); 0, or -1 with a message on stderr. */
 static int load(const char *path, tmesh *m)
 {
