@@ -95,8 +95,11 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
  * and across the lines (every crossing of a front edge over a back one
  * seen along the rays), and the grid measures it in a fraction of that. */
 #define MEASURE_MAX_RAYS (1LL << 24)
-/* With a mesh output, whose grid measures anyway: about 0.2 s. */
-#define MEASURE_MAX_RAYS_MESH (1LL << 21)
+/* With a mesh output, whose grid measures anyway: a box or a sphere (60,000
+ * rays, 5 ms), no more.  A ray through a hull costs a hundred times one
+ * through a box: 2^21 rays took 70 s on tests/mesh_models/hull_revolve.scad
+ * before the grid measured it (the mesh takes 3 s). */
+#define MEASURE_MAX_RAYS_MESH (1LL << 17)
 
 /* --measure without --mesh-size (or with --measure-tolerance): exactly,
  * into *m; 1 when measured, 0 when it needs more than max_rays
