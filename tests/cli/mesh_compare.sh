@@ -9,11 +9,11 @@
 # (--measure: exact, or on the grid past its ray budget) within 0.1 % of its
 # exact volume.
 # Distance from the exact surface (build/tools/meshdev, both ways, by rays):
-# each model's row says how far its mesh strays, over the tolerance it was
-# simplified to (dev/D; at the default grid the contour's own error, a
-# tenth of a cell at sharp features, is often larger: not checked yet), and
 # the bench part and a sphere at --mesh-size 0.25 --mesh-tolerance 0.008
-# must lie within the tolerance.
+# must lie within the tolerance.  (The other models at their default
+# tolerance are not checked yet: at the default grid the contour's own
+# error, a tenth of a cell at sharp features, is often larger; and meshdev
+# through hulls under ASan takes many minutes.)
 #   usage: tests/cli/mesh_compare.sh [BUILD]
 set -u
 build=${1:-build}
@@ -61,9 +61,6 @@ for f in "$models"/*.scad; do
     times=$("$py" -c 'import sys; a,b,c=map(float,sys.argv[1:]); print("%.2fs,%.2fs" % (c-b, b-a))' "$t0" "$t1" "$t2")
     "$meshcmp" "$tmp/$name.stl" "$tmp/$name.ref.stl" --h "$h" --name "$name" --times "$times" ||
         failed=$((failed + 1))
-    tol=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["mesh"]["tolerance"])' "$tmp/$name.json")
-    [ "$tol" != 0 ] && "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$tol" --name "  dev/D" |
-        sed 's/ *\(ok\|FAIL\) .*//' 
     if [ "$name" = cube_sphere_cylinders ]; then
         if ! "$py" - "$tmp/$name.json" "$exact_csc" <<'PY'; then
 import json, sys
