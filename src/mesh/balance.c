@@ -10,9 +10,10 @@
  * sag of a triangle is the largest measured by rays along its normal
  * through its centroid and its edges' midpoints (the centroid alone missed
  * it on long triangles, whose deepest point is by the longest edge: a
- * sphere's mesh strayed 1.29 tolerances, 1.15 with the midpoints).  A vertex on a sharp edge or
- * corner (its triangles' normals spread more than 20°) stays: it is exact, and moving it would move
- * the edge.  A move that would turn one of its triangles by more than 30° is not made.
+ * sphere's mesh strayed 1.29 tolerances, 1.15 with the midpoints).  A
+ * vertex on a sharp edge or corner (its triangles' normals spread more than
+ * 20°) stays: it is exact, and moving it would move the edge.  A move that
+ * would turn one of its triangles by more than 30° is not made.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -25,15 +26,19 @@
 #define COS_SMOOTH 0.94 /* cos 20° */
 #define COS_KEEP 0.866  /* cos 30° */
 
-/* Triangle t's normal (tri_normal3) and its corners' centroid. */
-static void triangle_at(const mesh *m, int32_t t, double n[3], double c[3])
+/* Triangle t's normal (tri_normal3) and where its sag is measured: its
+ * corners' centroid (at[0]) and its edges' midpoints. */
+static void triangle_at(const mesh *m, int32_t t, double n[3], double at[4][3])
 {
     double p[3][3];
     for (int k = 0; k < 3; k++)
         mesh_vertex_at(m, m->t[3 * (size_t)t + k], p[k]);
     tri_normal3(p[0], p[1], p[2], n);
-    for (int q = 0; q < 3; q++)
-        c[q] = (p[0][q] + p[1][q] + p[2][q]) / 3;
+    for (int q = 0; q < 3; q++) {
+        at[0][q] = (p[0][q] + p[1][q] + p[2][q]) / 3;
+        for (int k = 0; k < 3; k++)
+            at[k + 1][q] = 0.5 * (p[k][q] + p[(k + 1) % 3][q]);
+    }
 }
 
 int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
@@ -47,21 +52,13 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
     if (!vn || !vs || !tn || mesh_vertex_fans(m, 0, &start, &fan) != 0) goto done;
     /* each triangle's sag, and each vertex's largest and its normal */
     for (int32_t t = 0; t < nt; t++) {
-        double c[3];
-        triangle_at(m, t, tn[t], c);
+        double at[4][3];
+        triangle_at(m, t, tn[t], at);
         double len = sqrt(dot3(tn[t], tn[t])), n[3], hit[3], hn[3], d[3];
         if (!(len > 0)) continue;
         for (int q = 0; q < 3; q++)
             n[q] = tn[t][q] / len;
-        double sag = 0, at[4][3];
-        memcpy(at[0], c, sizeof at[0]);
-        for (int k = 0; k < 3; k++) {
-            double pa[3], pb[3];
-            mesh_vertex_at(m, m->t[3 * (size_t)t + k], pa);
-            mesh_vertex_at(m, m->t[3 * (size_t)t + (k + 1) % 3], pb);
-            for (int q = 0; q < 3; q++)
-                at[k + 1][q] = 0.5 * (pa[q] + pb[q]);
-        }
+        double sag = 0;
         for (int i = 0; i < 4; i++)
             if (mesh_snap_probe(sn, at[i], n, reach, -1, hit, hn) && dot3(hn, n) > COS_KEEP) {
                 sub3(hit, at[i], d);

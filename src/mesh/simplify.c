@@ -296,21 +296,15 @@ static int turned_over(const double *n1, const double *n2, const double *o1, con
 }
 
 /* Whether collapsing v into u folds the surface: a moved triangle (moved[],
- * its normal was[] before and now[] after) and one across an edge of it
- * turned over.  The turn bound alone lets two triangles on either side of a
- * narrow notch each turn less than 60° and meet as a flat flap across it.
- * Across an edge through v lies another moved triangle (or one of the
- * edge's, which go); across the third, one that stays as it is. */
-static int folds(const simp *s, int32_t v, const int32_t *moved, double (*was)[3], double (*now)[3],
-                 int nmoved)
+ * its corners v, b[], d[] in order, its normal was[] before and now[]
+ * after) and one across an edge of it turned over.  The turn bound alone
+ * lets two triangles on either side of a narrow notch each turn less than
+ * 60° and meet as a flat flap across it.  Across an edge through v lies
+ * another moved triangle (or one of the edge's, which go); across the
+ * third, one that stays as it is. */
+static int folds(const simp *s, const int32_t *moved, const int32_t *b, const int32_t *d,
+                 double (*was)[3], double (*now)[3], int nmoved)
 {
-    int32_t b[FAN_MAX], d[FAN_MAX]; /* moved[m] is v, b[m], d[m] in order */
-    for (int m = 0; m < nmoved; m++) {
-        const int32_t *tv = s->t + 3 * moved[m];
-        int iv = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        b[m] = tv[(iv + 1) % 3];
-        d[m] = tv[(iv + 2) % 3];
-    }
     for (int m = 0; m < nmoved; m++) {
         for (int j = m + 1; j < nmoved; j++)
             if ((b[j] == d[m] || d[j] == b[m]) && turned_over(now[m], now[j], was[m], was[j]))
@@ -342,25 +336,21 @@ static int strays(const simp *s, const double a[3], const double b[3], int32_t x
 }
 
 /* Whether a new sharp edge strays from the sharp edge it stands for: an
- * edge u–x that was v–x between two moved triangles, now bent by more than
- * 20°, with v or a sharp edge's point on v's triangles beside it but
+ * edge u–x that was v–x between two moved triangles (corners as in folds),
+ * now bent by more than 20°, with v or a sharp edge's point on v's triangles beside it but
  * further than the tolerance (strays).  The points' own check is one-sided
  * (each near some edge): at the rim of a round hole, collapses along the
  * rim once left a sliver across the hole's mouth, all three corners on the
  * rim, one edge a chord twice the tolerance from it. */
-static int sharp_chord_strays(const simp *s, int32_t v, int32_t u, const int32_t *moved,
-                              double (*now)[3], int nmoved)
+static int sharp_chord_strays(const simp *s, int32_t v, int32_t u, const int32_t *b,
+                              const int32_t *d, double (*now)[3], int nmoved)
 {
     if (!s->crease[u]) return 0;
     for (int m = 0; m < nmoved; m++) {
-        const int32_t *tv = s->t + 3 * moved[m];
-        int iv = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        int32_t x = tv[(iv + 2) % 3]; /* edge x–v of moved[m] */
+        int32_t x = d[m]; /* edge x–v of moved[m] */
         if (!s->crease[x]) continue;
         for (int j = 0; j < nmoved; j++) {
-            const int32_t *tj = s->t + 3 * moved[j];
-            int jv = tj[0] == v ? 0 : tj[1] == v ? 1 : 2;
-            if (j == m || tj[(jv + 1) % 3] != x) continue; /* v–x of moved[j] */
+            if (j == m || b[j] != x) continue; /* v–x of moved[j] */
             double l = sqrt(dot3(now[m], now[m]) * dot3(now[j], now[j]));
             if (!(dot3(now[m], now[j]) < SHARP_COS * l)) break;
             if (s->crease[v] && strays(s, P(s, u), P(s, x), v)) return 1;
@@ -440,14 +430,21 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
         if (q1 < worst_new) worst_new = q1;
     }
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
-    if (folds(s, v, moved, was, now, nmoved)) return 0;
+    int32_t b[FAN_MAX], d[FAN_MAX]; /* moved[m] is v, b[m], d[m] in order */
+    for (int m = 0; m < nmoved; m++) {
+        const int32_t *tv = s->t + 3 * moved[m];
+        int iv = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+        b[m] = tv[(iv + 1) % 3];
+        d[m] = tv[(iv + 2) % 3];
+    }
+    if (folds(s, moved, b, d, was, now, nmoved)) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
     if (!near_enough(s, v, -1, nt, moved, edgy, nmoved)) return 0;
     for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
         for (int32_t x = s->phead[k / 3]; x >= 0; x = s->pnext[x])
             if (!near_enough(s, x, k / 3, nt, moved, edgy, nmoved)) return 0;
-    return !sharp_chord_strays(s, v, u, moved, now, nmoved);
+    return !sharp_chord_strays(s, v, u, b, d, now, nmoved);
 }
 
 static void unlink_corner(simp *s, int32_t v, int32_t k)
@@ -732,12 +729,6 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_s
     return 0;
 }
 
-/* Collapse what region q->region can, cheapest first.  A collapse refused
- * is looked at again when one of its ends changes, but it may have been
- * refused for a neighbour that changed since (a link, a needle): once the
- * heap is empty, every edge left is tried again, until a pass collapses
- * nothing (a box's last vertex on an edge goes so; trying the dearer
- * direction too let triangles across a curved sharp edge through). */
 /* Whether e's ends are there and unchanged since it was pushed. */
 static int current(const simp *s, const entry *e)
 {
@@ -745,6 +736,12 @@ static int current(const simp *s, const entry *e)
            (uint16_t)s->stamp[e->u] == e->su;
 }
 
+/* Collapse what region q->region can, cheapest first.  A collapse refused
+ * is looked at again when one of its ends changes, but it may have been
+ * refused for a neighbour that changed since (a link, a needle): once the
+ * heap is empty, every edge left is tried again, until a pass collapses
+ * nothing (a box's last vertex on an edge goes so; trying the dearer
+ * direction too let triangles across a curved sharp edge through). */
 static void run_queue(queue *q)
 {
     simp *s = q->s;
@@ -843,6 +840,13 @@ static int split_regions(simp *s)
     return n;
 }
 
+/* The region all three corners of triangle t are in, or -1. */
+static int own_region(const simp *s, int t)
+{
+    int r = s->region[s->t[3 * t]];
+    return r == s->region[s->t[3 * t + 1]] && r == s->region[s->t[3 * t + 2]] ? r : -1;
+}
+
 /* Each region's queue run on `threads` threads, then (regions' borders)
  * the whole mesh on one; 0 or -1 (out of memory). */
 static int run_regions(simp *s, int threads)
@@ -858,8 +862,8 @@ static int run_regions(simp *s, int threads)
     if (n > 1) {
         s->nregions = n;
         for (int t = 0; t < s->nt; t++) { /* counted, then filled */
-            int r = s->region[s->t[3 * t]];
-            if (r == s->region[s->t[3 * t + 1]] && r == s->region[s->t[3 * t + 2]]) q[r].ntris++;
+            int r = own_region(s, t);
+            if (r >= 0) q[r].ntris++;
         }
         for (int r = 0, at = 0; r < n; r++) {
             q[r].tris = tris + at;
@@ -867,9 +871,8 @@ static int run_regions(simp *s, int threads)
             q[r].ntris = 0;
         }
         for (int t = 0; t < s->nt; t++) {
-            int r = s->region[s->t[3 * t]];
-            if (r == s->region[s->t[3 * t + 1]] && r == s->region[s->t[3 * t + 2]])
-                q[r].tris[q[r].ntris++] = t;
+            int r = own_region(s, t);
+            if (r >= 0) q[r].tris[q[r].ntris++] = t;
         }
         team tm = {q, n, 0};
         for (int r = 0; r < n; r++) {
@@ -896,7 +899,8 @@ static int run_regions(simp *s, int threads)
         s->nregions = 1;
     }
     q->s = s;
-    q->live = s->nv; /* at most */
+    for (int v = 0; v < s->nv; v++)
+        q->live += s->head[v] >= 0;
     q->tris = tris;
     q->ntris = s->nt;
     for (int t = 0; t < s->nt; t++)
