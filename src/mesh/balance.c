@@ -7,10 +7,14 @@
  * are on it.  Moving each corner out by half the sag of its triangles
  * splits the deviation between both sides: the same bound then holds with
  * triangles about twice the area (sag grows with the square of size).  The
- * sag of a triangle is the largest measured by rays along its normal
- * through its centroid and its edges' midpoints (the centroid alone missed
- * it on long triangles, whose deepest point is by the longest edge: a
- * sphere's mesh strayed 1.29 tolerances, 1.15 with the midpoints).  A
+ * sag of a triangle is measured by rays along its normal through its
+ * centroid and its edges' midpoints (the centroid alone missed it on long
+ * triangles, whose deepest point is by the longest edge: a sphere's mesh
+ * strayed 1.29 tolerances, 1.15 with the midpoints).  A vertex moves to the
+ * middle of the band its triangles' sags span, the most inward to the most
+ * outward: on a saddle they lie to both sides, and a move by the largest
+ * alone doubled the other side's (a torus's inner equator, 3.2
+ * tolerances; 2.4 so).  A
  * vertex on a sharp edge or corner (its triangles' normals spread more than
  * 20°) stays: it is exact, and moving it would move the edge.  A move that
  * would turn one of its triangles by more than 30° is not made.
@@ -45,7 +49,7 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
 {
     if (!sn->arena) return 0;
     int nv = m->nv, nt = m->nt;
-    double(*vn)[3] = calloc((size_t)nv, sizeof *vn), *vs = calloc((size_t)nv, sizeof *vs);
+    double(*vn)[3] = calloc((size_t)nv, sizeof *vn), (*vs)[2] = calloc((size_t)nv, sizeof *vs);
     double(*tn)[3] = malloc((size_t)nt * sizeof *tn);
     int32_t *start = NULL, *fan = NULL;
     int rc = -1;
@@ -58,18 +62,20 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
         if (!(len > 0)) continue;
         for (int q = 0; q < 3; q++)
             n[q] = tn[t][q] / len;
-        double sag = 0;
+        double sag[2] = {0, 0}; /* the most inward, the most outward */
         for (int i = 0; i < 4; i++)
             if (mesh_snap_probe(sn, at[i], n, reach, -1, hit, hn) && dot3(hn, n) > COS_KEEP) {
                 sub3(hit, at[i], d);
                 double g = dot3(d, n); /* > 0: the surface is outside the triangle */
-                if (fabs(g) > fabs(sag)) sag = g;
+                sag[0] = fmin(sag[0], g);
+                sag[1] = fmax(sag[1], g);
             }
         for (int k = 0; k < 3; k++) {
             int32_t v = m->t[3 * (size_t)t + k];
             for (int q = 0; q < 3; q++)
                 vn[v][q] += tn[t][q];
-            if (fabs(sag) > fabs(vs[v])) vs[v] = sag;
+            vs[v][0] = fmin(vs[v][0], sag[0]);
+            vs[v][1] = fmax(vs[v][1], sag[1]);
         }
     }
     /* the smooth vertices (their triangles within 20° of their normal)
@@ -85,7 +91,7 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
         double to[3];
         mesh_vertex_at(m, v, to);
         for (int q = 0; q < 3; q++)
-            to[q] += 0.5 * vs[v] * vn[v][q] / l;
+            to[q] += 0.5 * (vs[v][0] + vs[v][1]) * vn[v][q] / l;
         mesh_vertex_move(m, v, fan + start[v], start[v + 1] - start[v], to, COS_KEEP, 0);
     }
     rc = 0;

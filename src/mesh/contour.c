@@ -847,7 +847,7 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
         }
     }
     if (o && o->progress && !s.oom) o->progress(o->progress_ud, "contouring", 1);
-    if (s.oom || mesh_refine_edges(m, first_tri, &s.snap, &s.vn) != 0) {
+    if (s.oom || mesh_refine_edges(m, first_tri, o ? o->tolerance : 0, &s.snap, &s.vn) != 0) {
         snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");
         goto done;
     }

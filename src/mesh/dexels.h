@@ -163,10 +163,10 @@ typedef struct mesh_vnormals {
 int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge);
 void mesh_vnormals_free(mesh_vnormals *vn);
 /* Split the edges of triangles [t0, m->nt) of m (made on sampling grid
- * sn->d) whose midpoints lie off the exact surface where it bends
- * (refine.c); vn gets the new vertices' normals.  0 or -1 when out of
- * memory. */
-int mesh_refine_edges(mesh *m, int t0, mesh_snapper *sn, mesh_vnormals *vn);
+ * sn->d) whose midpoints lie off the exact surface where it bends, by more
+ * than a hundredth of a cell or (tol > 0) half of tol (refine.c); vn gets
+ * the new vertices' normals.  0 or -1 when out of memory. */
+int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and

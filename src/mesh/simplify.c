@@ -27,7 +27,8 @@
  * the grid's spacing, its sharp edges at half of it, so the result stays within about tol of the
  * contour's surface, and of the exact one (measured: 1.2 tol).
  *
- * Where the contour is curved (a vertex whose edges bend by 0.5° to 20°)
+ * Where the contour is curved (a vertex whose edges bend by 0.5° to 20°,
+ * not a saddle)
  * the bound is the larger tolerance passed (balance.c then moves the
  * vertices out by half the sag); on flat faces, at sharp edges and on the
  * triangles that touch them it is edge_tol.  (A flat face's collapses
@@ -40,8 +41,8 @@
  *     the two neighbours opposite the edge (the link condition), and those
  *     must keep three neighbours each;
  *   - turn a triangle by more than 60°, or leave one of zero area;
- *   - fold the surface: put a moved triangle back to back with one across
- *     an edge (more than 150° apart) where they were not;
+ *   - leave the surface folded: a moved triangle back to back with one
+ *     across an edge (more than 150° apart), even where they were so;
  *   - make a triangle more needle-like than both MIN_QUALITY and the worst
  *     it replaces, unless it costs nothing (a plane, where later collapses
  *     take the needles away again).
@@ -286,35 +287,35 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
 
 static int32_t across(const simp *s, int32_t t, int32_t a, int32_t b);
 
-/* Whether a triangle (normal now n1, before o1) and one across an edge of it
- * (n2, o2) turned back to back (normals more than COS_FOLD apart) where
- * they were not. */
-static int turned_over(const double *n1, const double *n2, const double *o1, const double *o2)
+/* Whether two triangles across an edge (normals n1, n2) lie back to back:
+ * normals more than COS_FOLD apart. */
+static int back_to_back(const double *n1, const double *n2)
 {
-    double ln = sqrt(dot3(n1, n1) * dot3(n2, n2)), lw = sqrt(dot3(o1, o1) * dot3(o2, o2));
-    return dot3(n1, n2) < -COS_FOLD * ln && !(dot3(o1, o2) < -COS_FOLD * lw);
+    return dot3(n1, n2) < -COS_FOLD * sqrt(dot3(n1, n1) * dot3(n2, n2));
 }
 
-/* Whether collapsing v into u folds the surface: a moved triangle (moved[],
- * its corners v, b[], d[] in order, its normal was[] before and now[]
- * after) and one across an edge of it turned over.  The turn bound alone
- * lets two triangles on either side of a narrow notch each turn less than
- * 60° and meet as a flat flap across it.  Across an edge through v lies
- * another moved triangle (or one of the edge's, which go); across the
- * third, one that stays as it is. */
+/* Whether collapsing v into u leaves the surface folded: a moved triangle
+ * (moved[], its corners v, b[], d[] in order, its normal now[] after) back
+ * to back with one across an edge of it.  The turn bound alone lets two
+ * triangles on either side of a narrow notch each turn less than 60° and
+ * meet as a flat flap across it.  A fold the contour left (two triangles
+ * back to back already, at a cell whose feature it could not resolve) may
+ * not be carried along either: collapses that kept one stretched it into a
+ * fin of two long triangles into the solid (0.5 long, minkowski_solids).
+ * Across an edge through v lies another moved triangle (or one of the
+ * edge's, which go); across the third, one that stays as it is. */
 static int folds(const simp *s, const int32_t *moved, const int32_t *b, const int32_t *d,
-                 double (*was)[3], double (*now)[3], int nmoved)
+                 double (*now)[3], int nmoved)
 {
     for (int m = 0; m < nmoved; m++) {
         for (int j = m + 1; j < nmoved; j++)
-            if ((b[j] == d[m] || d[j] == b[m]) && turned_over(now[m], now[j], was[m], was[j]))
-                return 1;
+            if ((b[j] == d[m] || d[j] == b[m]) && back_to_back(now[m], now[j])) return 1;
         int32_t o = across(s, moved[m], b[m], d[m]);
         if (o < 0) continue;
         const int32_t *ov = s->t + 3 * o;
         double n2[3];
         tri_normal3(P(s, ov[0]), P(s, ov[1]), P(s, ov[2]), n2);
-        if (turned_over(now[m], n2, was[m], n2)) return 1;
+        if (back_to_back(now[m], n2)) return 1;
     }
     return 0;
 }
@@ -437,7 +438,7 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
         b[m] = tv[(iv + 1) % 3];
         d[m] = tv[(iv + 2) % 3];
     }
-    if (folds(s, moved, b, d, was, now, nmoved)) return 0;
+    if (folds(s, moved, b, d, now, nmoved)) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
     if (!near_enough(s, v, -1, nt, moved, edgy, nmoved)) return 0;
@@ -628,6 +629,29 @@ static void on_edge(const simp *s, mesh_snapper *sn, const double *tn, int32_t t
     if (dot3(mv, mv) < 0.25 * len * len) memcpy(x, y, sizeof y);
 }
 
+/* Whether the surface around vertex v is a saddle: its neighbours lie well
+ * to both sides of the plane through it across its normal (the sum of its
+ * triangles' tn).  There a triangle's sag changes sign across it, and
+ * mesh_balance cannot halve it by moving the corners one way: it is
+ * simplified to the tighter bound. */
+static int saddle(const simp *s, const double *tn, int32_t v)
+{
+    double n[3] = {0, 0, 0}, lo = 0, hi = 0;
+    for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
+        for (int i = 0; i < 3; i++)
+            n[i] += tn[3 * (k / 3) + i];
+    double l = sqrt(dot3(n, n));
+    if (!(l > 0)) return 0;
+    for (int32_t k = s->head[v]; k >= 0; k = s->next[k]) {
+        double d[3];
+        sub3(P(s, s->t[3 * (k / 3) + (k % 3 + 1) % 3]), P(s, v), d);
+        double g = dot3(d, n) / l;
+        lo = fmin(lo, g);
+        hi = fmax(hi, g);
+    }
+    return -lo > 0.25 * hi && hi > 0.25 * -lo;
+}
+
 static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_snapper *sn)
 {
     memset(s, 0, sizeof *s);
@@ -702,7 +726,7 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_s
             if (l > 0 && dot3(n0, n1) < COS_CURVED * l) s->curved[a] = s->curved[b] = 1;
         }
     for (size_t v = 0; v < nv; v++)
-        if (s->crease[v]) s->curved[v] = 0;
+        if (s->crease[v] || saddle(s, tn, (int32_t)v)) s->curved[v] = 0;
     double total = 0;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *tv = s->t + 3 * t;

@@ -10,7 +10,8 @@
 # exact volume.
 # Distance from the exact surface (build/tools/meshdev, both ways, by rays):
 # the bench part and a sphere at --mesh-size 0.25 --mesh-tolerance 0.008
-# must lie within the tolerance.  (The other models at their default
+# must lie within the tolerance; bored_cone's exact surface (its sharp
+# rims) within twice its default tolerance of its mesh.  (The other models at their default
 # tolerance are not checked yet: at the default grid the contour's own
 # error, a tenth of a cell at sharp features, is often larger; and meshdev
 # through hulls under ASan takes many minutes.)
@@ -61,6 +62,14 @@ for f in "$models"/*.scad; do
     times=$("$py" -c 'import sys; a,b,c=map(float,sys.argv[1:]); print("%.2fs,%.2fs" % (c-b, b-a))' "$t0" "$t1" "$t2")
     "$meshcmp" "$tmp/$name.stl" "$tmp/$name.ref.stl" --h "$h" --name "$name" --times "$times" ||
         failed=$((failed + 1))
+    if [ "$name" = bored_cone ]; then
+        # the cross hole's rim on the cone: every sample of the exact
+        # surface within twice the default tolerance of the mesh (it was
+        # 34 tolerances off where the contour cut across the rim)
+        d2=$("$py" -c 'import json,sys; print(2 * json.load(open(sys.argv[1]))["mesh"]["tolerance"])' "$tmp/$name.json")
+        "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d2" --surface-only \
+            --name "$name rim, 2 D" || failed=$((failed + 1))
+    fi
     if [ "$name" = cube_sphere_cylinders ]; then
         if ! "$py" - "$tmp/$name.json" "$exact_csc" <<'PY'; then
 import json, sys
