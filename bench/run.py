@@ -42,6 +42,7 @@ RENDER_SCENES = [
     ("few", "few.scad"),
     ("csg_deep", "csg_deep.scad"),
     ("glass", "glass.scad"),
+    ("hull", "hull.scad"),
     ("example001", f"{EXAMPLES}/Old/example001.scad"),
     ("example005", f"{EXAMPLES}/Old/example005.scad"),
     ("CSG", f"{EXAMPLES}/Basics/CSG.scad"),

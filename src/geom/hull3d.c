@@ -509,7 +509,7 @@ static int finish(hull *h, const double (*P)[3], const double (*V)[3], iv_shape 
     if (h->nalive > MAX_FACES) return GEOM_HULL_TOO_MANY;
     double(*pl)[4] = malloc((size_t)h->nalive * sizeof *pl);
     char *used = calloc((size_t)h->n, 1);
-    int rc = GEOM_HULL_NO_MEMORY;
+    int rc = GEOM_HULL_NO_MEMORY, *at = NULL, (*tri)[3] = NULL;
     double(*vv)[3] = NULL;
     if (!pl || !used) goto done;
     /* A face whose plane has a neighbour's far corner well above it was
@@ -543,17 +543,34 @@ static int finish(hull *h, const double (*P)[3], const double (*V)[3], iv_shape 
         np++;
     }
     vv = malloc((size_t)nv * sizeof *vv);
-    if (!vv) goto done;
+    at = malloc((size_t)h->n * sizeof *at);
+    if (!vv || !at) goto done;
     nv = 0;
     for (int i = 0; i < h->n; i++)
-        if (used[i]) memcpy(vv[nv++], V[i], sizeof *vv);
+        if (used[i]) {
+            at[i] = nv;
+            memcpy(vv[nv++], V[i], sizeof *vv);
+        }
     rc = iv_shape_polytope(s, (const double(*)[4])pl, np, (const double(*)[3])vv, nv) == 0
              ? 0
              : GEOM_HULL_NO_MEMORY;
+    /* with every face a plane, lines walk over them (polytope.c) */
+    if (rc == 0 && np == h->nalive && (tri = malloc((size_t)np * sizeof *tri)) != NULL) {
+        np = 0;
+        for (int f = 0; f < h->nf; f++)
+            if (h->F[f].alive) {
+                for (int k = 0; k < 3; k++)
+                    tri[np][k] = at[h->F[f].v[k]];
+                np++;
+            }
+        iv_polytope_set_faces(s, (const int(*)[3])tri);
+    }
 done:
     free(pl);
     free(used);
     free(vv);
+    free(at);
+    free(tri);
     return rc;
 }
 

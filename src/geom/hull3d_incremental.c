@@ -216,8 +216,21 @@ int geom_hull3d_incremental(iv_shape *s, const double (*P)[3], int n)
         }
         nv = 0;
         for (int i = 0; i < n; i++)
-            if (vis[i]) memcpy(vv[nv++], P[i], sizeof vv[0]);
+            if (vis[i]) {
+                vis[i] = nv; /* now its index among vv */
+                memcpy(vv[nv++], P[i], sizeof vv[0]);
+            }
         rc = iv_shape_polytope(s, (const double(*)[4])pl, nf, (const double(*)[3])vv, nv);
+        int(*tri)[3] = rc == 0 ? malloc((size_t)(nf > 0 ? nf : 1) * sizeof *tri) : NULL;
+        if (tri) {
+            for (int k = 0; k < nf; k++) {
+                tri[k][0] = vis[F[k].a];
+                tri[k][1] = vis[F[k].b];
+                tri[k][2] = vis[F[k].c];
+            }
+            iv_polytope_set_faces(s, (const int(*)[3])tri); /* lines walk over them */
+            free(tri);
+        }
         free(pl);
         free(vv);
     }

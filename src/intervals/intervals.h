@@ -214,6 +214,12 @@ void iv_shape_release(iv_shape *s);
  * n is 0 or more than 65536 planes, or a value is not finite. */
 int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes, const double (*verts)[3],
                       int nverts);
+/* Tell polytope s which faces border which: tri[i] is the triangle of the
+ * hull that plane i is the plane of, as indices into its vertices (in
+ * order, counter-clockwise from outside).  Lines then walk from face to
+ * face instead of clipping against every plane (polytope.c).  0; or -1
+ * when the triangles do not close up (nothing changes) or out of memory. */
+int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3]);
 /* The vertices of a polytope (borrowed), or NULL for other kinds. */
 const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3];
 /* The planes of a polytope (borrowed): {nx, ny, nz, d} with unit n, inside

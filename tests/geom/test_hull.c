@@ -243,3 +243,108 @@ Test(hull3d, near_duplicate_and_near_coplanar_points, .init = arena_setup, .fini
             iv_shape_release(&h);
         }
 }
+
+/* Whether p lies inside every plane of polytope ud (an iv_shape). */
+static int in_planes(const double p[3], const void *ud)
+{
+    int n;
+    const double(*pl)[4] = iv_polytope_planes(ud, &n);
+    for (int i = 0; i < n; i++)
+        if (pl[i][0] * p[0] + pl[i][1] * p[1] + pl[i][2] * p[2] > pl[i][3]) return 0;
+    return 1;
+}
+
+/* Lines walk over a large hull's faces (polytope.c) instead of clipping
+ * against each plane: the spans must be the clipping's, here redone by the
+ * test against the planes.  The hull: points on a sphere with a flat cap
+ * of 64 points (a 64-gon face: many coplanar triangles, whose shared edges
+ * bound nothing), from both hull builders.  The lines: random ones, every
+ * tenth along an axis (shape_check), then rows of parallel lines as the
+ * mesher and renderer cast them (each walk starts where the last ended),
+ * in many directions, a third of them grazing the sphere. */
+Test(hull3d, walked_lines_as_clipped, .init = arena_setup, .fini = arena_teardown)
+{
+    enum { N = 1200, CAP = 64 };
+    static double P[N + CAP][3];
+    uint64_t seed = 77;
+    rng_state = seed;
+    for (int i = 0; i < N; i++) {
+        double z = rng_uniform(-1, 0.6), a = rng_uniform(0, 2 * PI), r = sqrt(1 - z * z);
+        P[i][0] = 5 * r * cos(a);
+        P[i][1] = 5 * r * sin(a);
+        P[i][2] = 5 * z;
+    }
+    for (int i = 0; i < CAP; i++) {
+        double a = 2 * PI * i / CAP;
+        P[N + i][0] = 4 * cos(a);
+        P[N + i][1] = 4 * sin(a);
+        P[N + i][2] = 3;
+    }
+    for (int builder = 0; builder < 2; builder++) {
+        iv_shape h;
+        int built = builder ? geom_hull3d_incremental(&h, (const double(*)[3])P, N + CAP)
+                            : geom_hull3d(&h, (const double(*)[3])P, N + CAP);
+        cr_assert_eq(built, 0);
+        int np;
+        const double(*pl)[4] = iv_polytope_planes(&h, &np);
+        cr_assert_gt(np, 1000);
+        cr_expect_eq(check_shape(&h, in_planes, &h, 6, 3000, seed + (uint64_t)builder), 0,
+                     "builder %d", builder);
+        int bad = 0, hits = 0;
+        for (int dir = 0; dir < 40; dir++) {
+            double d[3] = {rng_uniform(-1, 1), rng_uniform(-1, 1), rng_uniform(-1, 1)}, e1[3],
+                   e2[3], dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            for (int k = 0; k < 3; k++)
+                d[k] /= dl;
+            /* e1, e2 across d */
+            double a[3] = {fabs(d[0]) < 0.6 ? 1 : 0, fabs(d[0]) < 0.6 ? 0 : 1, 0};
+            e1[0] = a[1] * d[2] - a[2] * d[1];
+            e1[1] = a[2] * d[0] - a[0] * d[2];
+            e1[2] = a[0] * d[1] - a[1] * d[0];
+            double l1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+            for (int k = 0; k < 3; k++)
+                e1[k] /= l1;
+            e2[0] = d[1] * e1[2] - d[2] * e1[1];
+            e2[1] = d[2] * e1[0] - d[0] * e1[2];
+            e2[2] = d[0] * e1[1] - d[1] * e1[0];
+            double reach = dir % 3 == 0 ? 5.2 : 7; /* a third of the rows near the rim */
+            for (int i = 0; i < 30; i++)
+                for (int j = 0; j < 30; j++) {
+                    double u = -reach + 2 * reach * i / 29, v = -reach + 2 * reach * j / 29, o[3];
+                    for (int k = 0; k < 3; k++)
+                        o[k] = u * e1[k] + v * e2[k] - 20 * d[k];
+                    double t0 = -INFINITY, t1 = INFINITY;
+                    for (int q = 0; q < np; q++) {
+                        double dn = pl[q][0] * d[0] + pl[q][1] * d[1] + pl[q][2] * d[2];
+                        double c = pl[q][0] * o[0] + pl[q][1] * o[1] + pl[q][2] * o[2] - pl[q][3];
+                        if (dn < 0)
+                            t0 = fmax(t0, -c / dn);
+                        else if (dn > 0)
+                            t1 = fmin(t1, -c / dn);
+                        else if (c > 0)
+                            t0 = INFINITY;
+                    }
+                    iv_arena_reset(arena);
+                    iv_list l;
+                    cr_assert_eq(iv_list_init(&l, iv_shape_max_spans(&h), arena), 0);
+                    int n = iv_shape_intersect(&h, o, d, 0, &l);
+                    int want = t0 < t1;
+                    hits += want;
+                    /* a line grazing an edge may go either way */
+                    if (want && t1 - t0 < 1e-9) continue;
+                    if (n != want || (n && (fabs(l.v[0].enter.t - t0) > 1e-9 ||
+                                            fabs(l.v[0].exit.t - t1) > 1e-9))) {
+                        if (bad < 5)
+                            cr_log_warn("builder %d dir %d (%d, %d): %d [%.12g, %.12g], clipped "
+                                        "%d [%.12g, %.12g]",
+                                        builder, dir, i, j, n, n ? l.v[0].enter.t : 0,
+                                        n ? l.v[0].exit.t : 0, want, t0, t1);
+                        bad++;
+                    }
+                }
+        }
+        cr_expect_eq(bad, 0, "builder %d: %d lines differ", builder, bad);
+        cr_expect_gt(hits, 10000);
+        iv_shape_release(&h);
+    }
+}
