@@ -589,8 +589,9 @@ void rayscad_sampling_measure(const rayscad_sampling *d, rayscad_measurement *ou
  * rounding for a model of plane faces and within about `tolerance` of the
  * bounding sphere's volume and area for a curved one, converging as the
  * tolerance falls; the bounds of the surface from rays along the axes
- * (within about 1e-9 of the span, 1e-7 where an extreme lies at the end
- * of a ridge nearly level across its axis).  crossings is the number of
+ * (a plane-faced model's to rounding, its extremes being corners; a
+ * curved one's within about 1e-7 of the span: 6e-8 at the rim of a turned
+ * cylinder).  crossings is the number of
  * rays cast. */
 #define RAYSCAD_MEASURE_TOLERANCE 1e-6
 typedef struct rayscad_measure_options {

@@ -523,10 +523,13 @@ static int ray_eval(void *ctx, sample *sm)
             across += (e ? -1 : 1) * dot3(n, P->e2) / dot3(n, P->d);
             h = mix(h, (uint64_t)(uint32_t)b->prim << 32 | (uint64_t)b->part << 1 | b->flip);
             for (int a = 0; a < 3; a++) {
+                /* (which end, decided before the point is copied: the copy
+                 * moves the end it is compared with) */
                 double x = o[a] + b->t * P->d[a];
-                if (x < P->ext[0][a][a] || x > P->ext[1][a][a])
-                    for (int c = 0; c < 3; c++)
-                        P->ext[x > P->ext[1][a][a]][a][c] = o[c] + b->t * P->d[c];
+                for (int e2 = 0; e2 < 2; e2++)
+                    if (e2 ? x > P->ext[1][a][a] : x < P->ext[0][a][a])
+                        for (int c = 0; c < 3; c++)
+                            P->ext[e2][a][c] = o[c] + b->t * P->d[c];
             }
             if (e) {
                 double t0 = l.v[i].enter.t, t1 = b->t;

@@ -86,10 +86,12 @@ Test(measure, turned_box_is_exact)
     }
     for (int i = 0; i < 3; i++) {
         near_abs(m.centroid[i], r[i][0] * 5 + r[i][1] * 10 + r[i][2] * 15, 1e-9, "centroid");
-        /* an extreme at the end of a ridge nearly level across its axis:
-         * within 1e-7 of the span (rayscad.h) */
-        near_abs(m.lo[i], lo[i], 1e-7 * 40, "lo");
-        near_abs(m.hi[i], hi[i], 1e-7 * 40, "hi");
+        /* corners, exact: the lowest corner along y ends a ridge level
+         * across y to 1.6e-8; the search once started from points whose
+         * other coordinates were another extreme's, and stayed at the
+         * integration's nearest ray, 4.6e-7 off */
+        near_abs(m.lo[i], lo[i], 1e-12 * 40, "lo");
+        near_abs(m.hi[i], hi[i], 1e-12 * 40, "hi");
     }
 }
 
