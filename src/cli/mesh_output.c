@@ -91,14 +91,14 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
 }
 
 /* The most rays an exact --measure casts before it gives way to the grid:
- * about 2 s on two cores.  A model of many faces has as many events along
- * and across the lines (every crossing of a front edge over a back one
- * seen along the rays), and the grid measures it in a fraction of that. */
-#define MEASURE_MAX_RAYS (1LL << 24)
+ * about 6 s on two cores, enough for the bench part (cube − sphere − three
+ * cylinders, 22 million rays).  A model of many faces has as many events
+ * along and across the lines (every crossing of a front edge over a back
+ * one seen along the rays), and the grid measures it in a fraction of
+ * that. */
+#define MEASURE_MAX_RAYS (1LL << 25)
 /* With a mesh output, whose grid measures anyway: a box or a sphere (60,000
- * rays, 5 ms), no more.  A ray through a hull costs a hundred times one
- * through a box: 2^21 rays took 70 s on tests/mesh_models/hull_revolve.scad
- * before the grid measured it (the mesh takes 3 s). */
+ * rays, 5 ms), no more. */
 #define MEASURE_MAX_RAYS_MESH (1LL << 17)
 
 /* --measure without --mesh-size (or with --measure-tolerance): exactly,

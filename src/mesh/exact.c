@@ -58,6 +58,7 @@
 #define MIN_PANEL 1e-7 /* of the span: see panel() */
 #define SLIVER 1e-9    /* of the span: a piece too narrow to sign a line */
 #define MAX_SEEDS 4096 /* primitives whose boxes hint first samples */
+#define PAIR 1e-7      /* of the span: samples either side of an event foreseen */
 #define PAD 1e-7       /* around the model's box, of the span */
 
 /* A stretch of one signature along a line. */
@@ -551,8 +552,12 @@ static int ray_eval(void *ctx, sample *sm)
 /* Hints for the line at v from lines a and b of the history (a pair of
  * the same make-up: each piece's ends carried to v along the straight line
  * through theirs, which is where they are on plane faces; else the middles
- * of a's pieces) appended to h[*n], up to cap. */
-static void hints_from(const line *a, const line *b, double v, double *h, int *n, int cap)
+ * of a's pieces) appended to h[*n], up to cap: the pieces' middles and,
+ * with pair > 0 (a and b either side of v), two samples pair either side
+ * of each foreseen event, whose bracket then starts that narrow (a fifth
+ * fewer rays on the bench part). */
+static void hints_from(const line *a, const line *b, double v, double pair, double *h, int *n,
+                       int cap)
 {
     int same = b && b->seq == a->seq && b->np == a->np && b->v != a->v;
     for (int k = 0; k < a->np && *n < cap; k++) {
@@ -563,6 +568,10 @@ static void hints_from(const line *a, const line *b, double v, double *h, int *n
             x1 += s * (b->p[k].x1 - x1);
         }
         if (x1 > x0) h[(*n)++] = 0.5 * (x0 + x1);
+        if (same && pair > 0 && k + 1 < a->np && *n + 2 <= cap && x1 - pair > x0) {
+            h[(*n)++] = x1 - pair;
+            h[(*n)++] = x1 + pair;
+        }
     }
 }
 
@@ -616,9 +625,9 @@ static int line_eval(void *ctx, sample *sm)
                *L2 = up < P->nlines ? &P->lines[up] : NULL,
                *L3 = up + 1 < P->nlines ? &P->lines[up + 1] : NULL;
     int n = 0;
-    if (L1) hints_from(L1, L0, v, P->hints, &n, MAX_HINTS);
-    if (L2) hints_from(L2, L3, v, P->hints, &n, MAX_HINTS);
-    if (L1 && L2) hints_from(L1, L2, v, P->hints, &n, MAX_HINTS);
+    if (L1) hints_from(L1, L0, v, 0, P->hints, &n, MAX_HINTS);
+    if (L2) hints_from(L2, L3, v, 0, P->hints, &n, MAX_HINTS);
+    if (L1 && L2) hints_from(L1, L2, v, PAIR * 2 * P->reach, P->hints, &n, MAX_HINTS);
     seed_hints(P, v, (ub - ua) / SAMPLES, P->hints, &n, MAX_HINTS);
     P->v = v;
     P->inner.hints = P->hints;
