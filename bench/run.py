@@ -42,7 +42,6 @@ RENDER_SCENES = [
     ("few", "few.scad"),
     ("csg_deep", "csg_deep.scad"),
     ("glass", "glass.scad"),
-    ("hull", "hull.scad"),
     ("example001", f"{EXAMPLES}/Old/example001.scad"),
     ("example005", f"{EXAMPLES}/Old/example005.scad"),
     ("CSG", f"{EXAMPLES}/Basics/CSG.scad"),
@@ -378,8 +377,38 @@ def main():
         result["evaluation"] = eval_bench.run(a.build, reps)
         sys.stdout.flush()
 
+    # ---- hulls: a rounded box minus a revolved hull, thousands of faces each --
+    # (not a render row: POV-Ray clips every plane of the exported hulls and
+    # took more than ten minutes for one 640x480 frame)
+    if have["openscad"]:
+        path = os.path.join(HERE, "scenes", "hull.scad")
+        row = {"scene": "hull", "rayscad_stl_s": [], "rayscad_png_s": [], "openscad_stl_s": []}
+        for _ in range(reps):
+            t, p = run([rayscad, path, "-o", os.path.join(work, "hull.stl"), "--threads",
+                        str(a.threads)])
+            if p.returncode == 0:
+                row["rayscad_stl_s"].append(t)
+            t, p = run([rayscad, path, "-o", os.path.join(work, "hull.png"), f"--imgsize={W},{H}",
+                        "--threads", str(a.threads)])
+            if p.returncode == 0:
+                row["rayscad_png_s"].append(t)
+            t, p = run(["openscad", "-o", os.path.join(work, "hull.openscad.stl"), path],
+                       timeout=600)
+            if p.returncode == 0:
+                row["openscad_stl_s"].append(t)
+        for k in ("rayscad_stl_s", "rayscad_png_s", "openscad_stl_s"):
+            row[k + "_median"] = med(row[k])
+        rs, os_ = row["rayscad_stl_s_median"], row["openscad_stl_s_median"]
+        row["stl_speedup"] = os_ / rs if rs and os_ else None
+        result["hull"] = row
+        print(f"hull: rayscad stl {rs} s, png {row['rayscad_png_s_median']} s; openscad stl "
+              f"{os_} s")
+        sys.stdout.flush()
+
     # ---- summary -------------------------------------------------------------
     S = result["summary"]
+    if result.get("hull", {}).get("stl_speedup"):
+        S["hull_stl_whole_speedup_vs_openscad"] = result["hull"]["stl_speedup"]
     ev = result.get("evaluation")
     if ev:
         S["eval_bosl2_pass_cpu_ratio"] = ev["bosl2_pass"]["ratio"]
