@@ -209,15 +209,25 @@ typedef struct sweep {
 /* Push a vertex at p, or where a vertex is at p's float position already
  * (two cells' vertices snapped to one point of a sharp edge, which a reader
  * welding by position would join into one vertex of two fans) at fallback
- * (copied into p; NULL: at p all the same); its index, or -1 when out of
+ * (copied into p; NULL: at p all the same), and where that is taken too, a
+ * little way from it towards `toward` (its cell's middle): the first of
+ * four steps of 1e-4 h to a place of its own; its index, or -1 when out of
  * memory. */
-static int32_t push_unique(sweep *s, double p[3], const double *fallback)
+static int32_t push_unique(sweep *s, double p[3], const double *fallback, const double *toward)
 {
     int fresh;
     int32_t *slot = fmap_slot(&s->pos, pos_key(p), &fresh);
     if (slot && !fresh && fallback) {
         memcpy(p, fallback, 3 * sizeof *p);
         slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+        double from[3] = {p[0], p[1], p[2]}, d[3];
+        sub3(toward, from, d);
+        double l = sqrt(dot3(d, d));
+        for (int k = 1; slot && !fresh && l > 0 && k <= 4; k++) {
+            for (int c = 0; c < 3; c++)
+                p[c] = from[c] + d[c] / l * fmin(k * 1e-4 * s->d->h, l);
+            slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+        }
     }
     if (!slot) return -1;
     int32_t v = mesh_push_vertex(s->m, p[0], p[1], p[2]);
@@ -225,14 +235,17 @@ static int32_t push_unique(sweep *s, double p[3], const double *fallback)
     return v;
 }
 
-/* Push a vertex mesh_snap placed at p (on: on a sharp edge) by push_unique,
- * at unsnapped where p is taken (then not on the edge), with its entry in
- * s->vn; its index, or -1 when out of memory. */
-static int32_t push_snapped(sweep *s, double p[3], const double unsnapped[3], int on)
+/* Push a vertex mesh_snap placed at p (on: on a sharp edge) in the cell
+ * with corner lo by push_unique, at unsnapped where p is taken (then not on
+ * the edge), with its entry in s->vn; its index, or -1 when out of memory. */
+static int32_t push_snapped(sweep *s, double p[3], const double unsnapped[3], int on,
+                            const double lo[3])
 {
     static const double none[3] = {0, 0, 0};
-    double snapped[3] = {p[0], p[1], p[2]};
-    int32_t v = push_unique(s, p, unsnapped);
+    double snapped[3] = {p[0], p[1], p[2]}, mid[3];
+    for (int c = 0; c < 3; c++)
+        mid[c] = lo[c] + 0.5 * s->d->h;
+    int32_t v = push_unique(s, p, unsnapped, mid);
     if (v < 0 || mesh_vnormal_set(&s->vn, v, none, on && !memcmp(p, snapped, sizeof snapped)) != 0)
         return -1;
     return v;
@@ -382,7 +395,7 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     }
     edge_sample(s, a, r, seg, enter, base, out);
     if (*slot < 0) {
-        *slot = push_unique(s, out->p, NULL);
+        *slot = push_unique(s, out->p, NULL, NULL);
         if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n, 0) != 0) return -1;
     }
     out->vid = *slot;
@@ -722,7 +735,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 if (fresh) {
                     double unsnapped[3] = {fp[0], fp[1], fp[2]};
                     int on = snap_face_point(s, a, b, segface[loop[q]], lo, fp);
-                    if ((*slot = push_snapped(s, fp, unsnapped, on)) < 0) {
+                    if ((*slot = push_snapped(s, fp, unsnapped, on, lo)) < 0) {
                         s->oom = 1;
                         return;
                     }
@@ -755,7 +768,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 break;
             }
         }
-        int32_t cv = push_snapped(s, c, unsnapped, on);
+        int32_t cv = push_snapped(s, c, unsnapped, on, lo);
         if (nplaced < 6) memcpy(placed[nplaced++], c, sizeof c);
         if (cv < 0) {
             s->oom = 1;
