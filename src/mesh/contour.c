@@ -116,15 +116,9 @@ static void tables_init(tables *tb)
         }
 }
 
-/* ---- a small open-addressing map for face vertices ---------------------- */
+/* ---- a small open-addressing map (dexels.h) ------------------------------ */
 
-typedef struct fmap {
-    uint64_t *key; /* 0 = empty; keys are (a + 1) << 32 | (b + 1) */
-    int32_t *val;
-    size_t cap, n;
-} fmap;
-
-static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
+int32_t *mesh_fmap_slot(mesh_fmap *m, uint64_t key, int *fresh)
 {
     if (2 * (m->n + 1) > m->cap) {
         size_t cap = m->cap ? 2 * m->cap : 256;
@@ -160,9 +154,16 @@ static int32_t *fmap_slot(fmap *m, uint64_t key, int *fresh)
     return &m->val[p];
 }
 
-/* 64 bits that tell the float positions of vertices apart (+0 and -0
- * alike, as a reader welding by position sees them); never 0. */
-static uint64_t pos_key(const double p[3])
+int mesh_fmap_has(const mesh_fmap *m, uint64_t key)
+{
+    if (!m->cap) return 0;
+    size_t p = mesh_hash_mix(key) & (m->cap - 1);
+    while (m->key[p] && m->key[p] != key)
+        p = (p + 1) & (m->cap - 1);
+    return m->key[p] != 0;
+}
+
+uint64_t mesh_pos_key(const double p[3])
 {
     uint64_t k = 0x9e3779b97f4a7c15ULL;
     for (int c = 0; c < 3; c++) {
@@ -199,8 +200,8 @@ typedef struct sweep {
     int32_t *xv[2]; /* x-edge vertices of layers k, k+1: i + nx j */
     int32_t *yv[2]; /* y-edge vertices: i + (nx+1) j */
     int32_t *zv;    /* z-edge vertices of slab k: i + (nx+1) j */
-    fmap faces;
-    fmap pos; /* every vertex by its float position (pos_key) */
+    mesh_fmap faces;
+    mesh_fmap pos; /* every vertex by its float position (mesh_pos_key) */
     mesh_snapper snap;
     mesh_vnormals vn; /* the edge samples' normals, for refine.c */
     int oom;
@@ -216,17 +217,17 @@ typedef struct sweep {
 static int32_t push_unique(sweep *s, double p[3], const double *fallback, const double *toward)
 {
     int fresh;
-    int32_t *slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+    int32_t *slot = mesh_fmap_slot(&s->pos, mesh_pos_key(p), &fresh);
     if (slot && !fresh && fallback) {
         memcpy(p, fallback, 3 * sizeof *p);
-        slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+        slot = mesh_fmap_slot(&s->pos, mesh_pos_key(p), &fresh);
         double from[3] = {p[0], p[1], p[2]}, d[3];
         sub3(toward, from, d);
         double l = sqrt(dot3(d, d));
         for (int k = 1; slot && !fresh && l > 0 && k <= 4; k++) {
             for (int c = 0; c < 3; c++)
                 p[c] = from[c] + d[c] / l * fmin(k * 1e-4 * s->d->h, l);
-            slot = fmap_slot(&s->pos, pos_key(p), &fresh);
+            slot = mesh_fmap_slot(&s->pos, mesh_pos_key(p), &fresh);
         }
     }
     if (!slot) return -1;
@@ -727,7 +728,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 int32_t hi_id = a->vid < b->vid ? b->vid : a->vid;
                 uint64_t key = (uint64_t)(lo_id + 1) << 32 | (uint64_t)(hi_id + 1);
                 int fresh;
-                int32_t *slot = fmap_slot(&s->faces, key, &fresh);
+                int32_t *slot = mesh_fmap_slot(&s->faces, key, &fresh);
                 if (!slot) {
                     s->oom = 1;
                     return;
@@ -860,7 +861,8 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
         }
     }
     if (o && o->progress && !s.oom) o->progress(o->progress_ud, "contouring", 1);
-    if (s.oom || mesh_refine_edges(m, first_tri, o ? o->tolerance : 0, &s.snap, &s.vn) != 0) {
+    if (s.oom ||
+        mesh_refine_edges(m, first_tri, o ? o->tolerance : 0, &s.snap, &s.vn, &s.pos) != 0) {
         snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");
         goto done;
     }

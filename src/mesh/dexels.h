@@ -84,6 +84,24 @@ static inline uint64_t mesh_hash_mix(uint64_t k)
     return k;
 }
 
+/* An open-addressing map from nonzero 64-bit keys to vertex numbers
+ * (contour.c): the face points by their segment's ends, every vertex by
+ * its place. */
+typedef struct mesh_fmap {
+    uint64_t *key; /* 0 = empty */
+    int32_t *val;
+    size_t cap, n;
+} mesh_fmap;
+
+/* key's value slot, added (*fresh set, the value unset) when absent; NULL
+ * when out of memory. */
+int32_t *mesh_fmap_slot(mesh_fmap *m, uint64_t key, int *fresh);
+/* Whether key is in m. */
+int mesh_fmap_has(const mesh_fmap *m, uint64_t key);
+/* 64 bits that tell the float positions of vertices apart (+0 and -0
+ * alike, as a reader welding by position sees them); never 0. */
+uint64_t mesh_pos_key(const double p[3]);
+
 /* The other two axes of a, in increasing order. */
 static inline void mesh_axes_other(int a, int *u, int *v)
 {
@@ -164,9 +182,11 @@ int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edg
 void mesh_vnormals_free(mesh_vnormals *vn);
 /* Split the edges of triangles [t0, m->nt) of m (made on sampling grid
  * sn->d) whose midpoints lie off the exact surface where it bends, by more
- * than a hundredth of a cell or (tol > 0) half of tol (refine.c); vn gets
- * the new vertices' normals.  0 or -1 when out of memory. */
-int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn);
+ * than a hundredth of a cell or (tol > 0) half of tol, never at a place in
+ * pos (every vertex by mesh_pos_key; the new ones are added) (refine.c); vn
+ * gets the new vertices' normals.  0 or -1 when out of memory. */
+int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn,
+                      mesh_fmap *pos);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and

@@ -158,52 +158,6 @@ static int halves_ok(const mesh *m, int32_t t, int k, const double p[3], double 
            (dot3(n, n2) > 0 || dot3(n, r2) <= 0);
 }
 
-/* The vertices by their places as stored (floats), so that a split never
- * puts one where another is: an open-addressed set of vertex numbers, -1
- * empty.  (Solids that touch along an edge, split on it from both sides,
- * made two vertices at one point, which a reader welding by position
- * joins into one edge of four triangles.) */
-typedef struct places {
-    int32_t *id;
-    size_t cap, n;
-} places;
-
-static size_t place_slot(const places *s, const mesh *m, const float *p)
-{
-    uint32_t b[3];
-    memcpy(b, p, sizeof b);
-    size_t i = mesh_hash_mix((uint64_t)b[0] << 32 ^ (uint64_t)b[1] << 16 ^ b[2]) & (s->cap - 1);
-    while (s->id[i] >= 0 && memcmp(&m->v[3 * (size_t)s->id[i]], p, 3 * sizeof *p) != 0)
-        i = (i + 1) & (s->cap - 1);
-    return i;
-}
-
-/* Whether a vertex is at p (as floats). */
-static int place_taken(const places *s, const mesh *m, const double p[3])
-{
-    float f[3] = {(float)p[0], (float)p[1], (float)p[2]};
-    return s->id[place_slot(s, m, f)] >= 0;
-}
-
-/* Add vertex v; 0 or -1 (out of memory). */
-static int place_add(places *s, const mesh *m, int32_t v)
-{
-    if (2 * (s->n + 1) > s->cap) {
-        places g = {malloc(2 * (s->cap ? s->cap : 512) * sizeof(int32_t)),
-                    2 * (s->cap ? s->cap : 512), 0};
-        if (!g.id) return -1;
-        memset(g.id, 0xff, g.cap * sizeof *g.id);
-        for (size_t i = 0; i < s->cap; i++)
-            if (s->id[i] >= 0)
-                g.id[place_slot(&g, m, &m->v[3 * (size_t)s->id[i]])] = s->id[i], g.n++;
-        free(s->id);
-        *s = g;
-    }
-    size_t i = place_slot(s, m, &m->v[3 * (size_t)v]);
-    if (s->id[i] < 0) s->id[i] = v, s->n++;
-    return 0;
-}
-
 /* Whether triangle t has a corner numbered v0 or above. */
 static int has_new(const mesh *m, int32_t t, int32_t v0)
 {
@@ -228,7 +182,7 @@ static int touched(const uint8_t *touch, int32_t v0, int32_t v)
  * and one it left is found from both sides.  The corners of this round's
  * splits are marked in next (m->nv entries).  0 or -1 (out of memory). */
 static int round_once(mesh *m, int t0, int32_t v0, const uint8_t *touch, uint8_t *next, double off_,
-                      int probe, places *at, mesh_snapper *sn, mesh_vnormals *vn, int *split)
+                      int probe, mesh_fmap *pos, mesh_snapper *sn, mesh_vnormals *vn, int *split)
 {
     int nt = m->nt - t0;
     if (nt <= 0) return 0;
@@ -345,16 +299,22 @@ static int round_once(mesh *m, int t0, int32_t v0, const uint8_t *touch, uint8_t
             }
             sub3(hit, mid, off);
             crease = how == 0;
-            found = dot3(off, off) > off_ * off_ && !place_taken(at, m, hit) &&
+            /* never where a vertex is: solids that touch along an edge,
+             * split on it from both sides, made two vertices at one point,
+             * which a reader welding by position joins into one edge of
+             * four triangles */
+            found = dot3(off, off) > off_ * off_ && !mesh_fmap_has(pos, mesh_pos_key(hit)) &&
                     halves_ok(m, t0 + ta, ka, hit, h, crease ? vn : NULL) &&
                     halves_ok(m, t0 + tb, kb, hit, h, crease ? vn : NULL);
         }
         if (!found) continue;
         /* (m->t may move as triangles are added) */
         int32_t corner[4] = {va[ka], va[(ka + 1) % 3], va[(ka + 2) % 3], vb[(kb + 2) % 3]};
-        int32_t v = mesh_push_vertex(m, hit[0], hit[1], hit[2]);
-        if (v < 0 || mesh_vnormal_set(vn, v, hn, crease) != 0 || place_add(at, m, v) != 0)
-            goto done;
+        int fresh;
+        int32_t v = mesh_push_vertex(m, hit[0], hit[1], hit[2]),
+                *slot = mesh_fmap_slot(pos, mesh_pos_key(hit), &fresh);
+        if (v < 0 || !slot || mesh_vnormal_set(vn, v, hn, crease) != 0) goto done;
+        *slot = v;
         int32_t tri[2] = {t0 + ta, t0 + tb};
         int kk[2] = {ka, kb};
         for (int s = 0; s < 2; s++) {
@@ -437,23 +397,21 @@ static int project_loose(mesh *m, int t0, mesh_snapper *sn, const mesh_vnormals 
     return 0;
 }
 
-int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn)
+int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn,
+                      mesh_fmap *pos)
 {
     if (!sn->arena) return 0;
     double off = OFF * sn->d->h;
     if (tol > 0) off = fmin(off, 0.5 * tol);
     int32_t v0 = 0;
     uint8_t *touch = NULL, *next = NULL;
-    places at = {NULL, 0, 0};
     int rc = 0;
-    for (int32_t v = 0; v < m->nv && rc == 0; v++)
-        rc = place_add(&at, m, v);
     for (int r = 0; r < ROUNDS && rc == 0; r++) {
         int split = 0;
         int32_t nv = m->nv;
         next = calloc((size_t)nv + 1, 1);
         if (!next ||
-            round_once(m, t0, v0, touch, next, off, r < PROBE_ROUNDS, &at, sn, vn, &split) != 0)
+            round_once(m, t0, v0, touch, next, off, r < PROBE_ROUNDS, pos, sn, vn, &split) != 0)
             rc = -1;
         free(touch);
         touch = next;
@@ -462,6 +420,5 @@ int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnorma
         v0 = nv;
     }
     free(touch);
-    free(at.id);
     return rc == 0 ? project_loose(m, t0, sn, vn) : -1;
 }
