@@ -408,8 +408,9 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
     if (s->val[v] + s->val[u] - 4 < 3) return 0;
 
     /* the triangles that move */
-    double worst_old = 1, worst_new = 1, nt[FAN_MAX][3][3], was[FAN_MAX][3], now[FAN_MAX][3];
+    double worst_old = 1, worst_new = 1, nt[FAN_MAX][3][3], now[FAN_MAX][3];
     uint8_t edgy[FAN_MAX];
+    int32_t b[FAN_MAX], d[FAN_MAX]; /* moved[m] is v, b[m], d[m] in order */
     const double *pu = P(s, u);
     for (int m = 0; m < nmoved; m++) {
         const int32_t *tv = s->t + 3 * moved[m];
@@ -420,8 +421,12 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
             a[i] = P(s, tv[i]);
             an[i] = tv[i] == v ? pu : a[i];
             memcpy(nt[m][i], an[i], sizeof nt[m][i]);
+            if (tv[i] == v) {
+                b[m] = tv[(i + 1) % 3];
+                d[m] = tv[(i + 2) % 3];
+            }
         }
-        double *n0 = was[m], *n1 = now[m];
+        double n0[3], *n1 = now[m];
         tri_normal3(a[0], a[1], a[2], n0);
         tri_normal3(an[0], an[1], an[2], n1);
         double l0 = sqrt(dot3(n0, n0)), l1 = sqrt(dot3(n1, n1));
@@ -431,13 +436,6 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
         if (q1 < worst_new) worst_new = q1;
     }
     if (!(c <= 1e-6 * s->tol2) && worst_new < MIN_QUALITY && worst_new < worst_old) return 0;
-    int32_t b[FAN_MAX], d[FAN_MAX]; /* moved[m] is v, b[m], d[m] in order */
-    for (int m = 0; m < nmoved; m++) {
-        const int32_t *tv = s->t + 3 * moved[m];
-        int iv = tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
-        b[m] = tv[(iv + 1) % 3];
-        d[m] = tv[(iv + 2) % 3];
-    }
     if (folds(s, moved, b, d, now, nmoved)) return 0;
 
     /* v and the points on v's triangles, against the triangles that stay */
@@ -726,7 +724,7 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_s
             if (l > 0 && dot3(n0, n1) < COS_CURVED * l) s->curved[a] = s->curved[b] = 1;
         }
     for (size_t v = 0; v < nv; v++)
-        if (s->crease[v] || saddle(s, tn, (int32_t)v)) s->curved[v] = 0;
+        if (s->crease[v] || (s->curved[v] && saddle(s, tn, (int32_t)v))) s->curved[v] = 0;
     double total = 0;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *tv = s->t + 3 * t;
