@@ -138,6 +138,18 @@ static int bin_of(const double d[3])
     return ((2 * a + (d[a] < 0)) * BINS + i) * BINS + j;
 }
 
+/* The slot of directed edge a→b in the open-addressed table key (cap a
+ * power of two; entries are the edge's bits + 1, 0 empty): its own, or the
+ * empty one where it goes. */
+static size_t edge_slot(const uint64_t *key, size_t cap, int32_t a, int32_t b)
+{
+    uint64_t k = ((uint64_t)(uint32_t)a << 32 | (uint32_t)b) + 1;
+    size_t h = (size_t)((k * 0x9e3779b97f4a7c15ULL) >> 20) & (cap - 1);
+    while (key[h] && key[h] != k)
+        h = (h + 1) & (cap - 1);
+    return h;
+}
+
 int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3])
 {
     if (s->kind != IV_SHAPE_POLYTOPE) return -1;
@@ -157,21 +169,14 @@ int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3])
         for (int k = 0; k < 3; k++) {
             int32_t a = tri[f][k], b = tri[f][(k + 1) % 3];
             if (a < 0 || a >= p->nv || b < 0 || b >= p->nv || a == b) goto done;
-            uint64_t kk = (uint64_t)(uint32_t)a << 32 | (uint32_t)b;
-            size_t h = (size_t)((kk * 0x9e3779b97f4a7c15ULL) >> 20) & (cap - 1);
-            while (key[h] && key[h] != kk + 1)
-                h = (h + 1) & (cap - 1);
+            size_t h = edge_slot(key, cap, a, b);
             if (key[h]) goto done; /* the same directed edge twice: not a closed hull */
-            key[h] = kk + 1;
+            key[h] = ((uint64_t)(uint32_t)a << 32 | (uint32_t)b) + 1;
             val[h] = f;
         }
     for (int f = 0; f < p->n; f++)
         for (int k = 0; k < 3; k++) {
-            int32_t a = tri[f][(k + 1) % 3], b = tri[f][k];
-            uint64_t kk = (uint64_t)(uint32_t)a << 32 | (uint32_t)b;
-            size_t h = (size_t)((kk * 0x9e3779b97f4a7c15ULL) >> 20) & (cap - 1);
-            while (key[h] && key[h] != kk + 1)
-                h = (h + 1) & (cap - 1);
+            size_t h = edge_slot(key, cap, tri[f][(k + 1) % 3], tri[f][k]);
             if (!key[h]) goto done; /* an open edge */
             nb[f][k] = val[h];
         }
@@ -203,7 +208,7 @@ int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3])
         d[(a + 2) % 3] = (j + 0.5) * 2.0 / BINS - 1;
         double best = INFINITY;
         for (int f = 0; f < p->n; f++) {
-            double c = p->pl[f][0] * d[0] + p->pl[f][1] * d[1] + p->pl[f][2] * d[2];
+            double c = dot3(p->pl[f], d);
             if (c < best) {
                 best = c;
                 p->start[b] = f;
@@ -269,16 +274,15 @@ static int walk(const iv_polytope *p, const double o[3], const double d[3], int 
 {
     for (int step = 0; step < WALK_MAX; step++) {
         const double *q = p->pl[f];
-        double a = q[0] * d[0] + q[1] * d[1] + q[2] * d[2];
+        double a = dot3(q, d);
         if (!(a * side > 0)) return -1;
-        double c = q[0] * o[0] + q[1] * o[1] + q[2] * o[2] - q[3], tf = -c / a, x[3];
+        double tf = -(dot3(q, o) - q[3]) / a, x[3];
         for (int k = 0; k < 3; k++)
             x[k] = o[k] + tf * d[k];
         int g = -1;
         double worst = p->eps;
         for (int k = 0; k < 3; k++) {
-            const double *r = p->edge[f][k];
-            double over = r[0] * x[0] + r[1] * x[1] + r[2] * x[2] - r[3];
+            double over = dot3(p->edge[f][k], x) - p->edge[f][k][3];
             if (over > worst) {
                 worst = over;
                 g = p->nb[f][k];
@@ -289,12 +293,24 @@ static int walk(const iv_polytope *p, const double o[3], const double d[3], int 
             *face = f;
             return 1;
         }
-        const double *r = p->pl[g];
-        if (!((r[0] * d[0] + r[1] * d[1] + r[2] * d[2]) * side > 0))
-            return 0; /* past the silhouette */
+        if (!(dot3(p->pl[g], d) * side > 0)) return 0; /* past the silhouette */
         f = g;
     }
     return -1;
+}
+
+/* walk() from face `from` (the last line's on this thread; -1 none) and,
+ * where there is none or it is turned the wrong way for this line, from the
+ * face facing it most (for the exit, away from it), from the table over
+ * directions. */
+static int walk_from(const iv_polytope *p, const double o[3], const double d[3], int from, int side,
+                     double *t, int *face)
+{
+    int hit = from >= 0 ? walk(p, o, d, from, side, t, face) : -1;
+    if (hit >= 0) return hit;
+    double dir[3] = {-side * d[0], -side * d[1], -side * d[2]};
+    int fresh = p->start[bin_of(dir)];
+    return fresh != from ? walk(p, o, d, fresh, side, t, face) : -1;
 }
 
 /* The faces the last walks on this thread ended on, by polytope: where the
@@ -311,22 +327,12 @@ int iv_polytope_intersect(const iv_polytope *p, const double o[3], const double 
     int p0, p1, hit = -1;
     if (p->nb) {
         size_t slot = ((uintptr_t)p >> 6) % 16;
-        int from[2];
-        for (int e = 0; e < 2; e++) {
-            double dd[3] = {e ? -d[0] : d[0], e ? -d[1] : d[1], e ? -d[2] : d[2]};
-            /* (a polytope freed and another made at its address: any face
-             * in range is a start) */
-            from[e] = last[slot].p == p && last[slot].f[e] < p->n ? last[slot].f[e]
-                                                                  : p->start[bin_of(dd)];
-        }
-        hit = walk(p, o, d, from[0], -1, &t0, &p0);
-        if (hit < 0 && from[0] != p->start[bin_of(d)]) /* the last entry face is turned away */
-            hit = walk(p, o, d, p->start[bin_of(d)], -1, &t0, &p0);
+        /* (a polytope freed and another made at its address: any face in
+         * range is a start) */
+        int known = last[slot].p == p && last[slot].f[0] < p->n && last[slot].f[1] < p->n;
+        hit = walk_from(p, o, d, known ? last[slot].f[0] : -1, -1, &t0, &p0);
         if (hit == 1) {
-            double nd[3] = {-d[0], -d[1], -d[2]};
-            hit = walk(p, o, d, from[1], 1, &t1, &p1);
-            if (hit < 0 && from[1] != p->start[bin_of(nd)])
-                hit = walk(p, o, d, p->start[bin_of(nd)], 1, &t1, &p1);
+            hit = walk_from(p, o, d, known ? last[slot].f[1] : -1, 1, &t1, &p1);
             if (hit == 0) hit = -1; /* an exit walk cannot miss where the entry hit: rounding */
         }
         if (hit == 1) {
