@@ -31,10 +31,13 @@
  * Vertices: one per sign-changing grid edge at the exact ray crossing (the
  * first crossing of the right direction on the edge's ray, moved at most
  * EPS·h away from the nodes so no two vertices meet); one per face segment
- * whose two normals meet at more than the feature angle, at the crossing of
- * their tangent lines within the face (where a sharp edge passes through the
- * face), shrunk into the face by EPS·h; one per loop that holds a feature,
- * at its QEF minimiser clamped to the cell shrunk by EPS·h.  A loop without
+ * whose two normals meet at more than the feature angle, or whose two ends
+ * lie on two plane patches at any angle over 1° (the facets of a polygon,
+ * hull or polyhedron: mesh_patch_of), at the crossing of their tangent
+ * lines within the face (where a sharp edge passes through the face),
+ * shrunk into the face by EPS·h; one per loop that holds a feature, at its
+ * QEF minimiser clamped to the cell shrunk by EPS·h.  The tangent planes
+ * pass through the exact crossings, not the vertices moved off the nodes.  A loop without
  * a feature is triangulated among its own vertices when every added diagonal
  * joins two grid edges on no common face (so no other cell can draw it) and
  * no triangle is degenerate or folded; otherwise it is fanned around its QEF
@@ -180,8 +183,10 @@ uint64_t mesh_pos_key(const double p[3])
 
 typedef struct sample {
     double p[3];
+    double x[3]; /* the exact crossing (p is kept EPS·h from the nodes) */
     double n[3];
     int32_t vid;
+    uint32_t patch; /* the crossing's (mesh_hit.patch); 0: none */
     uint16_t color; /* the crossing's (mesh_hit.color) */
 } sample;
 
@@ -247,7 +252,8 @@ static int32_t push_snapped(sweep *s, double p[3], const double unsnapped[3], in
     for (int c = 0; c < 3; c++)
         mid[c] = lo[c] + 0.5 * s->d->h;
     int32_t v = push_unique(s, p, unsnapped, mid);
-    if (v < 0 || mesh_vnormal_set(&s->vn, v, none, on && !memcmp(p, snapped, sizeof snapped)) != 0)
+    if (v < 0 ||
+        mesh_vnormal_set(&s->vn, v, none, on && !memcmp(p, snapped, sizeof snapped), 0) != 0)
         return -1;
     return v;
 }
@@ -352,13 +358,17 @@ static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, con
         for (int c = 0; c < 3; c++)
             out->n[c] = best->n[c];
         out->color = best->color;
+        out->patch = best->patch;
     } else {
         out->color = 0;
+        out->patch = 0;
         t = 0.5 * (t0 + t1);
         for (int c = 0; c < 3; c++)
             out->n[c] = 0;
         out->n[a] = enter ? -1 : 1;
     }
+    memcpy(out->x, out->p, sizeof out->x);
+    out->x[a] = d->org[a] + t;
     if (t < t0 + EPS * h) t = t0 + EPS * h;
     if (t > t1 - EPS * h) t = t1 - EPS * h;
     out->p[a] = d->org[a] + t;
@@ -397,16 +407,27 @@ static int cell_edge(sweep *s, int i, int j, int e, int enter, sample *out)
     edge_sample(s, a, r, seg, enter, base, out);
     if (*slot < 0) {
         *slot = push_unique(s, out->p, NULL, NULL);
-        if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n, 0) != 0) return -1;
+        if (*slot < 0 || mesh_vnormal_set(&s->vn, *slot, out->n, 0, out->patch) != 0) return -1;
     }
     out->vid = *slot;
     return 0;
 }
 
-/* The point where the tangent lines of samples a and b cross within face f
- * of the cell at lo (side h), or 0 when they meet at less than the feature
- * angle, are nearly parallel in the face, or cross outside it.  The inputs
- * are put in a canonical order first so both cells compute the same bits. */
+/* Whether samples a and b lie either side of a sharp edge: their normals
+ * part by more than the feature angle, or they lie on two plane patches
+ * whose normals part by more than 1° (a polygon's facets, at any angle;
+ * see mesh_patch_of). */
+static int creased(const sweep *s, const sample *a, const sample *b)
+{
+    double c = dot3(a->n, b->n);
+    return c < s->cos_feature || mesh_planes_crease(a->patch, b->patch, c);
+}
+
+/* The point where the tangent lines of samples a and b (through their exact
+ * crossings) cross within face f of the cell at lo (side h), or 0 when they
+ * lie on one side of no sharp edge (creased), are nearly parallel in the
+ * face, or cross outside it.  The inputs are put in a canonical order first
+ * so both cells compute the same bits. */
 static int face_point(const sweep *s, const sample *a, const sample *b, int f, const double lo[3],
                       double out[3])
 {
@@ -415,16 +436,18 @@ static int face_point(const sweep *s, const sample *a, const sample *b, int f, c
         a = b;
         b = t;
     }
-    if (dot3(a->n, b->n) >= s->cos_feature) return 0;
+    if (!creased(s, a, b)) return 0;
     int fa = f / 2, u, v;
     mesh_axes_other(fa, &u, &v);
     double h = s->d->h;
     double au = a->n[u], av = a->n[v], bu = b->n[u], bv = b->n[v];
     double det = au * bv - av * bu;
     double la = hypot(au, av), lb = hypot(bu, bv);
-    if (!(fabs(det) > 0.2 * la * lb)) /* lines within ~11.5° of parallel */
-        return 0;
-    double ca = au * a->p[u] + av * a->p[v], cb = bu * b->p[u] + bv * b->p[v];
+    /* lines within ~11.5° of parallel meet far off the surface where it
+     * curves; the lines of two planes at a slight angle meet on their edge */
+    int slight = dot3(a->n, b->n) >= s->cos_feature;
+    if (!(fabs(det) > (slight ? 0.005 : 0.2) * la * lb)) return 0;
+    double ca = au * a->x[u] + av * a->x[v], cb = bu * b->x[u] + bv * b->x[v];
     double x = (ca * bv - av * cb) / det, y = (au * cb - ca * bu) / det;
     double tol = EPS * h;
     if (!(x >= lo[u] - tol && x <= lo[u] + h + tol && y >= lo[v] - tol && y <= lo[v] + h + tol))
@@ -440,10 +463,10 @@ static int face_point(const sweep *s, const sample *a, const sample *b, int f, c
 
 /* Eigen-decomposition of the symmetric 3×3 matrix a (cyclic Jacobi), then
  * the minimum-norm least-squares solution of a x = b, dropping eigenvalues
- * below 5 % of the largest (those directions are left at the mass point:
+ * below cut times the largest (those directions are left at the mass point:
  * a flat patch keeps its vertex at the patch centre, an edge keeps it on the
- * edge nearest the centre). */
-void mesh_qef_solve(double a[3][3], const double b[3], double x[3])
+ * edge nearest the centre; see planes_meet). */
+void mesh_qef_solve(double a[3][3], const double b[3], double cut, double x[3])
 {
     double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int sweep_i = 0; sweep_i < 12; sweep_i++) {
@@ -476,7 +499,7 @@ void mesh_qef_solve(double a[3][3], const double b[3], double x[3])
     x[0] = x[1] = x[2] = 0;
     for (int e = 0; e < 3; e++) {
         double l = a[e][e];
-        if (!(fabs(l) > 0.05 * lmax) || lmax == 0) continue;
+        if (!(fabs(l) > cut * lmax) || lmax == 0) continue;
         double proj = (v[0][e] * b[0] + v[1][e] * b[1] + v[2][e] * b[2]) / l;
         for (int k = 0; k < 3; k++)
             x[k] += proj * v[k][e];
@@ -492,7 +515,36 @@ static void loop_mass(const sample *smp, const int *loop, int nl, double mass[3]
             mass[c] += smp[loop[q]].p[c] / nl;
 }
 
-/* The QEF vertex of a loop's samples, clamped to the cell shrunk by EPS·h. */
+/* Whether the samples of a loop (QEF a, b about mass) lie on planes (see
+ * mesh_patch_of) that meet in one line or point: then that is where the
+ * vertex goes, however slight their angles, and the QEF is solved without
+ * dropping any direction.  Elsewhere eigenvalues under 5 % of the largest
+ * are dropped: a curved surface's normals spread a little over the cell,
+ * and planes that do not meet in one point (more features in the cell than
+ * one vertex can stand for) have only a compromise, kept near the mass. */
+static int planes_meet(const sample *smp, const int *loop, int nl, double a[3][3],
+                       const double b[3], const double mass[3], const double lo[3], double h)
+{
+    for (int q = 0; q < nl; q++)
+        if (!(smp[loop[q]].patch & MESH_PATCH_PLANAR)) return 0;
+    double ac[3][3], x[3];
+    memcpy(ac, a, sizeof ac);
+    mesh_qef_solve(ac, b, 1e-6, x);
+    /* (planes that meet far away, the thin facets fanning out of a hull's
+     * corner, meet nowhere in the cell) */
+    for (int c = 0; c < 3; c++)
+        if (!(mass[c] + x[c] >= lo[c] - h && mass[c] + x[c] <= lo[c] + 2 * h)) return 0;
+    for (int q = 0; q < nl; q++) {
+        const sample *e = &smp[loop[q]];
+        double rel[3] = {mass[0] + x[0] - e->x[0], mass[1] + x[1] - e->x[1],
+                         mass[2] + x[2] - e->x[2]};
+        if (!(fabs(dot3(e->n, rel)) <= 1e-4 * h)) return 0;
+    }
+    return 1;
+}
+
+/* The QEF vertex of a loop's samples (their tangent planes through their
+ * exact crossings), clamped to the cell shrunk by EPS·h. */
 static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int nl,
                         const double lo[3], double out[3])
 {
@@ -501,7 +553,7 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
     double a[3][3] = {{0}}, b[3] = {0, 0, 0};
     for (int q = 0; q < nl; q++) {
         const sample *e = &smp[loop[q]];
-        double rel[3] = {e->p[0] - mass[0], e->p[1] - mass[1], e->p[2] - mass[2]};
+        double rel[3] = {e->x[0] - mass[0], e->x[1] - mass[1], e->x[2] - mass[2]};
         double nd = dot3(e->n, rel);
         for (int r = 0; r < 3; r++) {
             b[r] += e->n[r] * nd;
@@ -515,6 +567,7 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
      * feature passes just outside the cell off both of its planes; pinned,
      * it slides along the wall to the best point there. */
     double h = s->d->h, blo[3], bhi[3], x[3] = {0, 0, 0};
+    double cut = planes_meet(smp, loop, nl, a, b, mass, lo, h) ? 1e-6 : 0.05;
     for (int c = 0; c < 3; c++) {
         blo[c] = lo[c] + EPS * h - mass[c];
         bhi[c] = lo[c] + (1 - EPS) * h - mass[c];
@@ -530,7 +583,7 @@ static void loop_vertex(const sweep *s, const sample *smp, const int *loop, int 
             }
             if (fixed >> r & 1) br[r] = 0;
         }
-        mesh_qef_solve(ar, br, y);
+        mesh_qef_solve(ar, br, cut, y);
         int moved = 0;
         for (int c = 0; c < 3; c++) {
             if (fixed >> c & 1) continue;
@@ -553,9 +606,10 @@ static int snap_face_point(sweep *s, const sample *a, const sample *b, int f, co
                            double fp[3])
 {
     double h = s->d->h, sp[2][3], nrm[2][3], blo[3], bhi[3];
+    uint32_t patch[2] = {a->patch, b->patch};
     for (int c = 0; c < 3; c++) {
-        sp[0][c] = a->p[c];
-        sp[1][c] = b->p[c];
+        sp[0][c] = a->x[c];
+        sp[1][c] = b->x[c];
         nrm[0][c] = a->n[c];
         nrm[1][c] = b->n[c];
         blo[c] = lo[c] + EPS * h;
@@ -563,8 +617,8 @@ static int snap_face_point(sweep *s, const sample *a, const sample *b, int f, co
     }
     blo[f / 2] = bhi[f / 2] = fp[f / 2];
     double want[3] = {fp[0], fp[1], fp[2]};
-    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, 2, f / 2,
-                             blo, bhi, want);
+    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, patch, 2,
+                             f / 2, blo, bhi, want);
     int inside = 1;
     for (int c = 0; c < 3; c++)
         inside &= (want[c] > blo[c] && want[c] < bhi[c]) || c == f / 2;
@@ -597,36 +651,42 @@ static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[
 }
 
 /* A loop vertex moved onto the exact surface, sharp edge or corner of its
- * samples.  On a sharp edge it may leave its cell by up to half a cell:
- * where a concave crease runs just beyond a face of the cell (the groove
- * between two nodes the node signs do not see), the crease is where the
- * vertex belongs.  Anywhere else, or where that would fold its fan (the
- * loop lv), it stays in the cell shrunk by EPS·h, where no fan triangle
- * folds (and no other cell's vertex is: a corner is one point, which only
- * the cell holding it may take). */
+ * samples.  On a sharp edge it may leave its cell by up to a cell: where a
+ * concave crease runs just beyond a face of the cell (the groove between
+ * two nodes the node signs do not see), or an acute ridge ends beyond the
+ * last node inside it (half a cell left a revolved triangle's apex ring
+ * jagged), the edge is where the vertex belongs.  Anywhere else it must
+ * stay in the cell shrunk by EPS·h, where no fan triangle folds (and no
+ * other cell's vertex is: a corner is one point, which only the cell
+ * holding it may take); where the snapped point is outside it, or would
+ * fold its fan (the loop lv), the QEF vertex x stays as it is (clamping the
+ * snapped point into the cell coordinate by coordinate slid it off both of
+ * its surfaces: 1.4 tolerances at rounded_cube.scad's edges, 2.9 so). */
 static int snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl, const lvert *lv,
                             int nv, const double lo[3], double x[3])
 {
     double h = s->d->h, sp[12][3], nrm[12][3], blo[3], bhi[3], y[3];
-    for (int q = 0; q < nl; q++)
+    uint32_t patch[12];
+    for (int q = 0; q < nl; q++) {
+        patch[q] = smp[loop[q]].patch;
         for (int c = 0; c < 3; c++) {
-            sp[q][c] = smp[loop[q]].p[c];
+            sp[q][c] = smp[loop[q]].x[c];
             nrm[q][c] = smp[loop[q]].n[c];
         }
+    }
     for (int c = 0; c < 3; c++) {
-        blo[c] = lo[c] - 0.5 * h;
-        bhi[c] = lo[c] + 1.5 * h;
+        blo[c] = lo[c] - h;
+        bhi[c] = lo[c] + 2 * h;
         y[c] = x[c];
     }
-    int surfaces =
-        mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, nl, -1, blo, bhi, y);
+    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, patch, nl,
+                             -1, blo, bhi, y);
     int kept = surfaces == 2 && fan_keeps(lv, nv, x, y, h), inside = 1;
-    for (int c = 0; c < 3; c++) {
+    for (int c = 0; c < 3; c++)
         inside &= y[c] >= lo[c] + EPS * h && y[c] <= lo[c] + (1 - EPS) * h;
-        if (!kept) y[c] = fmin(fmax(y[c], lo[c] + EPS * h), lo[c] + (1 - EPS) * h);
-    }
+    if (!kept && !inside) return 0;
     memcpy(x, y, sizeof y);
-    return surfaces >= 2 && (kept || inside);
+    return surfaces >= 2;
 }
 
 /* Triangulate a featureless loop among its own vertices, as a fan from some
@@ -721,7 +781,7 @@ static void cell(sweep *s, int i, int j, int mask)
             for (int c = 0; c < 3; c++)
                 navg[c] += a->n[c];
             for (int r = q + 1; r < nl; r++)
-                if (dot3(a->n, smp[loop[r]].n) < s->cos_feature) feature = 1;
+                if (creased(s, a, &smp[loop[r]])) feature = 1;
             double fp[3];
             if (face_point(s, a, b, segface[loop[q]], lo, fp)) {
                 int32_t lo_id = a->vid < b->vid ? a->vid : b->vid;
@@ -862,7 +922,8 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
     }
     if (o && o->progress && !s.oom) o->progress(o->progress_ud, "contouring", 1);
     if (s.oom ||
-        mesh_refine_edges(m, first_tri, o ? o->tolerance : 0, &s.snap, &s.vn, &s.pos) != 0) {
+        mesh_refine_edges(m, first_tri, o ? o->tolerance : 0, &s.snap, &s.vn, &s.pos) != 0 ||
+        mesh_unfold(m, first_tri, d->h) != 0) {
         snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");
         goto done;
     }

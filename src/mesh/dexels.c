@@ -27,6 +27,13 @@
  * exactly for boxes whose faces lie between rays.  The three families'
  * estimates are averaged, which cancels part of the error.
  *
+ * Patches: each crossing names the face of the primitive it lies on
+ * (mesh_patch_of), and after casting, a face whose crossings all share one
+ * normal is marked a plane (mark_planar).  Contouring then knows two
+ * crossings on two planes lie either side of a sharp edge at any angle: a
+ * polygon's facets at $fn = 30 meet at 12°, under the feature angle that
+ * tells a curved surface's spread of normals from an edge.
+ *
  * The thin-feature scan (mesh_dexels_thin) reads the same chords: two
  * consecutive crossings of a ray whose normals are nearly opposite bound a
  * wall (or a gap) whose thickness across it is the chord length times the
@@ -70,6 +77,7 @@ void mesh_dexels_free(mesh_dexels *d)
             free(d->hit[a]);
         }
         mesh_palette_free(&d->pal);
+        free(d->planar);
         free(d);
         d = next;
     }
@@ -164,6 +172,7 @@ static int cast_row(worker *w, int iv)
                 hp->n[0] = (float)nn[0];
                 hp->n[1] = (float)nn[1];
                 hp->n[2] = (float)nn[2];
+                hp->patch = mesh_patch_of(b->prim, b->part);
                 hp->enter = e == 0;
                 hp->color = mesh_palette_of(&d->pal, b->prim);
             }
@@ -307,6 +316,70 @@ int mesh_thread_count(const mesh_options *o)
     return n > 256 ? 256 : n;
 }
 
+/* The slot of patch k in an open-addressing set of cap slots. */
+static size_t patch_slot(const uint32_t *key, size_t cap, uint32_t k)
+{
+    size_t p = mesh_hash_mix(k) & (cap - 1);
+    while (key[p] && key[p] != k)
+        p = (p + 1) & (cap - 1);
+    return p;
+}
+
+uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p)
+{
+    p &= ~MESH_PATCH_PLANAR;
+    if (d->planar && d->planar[patch_slot(d->planar, d->planar_cap, p)] == p)
+        p |= MESH_PATCH_PLANAR;
+    return p;
+}
+
+/* Find the plane patches of d's crossings — those whose crossings all have
+ * one normal, to float rounding — into d->planar, and flag their crossings
+ * (MESH_PATCH_PLANAR); 0 or -1. */
+static int mark_planar(mesh_dexels *d)
+{
+    size_t total = d->nhit[0] + d->nhit[1] + d->nhit[2], cap = 64;
+    while (cap < 2 * total)
+        cap *= 2;
+    uint32_t *key = calloc(cap, sizeof *key);
+    float(*n)[3] = malloc(cap * sizeof *n);
+    uint8_t *curved = calloc(cap, 1);
+    size_t planes = 0;
+    int rc = key && n && curved ? 0 : -1;
+    for (int a = 0; a < 3 && rc == 0; a++)
+        for (size_t i = 0; i < d->nhit[a]; i++) {
+            const mesh_hit *hp = &d->hit[a][i];
+            size_t p = patch_slot(key, cap, hp->patch);
+            if (!key[p]) {
+                key[p] = hp->patch;
+                memcpy(n[p], hp->n, sizeof n[p]);
+                planes++;
+                continue;
+            }
+            for (int c = 0; c < 3; c++)
+                if (fabsf(n[p][c] - hp->n[c]) > 1e-6f && !curved[p]) {
+                    curved[p] = 1;
+                    planes--;
+                }
+        }
+    if (rc == 0) {
+        d->planar_cap = 64;
+        while (d->planar_cap < 2 * planes)
+            d->planar_cap *= 2;
+        d->planar = calloc(d->planar_cap, sizeof *d->planar);
+        if (!d->planar) rc = -1;
+    }
+    for (size_t p = 0; p < cap && rc == 0; p++)
+        if (key[p] && !curved[p]) d->planar[patch_slot(d->planar, d->planar_cap, key[p])] = key[p];
+    for (int a = 0; a < 3 && rc == 0; a++)
+        for (size_t i = 0; i < d->nhit[a]; i++)
+            d->hit[a][i].patch = mesh_patch_flagged(d, d->hit[a][i].patch);
+    free(key);
+    free(n);
+    free(curved);
+    return rc;
+}
+
 int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const double lo[3],
                      const double hi[3], mesh_dexels **out, char *err, size_t errlen)
 {
@@ -367,6 +440,11 @@ int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const 
             mesh_dexels_free(d);
             return rc;
         }
+    }
+    if (mark_planar(d) != 0) {
+        snprintf(err, errlen, "out of memory casting rays");
+        mesh_dexels_free(d);
+        return -1;
     }
     *out = d;
     return 0;

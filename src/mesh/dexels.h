@@ -12,6 +12,7 @@
 typedef struct mesh_hit {
     double t;
     float n[3];     /* outward unit normal at the crossing */
+    uint32_t patch; /* the face of the primitive it lies on (mesh_patch_of) */
     int16_t enter;  /* 1: the ray (going +axis) enters the solid here */
     uint16_t color; /* the surface's colour in the grid's palette; 0: none */
 } mesh_hit;
@@ -46,6 +47,10 @@ struct mesh_dexels {
     mesh_hit *hit[3];
     size_t nhit[3];
     mesh_palette pal; /* what the crossings' colours mean */
+    /* The plane patches among the crossings' (mesh_patch_of, without the
+     * flag), an open-addressing set of planar_cap slots, 0 empty. */
+    uint32_t *planar;
+    size_t planar_cap;
     /* The scene and root the rays were cast into (borrowed: the caller
      * keeps the scene while it has the sampling); contouring asks it for
      * exact points on sharp edges (snap.c). */
@@ -82,6 +87,33 @@ static inline uint64_t mesh_hash_mix(uint64_t k)
     k *= 0xff51afd7ed558ccdULL;
     k ^= k >> 33;
     return k;
+}
+
+/* A patch: one face of one primitive (a plane of a polyhedron, a sphere,
+ * a cylinder's side), named by a nonzero hash of the primitive and its
+ * part; the sampling sets MESH_PATCH_PLANAR on those whose every crossing
+ * has one normal.  Two crossings on two plane patches whose normals differ
+ * lie either side of a sharp edge, however slight its angle (a polygon's
+ * facets at $fn = 30 meet at 12°); two curved patches may join smoothly
+ * (a revolved profile's arcs). */
+#define MESH_PATCH_PLANAR 0x80000000u
+#define MESH_COS_PATCH 0.99985 /* cos 1° */
+static inline uint32_t mesh_patch_of(int32_t prim, uint16_t part)
+{
+    return ((uint32_t)mesh_hash_mix((uint64_t)(uint32_t)prim << 16 | part) & ~MESH_PATCH_PLANAR) |
+           1;
+}
+
+/* Patch p (mesh_patch_of) flagged MESH_PATCH_PLANAR when d holds it as a
+ * plane (dexels.c). */
+uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p);
+
+/* Whether surfaces of patches pa and pb, their normals' cosine c, meet at a
+ * sharp edge however slight: two planes of different patches more than 1°
+ * apart (the feature angle rules the rest). */
+static inline int mesh_planes_crease(uint32_t pa, uint32_t pb, double c)
+{
+    return pa != pb && (pa & pb & MESH_PATCH_PLANAR) && c < MESH_COS_PATCH;
 }
 
 /* An open-addressing map from nonzero 64-bit keys to vertex numbers
@@ -150,8 +182,9 @@ int mesh_push_triangle(mesh *m, int32_t a, int32_t b, int32_t c, uint16_t color)
 int mesh_set_palette(mesh *m, const mesh_palette *p);
 
 /* The minimum-norm least-squares solution x of a x = b for a symmetric 3×3
- * a (destroyed), eigenvalues below 5 % of the largest dropped (contour.c). */
-void mesh_qef_solve(double a[3][3], const double b[3], double x[3]);
+ * a (destroyed), eigenvalues below cut times the largest dropped
+ * (contour.c). */
+void mesh_qef_solve(double a[3][3], const double b[3], double cut, double x[3]);
 
 /* Contour vertices moved onto the exact surface (snap.c). */
 typedef struct mesh_snapper {
@@ -168,6 +201,11 @@ void mesh_snapper_free(mesh_snapper *sn);
  * there is none (or the sampling has no scene). */
 int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
                     double min_cos, double p[3], double pn[3]);
+/* mesh_snap_probe, the crossing on patch `patch` (0: any), its patch into
+ * *found (not NULL). */
+int mesh_snap_probe_patch(mesh_snapper *sn, const double x[3], const double n[3], double reach,
+                          double min_cos, uint32_t patch, double p[3], double pn[3],
+                          uint32_t *found);
 /* The exact normals of the contour's vertices that are ray crossings (the
  * others: 0, 0, 0), and which vertices lie on a sharp edge (put there by
  * mesh_snap), by vertex index; all NULL and cap 0 to start, then
@@ -175,10 +213,11 @@ int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], doub
 typedef struct mesh_vnormals {
     float (*n)[3];
     uint8_t *edge;
+    uint32_t *patch; /* the crossing's patch (mesh_hit.patch); 0: none */
     size_t cap;
 } mesh_vnormals;
 /* 0, or -1 when out of memory. */
-int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge);
+int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge, uint32_t patch);
 void mesh_vnormals_free(mesh_vnormals *vn);
 /* Split the edges of triangles [t0, m->nt) of m (made on sampling grid
  * sn->d) whose midpoints lie off the exact surface where it bends, by more
@@ -187,6 +226,10 @@ void mesh_vnormals_free(mesh_vnormals *vn);
  * gets the new vertices' normals.  0 or -1 when out of memory. */
 int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn,
                       mesh_fmap *pos);
+/* Flip the edges of triangles [t0, m->nt) of m (grid spacing h) whose two
+ * triangles lie back to back, where that leaves fewer such edges
+ * (unfold.c); 0 or -1 when out of memory. */
+int mesh_unfold(mesh *m, int t0, double h);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and
@@ -202,14 +245,17 @@ int mesh_simplify(mesh *m, double tol, double edge_tol, mesh_snapper *sn, int th
  * sag of their triangles, measured by rays up to reach from them
  * (balance.c); 0 or -1 when out of memory. */
 int mesh_balance(mesh *m, mesh_snapper *sn, double reach);
-/* Move x (a vertex placed from the ns samples sp, with normals nrm, of its
- * cell) onto the exact surfaces those samples lie on — up to three, told
- * apart by the feature angle: the surface, a sharp edge, a corner — as
- * nearly as the box [lo, hi] allows, the coordinate `fixed` (an axis, or
- * -1) kept.  Left where it is when it fits the surfaces there better, or
- * the samples hold more than three surfaces (0); else the number of
- * surfaces. */
-int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], int ns, int fixed,
-              const double lo[3], const double hi[3], double x[3]);
+/* Move x (a vertex placed from the ns samples sp, with normals nrm and
+ * patches patch (mesh_hit.patch; NULL: not known), of its cell) onto the
+ * exact surfaces those samples lie on — up to three: the surface, a sharp
+ * edge, a corner — as nearly as the box [lo, hi] allows, the coordinate
+ * `fixed` (an axis, or -1) kept.  Samples are one surface when they share
+ * a patch or their normals part by less than 1°; without patches, by less
+ * than the feature angle.  Left where it is when it fits the surfaces there
+ * better, or the samples hold more than three surfaces (0); else the number
+ * of surfaces. */
+int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3],
+              const uint32_t *patch, int ns, int fixed, const double lo[3], const double hi[3],
+              double x[3]);
 
 #endif

@@ -51,7 +51,7 @@ typedef struct edge_map {
     size_t cap;
 } edge_map;
 
-int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge)
+int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge, uint32_t patch)
 {
     if ((size_t)v >= vn->cap) {
         size_t cap = vn->cap ? vn->cap : 1024;
@@ -61,14 +61,18 @@ int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edg
         if (g) vn->n = g;
         uint8_t *e = realloc(vn->edge, cap);
         if (e) vn->edge = e;
-        if (!g || !e) return -1;
+        uint32_t *pa = realloc(vn->patch, cap * sizeof *pa);
+        if (pa) vn->patch = pa;
+        if (!g || !e || !pa) return -1;
         memset(g + vn->cap, 0, (cap - vn->cap) * sizeof *g);
         memset(e + vn->cap, 0, cap - vn->cap);
+        memset(pa + vn->cap, 0, (cap - vn->cap) * sizeof *pa);
         vn->cap = cap;
     }
     for (int c = 0; c < 3; c++)
         vn->n[v][c] = (float)n[c];
     vn->edge[v] = (uint8_t)on_edge;
+    vn->patch[v] = patch;
     return 0;
 }
 
@@ -76,9 +80,17 @@ void mesh_vnormals_free(mesh_vnormals *vn)
 {
     free(vn->n);
     free(vn->edge);
+    free(vn->patch);
     vn->n = NULL;
     vn->edge = NULL;
+    vn->patch = NULL;
     vn->cap = 0;
+}
+
+/* Vertex v's patch (mesh_hit.patch); 0 when not known. */
+static uint32_t vpatch(const mesh_vnormals *vn, int32_t v)
+{
+    return (size_t)v < vn->cap ? vn->patch[v] : 0;
 }
 
 /* Whether vertex v lies on a sharp edge (mesh_snap put it there). */
@@ -107,10 +119,12 @@ static int surface_normal(const mesh *m, mesh_snapper *sn, mesh_vnormals *vn, in
     if (on_edge(vn, v)) return 0;
     double x[3], p[3], d[3], h = sn->d->h;
     mesh_vertex_at(m, v, x);
-    if (!mesh_snap_probe(sn, x, dir, 1e-4 * h, -1, p, n)) return 0;
+    uint32_t patch = 0;
+    if (!mesh_snap_probe_patch(sn, x, dir, 1e-4 * h, -1, 0, p, n, &patch)) return 0;
     sub3(p, x, d);
     /* vertices are floats: on the surface to their rounding */
-    return dot3(d, d) < 1e-12 * h * h && dot3(n, n) > 0.25 && mesh_vnormal_set(vn, v, n, 0) == 0;
+    return dot3(d, d) < 1e-12 * h * h && dot3(n, n) > 0.25 &&
+           mesh_vnormal_set(vn, v, n, 0, patch) == 0;
 }
 
 /* Whether vertex v lies on the sharp edge between the surfaces of normals
@@ -263,8 +277,11 @@ static int round_once(mesh *m, int t0, int32_t v0, const uint8_t *touch, uint8_t
          * on the surface under the midpoint; the first that is off the edge
          * and keeps both triangles' halves the right way up. */
         double hit[3], hn[3] = {0, 0, 0}, off[3];
-        int found = 0, crease = 0;
-        for (int how = cos_ends < sn->cos_feature ? 0 : 1; how < (probe ? 2 : 1) && !found; how++) {
+        uint32_t hpatch = 0, ep_patch[2] = {vpatch(vn, va[ka]), vpatch(vn, va[(ka + 1) % 3])};
+        int found = 0, crease = 0,
+            sharp = cos_ends < sn->cos_feature ||
+                    (known && mesh_planes_crease(ep_patch[0], ep_patch[1], cos_ends));
+        for (int how = sharp ? 0 : 1; how < (probe ? 2 : 1) && !found; how++) {
             if (how == 0) {
                 /* From the middle of the edge; or, where the two opposite
                  * corners are on the sharp edge already, from the middle
@@ -284,8 +301,8 @@ static int round_once(mesh *m, int t0, int32_t v0, const uint8_t *touch, uint8_t
                     bhi[q] = fmax(p0[q], p1[q]) + 0.5 * h;
                     hit[q] = start[q] = 0.5 * (p0[q] + p1[q]);
                 }
-                int sr = mesh_snap(sn, (const double(*)[3])ep, (const double(*)[3])ends, 2, -1, blo,
-                                   bhi, hit);
+                int sr = mesh_snap(sn, (const double(*)[3])ep, (const double(*)[3])ends, ep_patch,
+                                   2, -1, blo, bhi, hit);
                 if (across) {
                     sub3(d, c, cd);
                     sub3(hit, c, cx);
@@ -294,7 +311,7 @@ static int round_once(mesh *m, int t0, int32_t v0, const uint8_t *touch, uint8_t
                 } else if (sr != 2) {
                     continue;
                 }
-            } else if (!mesh_snap_probe(sn, mid, dir, 0.5 * h, -1, hit, hn)) {
+            } else if (!mesh_snap_probe_patch(sn, mid, dir, 0.5 * h, -1, 0, hit, hn, &hpatch)) {
                 continue;
             }
             sub3(hit, mid, off);
@@ -313,7 +330,8 @@ static int round_once(mesh *m, int t0, int32_t v0, const uint8_t *touch, uint8_t
         int fresh;
         int32_t v = mesh_push_vertex(m, hit[0], hit[1], hit[2]),
                 *slot = mesh_fmap_slot(pos, mesh_pos_key(hit), &fresh);
-        if (v < 0 || !slot || mesh_vnormal_set(vn, v, hn, crease) != 0) goto done;
+        if (v < 0 || !slot || mesh_vnormal_set(vn, v, hn, crease, crease ? 0 : hpatch) != 0)
+            goto done;
         *slot = v;
         int32_t tri[2] = {t0 + ta, t0 + tb};
         int kk[2] = {ka, kb};

@@ -13,7 +13,11 @@
  * through that point crosses it there, with the exact normal.  The vertex
  * moves to the nearest point on all of those planes, and the next iteration
  * probes nearer.  A surface whose samples are coplanar is a plane already
- * known exactly and costs no ray.
+ * known exactly and costs no ray.  Given the samples' patches, two planes
+ * are two surfaces at any angle over 1° (mesh_planes_crease), and where the
+ * planes meet (in a line, or a point) the vertex goes there, however slight
+ * their angles; elsewhere the least-squares step drops the directions the
+ * planes hardly fix (as contour.c's QEF does).
  */
 #include "dexels.h"
 #include "../intervals/vec3.h"
@@ -24,6 +28,7 @@
 
 #define MAX_SURF 3
 #define ITERATIONS 3
+#define FIT 1e-4 /* cells: planes meet where a point lies this near all of them */
 
 int mesh_snapper_init(mesh_snapper *sn, const mesh_dexels *d, double cos_feature)
 {
@@ -41,8 +46,9 @@ void mesh_snapper_free(mesh_snapper *sn)
     sn->arena = NULL;
 }
 
-int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
-                    double min_cos, double p[3], double pn[3])
+int mesh_snap_probe_patch(mesh_snapper *sn, const double x[3], const double n[3], double reach,
+                          double min_cos, uint32_t patch, double p[3], double pn[3],
+                          uint32_t *found)
 {
     const mesh_dexels *d = sn->d;
     if (!sn->arena) return 0;
@@ -57,16 +63,25 @@ int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], doub
         for (int e = 0; e < 2; e++) {
             const iv_bound *b = e == 0 ? &l.v[k].enter : &l.v[k].exit;
             if (b->prim == IV_PRIM_NONE || !(fabs(b->t - reach) < best)) continue;
+            uint32_t bp = mesh_patch_of(b->prim, b->part);
+            if (patch && bp != (patch & ~MESH_PATCH_PLANAR)) continue;
             double bn[3];
             csg_scene_normal(d->scene, b, o, n, bn);
             if (dot3(bn, n) < min_cos) continue;
             best = fabs(b->t - reach);
+            if (found) *found = mesh_patch_flagged(d, bp);
             for (int c = 0; c < 3; c++) {
                 p[c] = o[c] + b->t * n[c];
                 pn[c] = bn[c];
             }
         }
     return best < INFINITY;
+}
+
+int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
+                    double min_cos, double p[3], double pn[3])
+{
+    return mesh_snap_probe_patch(sn, x, n, reach, min_cos, 0, p, pn, NULL);
 }
 
 /* How far x lies behind the plane through p with unit normal n. */
@@ -80,8 +95,8 @@ static double behind(const double p[3], const double n[3], const double x[3])
 /* The symmetric solve of contour.c (mesh_qef_solve) for the nearest point
  * to x on the planes (p[i], n[i]), the coordinate `fixed` (or none: -1)
  * kept: x moves by the minimum-norm least-squares step. */
-static void nearest_on_planes(const double (*p)[3], const double (*n)[3], int np, int fixed,
-                              double x[3])
+static void solve_planes(const double (*p)[3], const double (*n)[3], int np, int fixed, double cut,
+                         double x[3])
 {
     double a[3][3] = {{0}}, b[3] = {0, 0, 0}, dx[3];
     for (int i = 0; i < np; i++) {
@@ -93,9 +108,35 @@ static void nearest_on_planes(const double (*p)[3], const double (*n)[3], int np
                 if (v != fixed) a[u][v] += n[i][u] * n[i][v];
         }
     }
-    mesh_qef_solve(a, b, dx);
+    mesh_qef_solve(a, b, cut, dx);
     for (int c = 0; c < 3; c++)
         x[c] += dx[c];
+}
+
+/* The farthest x lies from one of the planes. */
+static double farthest(const double (*p)[3], const double (*n)[3], int np, const double x[3])
+{
+    double f = 0;
+    for (int i = 0; i < np; i++)
+        f = fmax(f, fabs(behind(p[i], n[i], x)));
+    return f;
+}
+
+/* solve_planes, every direction kept where the planes meet in a line or
+ * point (to tol): planes of distinct patches at slight angles; else those
+ * under 5 % of the largest eigenvalue dropped. */
+static void nearest_on_planes(const double (*p)[3], const double (*n)[3], int np, int fixed,
+                              int exact, double tol, double x[3])
+{
+    double y[3] = {x[0], x[1], x[2]};
+    if (exact) {
+        solve_planes(p, n, np, fixed, 1e-6, y);
+        if (farthest(p, n, np, y) <= tol) {
+            memcpy(x, y, sizeof y);
+            return;
+        }
+    }
+    solve_planes(p, n, np, fixed, 0.05, x);
 }
 
 /* The sum of squared distances of x from the planes. */
@@ -109,8 +150,9 @@ static double residual(const double (*p)[3], const double (*n)[3], int np, const
     return s;
 }
 
-int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], int ns, int fixed,
-              const double lo[3], const double hi[3], double x[3])
+int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3],
+              const uint32_t *patch, int ns, int fixed, const double lo[3], const double hi[3],
+              double x[3])
 {
     if (!sn->arena || ns <= 0) return 0;
     double h = sn->d->h;
@@ -118,15 +160,18 @@ int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], i
      * its representative; more than MAX_SURF surfaces: left as it is. */
     double p[MAX_SURF][3], n[MAX_SURF][3];
     int flat[MAX_SURF], np = 0;
+    uint32_t gp[MAX_SURF]; /* each surface's first patch */
     for (int i = 0; i < ns && i < 12; i++) {
         double ni[3] = {nrm[i][0], nrm[i][1], nrm[i][2]};
         double len = sqrt(dot3(ni, ni));
         if (!(len > 0.5)) return 0; /* a sample without a surface normal */
         int g = 0;
-        while (g < np && dot3(ni, n[g]) / len < sn->cos_feature)
+        while (g < np && (dot3(ni, n[g]) / len < sn->cos_feature ||
+                          (patch && mesh_planes_crease(gp[g], patch[i], dot3(ni, n[g]) / len))))
             g++;
         if (g == np) {
             if (np == MAX_SURF) return 0;
+            gp[np] = patch ? patch[i] : 0;
             flat[np] = 1;
             for (int c = 0; c < 3; c++) {
                 n[np][c] = ni[c] / len;
@@ -159,12 +204,13 @@ int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3], i
             for (int c = 0; c < 3; c++)
                 q[c] = x[c] + (tl > 1e-12 * h ? step * t[c] / tl : 0);
             double hp[3], hn[3];
-            if (mesh_snap_probe(sn, q, n[g], h, sn->cos_feature, hp, hn)) {
+            if (mesh_snap_probe_patch(sn, q, n[g], h, sn->cos_feature, gp[g], hp, hn, NULL)) {
                 memcpy(p[g], hp, sizeof hp);
                 memcpy(n[g], hn, sizeof hn);
             }
         }
-        nearest_on_planes((const double(*)[3])p, (const double(*)[3])n, np, fixed, x);
+        nearest_on_planes((const double(*)[3])p, (const double(*)[3])n, np, fixed, patch != NULL,
+                          FIT * h, x);
         for (int c = 0; c < 3; c++)
             x[c] = fmin(fmax(x[c], lo[c]), hi[c]);
         if (!curved) break;

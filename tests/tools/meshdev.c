@@ -3,6 +3,7 @@
  * surface, both ways (the symmetric Hausdorff distance), by rays.
  *
  *   meshdev MODEL.scad MESH --tolerance D [--name NAME] [--surface-only]
+ *           [--points FILE]
  *
  * The model is evaluated and sampled as `rayscad -o` does (default grid,
  * every CPU); MESH is read through OpenMesh.
@@ -18,7 +19,10 @@
  * where they were found); exits 0 when both are at most D, 1 when not, 2
  * on bad input.  --surface-only measures and bounds the second alone: how
  * closely the mesh follows every part of the surface (its sharp edges
- * above all) where the first is known to fail elsewhere.
+ * above all) where the first is known to fail elsewhere.  --points FILE
+ * writes every sample point farther than D ("way distance/D x y z", way 0
+ * from the mesh to the surface, 1 back) and prints how many there were of
+ * how many: where a mesh strays, and how much of it.
  */
 #include "trimesh.h"
 
@@ -27,6 +31,24 @@
 #include "../../src/rayscad/rayscad_internal.h"
 
 #define REACH 8 /* lines are cast out to REACH·D: past it, a point is "far" */
+
+/* The sample points seen, each way (0: mesh to surface), and those farther
+ * than tol, written to out (not NULL: --points) as "way distance/tol x y z". */
+typedef struct tally {
+    FILE *out;
+    double tol;
+    long seen[2], over[2];
+} tally;
+
+static void note(tally *t, int way, double d, const double p[3], double *worst, double where[3])
+{
+    t->seen[way]++;
+    if (d > t->tol) {
+        t->over[way]++;
+        if (t->out) fprintf(t->out, "%d %g %.9g %.9g %.9g\n", way, d / t->tol, p[0], p[1], p[2]);
+    }
+    keep_worst(d, p, worst, where);
+}
 
 /* The distance from p (on a triangle of unit normal n, first edge e) to the
  * model's surface, at most: the nearest crossing on lines through p — the
@@ -52,9 +74,10 @@ static double to_surface(mesh_snapper *sn, const double p[3], const double n[3],
     return best;
 }
 
-/* The largest to_surface of points on m's triangles (where: its point). */
+/* The largest to_surface of points on m's triangles (where: its point; each noted
+ * in t). */
 static double mesh_to_surface(const tmesh *m, mesh_snapper *sn, double h, double reach,
-                              double enough, double where[3])
+                              double enough, tally *t, double where[3])
 {
     double worst = 0;
     for (int q = 0; q < m->nt; q++) {
@@ -79,15 +102,15 @@ static double mesh_to_surface(const tmesh *m, mesh_snapper *sn, double h, double
                 double u = (double)i / steps, v = (double)j / steps, p[3];
                 for (int k = 0; k < 3; k++)
                     p[k] = a[k] + u * ab[k] + v * ac[k];
-                keep_worst(to_surface(sn, p, n, e, reach, enough), p, &worst, where);
+                note(t, 0, to_surface(sn, p, n, e, reach, enough), p, &worst, where);
             }
     }
     return worst;
 }
 
 /* The largest distance from the crossings of d (every grid) to m's
- * triangles in g. */
-static double surface_to_mesh(const mesh_dexels *d, grid *g, double where[3])
+ * triangles in g (each noted in ty). */
+static double surface_to_mesh(const mesh_dexels *d, grid *g, tally *ty, double where[3])
 {
     double worst = 0;
     for (; d; d = d->next)
@@ -105,7 +128,7 @@ static double surface_to_mesh(const mesh_dexels *d, grid *g, double where[3])
                     p[a] = d->org[a] + d->hit[a][k].t;
                     p[u] = d->org[u] + d->h * (double)(r % (size_t)(d->n[u] + 1));
                     p[v] = d->org[v] + d->h * (double)(r / (size_t)(d->n[u] + 1));
-                    keep_worst(grid_nearest(g, p), p, &worst, where);
+                    note(ty, 1, grid_nearest(g, p), p, &worst, where);
                 }
         }
     return worst;
@@ -113,7 +136,7 @@ static double surface_to_mesh(const mesh_dexels *d, grid *g, double where[3])
 
 int main(int argc, char **argv)
 {
-    const char *model = NULL, *path = NULL, *name = "";
+    const char *model = NULL, *path = NULL, *name = "", *points = NULL;
     double tol = 0;
     int surface_only = 0;
     for (int i = 1; i < argc; i++) {
@@ -123,6 +146,8 @@ int main(int argc, char **argv)
             tol = atof(argv[++i]);
         else if (i + 1 < argc && strcmp(argv[i], "--name") == 0)
             name = argv[++i];
+        else if (i + 1 < argc && strcmp(argv[i], "--points") == 0)
+            points = argv[++i];
         else if (!model)
             model = argv[i];
         else if (!path)
@@ -131,8 +156,8 @@ int main(int argc, char **argv)
             model = NULL, i = argc;
     }
     if (!model || !path || !(tol > 0)) {
-        fprintf(stderr,
-                "usage: meshdev MODEL.scad MESH --tolerance D [--name NAME] [--surface-only]\n");
+        fprintf(stderr, "usage: meshdev MODEL.scad MESH --tolerance D [--name NAME] "
+                        "[--surface-only] [--points FILE]\n");
         return 2;
     }
     char err[512] = "";
@@ -169,9 +194,14 @@ int main(int argc, char **argv)
         fprintf(stderr, "meshdev: out of memory\n");
         return 2;
     }
+    tally t = {points ? fopen(points, "w") : NULL, tol, {0, 0}, {0, 0}};
+    if (points && !t.out) {
+        fprintf(stderr, "meshdev: cannot write %s\n", points);
+        return 2;
+    }
     double wm[3] = {0, 0, 0}, ws[3] = {0, 0, 0};
-    double dm = surface_only ? 0 : mesh_to_surface(&m, &sn, d->h, REACH * tol, tol / 2, wm);
-    double ds = surface_to_mesh(d, &g, ws);
+    double dm = surface_only ? 0 : mesh_to_surface(&m, &sn, d->h, REACH * tol, tol / 2, &t, wm);
+    double ds = surface_to_mesh(d, &g, &t, ws);
     int fail = !(dm <= tol && ds <= tol);
     if (surface_only)
         printf("%-24s surface->mesh %9.3g  %5.2f D  %-4s  (at [%.4g, %.4g, %.4g])\n", name, ds,
@@ -181,6 +211,13 @@ int main(int argc, char **argv)
                "%.4g], [%.4g, %.4g, %.4g])\n",
                name, dm, ds, fmax(dm, ds) / tol, fail ? "FAIL" : "ok", wm[0], wm[1], wm[2], ws[0],
                ws[1], ws[2]);
+    if (t.out) {
+        fclose(t.out);
+        printf("%-24s beyond D: mesh->surface %ld of %ld points (%.3g %%), surface->mesh %ld of "
+               "%ld\n",
+               "", t.over[0], t.seen[0],
+               100.0 * (double)t.over[0] / (double)(t.seen[0] + !t.seen[0]), t.over[1], t.seen[1]);
+    }
     grid_free(&g);
     mesh_snapper_free(&sn);
     free(m.v);
