@@ -108,9 +108,10 @@ done:
  * split in two by mesh_balance, sharp edges and flat faces to EDGE times
  * it: the contour's points are samples, and between them the surface strays
  * a little further (a rim's arc between its points, the surface between the
- * balanced vertices).  Measured with tests/tools/meshdev (both ways, by
- * rays): the bench part and two spheres within 0.93-0.94 of the tolerance
- * at 0.008 and h 0.25 (1.8 and 1 gave 1.07-1.15). */
+ * balanced vertices; mesh_tighten splits the triangles where it strays past
+ * the tolerance).  Measured with tests/tools/meshdev (both ways, by rays):
+ * the bench part and two spheres within 0.93-0.94 of the tolerance at 0.008
+ * and h 0.25 (1.8 and 1 gave 1.07-1.15). */
 #define SMOOTH 1.6
 #define EDGE 0.9
 
@@ -123,7 +124,8 @@ int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_o
         return -1;
     }
     int rc = mesh_simplify(m, SMOOTH * tol, EDGE * tol, &sn, mesh_thread_count(o), err, errlen);
-    if (rc == 0 && mesh_balance(m, &sn, 4 * SMOOTH * tol) != 0) {
+    if (rc == 0 && (mesh_balance(m, &sn, 4 * SMOOTH * tol) != 0 ||
+                    mesh_tighten(m, &sn, tol, mesh_thread_count(o)) != 0)) {
         snprintf(err, errlen, "out of memory simplifying the mesh");
         rc = -1;
     }

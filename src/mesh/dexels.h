@@ -245,6 +245,11 @@ int mesh_simplify(mesh *m, double tol, double edge_tol, mesh_snapper *sn, int th
  * sag of their triangles, measured by rays up to reach from them
  * (balance.c); 0 or -1 when out of memory. */
 int mesh_balance(mesh *m, mesh_snapper *sn, double reach);
+/* Split the triangles of m's smooth parts that stray from the exact
+ * surface by more than tol, measured by rays at seven points each (on up
+ * to `threads` threads), on their longest edges, for a few rounds
+ * (tighten.c); 0 or -1 when out of memory. */
+int mesh_tighten(mesh *m, mesh_snapper *sn, double tol, int threads);
 /* Move x (a vertex placed from the ns samples sp, with normals nrm and
  * patches patch (mesh_hit.patch; NULL: not known), of its cell) onto the
  * exact surfaces those samples lie on — up to three: the surface, a sharp

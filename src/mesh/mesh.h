@@ -131,8 +131,9 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
 
 /* The contour m of d simplified to within about tol of the exact surface
  * (balance.c): mesh_simplify, the smooth parts' sag then split between
- * both sides of the surface by moving their vertices out (measured: within
- * 1.3 tol).  d's scene must still be there.  0, or -1 with a message. */
+ * both sides of the surface by moving their vertices out, and their
+ * triangles still farther than tol split (tighten.c).  d's scene must
+ * still be there.  0, or -1 with a message. */
 int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_options *o,
                          char *err, size_t errlen);
 

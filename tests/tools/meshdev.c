@@ -3,7 +3,7 @@
  * surface, both ways (the symmetric Hausdorff distance), by rays.
  *
  *   meshdev MODEL.scad MESH --tolerance D [--name NAME] [--surface-only]
- *           [--points FILE]
+ *           [--points FILE] [--share P]
  *
  * The model is evaluated and sampled as `rayscad -o` does (default grid,
  * every CPU); MESH is read through OpenMesh.
@@ -22,7 +22,9 @@
  * above all) where the first is known to fail elsewhere.  --points FILE
  * writes every sample point farther than D ("way distance/D x y z", way 0
  * from the mesh to the surface, 1 back) and prints how many there were of
- * how many: where a mesh strays, and how much of it.
+ * how many: where a mesh strays, and how much of it.  --share P passes a
+ * mesh whose samples lie farther than D, each way, for at most P % of them
+ * (and prints those counts).
  */
 #include "trimesh.h"
 
@@ -137,7 +139,7 @@ static double surface_to_mesh(const mesh_dexels *d, grid *g, tally *ty, double w
 int main(int argc, char **argv)
 {
     const char *model = NULL, *path = NULL, *name = "", *points = NULL;
-    double tol = 0;
+    double tol = 0, share = -1;
     int surface_only = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--surface-only") == 0)
@@ -148,6 +150,8 @@ int main(int argc, char **argv)
             name = argv[++i];
         else if (i + 1 < argc && strcmp(argv[i], "--points") == 0)
             points = argv[++i];
+        else if (i + 1 < argc && strcmp(argv[i], "--share") == 0)
+            share = atof(argv[++i]);
         else if (!model)
             model = argv[i];
         else if (!path)
@@ -157,7 +161,7 @@ int main(int argc, char **argv)
     }
     if (!model || !path || !(tol > 0)) {
         fprintf(stderr, "usage: meshdev MODEL.scad MESH --tolerance D [--name NAME] "
-                        "[--surface-only] [--points FILE]\n");
+                        "[--surface-only] [--points FILE] [--share P]\n");
         return 2;
     }
     char err[512] = "";
@@ -202,7 +206,10 @@ int main(int argc, char **argv)
     double wm[3] = {0, 0, 0}, ws[3] = {0, 0, 0};
     double dm = surface_only ? 0 : mesh_to_surface(&m, &sn, d->h, REACH * tol, tol / 2, &t, wm);
     double ds = surface_to_mesh(d, &g, &t, ws);
-    int fail = !(dm <= tol && ds <= tol);
+    double pct[2];
+    for (int w = 0; w < 2; w++)
+        pct[w] = 100.0 * (double)t.over[w] / (double)(t.seen[w] + !t.seen[w]);
+    int fail = share >= 0 ? !(pct[0] <= share && pct[1] <= share) : !(dm <= tol && ds <= tol);
     if (surface_only)
         printf("%-24s surface->mesh %9.3g  %5.2f D  %-4s  (at [%.4g, %.4g, %.4g])\n", name, ds,
                ds / tol, fail ? "FAIL" : "ok", ws[0], ws[1], ws[2]);
@@ -211,12 +218,13 @@ int main(int argc, char **argv)
                "%.4g], [%.4g, %.4g, %.4g])\n",
                name, dm, ds, fmax(dm, ds) / tol, fail ? "FAIL" : "ok", wm[0], wm[1], wm[2], ws[0],
                ws[1], ws[2]);
-    if (t.out) {
-        fclose(t.out);
+    if (t.out) fclose(t.out);
+    if (t.out || share >= 0) {
         printf("%-24s beyond D: mesh->surface %ld of %ld points (%.3g %%), surface->mesh %ld of "
-               "%ld\n",
-               "", t.over[0], t.seen[0],
-               100.0 * (double)t.over[0] / (double)(t.seen[0] + !t.seen[0]), t.over[1], t.seen[1]);
+               "%ld (%.3g %%)",
+               "", t.over[0], t.seen[0], pct[0], t.over[1], t.seen[1], pct[1]);
+        if (share >= 0) printf("; at most %g %% each way asked", share);
+        printf("\n");
     }
     grid_free(&g);
     mesh_snapper_free(&sn);
