@@ -333,35 +333,77 @@ uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p)
     return p;
 }
 
+/* The patches seen so far: an open-addressing table, kept at most half
+ * full, of each patch's first normal and whether another differed. */
+typedef struct patch_table {
+    uint32_t *key; /* 0: empty */
+    float (*n)[3];
+    uint8_t *curved;
+    size_t cap, used;
+} patch_table;
+
+static int table_alloc(patch_table *t, size_t cap)
+{
+    t->key = calloc(cap, sizeof *t->key);
+    t->n = malloc(cap * sizeof *t->n);
+    t->curved = calloc(cap, 1);
+    t->cap = cap;
+    t->used = 0;
+    return t->key && t->n && t->curved ? 0 : -1;
+}
+
+static void table_free(patch_table *t)
+{
+    free(t->key);
+    free(t->n);
+    free(t->curved);
+}
+
+/* Note a crossing of patch k with normal n; 0 or -1. */
+static int table_note(patch_table *t, uint32_t k, const float n[3])
+{
+    if (2 * (t->used + 1) > t->cap) {
+        patch_table g;
+        if (table_alloc(&g, 2 * t->cap) != 0) {
+            table_free(&g);
+            return -1;
+        }
+        for (size_t p = 0; p < t->cap; p++) {
+            if (!t->key[p]) continue;
+            size_t q = patch_slot(g.key, g.cap, t->key[p]);
+            g.key[q] = t->key[p];
+            memcpy(g.n[q], t->n[p], sizeof g.n[q]);
+            g.curved[q] = t->curved[p];
+            g.used++;
+        }
+        table_free(t);
+        *t = g;
+    }
+    size_t p = patch_slot(t->key, t->cap, k);
+    if (!t->key[p]) {
+        t->key[p] = k;
+        memcpy(t->n[p], n, sizeof t->n[p]);
+        t->used++;
+        return 0;
+    }
+    for (int c = 0; c < 3; c++)
+        if (fabsf(t->n[p][c] - n[c]) > 1e-6f) t->curved[p] = 1;
+    return 0;
+}
+
 /* Find the plane patches of d's crossings — those whose crossings all have
  * one normal, to float rounding — into d->planar, and flag their crossings
  * (MESH_PATCH_PLANAR); 0 or -1. */
 static int mark_planar(mesh_dexels *d)
 {
-    size_t total = d->nhit[0] + d->nhit[1] + d->nhit[2], cap = 64;
-    while (cap < 2 * total)
-        cap *= 2;
-    uint32_t *key = calloc(cap, sizeof *key);
-    float(*n)[3] = malloc(cap * sizeof *n);
-    uint8_t *curved = calloc(cap, 1);
-    size_t planes = 0;
-    int rc = key && n && curved ? 0 : -1;
+    patch_table t;
+    int rc = table_alloc(&t, 1024);
     for (int a = 0; a < 3 && rc == 0; a++)
-        for (size_t i = 0; i < d->nhit[a]; i++) {
-            const mesh_hit *hp = &d->hit[a][i];
-            size_t p = patch_slot(key, cap, hp->patch);
-            if (!key[p]) {
-                key[p] = hp->patch;
-                memcpy(n[p], hp->n, sizeof n[p]);
-                planes++;
-                continue;
-            }
-            for (int c = 0; c < 3; c++)
-                if (fabsf(n[p][c] - hp->n[c]) > 1e-6f && !curved[p]) {
-                    curved[p] = 1;
-                    planes--;
-                }
-        }
+        for (size_t i = 0; i < d->nhit[a] && rc == 0; i++)
+            rc = table_note(&t, d->hit[a][i].patch, d->hit[a][i].n);
+    size_t planes = 0;
+    for (size_t p = 0; p < t.cap && rc == 0; p++)
+        planes += t.key[p] && !t.curved[p];
     if (rc == 0) {
         d->planar_cap = 64;
         while (d->planar_cap < 2 * planes)
@@ -369,14 +411,13 @@ static int mark_planar(mesh_dexels *d)
         d->planar = calloc(d->planar_cap, sizeof *d->planar);
         if (!d->planar) rc = -1;
     }
-    for (size_t p = 0; p < cap && rc == 0; p++)
-        if (key[p] && !curved[p]) d->planar[patch_slot(d->planar, d->planar_cap, key[p])] = key[p];
+    for (size_t p = 0; p < t.cap && rc == 0; p++)
+        if (t.key[p] && !t.curved[p])
+            d->planar[patch_slot(d->planar, d->planar_cap, t.key[p])] = t.key[p];
     for (int a = 0; a < 3 && rc == 0; a++)
         for (size_t i = 0; i < d->nhit[a]; i++)
             d->hit[a][i].patch = mesh_patch_flagged(d, d->hit[a][i].patch);
-    free(key);
-    free(n);
-    free(curved);
+    table_free(&t);
     return rc;
 }
 
