@@ -28,8 +28,10 @@
 typedef struct fold_mesh {
     mesh *m;
     int t0;
-    int32_t *opp; /* half-edge 3·t + k (tv[k] → tv[k + 1], t from t0) → its twin; -1 */
-    double min2;  /* |cross|² below which a triangle has no area */
+    int32_t *opp;   /* half-edge 3·t + k (tv[k] → tv[k + 1], t from t0) → its twin; -1 */
+    double min2;    /* |cross|² below which a triangle has no area */
+    double (*n)[3]; /* each triangle's unit normal, when has */
+    uint8_t *has;
 } fold_mesh;
 
 static int32_t *corners(const fold_mesh *f, int32_t t)
@@ -53,16 +55,20 @@ static int unit_normal(const mesh *m, int32_t a, int32_t b, int32_t c, double mi
     return 1;
 }
 
+/* Cache triangle t's unit normal. */
+static void note_normal(fold_mesh *f, int32_t t)
+{
+    const int32_t *tv = corners(f, t);
+    f->has[t] = (uint8_t)unit_normal(f->m, tv[0], tv[1], tv[2], f->min2, f->n[t]);
+}
+
 /* Whether the triangle of half-edge x (its normal nx, 0 when it has no
  * area) is folded against the triangle across x. */
 static int folded_across(const fold_mesh *f, int32_t x, const double nx[3], int has)
 {
     int32_t y = f->opp[x];
-    if (y < 0) return 0;
-    const int32_t *tv = corners(f, y / 3);
-    double ny[3];
-    if (!has || !unit_normal(f->m, tv[0], tv[1], tv[2], f->min2, ny)) return 0;
-    return dot3(nx, ny) < COS_FOLD;
+    if (y < 0 || !has || !f->has[y / 3]) return 0;
+    return dot3(nx, f->n[y / 3]) < COS_FOLD;
 }
 
 /* Whether an edge joins the start of half-edge x to d: the half-edges out
@@ -101,9 +107,10 @@ static int try_flip(fold_mesh *f, int32_t x)
     int32_t a = tv[k], b = tv[(k + 1) % 3], c = tv[(k + 2) % 3], d = uv[(j + 2) % 3];
     if (c == d) return 0;
     mesh *m = f->m;
-    double n1[3], n2[3], n3[3], n4[3];
-    int h1 = unit_normal(m, a, b, c, f->min2, n1), h2 = unit_normal(m, b, a, d, f->min2, n2);
-    if (!h1 || !h2 || !(dot3(n1, n2) < COS_FOLD)) return 0;
+    if (!f->has[t] || !f->has[u] || !(dot3(f->n[t], f->n[u]) < COS_FOLD)) return 0;
+    const double *n1 = f->n[t], *n2 = f->n[u];
+    int h1 = 1, h2 = 1;
+    double n3[3], n4[3];
     /* the quad's sides: b → c, c → a (in t), a → d, d → b (in u) */
     int32_t bc = 3 * t + (k + 1) % 3, ca = 3 * t + (k + 2) % 3, ad = 3 * u + (j + 1) % 3,
             db = 3 * u + (j + 2) % 3;
@@ -123,6 +130,8 @@ static int try_flip(fold_mesh *f, int32_t x)
     link(f, 3 * u, odb);
     link(f, 3 * u + 1, obc);
     link(f, 3 * t + 2, 3 * u + 2);
+    note_normal(f, t);
+    note_normal(f, u);
     return 1;
 }
 
@@ -170,11 +179,20 @@ int mesh_unfold(mesh *m, int t0, double h)
     if (m->nt <= t0) return 0;
     size_t nt = (size_t)(m->nt - t0);
     if (3 * nt > INT32_MAX) return 0;
-    fold_mesh f = {m, t0, malloc(3 * nt * sizeof *f.opp), 1e-12 * h * h * h * h};
-    if (!f.opp || twins(&f, nt) != 0) {
+    fold_mesh f = {m,
+                   t0,
+                   malloc(3 * nt * sizeof *f.opp),
+                   1e-12 * h * h * h * h,
+                   malloc(nt * sizeof *f.n),
+                   malloc(nt)};
+    if (!f.opp || !f.n || !f.has || twins(&f, nt) != 0) {
         free(f.opp);
+        free(f.n);
+        free(f.has);
         return -1;
     }
+    for (size_t t = 0; t < nt; t++)
+        note_normal(&f, (int32_t)t);
     for (int pass = 0; pass < PASSES; pass++) {
         int flipped = 0;
         for (size_t x = 0; x < 3 * nt; x++)
@@ -182,5 +200,7 @@ int mesh_unfold(mesh *m, int t0, double h)
         if (!flipped) break;
     }
     free(f.opp);
+    free(f.n);
+    free(f.has);
     return 0;
 }
