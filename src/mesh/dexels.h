@@ -166,6 +166,11 @@ static inline void mesh_vertex_at(const mesh *m, int32_t i, double p[3])
  * (nothing to free). */
 int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan);
 
+/* Each half-edge x = 3·(t − t0) + k of triangles [t0, m->nt) (corner k to
+ * corner k + 1) paired with its twin running the other way in opp[x] (3·(nt
+ * − t0) entries), or -1 where it has none; 0, or -1 when out of memory. */
+int mesh_half_twins(const mesh *m, int32_t t0, int32_t *opp);
+
 /* Move vertex v to `to`, unless that turns one of the nf triangles fan
  * around it by acos(min_cos) or more from its normal now, or leaves one
  * with twice its area squared at most min2 (a fan of more than 64: never);

@@ -65,6 +65,44 @@ int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan)
     return 0;
 }
 
+int mesh_half_twins(const mesh *m, int32_t t0, int32_t *opp)
+{
+    size_t nt = (size_t)(m->nt > t0 ? m->nt - t0 : 0), cap = 16;
+    while (cap < 6 * nt)
+        cap *= 2;
+    uint64_t *key = calloc(cap, sizeof *key);
+    int32_t *at = malloc(cap * sizeof *at);
+    if (!key || !at) {
+        free(key);
+        free(at);
+        return -1;
+    }
+    for (size_t x = 0; x < 3 * nt; x++) {
+        opp[x] = -1;
+        const int32_t *tv = &m->t[3 * ((size_t)t0 + x / 3)];
+        int32_t a = tv[x % 3], b = tv[(x % 3 + 1) % 3];
+        /* the twin's key is this half-edge's reversed */
+        uint64_t mine = (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1),
+                 want = (uint64_t)(b + 1) << 32 | (uint64_t)(a + 1);
+        size_t p = mesh_hash_mix(want) & (cap - 1);
+        while (key[p] && key[p] != want)
+            p = (p + 1) & (cap - 1);
+        if (key[p] == want && opp[at[p]] < 0) {
+            opp[x] = at[p];
+            opp[at[p]] = (int32_t)x;
+            continue;
+        }
+        p = mesh_hash_mix(mine) & (cap - 1);
+        while (key[p] && key[p] != mine)
+            p = (p + 1) & (cap - 1);
+        key[p] = mine;
+        at[p] = (int32_t)x;
+    }
+    free(key);
+    free(at);
+    return 0;
+}
+
 /* The tri_normal3 of triangle t of m. */
 static void triangle_normal(const mesh *m, int32_t t, double n[3])
 {

@@ -106,54 +106,23 @@ static int strays(const mesh *m, mesh_snapper *sn, int32_t t, double tol)
     return 0;
 }
 
-/* Half-edges by their ends: (a + 1) << 32 | (b + 1) → 3·t + k. */
-typedef struct half_map {
-    uint64_t *key;
-    int32_t *at;
-    size_t cap;
-} half_map;
-
-static uint64_t half_key(int32_t a, int32_t b)
-{
-    return (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1);
-}
-
-static int32_t half_find(const half_map *h, int32_t a, int32_t b)
-{
-    uint64_t k = half_key(a, b);
-    for (size_t p = mesh_hash_mix(k) & (h->cap - 1); h->key[p]; p = (p + 1) & (h->cap - 1))
-        if (h->key[p] == k) return h->at[p];
-    return -1;
-}
-
-static void half_put(half_map *h, int32_t a, int32_t b, int32_t at)
-{
-    uint64_t k = half_key(a, b);
-    size_t p = mesh_hash_mix(k) & (h->cap - 1);
-    while (h->key[p] && h->key[p] != k)
-        p = (p + 1) & (h->cap - 1);
-    h->key[p] = k;
-    h->at[p] = at;
-}
+/* A round's view of the mesh: each half-edge's twin (mesh_half_twins)
+ * and each triangle's tri_normal3, as the round began. */
+typedef struct round_view {
+    int32_t *opp;
+    double (*tn)[3];
+} round_view;
 
 /* Whether triangle t bends by less than 20° against each neighbour: on a
  * smooth part (at a sharp edge or tip the contour's own error is the
  * larger, and halving triangles there does not end). */
-static int smooth(const mesh *m, const half_map *hm, int32_t t)
+static int smooth(const round_view *rv, int32_t t)
 {
-    double p[3], q[3], r[3], n[3], o[3];
-    corner(m, t, 0, p);
-    corner(m, t, 1, q);
-    corner(m, t, 2, r);
-    tri_normal3(p, q, r, n);
+    const double *n = rv->tn[t];
     for (int k = 0; k < 3; k++) {
-        int32_t a = m->t[3 * (size_t)t + k], b = m->t[3 * (size_t)t + (k + 1) % 3];
-        int32_t h = half_find(hm, b, a);
+        int32_t h = rv->opp[3 * t + k];
         if (h < 0) return 0;
-        corner(m, h / 3, 0, p);
-        corner(m, h / 3, 1, q);
-        corner(m, h / 3, 2, r);
-        tri_normal3(p, q, r, o);
+        const double *o = rv->tn[h / 3];
         if (!(dot3(n, o) >= COS_SMOOTH * sqrt(dot3(n, n) * dot3(o, o)))) return 0;
     }
     return 1;
@@ -191,7 +160,7 @@ static int split_side(mesh *m, int32_t t, int k, int32_t v)
  * takes every nth from w, with a snapper of its own. */
 typedef struct measure_job {
     const mesh *m;
-    const half_map *hm;
+    const round_view *rv;
     const uint8_t *look;
     uint8_t *bad; /* out: smooth and straying */
     const mesh_snapper *proto;
@@ -208,14 +177,14 @@ static void *measure(void *arg)
         return NULL;
     }
     for (int32_t t = j->w; t < j->m->nt; t += j->n)
-        j->bad[t] = j->look[t] && smooth(j->m, j->hm, t) && strays(j->m, &sn, t, j->tol);
+        j->bad[t] = j->look[t] && smooth(j->rv, t) && strays(j->m, &sn, t, j->tol);
     mesh_snapper_free(&sn);
     return NULL;
 }
 
 /* bad[t] for the triangles of m flagged in look, on up to `threads`
  * threads; 0 or -1. */
-static int measure_all(const mesh *m, const half_map *hm, const uint8_t *look, uint8_t *bad,
+static int measure_all(const mesh *m, const round_view *rv, const uint8_t *look, uint8_t *bad,
                        const mesh_snapper *sn, double tol, int threads)
 {
     enum { MAX_THREADS = 64 };
@@ -224,7 +193,7 @@ static int measure_all(const mesh *m, const half_map *hm, const uint8_t *look, u
     pthread_t th[MAX_THREADS];
     int started[MAX_THREADS] = {0}, failed = 0;
     for (int w = 0; w < n; w++) {
-        job[w] = (measure_job){m, hm, look, bad, sn, tol, n, w, 0};
+        job[w] = (measure_job){m, rv, look, bad, sn, tol, n, w, 0};
         if (w > 0) started[w] = pthread_create(&th[w], NULL, measure, &job[w]) == 0;
     }
     measure(&job[0]);
@@ -245,19 +214,18 @@ static int round_once(mesh *m, mesh_snapper *sn, double tol, int threads, mesh_f
                       const uint8_t *look, uint8_t **next, int *split)
 {
     int32_t nt = m->nt;
-    half_map hm = {NULL, NULL, 16};
-    while (hm.cap < 6 * (size_t)nt)
-        hm.cap *= 2;
-    hm.key = calloc(hm.cap, sizeof *hm.key);
-    hm.at = malloc(hm.cap * sizeof *hm.at);
+    round_view rv = {malloc(3 * (size_t)nt * sizeof *rv.opp), malloc((size_t)nt * sizeof *rv.tn)};
     uint8_t *used = calloc((size_t)nt, 1), *nx = calloc(3 * (size_t)nt, 1),
             *bad = malloc((size_t)nt);
     int rc = -1;
-    if (!hm.key || !hm.at || !used || !nx || !bad) goto done;
-    for (int32_t t = 0; t < nt; t++)
+    if (!rv.opp || !rv.tn || !used || !nx || !bad || mesh_half_twins(m, 0, rv.opp) != 0) goto done;
+    for (int32_t t = 0; t < nt; t++) {
+        double p[3][3];
         for (int k = 0; k < 3; k++)
-            half_put(&hm, m->t[3 * (size_t)t + k], m->t[3 * (size_t)t + (k + 1) % 3], 3 * t + k);
-    if (measure_all(m, &hm, look, bad, sn, tol, threads) != 0) goto done;
+            corner(m, t, k, p[k]);
+        tri_normal3(p[0], p[1], p[2], rv.tn[t]);
+    }
+    if (measure_all(m, &rv, look, bad, sn, tol, threads) != 0) goto done;
     double min2 = 1e-12 * tol * tol * tol * tol;
     for (int32_t t = 0; t < nt; t++) {
         if (!bad[t] || used[t]) continue;
@@ -271,18 +239,13 @@ static int round_once(mesh *m, mesh_snapper *sn, double tol, int threads, mesh_f
             sub3(p[(i + 1) % 3], p[i], d);
             if (dot3(d, d) > best) best = dot3(d, d), k = i;
         }
-        int32_t a = m->t[3 * (size_t)t + k], b = m->t[3 * (size_t)t + (k + 1) % 3];
-        int32_t h = half_find(&hm, b, a);
+        int32_t h = rv.opp[3 * t + k];
         if (h < 0 || used[h / 3]) continue;
         int32_t o = h / 3;
         int j = h % 3;
-        if (!smooth(m, &hm, o)) continue;
-        double n0[3], n1[3], c[3], dir[3], mid[3], hit[3], hn[3];
-        tri_normal3(p[0], p[1], p[2], n0);
-        double q[3][3];
-        for (int i = 0; i < 3; i++)
-            corner(m, o, i, q[i]);
-        tri_normal3(q[0], q[1], q[2], n1);
+        if (!smooth(&rv, o)) continue;
+        const double *n0 = rv.tn[t], *n1 = rv.tn[o];
+        double c[3], dir[3], mid[3], hit[3], hn[3];
         double l0 = sqrt(dot3(n0, n0)), l1 = sqrt(dot3(n1, n1));
         if (!(l0 > 0 && l1 > 0)) continue;
         for (int i = 0; i < 3; i++) {
@@ -313,8 +276,8 @@ static int round_once(mesh *m, mesh_snapper *sn, double tol, int threads, mesh_f
     }
     rc = 0;
 done:
-    free(hm.key);
-    free(hm.at);
+    free(rv.opp);
+    free(rv.tn);
     free(used);
     free(bad);
     *next = nx;

@@ -62,12 +62,12 @@ static void note_normal(fold_mesh *f, int32_t t)
     f->has[t] = (uint8_t)unit_normal(f->m, tv[0], tv[1], tv[2], f->min2, f->n[t]);
 }
 
-/* Whether the triangle of half-edge x (its normal nx, 0 when it has no
- * area) is folded against the triangle across x. */
-static int folded_across(const fold_mesh *f, int32_t x, const double nx[3], int has)
+/* Whether the triangle of half-edge x (its unit normal nx) is folded
+ * against the triangle across x. */
+static int folded_across(const fold_mesh *f, int32_t x, const double nx[3])
 {
     int32_t y = f->opp[x];
-    if (y < 0 || !has || !f->has[y / 3]) return 0;
+    if (y < 0 || !f->has[y / 3]) return 0;
     return dot3(nx, f->n[y / 3]) < COS_FOLD;
 }
 
@@ -109,18 +109,16 @@ static int try_flip(fold_mesh *f, int32_t x)
     mesh *m = f->m;
     if (!f->has[t] || !f->has[u] || !(dot3(f->n[t], f->n[u]) < COS_FOLD)) return 0;
     const double *n1 = f->n[t], *n2 = f->n[u];
-    int h1 = 1, h2 = 1;
     double n3[3], n4[3];
     /* the quad's sides: b → c, c → a (in t), a → d, d → b (in u) */
     int32_t bc = 3 * t + (k + 1) % 3, ca = 3 * t + (k + 2) % 3, ad = 3 * u + (j + 1) % 3,
             db = 3 * u + (j + 2) % 3;
-    int before = 1 + folded_across(f, bc, n1, h1) + folded_across(f, ca, n1, h1) +
-                 folded_across(f, ad, n2, h2) + folded_across(f, db, n2, h2);
+    int before = 1 + folded_across(f, bc, n1) + folded_across(f, ca, n1) +
+                 folded_across(f, ad, n2) + folded_across(f, db, n2);
     /* after: (c, a, d) holds c → a and a → d, (d, b, c) holds d → b and b → c */
     if (!unit_normal(m, c, a, d, f->min2, n3) || !unit_normal(m, d, b, c, f->min2, n4)) return 0;
-    int after = (dot3(n3, n4) < COS_FOLD) + folded_across(f, ca, n3, 1) +
-                folded_across(f, ad, n3, 1) + folded_across(f, db, n4, 1) +
-                folded_across(f, bc, n4, 1);
+    int after = (dot3(n3, n4) < COS_FOLD) + folded_across(f, ca, n3) + folded_across(f, ad, n3) +
+                folded_across(f, db, n4) + folded_across(f, bc, n4);
     if (after >= before || has_edge(f, ca, d)) return 0;
     int32_t oca = f->opp[ca], oad = f->opp[ad], odb = f->opp[db], obc = f->opp[bc];
     tv[0] = c, tv[1] = a, tv[2] = d; /* c → a, a → d, d → c */
@@ -135,45 +133,6 @@ static int try_flip(fold_mesh *f, int32_t x)
     return 1;
 }
 
-/* f->opp from the triangles' edges; 0 or -1. */
-static int twins(fold_mesh *f, size_t nt)
-{
-    size_t cap = 16;
-    while (cap < 6 * nt)
-        cap *= 2;
-    uint64_t *key = calloc(cap, sizeof *key);
-    int32_t *at = malloc(cap * sizeof *at);
-    if (!key || !at) {
-        free(key);
-        free(at);
-        return -1;
-    }
-    for (size_t x = 0; x < 3 * nt; x++) {
-        f->opp[x] = -1;
-        const int32_t *tv = corners(f, (int32_t)(x / 3));
-        int32_t a = tv[x % 3], b = tv[(x % 3 + 1) % 3];
-        /* the twin's key is this half-edge's reversed */
-        uint64_t mine = (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1),
-                 want = (uint64_t)(b + 1) << 32 | (uint64_t)(a + 1);
-        size_t p = mesh_hash_mix(want) & (cap - 1);
-        while (key[p] && key[p] != want)
-            p = (p + 1) & (cap - 1);
-        if (key[p] == want && f->opp[at[p]] < 0) {
-            f->opp[x] = at[p];
-            f->opp[at[p]] = (int32_t)x;
-            continue;
-        }
-        p = mesh_hash_mix(mine) & (cap - 1);
-        while (key[p] && key[p] != mine)
-            p = (p + 1) & (cap - 1);
-        key[p] = mine;
-        at[p] = (int32_t)x;
-    }
-    free(key);
-    free(at);
-    return 0;
-}
-
 int mesh_unfold(mesh *m, int t0, double h)
 {
     if (m->nt <= t0) return 0;
@@ -185,7 +144,7 @@ int mesh_unfold(mesh *m, int t0, double h)
                    1e-12 * h * h * h * h,
                    malloc(nt * sizeof *f.n),
                    malloc(nt)};
-    if (!f.opp || !f.n || !f.has || twins(&f, nt) != 0) {
+    if (!f.opp || !f.n || !f.has || mesh_half_twins(m, t0, f.opp) != 0) {
         free(f.opp);
         free(f.n);
         free(f.has);
