@@ -77,7 +77,8 @@ void mesh_dexels_free(mesh_dexels *d)
             free(d->hit[a]);
         }
         mesh_palette_free(&d->pal);
-        free(d->planar);
+        free(d->patch_key);
+        free(d->patch_curved);
         free(d);
         d = next;
     }
@@ -328,9 +329,9 @@ static size_t patch_slot(const uint32_t *key, size_t cap, uint32_t k)
 uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p)
 {
     p &= ~MESH_PATCH_PLANAR;
-    if (d->planar && d->planar[patch_slot(d->planar, d->planar_cap, p)] == p)
-        p |= MESH_PATCH_PLANAR;
-    return p;
+    if (!d->patch_key) return p;
+    size_t q = patch_slot(d->patch_key, d->patch_cap, p);
+    return d->patch_key[q] == p && !d->patch_curved[q] ? p | MESH_PATCH_PLANAR : p;
 }
 
 /* The patches seen so far: an open-addressing table, kept at most half
@@ -392,8 +393,8 @@ static int table_note(patch_table *t, uint32_t k, const float n[3])
 }
 
 /* Find the plane patches of d's crossings — those whose crossings all have
- * one normal, to float rounding — into d->planar, and flag their crossings
- * (MESH_PATCH_PLANAR); 0 or -1. */
+ * one normal, to float rounding — keeping the table in d, and flag their
+ * crossings (MESH_PATCH_PLANAR); 0 or -1. */
 static int mark_planar(mesh_dexels *d)
 {
     patch_table t;
@@ -401,24 +402,18 @@ static int mark_planar(mesh_dexels *d)
     for (int a = 0; a < 3 && rc == 0; a++)
         for (size_t i = 0; i < d->nhit[a] && rc == 0; i++)
             rc = table_note(&t, d->hit[a][i].patch, d->hit[a][i].n);
-    size_t planes = 0;
-    for (size_t p = 0; p < t.cap && rc == 0; p++)
-        planes += t.key[p] && !t.curved[p];
-    if (rc == 0) {
-        d->planar_cap = 64;
-        while (d->planar_cap < 2 * planes)
-            d->planar_cap *= 2;
-        d->planar = calloc(d->planar_cap, sizeof *d->planar);
-        if (!d->planar) rc = -1;
+    if (rc != 0) {
+        table_free(&t);
+        return -1;
     }
-    for (size_t p = 0; p < t.cap && rc == 0; p++)
-        if (t.key[p] && !t.curved[p])
-            d->planar[patch_slot(d->planar, d->planar_cap, t.key[p])] = t.key[p];
-    for (int a = 0; a < 3 && rc == 0; a++)
+    free(t.n);
+    d->patch_key = t.key;
+    d->patch_curved = t.curved;
+    d->patch_cap = t.cap;
+    for (int a = 0; a < 3; a++)
         for (size_t i = 0; i < d->nhit[a]; i++)
             d->hit[a][i].patch = mesh_patch_flagged(d, d->hit[a][i].patch);
-    table_free(&t);
-    return rc;
+    return 0;
 }
 
 int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const double lo[3],

@@ -47,10 +47,12 @@ struct mesh_dexels {
     mesh_hit *hit[3];
     size_t nhit[3];
     mesh_palette pal; /* what the crossings' colours mean */
-    /* The plane patches among the crossings' (mesh_patch_of, without the
-     * flag), an open-addressing set of planar_cap slots, 0 empty. */
-    uint32_t *planar;
-    size_t planar_cap;
+    /* The crossings' patches (mesh_patch_of, without the flag), an
+     * open-addressing set of patch_cap slots, 0 empty; curved where two of
+     * a patch's crossings had different normals (mark_planar). */
+    uint32_t *patch_key;
+    uint8_t *patch_curved;
+    size_t patch_cap;
     /* The scene and root the rays were cast into (borrowed: the caller
      * keeps the scene while it has the sampling); contouring asks it for
      * exact points on sharp edges (snap.c). */
