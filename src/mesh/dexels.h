@@ -261,11 +261,11 @@ int mesh_tighten(mesh *m, mesh_snapper *sn, double tol, int threads);
  * patches patch (mesh_hit.patch; NULL: not known), of its cell) onto the
  * exact surfaces those samples lie on — up to three: the surface, a sharp
  * edge, a corner — as nearly as the box [lo, hi] allows, the coordinate
- * `fixed` (an axis, or -1) kept.  Samples are one surface when they share
- * a patch or their normals part by less than 1°; without patches, by less
- * than the feature angle.  Left where it is when it fits the surfaces there
- * better, or the samples hold more than three surfaces (0); else the number
- * of surfaces. */
+ * `fixed` (an axis, or -1) kept.  Samples lie on two surfaces when their
+ * normals part by more than the feature angle, or (given patches) they lie
+ * on two plane patches more than 1° apart (mesh_planes_crease).  Left where
+ * it is when it fits the surfaces there better, or the samples hold more
+ * than three surfaces (0); else the number of surfaces. */
 int mesh_snap(mesh_snapper *sn, const double (*sp)[3], const double (*nrm)[3],
               const uint32_t *patch, int ns, int fixed, const double lo[3], const double hi[3],
               double x[3]);
