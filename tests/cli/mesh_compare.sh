@@ -39,6 +39,10 @@ fi
 exact_csc=2404.778358
 failed=0
 now() { date +%s.%N; }
+# the mesh tolerance rayscad --json reported, times $2 (default 1)
+tolerance_of() {
+    "$py" -c 'import json,sys; print(float(sys.argv[2]) * json.load(open(sys.argv[1]))["mesh"]["tolerance"])' "$1" "${2:-1}"
+}
 
 printf '%-24s %10s %10s %8s %7s %6s %8s %8s %8s %8s\n' model "vol ours" "vol oscad" "dvol" \
     hausdf "/h" "tri ours" "tri osc" "t ours" "t oscad"
@@ -72,21 +76,21 @@ for f in "$models"/*.scad; do
         # the cross hole's rim on the cone: every sample of the exact
         # surface within twice the default tolerance of the mesh (it was
         # 34 tolerances off where the contour cut across the rim)
-        d2=$("$py" -c 'import json,sys; print(2 * json.load(open(sys.argv[1]))["mesh"]["tolerance"])' "$tmp/$name.json")
+        d2=$(tolerance_of "$tmp/$name.json" 2)
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d2" --surface-only \
             --name "$name rim, 2 D" || failed=$((failed + 1))
     fi
     if [ "$name" = torus ]; then
         # a smooth surface within its tolerance but for a few samples
         # (1.2 % beyond it before mesh_tighten, 0.13 % now)
-        d1=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["mesh"]["tolerance"])' "$tmp/$name.json")
+        d1=$(tolerance_of "$tmp/$name.json")
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --share 0.5 \
             --name "$name, 0.5 % beyond D" || failed=$((failed + 1))
     fi
     if [ "$name" = faceted_prisms ]; then
         # every edge between two facets, however slight, followed (the
         # contour smoothed those under 30° over: 2.3 D)
-        d1=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["mesh"]["tolerance"])' "$tmp/$name.json")
+        d1=$(tolerance_of "$tmp/$name.json")
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --surface-only \
             --name "$name edges, D" || failed=$((failed + 1))
     fi
