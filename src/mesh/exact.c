@@ -7,12 +7,18 @@
  *
  *   V = ∫∫ L(u, v) du dv       L: the length of solid along the ray
  *   ∫ p dV = ∫∫ ∫ p(t) dt du dv over the ray's intervals
- *   A = Σ_k ∫∫ Σ w(n) du dv    over the crossings, in three passes along
+ *   A = Σ_k ∫∫ Σ |n·d_k| du dv over the crossings, in three passes along
  *                              the three directions d_k of an orthonormal
- *                              frame, w = 1 / Σ_j |n·d_j|
+ *                              frame
  *
- * (each pass's crossings weigh |n·d_k| dA, so the three sum to dA; w is
- * bounded, unlike the 1 / |n·d| of one pass at a silhouette).
+ * (a crossing of normal n in pass k stands for du dv / |n·d_k| of surface;
+ * weighed by (n·d_k)², which the three directions sum to |n|² = 1, it adds
+ * |n·d_k| du dv.  That is smooth along a piece, since n·d_k keeps its sign
+ * between events — it tells an entry from an exit — and vanishes at a
+ * silhouette, where the 1 / |n·d| of one pass would not be bounded; a
+ * weight |n·d_k| / Σ_j |n·d_j| had kinks inside the pieces wherever the
+ * surface turned edge-on to another pass's direction, and the Kronrod rule
+ * halved its panels down to each: nine rays in ten on two spheres).
  *
  * Along a line v = const the ray's interval list changes its make-up (which
  * faces of which primitives bound it, in order: its signature) only at
@@ -421,8 +427,7 @@ typedef struct pass {
     const csg_scene *s;
     int root;
     double c[3], d[3], e1[3], e2[3], reach;
-    seed box;           /* the model's box seen along d */
-    double frame[3][3]; /* the three directions of the area weight */
+    seed box; /* the model's box seen along d */
     iv_arena *arena;
     long long count;
     double v; /* the current line's v */
@@ -514,11 +519,9 @@ static int ray_eval(void *ctx, sample *sm)
     for (int i = 0; i < l.n; i++)
         for (int e = 0; e < 2; e++) {
             const iv_bound *b = e ? &l.v[i].exit : &l.v[i].enter;
-            double n[3], w = 0;
+            double n[3];
             csg_scene_normal(P->s, b, o, P->d, n);
-            for (int k = 0; k < 3; k++)
-                w += fabs(dot3(n, P->frame[k]));
-            area += w > 0 ? 1 / w : 0;
+            area += fabs(dot3(n, P->d));
             /* t on the plane of b as u moves: dt/du = −(n·e1)/(n·d) */
             slope += (e ? -1 : 1) * dot3(n, P->e1) / dot3(n, P->d);
             across += (e ? -1 : 1) * dot3(n, P->e2) / dot3(n, P->d);
@@ -681,7 +684,6 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
     memset(P, 0, sizeof *P);
     P->s = s;
     P->root = root;
-    memcpy(P->frame, frame, sizeof P->frame);
     memcpy(P->d, frame[k], sizeof P->d);
     memcpy(P->e1, frame[(k + 1) % 3], sizeof P->e1);
     memcpy(P->e2, frame[(k + 2) % 3], sizeof P->e2);
