@@ -57,12 +57,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* How far (in cells) vertices keep from grid nodes, edges and faces.  It
- * bounds the smallest triangle area from below (about EPS²·h²/2) and is the
- * most a vertex moves off a surface that passes exactly through a node; at
- * 1/256 even a model far from the origin keeps EPS·h hundreds of float ulps
- * wide. */
-#define EPS (1.0 / 256)
+#define EPS MESH_CONTOUR_EPS
 
 /* Corner c of a cell is at offset (c & 1, c >> 1 & 1, c >> 2 & 1).  Edge e
  * runs along axis e / 4; its other two offsets are the bits of e % 4 (the
@@ -369,9 +364,19 @@ static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, con
     }
     memcpy(out->x, out->p, sizeof out->x);
     out->x[a] = d->org[a] + t;
+    double exact = t;
     if (t < t0 + EPS * h) t = t0 + EPS * h;
     if (t > t1 - EPS * h) t = t1 - EPS * h;
     out->p[a] = d->org[a] + t;
+    /* A crossing at (or within EPS·h of) a node moves along the edge, off
+     * the surface where the edge is not in it: it goes back onto its
+     * tangent plane (a plane facet through a row of nodes, as a frustum's
+     * through the nodes every other layer, was left rippled by EPS·h, and
+     * the simplifier kept five times the triangles). */
+    double dt = t - exact;
+    if (best && dt != 0 && fabs(dt) <= EPS * h)
+        for (int c = 0; c < 3; c++)
+            out->p[c] -= dt * out->n[a] * out->n[c];
 }
 
 /* Fill sample e of cell (i, j, k): position, normal, vertex index. */
@@ -452,6 +457,16 @@ static int face_point(const sweep *s, const sample *a, const sample *b, int f, c
     double tol = EPS * h;
     if (!(x >= lo[u] - tol && x <= lo[u] + h + tol && y >= lo[v] - tol && y <= lo[v] + h + tol))
         return 0;
+    /* A sharp edge through (or within 2·EPS·h of) a crossing on the face's
+     * rim goes through the crossing's own vertex: a point beside it, held
+     * EPS·h into the face, would leave a cluster of vertices off the edge
+     * and slivers between them at any angle (a frustum's 15° facets, through
+     * the grid edges every other layer, were so left five times the
+     * triangles). */
+    for (int k = 0; k < 2; k++) {
+        const sample *e = k ? b : a;
+        if (hypot(x - e->x[u], y - e->x[v]) <= 2 * tol) return 0;
+    }
     double mn = EPS * h, mx = (1 - EPS) * h;
     x = fmin(fmax(x, lo[u] + mn), lo[u] + mx);
     y = fmin(fmax(y, lo[v] + mn), lo[v] + mx);

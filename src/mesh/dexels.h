@@ -91,6 +91,15 @@ static inline uint64_t mesh_hash_mix(uint64_t k)
     return k;
 }
 
+/* How far (in cells) contour vertices keep from grid nodes, edges and
+ * faces (contour.c).  It bounds the smallest triangle area from below
+ * (about EPS²·h²/2); at 1/256 even a model far from the origin keeps EPS·h
+ * hundreds of float ulps wide.  A vertex the contour moves so far off its
+ * feature (a face point or loop vertex pinned EPS·h inside a face the
+ * feature runs along) tilts the slivers around it at any angle: the
+ * simplifier does not read sharp edges off triangles that thin. */
+#define MESH_CONTOUR_EPS (1.0 / 256)
+
 /* A patch: one face of one primitive (a plane of a polyhedron, a sphere,
  * a cylinder's side), named by a nonzero hash of the primitive and its
  * part; the sampling sets MESH_PATCH_PLANAR on those whose every crossing
