@@ -289,16 +289,26 @@ static int push_event(events *E, const sample *a, const sample *b)
 /* Bracket the events between samples l and r of different signatures into
  * E.  Where the samples know their slopes, a step first tries the kink of
  * their lines, two samples eps/2 either side of it — one try, where both
- * pieces are plane-faced — and halves the bracket when the try did not. */
+ * pieces are plane-faced — and halves the bracket when the try did not.  A
+ * try whose two samples fell on one side moved that end of the bracket
+ * toward the event but not past it (the lines of curved pieces meet short
+ * of their kink, on the same side try after try, while the far end stays
+ * where it was): the next sample goes twice that move beyond the moved end,
+ * which brackets the event close on both sides (a sixth fewer rays on the
+ * bench part). */
 static int bracket(level *L, const sample *l, const sample *r, int depth, events *E)
 {
     sample a = *l, b = *r, a2 = {.x = NAN}, b2 = {.x = NAN};
     int tries = 0;
+    double step = 0; /* > 0: the last try moved a only, by step; < 0: b only */
     while (b.x - a.x > L->eps) {
         double k = L->across ? join(&a, &a2, &b, &b2) : kink(&a, &b), h = 0.5 * L->eps;
         sample m[2];
         int n = 1;
-        if (tries < 2 && k - h > a.x && k + h < b.x) {
+        double x = step > 0 ? a.x + 2 * step : b.x + 2 * step;
+        if (step != 0 && x > a.x && x < b.x) {
+            m[0].x = x; /* twice the move past the moved end */
+        } else if (tries < 2 && k - h > a.x && k + h < b.x) {
             m[0].x = k - h;
             m[1].x = k + h;
             n = 2;
@@ -307,6 +317,8 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
             m[0].x = a.x + 0.5 * (b.x - a.x);
             tries = 0;
         }
+        step = 0;
+        double a0 = a.x, b0 = b.x;
         for (int i = 0; i < n; i++) {
             if (L->eval(L->ctx, &m[i]) != 0) return -1;
             if (m[i].sig == a.sig && m[i].x > a.x) {
@@ -321,6 +333,7 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
                 return bracket(L, &m[i], &b, depth + 1, E);
             }
         }
+        if (n == 2 && (a.x == a0) != (b.x == b0)) step = a.x != a0 ? a.x - a0 : b.x - b0;
     }
     if (L->across && depth < MAX_DEPTH) {
         /* A line is only as good as its hints: one integrated while its
