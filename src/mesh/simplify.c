@@ -583,11 +583,15 @@ static int sharp(const simp *s, const double *tn, int32_t t, int32_t a, int32_t 
  * through x, the planes found by rays along the surfaces' normals from
  * points on each triangle's side, a half, a tenth, then a fiftieth of the
  * way from the edge to its centroid; left where it is when a ray finds
- * nothing, or the move is longer than half the edge. */
-static void on_edge(const simp *s, mesh_snapper *sn, const double *tn, int32_t t, int32_t o,
-                    int32_t a, int32_t b, double x[3])
+ * nothing, or the move is longer than half the edge.  0 when the first two
+ * rays find the surfaces either side within 20° of each other: the edge is
+ * not sharp, only bent by where the contour put its vertices (a cluster of
+ * them held EPS·h off a slight crease between facets, and the slivers
+ * between them: faceted_prisms was a quarter more triangles); else 1. */
+static int on_edge(const simp *s, mesh_snapper *sn, const double *tn, int32_t t, int32_t o,
+                   int32_t a, int32_t b, double x[3])
 {
-    if (o < 0) return;
+    if (o < 0) return 1;
     double n[3][3], d[3], y[3] = {x[0], x[1], x[2]}, c[2][3], dir[2][3];
     sub3(P(s, b), P(s, a), n[2]);
     double len = sqrt(dot3(n[2], n[2]));
@@ -596,7 +600,7 @@ static void on_edge(const simp *s, mesh_snapper *sn, const double *tn, int32_t t
         const int32_t *tv = s->t + 3 * tri[i];
         const double *m = tn + 3 * (size_t)tri[i];
         double l = sqrt(dot3(m, m));
-        if (!(l > 0)) return;
+        if (!(l > 0)) return 1;
         for (int k = 0; k < 3; k++) {
             c[i][k] = (P(s, tv[0])[k] + P(s, tv[1])[k] + P(s, tv[2])[k]) / 3;
             dir[i][k] = m[k] / l;
@@ -608,23 +612,25 @@ static void on_edge(const simp *s, mesh_snapper *sn, const double *tn, int32_t t
             double q[3], hit[3];
             for (int k = 0; k < 3; k++)
                 q[k] = y[k] + toward[it] * (c[i][k] - y[k]);
-            if (!mesh_snap_probe(sn, q, dir[i], len, sn->cos_feature, hit, n[i])) return;
+            if (!mesh_snap_probe(sn, q, dir[i], len, sn->cos_feature, hit, n[i])) return 1;
             memcpy(dir[i], n[i], sizeof dir[i]);
             d[i] = dot3(n[i], hit);
         }
+        if (it == 0 && dot3(n[0], n[1]) > SHARP_COS) return 0; /* not sharp after all */
         d[2] = dot3(n[2], x);
         double c01[3], c12[3], c20[3];
         cross3(n[0], n[1], c01);
         cross3(n[1], n[2], c12);
         cross3(n[2], n[0], c20);
         double det = dot3(n[0], c12);
-        if (!(fabs(det) > 1e-3 * len)) return; /* the surfaces meet too flat to tell */
+        if (!(fabs(det) > 1e-3 * len)) return 1; /* the surfaces meet too flat to tell */
         for (int k = 0; k < 3; k++)
             y[k] = (d[0] * c12[k] + d[1] * c20[k] + d[2] * c01[k]) / det;
     }
     double mv[3];
     sub3(y, x, mv);
     if (dot3(mv, mv) < 0.25 * len * len) memcpy(x, y, sizeof y);
+    return 1;
 }
 
 /* Whether the surface around vertex v is a saddle: its neighbours lie well
@@ -708,7 +714,9 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_s
             if (a > b || x >= np || !sharp(s, tn, (int32_t)t, a, b)) continue;
             for (int i = 0; i < 3; i++)
                 s->p[3 * x + i] = (P(s, a)[i] + P(s, b)[i]) / 2;
-            if (sn) on_edge(s, sn, tn, (int32_t)t, across(s, (int32_t)t, a, b), a, b, s->p + 3 * x);
+            if (sn &&
+                !on_edge(s, sn, tn, (int32_t)t, across(s, (int32_t)t, a, b), a, b, s->p + 3 * x))
+                continue;
             s->crease[a] = s->crease[b] = s->crease[x] = 1;
             attach(s, (int32_t)t, (int32_t)x++);
         }
