@@ -373,8 +373,8 @@ static void edge_sample(const sweep *s, int a, size_t r, int seg, int enter, con
      * tangent plane (a plane facet through a row of nodes, as a frustum's
      * through the nodes every other layer, was left rippled by EPS·h, and
      * the simplifier kept five times the triangles). */
-    double dt = t - exact;
-    if (best && dt != 0 && fabs(dt) <= EPS * h)
+    double dt = t - exact, nn = dot3(out->n, out->n);
+    if (best && dt != 0 && fabs(dt) <= EPS * h && nn > 0.5 && nn < 2) /* (a unit normal) */
         for (int c = 0; c < 3; c++)
             out->p[c] -= dt * out->n[a] * out->n[c];
 }
