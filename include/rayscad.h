@@ -597,7 +597,8 @@ void rayscad_sampling_measure(const rayscad_sampling *d, rayscad_measurement *ou
 typedef struct rayscad_measure_options {
     int root;           /* which root (RAYSCAD_ROOT_MODEL) */
     double tolerance;   /* relative; <= 0: RAYSCAD_MEASURE_TOLERANCE */
-    long long max_rays; /* past it: RAYSCAD_ERROR_RAYS; <= 0: no limit */
+    long long max_rays; /* past it: RAYSCAD_ERROR_RAYS; <= 0: no limit (a ray of n
+                         * intervals counts 1 + n / 4: many cost more) */
     int max_intervals;  /* a ray's interval list past it: RAYSCAD_ERROR_INTERVALS; 0: the default */
 } rayscad_measure_options;
 void rayscad_measure_options_default(rayscad_measure_options *o);
