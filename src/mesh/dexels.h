@@ -94,10 +94,12 @@ static inline uint64_t mesh_hash_mix(uint64_t k)
 /* How far (in cells) contour vertices keep from grid nodes, edges and
  * faces (contour.c).  It bounds the smallest triangle area from below
  * (about EPS²·h²/2); at 1/256 even a model far from the origin keeps EPS·h
- * hundreds of float ulps wide.  A vertex the contour moves so far off its
- * feature (a face point or loop vertex pinned EPS·h inside a face the
- * feature runs along) tilts the slivers around it at any angle: the
- * simplifier does not read sharp edges off triangles that thin. */
+ * hundreds of float ulps wide.  A vertex held so far off its surface or
+ * its sharp edge tilts the slivers around it at any angle, which the
+ * simplifier would read as sharp edges: edge crossings go back onto their
+ * tangent planes, and no face point is drawn beside a crossing its edge
+ * runs through (contour.c); the simplifier asks the exact surfaces before
+ * it calls an edge sharp (simplify.c, on_edge). */
 #define MESH_CONTOUR_EPS (1.0 / 256)
 
 /* A patch: one face of one primitive (a plane of a polyhedron, a sphere,
