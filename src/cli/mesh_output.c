@@ -195,6 +195,9 @@ static int write_mesh_files(const cli_options *o, const rayscad_mesh *msh, cli_o
     return 0;
 }
 
+/* The largest contour simplified without --mesh-tolerance (about 3 s). */
+#define DEFAULT_SIMPLIFY_MAX (1LL << 19)
+
 /* The tolerance a mesh is simplified to: the user's, else the deviation
  * OpenSCAD's facets would give the model's round parts (so the mesh is as
  * close to the model as openscad's), else — a model of flat faces, which
@@ -231,9 +234,9 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
     mo.tolerance = mesh_tolerance(o, scene);
-    /* Every contour is simplified, however large: a cup with a 0.3 wall
-     * (its grid refined to 0.08) was 1.8 million triangles, 350 MB of STL,
-     * left as it was, and 1,376 triangles in 2 s more simplified. */
+    /* unasked, a contour of millions of triangles is written as it is:
+     * simplifying it would take several times as long as the rest */
+    if (o->mesh_tolerance < 0) mo.simplify_max_triangles = DEFAULT_SIMPLIFY_MAX;
     mo.threads = o->threads;
     mo.root = RAYSCAD_ROOT_MODEL;
     mo.max_cells = o->max_mesh_cells;
@@ -285,7 +288,11 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
             return 1;
         }
         mesh_volume = rayscad_mesh_volume(msh);
-        w.mesh_tolerance = mo.tolerance;
+        /* a contour past the limit was left as it is, and only those are
+         * past it */
+        if (!(mo.simplify_max_triangles > 0 &&
+              rayscad_mesh_triangle_count(msh) > mo.simplify_max_triangles))
+            w.mesh_tolerance = mo.tolerance;
         if (write_mesh_files(o, msh, outs, paths, n) != 0) {
             rayscad_mesh_free(msh);
             return 1;
