@@ -16,8 +16,12 @@
  * alone doubled the other side's (a torus's inner equator, 3.2
  * tolerances; 2.4 so).  A
  * vertex on a sharp edge or corner (its triangles' normals spread more than
- * 20°) stays: it is exact, and moving it would move the edge.  A move that
- * would turn one of its triangles by more than 30° is not made.
+ * 20°) stays: it is exact, and moving it would move the edge.  So does a
+ * vertex whose triangles lie on plane patches alone (MESH_PATCH_PLANAR):
+ * their sag is a crease they cut across at a slight angle, not a curve
+ * (pinched_cells.scad's 12-gon facets: 395 surface samples moved beyond
+ * the tolerance, 29 so).  A move that would turn one of its triangles by
+ * more than 30° is not made.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -51,9 +55,10 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
     int nv = m->nv, nt = m->nt;
     double(*vn)[3] = calloc((size_t)nv, sizeof *vn), (*vs)[2] = calloc((size_t)nv, sizeof *vs);
     double(*tn)[3] = malloc((size_t)nt * sizeof *tn);
+    uint8_t *bent = calloc((size_t)nv + 1, 1); /* some triangle around it is on a curved patch */
     int32_t *start = NULL, *fan = NULL;
     int rc = -1;
-    if (!vn || !vs || !tn || mesh_vertex_fans(m, 0, &start, &fan) != 0) goto done;
+    if (!vn || !vs || !tn || !bent || mesh_vertex_fans(m, 0, &start, &fan) != 0) goto done;
     /* each triangle's sag, and each vertex's largest and its normal */
     for (int32_t t = 0; t < nt; t++) {
         double at[4][3];
@@ -63,26 +68,32 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach)
         for (int q = 0; q < 3; q++)
             n[q] = tn[t][q] / len;
         double sag[2] = {0, 0}; /* the most inward, the most outward */
-        for (int i = 0; i < 4; i++)
-            if (mesh_snap_probe(sn, at[i], n, reach, -1, hit, hn) && dot3(hn, n) > COS_KEEP) {
-                sub3(hit, at[i], d);
-                double g = dot3(d, n); /* > 0: the surface is outside the triangle */
-                sag[0] = fmin(sag[0], g);
-                sag[1] = fmax(sag[1], g);
-            }
+        int curved = 0;
+        for (int i = 0; i < 4; i++) {
+            uint32_t patch = 0;
+            if (!mesh_snap_probe_patch(sn, at[i], n, reach, -1, 0, hit, hn, &patch) ||
+                !(dot3(hn, n) > COS_KEEP))
+                continue;
+            curved |= !(patch & MESH_PATCH_PLANAR);
+            sub3(hit, at[i], d);
+            double g = dot3(d, n); /* > 0: the surface is outside the triangle */
+            sag[0] = fmin(sag[0], g);
+            sag[1] = fmax(sag[1], g);
+        }
         for (int k = 0; k < 3; k++) {
             int32_t v = m->t[3 * (size_t)t + k];
             for (int q = 0; q < 3; q++)
                 vn[v][q] += tn[t][q];
             vs[v][0] = fmin(vs[v][0], sag[0]);
             vs[v][1] = fmax(vs[v][1], sag[1]);
+            bent[v] |= (uint8_t)curved;
         }
     }
     /* the smooth vertices (their triangles within 20° of their normal)
      * moved; the normals are of the triangles before any move */
     for (int v = 0; v < nv; v++) {
         double l = sqrt(dot3(vn[v], vn[v]));
-        int smooth = l > 0;
+        int smooth = l > 0 && bent[v];
         for (int f = start[v]; f < start[v + 1] && smooth; f++) {
             double len = sqrt(dot3(tn[fan[f]], tn[fan[f]]));
             smooth = len > 0 && dot3(tn[fan[f]], vn[v]) >= COS_SMOOTH * len * l;
@@ -99,6 +110,7 @@ done:
     free(vn);
     free(vs);
     free(tn);
+    free(bent);
     free(start);
     free(fan);
     return rc;

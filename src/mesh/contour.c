@@ -17,10 +17,13 @@
  *     number of z crossings lie at or below it), so all cells agree on them.
  *   - On each cell face, walking the corners counter-clockwise seen from
  *     outside the cell, every crossing where the walk enters the solid is
- *     joined to the next crossing: the segments cut off the inside corners,
- *     and an ambiguous face (inside corners on a diagonal) keeps them apart.
- *     This depends on the face's signs alone, so both cells sharing a face
- *     draw the same segments, in opposite directions.
+ *     joined to the next crossing: the segments cut off the inside corners.
+ *     An ambiguous face (inside corners on a diagonal) keeps them apart
+ *     unless the solid holds the face's middle (a ray asks the scene, as the
+ *     asymptotic decider asks the bilinear saddle): then they are joined
+ *     and the segments cut off the outside corners.  This depends on the
+ *     face alone, so both cells sharing a face draw the same segments, in
+ *     opposite directions.
  *   - Each crossing starts one segment and ends another within a cell, so the
  *     segments chain into loops (the MC components); each loop is a disc,
  *     triangulated alone.  Every segment is shared by exactly two cells, and
@@ -733,6 +736,27 @@ static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
     return 0;
 }
 
+/* Whether face f of cell (i, j, s->k), its corners' signs in[] (in
+ * face_corner's order), is ambiguous — inside corners on a diagonal — with
+ * its middle inside the solid: then the inside corners are joined across
+ * the face and its segments cut off the outside corners.  (A convex sharp
+ * edge that passes beside the face, near its middle, leaves the solid's
+ * section through the face one convex piece holding both inside corners;
+ * cut apart, the cell's two plane pieces made one loop, whose vertex
+ * belonged on the edge in the next cell, and its fan chamfered the edge.)
+ * The middle is computed from the face's own node indices, so both cells
+ * that share the face decide alike. */
+static int ambiguous_face(sweep *s, int i, int j, int f, const int in[4])
+{
+    if (in[0] == in[1] || in[1] == in[2] || in[2] == in[3]) return 0;
+    const mesh_dexels *d = s->d;
+    int fa = f / 2, idx[3] = {i, j, s->k};
+    double mid[3];
+    for (int c = 0; c < 3; c++)
+        mid[c] = d->org[c] + (c == fa ? idx[c] + (f & 1) : idx[c] + 0.5) * d->h;
+    return mesh_snap_inside(&s->snap, mid, fa) == 1;
+}
+
 static void cell(sweep *s, int i, int j, int mask)
 {
     const mesh_dexels *d = s->d;
@@ -755,8 +779,14 @@ static void cell(sweep *s, int i, int j, int mask)
         int in[4];
         for (int m = 0; m < 4; m++)
             in[m] = mask >> face_corner[f][m] & 1;
+        int joined = ambiguous_face(s, i, j, f, in);
         for (int m = 0; m < 4; m++) {
             if (in[m] || !in[(m + 1) & 3]) continue; /* not an outside-to-inside crossing */
+            if (joined) { /* around the outside corner m, to the crossing before */
+                next[tb->face_edge[f][m]] = tb->face_edge[f][(m + 3) & 3];
+                segface[tb->face_edge[f][m]] = f;
+                continue;
+            }
             for (int q = 1; q < 4; q++) {
                 int mm = (m + q) & 3;
                 if (in[mm] != in[(mm + 1) & 3]) {

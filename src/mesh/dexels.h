@@ -224,6 +224,9 @@ int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], doub
 int mesh_snap_probe_patch(mesh_snapper *sn, const double x[3], const double n[3], double reach,
                           double min_cos, uint32_t patch, double p[3], double pn[3],
                           uint32_t *found);
+/* Whether x lies inside the solid (a short ray along axis a through it):
+ * 1 or 0; -1 when the sampling has no scene or the ray fails. */
+int mesh_snap_inside(mesh_snapper *sn, const double x[3], int a);
 /* The exact normals of the contour's vertices that are ray crossings (the
  * others: 0, 0, 0), and which vertices lie on a sharp edge (put there by
  * mesh_snap), by vertex index; all NULL and cap 0 to start, then

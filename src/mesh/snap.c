@@ -84,6 +84,21 @@ int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], doub
     return mesh_snap_probe_patch(sn, x, n, reach, min_cos, 0, p, pn, NULL);
 }
 
+int mesh_snap_inside(mesh_snapper *sn, const double x[3], int a)
+{
+    const mesh_dexels *d = sn->d;
+    if (!sn->arena) return -1;
+    double o[3] = {x[0], x[1], x[2]}, dir[3] = {0, 0, 0}, h = d->h;
+    o[a] -= h;
+    dir[a] = 1;
+    iv_arena_reset(sn->arena);
+    iv_list l;
+    if (csg_trace(d->scene, d->root, o, dir, 0, 2 * h, sn->arena, &l) != 0) return -1;
+    for (int k = 0; k < l.n; k++)
+        if (l.v[k].enter.t <= h && l.v[k].exit.t > h) return 1;
+    return 0;
+}
+
 /* How far x lies behind the plane through p with unit normal n. */
 static double behind(const double p[3], const double n[3], const double x[3])
 {
