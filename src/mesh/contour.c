@@ -757,6 +757,98 @@ static int ambiguous_face(sweep *s, int i, int j, int f, const int in[4])
     return mesh_snap_inside(&s->snap, mid, fa) == 1;
 }
 
+/* Whether vertex v was put on a sharp edge (push_snapped). */
+static int vertex_on_edge(const sweep *s, int32_t v)
+{
+    return (size_t)v < s->vn.cap && s->vn.edge[v];
+}
+
+/* A loop whose sharp edge runs in through one face point and out through
+ * another, both on the edge, while the cell's vertex could not be put on
+ * it (the edge leaves the cell within a corner, and the vertex belongs
+ * beyond it, where the loop's fan would fold): the loop is cut along the
+ * chord between the two face points, and each side, one surface's
+ * samples, fanned from a vertex of its own on that surface.  Fanned from
+ * the vertex held in the cell instead, off both surfaces, the loop cut the
+ * edge off (rotated_box_pin.scad's pin, where it leaves the box: 21 such
+ * cells).  1 when done; 0 leaves the loop to the fan. */
+static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, const double lo[3])
+{
+    int fp[2], nfp = 0;
+    for (int q = 0; q < nv; q++)
+        if (lv[q].edge < 0) {
+            if (nfp == 2 || !vertex_on_edge(s, lv[q].vid)) return 0;
+            fp[nfp++] = q;
+        }
+    if (nfp != 2) return 0;
+    double h = s->d->h, centre[2][3];
+    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    int count[2];
+    for (int side = 0; side < 2; side++) {
+        /* lv[fp[side]] .. lv[fp[1 - side]], around the loop */
+        int a = fp[side], b = fp[1 - side], n = (b - a + nv) % nv + 1;
+        double sp[12][3], nrm[12][3], navg[3] = {0, 0, 0}, mass[3] = {0, 0, 0};
+        uint32_t patch[12];
+        int ns = 0;
+        for (int k = 0; k < n; k++) {
+            const lvert *v = &lv[(a + k) % nv];
+            for (int c = 0; c < 3; c++)
+                mass[c] += v->p[c] / n;
+            if (v->edge < 0) continue;
+            const sample *e = &smp[v->edge];
+            for (int r = 0; r < ns; r++)
+                if (dot3(e->n, nrm[r]) < s->cos_feature ||
+                    mesh_planes_crease(e->patch, patch[r], dot3(e->n, nrm[r])))
+                    return 0; /* two surfaces on one side: a corner */
+            memcpy(sp[ns], e->x, sizeof sp[ns]);
+            memcpy(nrm[ns], e->n, sizeof nrm[ns]);
+            patch[ns++] = e->patch;
+            for (int c = 0; c < 3; c++)
+                navg[c] += e->n[c];
+        }
+        if (ns == 0) return 0;
+        /* the side's middle, onto its surface (its first sample's plane,
+         * then the exact surface), in the shrunk cell */
+        double rel[3];
+        sub3(mass, sp[0], rel);
+        double off = dot3(rel, nrm[0]);
+        for (int c = 0; c < 3; c++)
+            centre[side][c] = mass[c] - off * nrm[0][c];
+        double blo[3], bhi[3];
+        for (int c = 0; c < 3; c++) {
+            blo[c] = lo[c] + EPS * h;
+            bhi[c] = lo[c] + (1 - EPS) * h;
+        }
+        mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, patch, ns, -1, blo,
+                  bhi, centre[side]);
+        for (int c = 0; c < 3; c++)
+            if (!(centre[side][c] >= blo[c] && centre[side][c] <= bhi[c])) return 0;
+        /* its fan, the chord closing it, neither folded nor flat */
+        for (int k = 0; k < n; k++) {
+            const double *p0 = lv[(a + k) % nv].p, *p1 = lv[(a + (k + 1) % n) % nv].p;
+            if (k == n - 1) p1 = lv[a].p; /* the chord back */
+            double tn[3];
+            tri_normal3(centre[side], p0, p1, tn);
+            if (!(dot3(tn, tn) > min2) || !(dot3(tn, navg) > 0)) return 0;
+        }
+        count[side] = n;
+    }
+    for (int side = 0; side < 2; side++) {
+        int32_t cv = push_snapped(s, centre[side], centre[side], 0, lo);
+        if (cv < 0) {
+            s->oom = 1;
+            return 1;
+        }
+        int a = fp[side], n = count[side];
+        for (int k = 0; k < n; k++) {
+            const lvert *v0 = &lv[(a + k) % nv];
+            const lvert *v1 = k == n - 1 ? &lv[a] : &lv[(a + k + 1) % nv];
+            if (mesh_push_triangle(s->m, cv, v0->vid, v1->vid, v0->color) < 0) s->oom = 1;
+        }
+    }
+    return 1;
+}
+
 static void cell(sweep *s, int i, int j, int mask)
 {
     const mesh_dexels *d = s->d;
@@ -862,6 +954,7 @@ static void cell(sweep *s, int i, int j, int mask)
         loop_vertex(s, smp, loop, nl, lo, c);
         double unsnapped[3] = {c[0], c[1], c[2]};
         int on = snap_loop_vertex(s, smp, loop, nl, lv, nv, lo, c);
+        if (!on && split_loop(s, smp, lv, nv, lo)) continue;
         for (int q = 0; q < nplaced; q++) {
             double dd[3];
             sub3(c, placed[q], dd);
