@@ -434,11 +434,13 @@ static int creased(const sweep *s, const sample *a, const sample *b)
 /* The point where the tangent lines of samples a and b (through their exact
  * crossings) cross within face f of the cell at lo (side h), or 0 when they
  * lie on one side of no sharp edge (creased), are nearly parallel in the
- * face, or cross outside it.  The inputs are put in a canonical order first
+ * face, or cross outside it, or at one of the two crossings (then *through,
+ * else NULL).  The inputs are put in a canonical order first
  * so both cells compute the same bits. */
 static int face_point(const sweep *s, const sample *a, const sample *b, int f, const double lo[3],
-                      double out[3])
+                      double out[3], const sample **through)
 {
+    *through = NULL;
     if (a->vid > b->vid) {
         const sample *t = a;
         a = b;
@@ -468,7 +470,10 @@ static int face_point(const sweep *s, const sample *a, const sample *b, int f, c
      * triangles). */
     for (int k = 0; k < 2; k++) {
         const sample *e = k ? b : a;
-        if (hypot(x - e->x[u], y - e->x[v]) <= 2 * tol) return 0;
+        if (hypot(x - e->x[u], y - e->x[v]) <= 2 * tol) {
+            *through = e;
+            return 0;
+        }
     }
     double mn = EPS * h, mx = (1 - EPS) * h;
     x = fmin(fmax(x, lo[u] + mn), lo[u] + mx);
@@ -652,6 +657,7 @@ typedef struct lvert {
     int edge; /* cell edge, or -1 for a face point */
     double p[3];
     uint16_t color;
+    uint8_t crease; /* a sample the cell's sharp edge runs through (see face_point) */
 } lvert;
 
 /* 1 when moving the centre of the fan around the loop lv from x to y turns
@@ -763,30 +769,59 @@ static int vertex_on_edge(const sweep *s, int32_t v)
     return (size_t)v < s->vn.cap && s->vn.edge[v];
 }
 
-/* A loop whose sharp edge runs in through one face point and out through
- * another, both on the edge, while the cell's vertex could not be put on
- * it (the edge leaves the cell within a corner, and the vertex belongs
- * beyond it, where the loop's fan would fold): the loop is cut along the
- * chord between the two face points, and each side, one surface's
- * samples, fanned from a vertex of its own on that surface.  Fanned from
- * the vertex held in the cell instead, off both surfaces, the loop cut the
- * edge off (rotated_box_pin.scad's pin, where it leaves the box: 21 such
- * cells).  1 when done; 0 leaves the loop to the fan. */
+/* Whether the samples of loop lv, less those on its sharp edge, lie on one
+ * surface. */
+static int one_surface(const sweep *s, const sample *smp, const lvert *lv, int nv)
+{
+    for (int q = 0; q < nv; q++)
+        for (int r = q + 1; r < nv; r++)
+            if (lv[q].edge >= 0 && !lv[q].crease && lv[r].edge >= 0 && !lv[r].crease &&
+                creased(s, &smp[lv[q].edge], &smp[lv[r].edge]))
+                return 0;
+    return 1;
+}
+
+/* A loop whose sharp edge runs in and out through two of its vertices —
+ * face points put on the edge, or crossings the edge passes through (see
+ * face_point) — while the cell's vertex could not be put on it (the edge
+ * leaves the cell within a corner, and the vertex belongs beyond it, where
+ * the loop's fan would fold): the loop is cut along the chord between the
+ * two, and each side, one surface's samples, fanned from a vertex of its
+ * own on that surface (a side of the two alone, a segment of the loop
+ * along the edge, has nothing to fan).  Fanned from the vertex held in the
+ * cell instead, off both surfaces, the loop cut the edge off
+ * (rotated_box_pin.scad's pin, where it leaves the box: 21 such cells).
+ * 1 when done; 0 leaves the loop to the fan. */
 static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, const double lo[3])
 {
     int fp[2], nfp = 0;
-    for (int q = 0; q < nv; q++)
-        if (lv[q].edge < 0) {
-            if (nfp == 2 || !vertex_on_edge(s, lv[q].vid)) return 0;
-            fp[nfp++] = q;
-        }
-    if (nfp != 2) return 0;
+    for (int q = 0; q < nv; q++) {
+        if (lv[q].edge < 0 && !lv[q].crease) return 0; /* a face point off the edge */
+        if (!lv[q].crease) continue;
+        if (nfp == 2) return 0;
+        fp[nfp++] = q;
+    }
+    if (nfp == 0) return 0;
+    if (nfp == 1) { /* the edge touches the loop at one vertex: one side */
+        double navg[3] = {0, 0, 0};
+        for (int q = 0; q < nv; q++)
+            if (lv[q].edge >= 0 && !lv[q].crease)
+                for (int c = 0; c < 3; c++)
+                    navg[c] += smp[lv[q].edge].n[c];
+        if (one_surface(s, smp, lv, nv) && fan_plain(s, lv, nv, navg)) return 1;
+        fp[1] = (fp[0] + nv - 1) % nv;
+    }
     double h = s->d->h, centre[2][3];
     double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
     int count[2];
     for (int side = 0; side < 2; side++) {
         /* lv[fp[side]] .. lv[fp[1 - side]], around the loop */
         int a = fp[side], b = fp[1 - side], n = (b - a + nv) % nv + 1;
+        count[side] = n;
+        if (n == 2 || (nfp == 1 && side == 1)) {
+            count[side] = 2;
+            continue;
+        }
         double sp[12][3], nrm[12][3], navg[3] = {0, 0, 0}, mass[3] = {0, 0, 0};
         uint32_t patch[12];
         int ns = 0;
@@ -794,7 +829,7 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
             const lvert *v = &lv[(a + k) % nv];
             for (int c = 0; c < 3; c++)
                 mass[c] += v->p[c] / n;
-            if (v->edge < 0) continue;
+            if (v->edge < 0 || v->crease) continue;
             const sample *e = &smp[v->edge];
             for (int r = 0; r < ns; r++)
                 if (dot3(e->n, nrm[r]) < s->cos_feature ||
@@ -831,9 +866,9 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
             tri_normal3(centre[side], p0, p1, tn);
             if (!(dot3(tn, tn) > min2) || !(dot3(tn, navg) > 0)) return 0;
         }
-        count[side] = n;
     }
     for (int side = 0; side < 2; side++) {
+        if (count[side] == 2) continue;
         int32_t cv = push_snapped(s, centre[side], centre[side], 0, lo);
         if (cv < 0) {
             s->oom = 1;
@@ -908,11 +943,13 @@ static void cell(sweep *s, int i, int j, int mask)
         lvert lv[24];
         int nv = 0, feature = 0;
         double navg[3] = {0, 0, 0};
+        uint8_t through[12] = {0}; /* by cell edge: its sample is on the sharp edge */
         for (int q = 0; q < nl; q++) {
             const sample *a = &smp[loop[q]], *b = &smp[loop[(q + 1) % nl]];
             lv[nv].vid = a->vid;
             lv[nv].edge = loop[q];
             lv[nv].color = a->color;
+            lv[nv].crease = 0;
             memcpy(lv[nv].p, a->p, sizeof a->p);
             nv++;
             for (int c = 0; c < 3; c++)
@@ -920,7 +957,10 @@ static void cell(sweep *s, int i, int j, int mask)
             for (int r = q + 1; r < nl; r++)
                 if (creased(s, a, &smp[loop[r]])) feature = 1;
             double fp[3];
-            if (face_point(s, a, b, segface[loop[q]], lo, fp)) {
+            const sample *on_it;
+            int got = face_point(s, a, b, segface[loop[q]], lo, fp, &on_it);
+            if (on_it) through[on_it == a ? loop[q] : loop[(q + 1) % nl]] = 1;
+            if (got) {
                 int32_t lo_id = a->vid < b->vid ? a->vid : b->vid;
                 int32_t hi_id = a->vid < b->vid ? b->vid : a->vid;
                 uint64_t key = (uint64_t)(lo_id + 1) << 32 | (uint64_t)(hi_id + 1);
@@ -944,11 +984,14 @@ static void cell(sweep *s, int i, int j, int mask)
                 lv[nv].vid = *slot;
                 lv[nv].edge = -1;
                 lv[nv].color = b->color;
+                lv[nv].crease = (uint8_t)vertex_on_edge(s, *slot);
                 memcpy(lv[nv].p, fp, sizeof fp);
                 nv++;
                 feature = 1;
             }
         }
+        for (int q = 0; q < nv; q++)
+            if (lv[q].edge >= 0) lv[q].crease = through[lv[q].edge];
         if (!feature && fan_plain(s, lv, nv, navg)) continue;
         double c[3];
         loop_vertex(s, smp, loop, nl, lo, c);
