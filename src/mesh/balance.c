@@ -14,14 +14,15 @@
  * middle of the band its triangles' sags span, the most inward to the most
  * outward: on a saddle they lie to both sides, and a move by the largest
  * alone doubled the other side's (a torus's inner equator, 3.2
- * tolerances; 2.4 so).  A
- * vertex on a sharp edge or corner (its triangles' normals spread more than
- * 20°) stays: it is exact, and moving it would move the edge.  A vertex
- * whose triangles lie on plane patches alone (MESH_PATCH_PLANAR: a faceted
- * curve, an imported ring's 6,144 facets) moves only where their sags span
- * no more than the simplifier allowed: wider, they are a crease the
- * triangles cut across, not a curve's sag (pinched_cells.scad's 12-gon
- * facets, spans of 3 to 6 tolerances: 395 surface samples were moved
+ * tolerances; 2.4 so).  The move is at most half the simplifier's bound:
+ * a sag beyond it is a triangle the simplifier did not see stray, which a
+ * larger move only carries to the other side (the surface samples of
+ * bored_cone.scad beyond the tolerance: 1,621 -> 0).  A vertex on a sharp edge or corner (its
+ * triangles' normals spread more than 20°) stays: it is exact, and moving it would move the edge.
+ * A vertex whose triangles lie on plane patches alone (MESH_PATCH_PLANAR: a faceted curve, an
+ * imported ring's 6,144 facets) moves only where their sags span no more than the simplifier
+ * allowed: wider, they are a crease the triangles cut across, not a curve's sag
+ * (pinched_cells.scad's 12-gon facets, spans of 3 to 6 tolerances: 395 surface samples were moved
  * beyond the tolerance, 37 so; the ring's volume stays within 0.11 % of
  * openscad's, -0.75 % with planes never moved).  A move that would turn
  * one of its triangles by more than 30° is not made.
@@ -52,8 +53,9 @@ static void triangle_at(const mesh *m, int32_t t, double n[3], double at[4][3])
     }
 }
 
-int mesh_balance(mesh *m, mesh_snapper *sn, double reach, double plane_band)
+int mesh_balance(mesh *m, mesh_snapper *sn, double bound)
 {
+    double reach = 4 * bound;
     if (!sn->arena) return 0;
     int nv = m->nv, nt = m->nt;
     double(*vn)[3] = calloc((size_t)nv, sizeof *vn), (*vs)[2] = calloc((size_t)nv, sizeof *vs);
@@ -96,7 +98,7 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach, double plane_band)
      * moved; the normals are of the triangles before any move */
     for (int v = 0; v < nv; v++) {
         double l = sqrt(dot3(vn[v], vn[v]));
-        int smooth = l > 0 && (bent[v] || vs[v][1] - vs[v][0] <= plane_band);
+        int smooth = l > 0 && (bent[v] || vs[v][1] - vs[v][0] <= bound);
         for (int f = start[v]; f < start[v + 1] && smooth; f++) {
             double len = sqrt(dot3(tn[fan[f]], tn[fan[f]]));
             smooth = len > 0 && dot3(tn[fan[f]], vn[v]) >= COS_SMOOTH * len * l;
@@ -104,8 +106,9 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double reach, double plane_band)
         if (!smooth) continue;
         double to[3];
         mesh_vertex_at(m, v, to);
+        double by = fmin(fmax(0.5 * (vs[v][0] + vs[v][1]), -0.5 * bound), 0.5 * bound);
         for (int q = 0; q < 3; q++)
-            to[q] += 0.5 * (vs[v][0] + vs[v][1]) * vn[v][q] / l;
+            to[q] += by * vn[v][q] / l;
         mesh_vertex_move(m, v, fan + start[v], start[v + 1] - start[v], to, COS_KEEP, 0);
     }
     rc = 0;
@@ -139,7 +142,7 @@ int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_o
         return -1;
     }
     int rc = mesh_simplify(m, SMOOTH * tol, EDGE * tol, &sn, mesh_thread_count(o), err, errlen);
-    if (rc == 0 && (mesh_balance(m, &sn, 4 * SMOOTH * tol, SMOOTH * tol) != 0 ||
+    if (rc == 0 && (mesh_balance(m, &sn, SMOOTH * tol) != 0 ||
                     mesh_tighten(m, &sn, tol, mesh_thread_count(o)) != 0)) {
         snprintf(err, errlen, "out of memory simplifying the mesh");
         rc = -1;

@@ -262,11 +262,12 @@ int mesh_unfold(mesh *m, int t0, double h);
 int mesh_simplify(mesh *m, double tol, double edge_tol, mesh_snapper *sn, int threads, char *err,
                   size_t errlen);
 
-/* Move the smooth vertices of simplified mesh m out by half the largest
- * sag of their triangles, measured by rays up to reach from them; a vertex
- * whose triangles lie on plane patches alone only where their sags span
- * at most plane_band (balance.c); 0 or -1 when out of memory. */
-int mesh_balance(mesh *m, mesh_snapper *sn, double reach, double plane_band);
+/* Move the smooth vertices of mesh m, simplified to within `bound` of the
+ * surface, out by half the largest sag of their triangles (at most half
+ * the bound), measured by rays up to four bounds from them; a vertex whose
+ * triangles lie on plane patches alone only where their sags span at most
+ * the bound (balance.c); 0 or -1 when out of memory. */
+int mesh_balance(mesh *m, mesh_snapper *sn, double bound);
 /* Split the triangles of m's smooth parts that stray from the exact
  * surface by more than tol, measured by rays at seven points each (on up
  * to `threads` threads), on their longest edges, for a few rounds
