@@ -206,12 +206,27 @@ static int cubic_piece(level *L, const sample *l, const sample *r, int depth, in
     return 0;
 }
 
+/* Whether the piece between l and r may be plane-faced, as far as the
+ * ends' values and slopes tell (unknown slopes: it may): along a line its
+ * length is then linear, one slope at both ends; across the lines its
+ * section area quadratic, the mean of the end slopes its secant.  A curved
+ * piece fails this, and cubic_piece's three samples would be wasted on it
+ * (a fifth of the bench part's rays). */
+static int maybe_planar(const level *L, const sample *l, const sample *r)
+{
+    double sl = l->slope, sr = r->slope;
+    if (!isfinite(sl) || !isfinite(sr)) return 1;
+    if (!L->across) return fabs(sl - sr) <= 1e-9 * (fabs(sl) + fabs(sr)) + 1e-12;
+    double w = r->x - l->x, d = r->f[0] - l->f[0] - 0.5 * w * (sl + sr);
+    return fabs(d) <= 1e-6 * (fabs(l->f[0]) + fabs(r->f[0]) + w * (fabs(sl) + fabs(sr)));
+}
+
 /* Integrate the piece between samples l and r of one signature, halved
  * until the two rules agree; a node of another signature splits it there. */
 static int panel(level *L, const sample *l, const sample *r, int depth)
 {
-    int done;
-    if (cubic_piece(L, l, r, depth, &done) != 0) return -1;
+    int done = 0;
+    if (maybe_planar(L, l, r) && cubic_piece(L, l, r, depth, &done) != 0) return -1;
     if (done) return 0;
     double w = r->x - l->x, k[NF] = {0}, g[NF] = {0}, fv[15][NF], wj[15];
     for (int i = 0; i < 15; i++) {
