@@ -658,6 +658,7 @@ typedef struct lvert {
     double p[3];
     uint16_t color;
     uint8_t crease; /* a sample the cell's sharp edge runs through (see face_point) */
+    int8_t face;    /* a face point's cell face; -1 for a crossing */
 } lvert;
 
 /* 1 when moving the centre of the fan around the loop lv from x to y turns
@@ -802,6 +803,16 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
         fp[nfp++] = q;
     }
     if (nfp == 0) return 0;
+    if (nfp == 2 && fp[1] - fp[0] != 1 && fp[1] - fp[0] != nv - 1) {
+        /* a chord in a cell face (both its ends on it) the cell across
+         * could draw too: an edge of four triangles */
+        int mask[2];
+        for (int k = 0; k < 2; k++) {
+            const lvert *v = &lv[fp[k]];
+            mask[k] = v->edge >= 0 ? s->tb.edge_faces[v->edge] : 1 << v->face;
+        }
+        if (mask[0] & mask[1]) return 0;
+    }
     if (nfp == 1) { /* the edge touches the loop at one vertex: one side */
         double navg[3] = {0, 0, 0};
         for (int q = 0; q < nv; q++)
@@ -950,6 +961,7 @@ static void cell(sweep *s, int i, int j, int mask)
             lv[nv].edge = loop[q];
             lv[nv].color = a->color;
             lv[nv].crease = 0;
+            lv[nv].face = -1;
             memcpy(lv[nv].p, a->p, sizeof a->p);
             nv++;
             for (int c = 0; c < 3; c++)
@@ -983,6 +995,7 @@ static void cell(sweep *s, int i, int j, int mask)
                 }
                 lv[nv].vid = *slot;
                 lv[nv].edge = -1;
+                lv[nv].face = (int8_t)segface[loop[q]];
                 lv[nv].color = b->color;
                 lv[nv].crease = (uint8_t)vertex_on_edge(s, *slot);
                 memcpy(lv[nv].p, fp, sizeof fp);
