@@ -789,7 +789,10 @@ static int one_surface(const sweep *s, const sample *smp, const lvert *lv, int n
  * the loop's fan would fold): the loop is cut along the chord between the
  * two, and each side, one surface's samples, fanned from a vertex of its
  * own on that surface (a side of the two alone, a segment of the loop
- * along the edge, has nothing to fan).  Fanned from the vertex held in the
+ * along the edge, has nothing to fan; with one such vertex the edge only
+ * touches the loop, which is triangulated whole on its other surface).
+ * Not along a chord in a cell face, which the cell across could draw too
+ * (an edge of four triangles).  Fanned from the vertex held in the
  * cell instead, off both surfaces, the loop cut the edge off
  * (rotated_box_pin.scad's pin, where it leaves the box: 21 such cells).
  * 1 when done; 0 leaves the loop to the fan. */
@@ -804,9 +807,7 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
     }
     if (nfp == 0) return 0;
     if (nfp == 2 && fp[1] - fp[0] != 1 && fp[1] - fp[0] != nv - 1) {
-        /* a chord in a cell face (both its ends on it) the cell across
-         * could draw too: an edge of four triangles */
-        int mask[2];
+        int mask[2]; /* the cell faces each end lies on */
         for (int k = 0; k < 2; k++) {
             const lvert *v = &lv[fp[k]];
             mask[k] = v->edge >= 0 ? s->tb.edge_faces[v->edge] : 1 << v->face;
