@@ -14,18 +14,20 @@
  * middle of the band its triangles' sags span, the most inward to the most
  * outward: on a saddle they lie to both sides, and a move by the largest
  * alone doubled the other side's (a torus's inner equator, 3.2
- * tolerances; 2.4 so).  The move is at most half the simplifier's bound:
- * a sag beyond it is a triangle the simplifier did not see stray, which a
+ * tolerances; 2.4 so).  The move is at most half the simplifier's bound: a
+ * sag beyond it is a triangle the simplifier did not see stray, which a
  * larger move only carries to the other side (the surface samples of
- * bored_cone.scad beyond the tolerance: 1,621 -> 0).  A vertex on a sharp edge or corner (its
- * triangles' normals spread more than 20°) stays: it is exact, and moving it would move the edge.
- * A vertex whose triangles lie on plane patches alone (MESH_PATCH_PLANAR: a faceted curve, an
- * imported ring's 6,144 facets) moves only where their sags span no more than the simplifier
- * allowed: wider, they are a crease the triangles cut across, not a curve's sag
- * (pinched_cells.scad's 12-gon facets, spans of 3 to 6 tolerances: 395 surface samples were moved
- * beyond the tolerance, 37 so; the ring's volume stays within 0.11 % of
- * openscad's, -0.75 % with planes never moved).  A move that would turn
- * one of its triangles by more than 30° is not made.
+ * bored_cone.scad beyond the tolerance: 1,621 -> 0).  A vertex on a sharp
+ * edge or corner (its triangles' normals spread more than 20°) stays: it is
+ * exact, and moving it would move the edge.  A vertex whose triangles lie on
+ * plane patches alone (MESH_PATCH_PLANAR: a faceted curve, an imported
+ * ring's 6,144 facets) moves only where their sags span no more than the
+ * simplifier allowed: wider, they are a crease the triangles cut across,
+ * not a curve's sag (pinched_cells.scad's 12-gon facets, spans of 3 to 6
+ * tolerances: 395 surface samples were moved beyond the tolerance, 37 so;
+ * the ring's volume stays within 0.11 % of openscad's, -0.75 % with planes
+ * never moved).  A move that would turn one of its triangles by more than
+ * 30° is not made.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"

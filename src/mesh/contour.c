@@ -770,15 +770,17 @@ static int vertex_on_edge(const sweep *s, int32_t v)
     return (size_t)v < s->vn.cap && s->vn.edge[v];
 }
 
-/* Whether the samples of loop lv, less those on its sharp edge, lie on one
- * surface. */
-static int one_surface(const sweep *s, const sample *smp, const lvert *lv, int nv)
+/* Whether the samples of the n vertices of loop lv (nv in all) from a on,
+ * less those on its sharp edge, lie on one surface. */
+static int one_surface(const sweep *s, const sample *smp, const lvert *lv, int nv, int a, int n)
 {
-    for (int q = 0; q < nv; q++)
-        for (int r = q + 1; r < nv; r++)
-            if (lv[q].edge >= 0 && !lv[q].crease && lv[r].edge >= 0 && !lv[r].crease &&
-                creased(s, &smp[lv[q].edge], &smp[lv[r].edge]))
+    for (int q = 0; q < n; q++)
+        for (int r = q + 1; r < n; r++) {
+            const lvert *u = &lv[(a + q) % nv], *w = &lv[(a + r) % nv];
+            if (u->edge >= 0 && !u->crease && w->edge >= 0 && !w->crease &&
+                creased(s, &smp[u->edge], &smp[w->edge]))
                 return 0;
+        }
     return 1;
 }
 
@@ -820,7 +822,7 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
             if (lv[q].edge >= 0 && !lv[q].crease)
                 for (int c = 0; c < 3; c++)
                     navg[c] += smp[lv[q].edge].n[c];
-        if (one_surface(s, smp, lv, nv) && fan_plain(s, lv, nv, navg)) return 1;
+        if (one_surface(s, smp, lv, nv, 0, nv) && fan_plain(s, lv, nv, navg)) return 1;
         fp[1] = (fp[0] + nv - 1) % nv;
     }
     double h = s->d->h, centre[2][3];
@@ -829,11 +831,9 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
     for (int side = 0; side < 2; side++) {
         /* lv[fp[side]] .. lv[fp[1 - side]], around the loop */
         int a = fp[side], b = fp[1 - side], n = (b - a + nv) % nv + 1;
-        count[side] = n;
-        if (n == 2 || (nfp == 1 && side == 1)) {
-            count[side] = 2;
-            continue;
-        }
+        count[side] = n == 2 || (nfp == 1 && side == 1) ? 0 : n; /* 0: nothing to fan */
+        if (!count[side]) continue;
+        if (!one_surface(s, smp, lv, nv, a, n)) return 0; /* two surfaces on one side: a corner */
         double sp[12][3], nrm[12][3], navg[3] = {0, 0, 0}, mass[3] = {0, 0, 0};
         uint32_t patch[12];
         int ns = 0;
@@ -843,10 +843,6 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
                 mass[c] += v->p[c] / n;
             if (v->edge < 0 || v->crease) continue;
             const sample *e = &smp[v->edge];
-            for (int r = 0; r < ns; r++)
-                if (dot3(e->n, nrm[r]) < s->cos_feature ||
-                    mesh_planes_crease(e->patch, patch[r], dot3(e->n, nrm[r])))
-                    return 0; /* two surfaces on one side: a corner */
             memcpy(sp[ns], e->x, sizeof sp[ns]);
             memcpy(nrm[ns], e->n, sizeof nrm[ns]);
             patch[ns++] = e->patch;
@@ -880,7 +876,7 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
         }
     }
     for (int side = 0; side < 2; side++) {
-        if (count[side] == 2) continue;
+        if (!count[side]) continue;
         int32_t cv = push_snapped(s, centre[side], centre[side], 0, lo);
         if (cv < 0) {
             s->oom = 1;
