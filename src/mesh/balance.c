@@ -144,7 +144,7 @@ int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_o
         return -1;
     }
     int rc = mesh_simplify(m, SMOOTH * tol, EDGE * tol, &sn, mesh_thread_count(o), err, errlen);
-    if (rc == 0 && (mesh_balance(m, &sn, SMOOTH * tol) != 0 ||
+    if (rc == 0 && (mesh_balance(m, &sn, SMOOTH * tol) != 0 || mesh_unsliver(m, &sn, d->h) != 0 ||
                     mesh_tighten(m, &sn, tol, mesh_thread_count(o)) != 0)) {
         snprintf(err, errlen, "out of memory simplifying the mesh");
         rc = -1;

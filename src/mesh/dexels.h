@@ -251,6 +251,12 @@ int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnorma
  * triangles lie back to back, where that leaves fewer such edges
  * (unfold.c); 0 or -1 when out of memory. */
 int mesh_unfold(mesh *m, int t0, double h);
+/* Flip the long edge of each sliver of m (grid spacing h) whose corner lies
+ * within a tenth of that edge's length of its middle, where the surface
+ * about it is smooth (no neighbour turned 20° or more) and the flip leaves
+ * no sliver and a new edge whose middle lies nearer the exact surface (sn)
+ * than the old one's (unfold.c); 0 or -1 when out of memory. */
+int mesh_unsliver(mesh *m, mesh_snapper *sn, double h);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and

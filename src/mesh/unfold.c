@@ -1,6 +1,7 @@
 /*
  * unfold.c — the contour's folds (two triangles back to back across an
- * edge) taken away by flipping that edge (see dexels.h, mesh_unfold).
+ * edge) taken away by flipping that edge (see dexels.h, mesh_unfold), and
+ * a simplified mesh's slivers likewise (mesh_unsliver).
  *
  * Every vertex of the contour lies on the surface, but where a crease or a
  * surface passes close to a grid node, the loops of neighbouring cells can
@@ -14,6 +15,18 @@
  * an edge of four triangles).  Since every flip lowers the count of folded
  * edges, passes end; they stop when one flips nothing, or after PASSES.
  * The mesh's boundary, its vertices and their places do not change.
+ *
+ * A sliver the simplifier left on a smooth part (a corner c within a tenth
+ * of its longest side ab, above the side's middle) joins c to a vertex that
+ * mesh_balance then moves out by half its triangles' sag, while ab, which
+ * spans the sag's whole width, stays under the surface: the sliver stands
+ * 30° off the surface, and mesh_tighten, which measures only triangles
+ * that bend less than 20° against their neighbours, passes it and the
+ * triangle across ab by (a torus's inner side, 1.8 tolerances).  Flipped
+ * to cd where the triangles about it turn less than 20° against each
+ * other, the flip leaves two that do likewise and are no slivers, and cd's
+ * middle lies nearer the surface than ab's (on a surface bent one way
+ * only, a sliver along the straight way is the best shape: a torus's top).
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -22,17 +35,27 @@
 #include <stdlib.h>
 
 #define COS_FOLD (-0.866) /* normals more than 150° apart: folded */
+#define COS_SMOOTH 0.94   /* cos 20° */
+#define SLIVER 0.1        /* a corner this near its opposite side, of its length */
+#define COS_FACING 0.5    /* the surface under a side turned no more than 60° from it */
 #define PASSES 8
 #define AROUND 1024 /* the most edges looked at around a vertex */
 
-typedef struct fold_mesh {
+typedef struct quad quad;
+typedef struct fold_mesh fold_mesh;
+/* Whether the edge of quad q should be flipped, to normals n3 and n4. */
+typedef int (*flip_rule)(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3]);
+
+struct fold_mesh {
     mesh *m;
     int t0;
     int32_t *opp;   /* half-edge 3·t + k (tv[k] → tv[k + 1], t from t0) → its twin; -1 */
     double min2;    /* |cross|² below which a triangle has no area */
     double (*n)[3]; /* each triangle's unit normal, when has */
     uint8_t *has;
-} fold_mesh;
+    flip_rule wanted;
+    mesh_snapper *sn; /* the surface (sliver_wanted) */
+};
 
 static int32_t *corners(const fold_mesh *f, int32_t t)
 {
@@ -94,46 +117,149 @@ static void link(fold_mesh *f, int32_t x, int32_t y)
     if (y >= 0) f->opp[y] = x;
 }
 
-/* Flip the edge of half-edge x when its triangles are folded and the flip
- * leaves fewer folded edges; 1 when flipped. */
-static int try_flip(fold_mesh *f, int32_t x)
+/* The quad of half-edge x: triangle t = (a, b, c) holds x (a → b), u =
+ * (b, a, d) its twin y; its sides b → c, c → a (in t), a → d, d → b (in
+ * u). */
+struct quad {
+    int32_t t, u, a, b, c, d, bc, ca, ad, db;
+};
+
+static int quad_of(const fold_mesh *f, int32_t x, quad *q)
 {
     int32_t y = f->opp[x];
-    if (y < 0) return 0;
+    if (y < 0 || x / 3 == y / 3) return 0;
     int32_t t = x / 3, u = y / 3;
     int k = x % 3, j = y % 3;
-    if (t == u) return 0;
-    int32_t *tv = corners(f, t), *uv = corners(f, u);
-    int32_t a = tv[k], b = tv[(k + 1) % 3], c = tv[(k + 2) % 3], d = uv[(j + 2) % 3];
-    if (c == d) return 0;
-    mesh *m = f->m;
-    if (!f->has[t] || !f->has[u] || !(dot3(f->n[t], f->n[u]) < COS_FOLD)) return 0;
-    const double *n1 = f->n[t], *n2 = f->n[u];
-    double n3[3], n4[3];
-    /* the quad's sides: b → c, c → a (in t), a → d, d → b (in u) */
-    int32_t bc = 3 * t + (k + 1) % 3, ca = 3 * t + (k + 2) % 3, ad = 3 * u + (j + 1) % 3,
-            db = 3 * u + (j + 2) % 3;
-    int before = 1 + folded_across(f, bc, n1) + folded_across(f, ca, n1) +
-                 folded_across(f, ad, n2) + folded_across(f, db, n2);
+    const int32_t *tv = corners(f, t), *uv = corners(f, u);
+    *q = (quad){t,
+                u,
+                tv[k],
+                tv[(k + 1) % 3],
+                tv[(k + 2) % 3],
+                uv[(j + 2) % 3],
+                3 * t + (k + 1) % 3,
+                3 * t + (k + 2) % 3,
+                3 * u + (j + 1) % 3,
+                3 * u + (j + 2) % 3};
+    return q->c != q->d;
+}
+
+/* Whether the quad's triangles are folded and a flip, to normals n3 and
+ * n4, leaves fewer folded edges among the five it touches. */
+static int fold_wanted(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3])
+{
+    const double *n1 = f->n[q->t], *n2 = f->n[q->u];
+    if (!f->has[q->t] || !f->has[q->u] || !(dot3(n1, n2) < COS_FOLD)) return 0;
+    int before = 1 + folded_across(f, q->bc, n1) + folded_across(f, q->ca, n1) +
+                 folded_across(f, q->ad, n2) + folded_across(f, q->db, n2);
     /* after: (c, a, d) holds c → a and a → d, (d, b, c) holds d → b and b → c */
-    if (!unit_normal(m, c, a, d, f->min2, n3) || !unit_normal(m, d, b, c, f->min2, n4)) return 0;
-    int after = (dot3(n3, n4) < COS_FOLD) + folded_across(f, ca, n3) + folded_across(f, ad, n3) +
-                folded_across(f, db, n4) + folded_across(f, bc, n4);
-    if (after >= before || has_edge(f, ca, d)) return 0;
-    int32_t oca = f->opp[ca], oad = f->opp[ad], odb = f->opp[db], obc = f->opp[bc];
-    tv[0] = c, tv[1] = a, tv[2] = d; /* c → a, a → d, d → c */
-    uv[0] = d, uv[1] = b, uv[2] = c; /* d → b, b → c, c → d */
-    link(f, 3 * t, oca);
-    link(f, 3 * t + 1, oad);
-    link(f, 3 * u, odb);
-    link(f, 3 * u + 1, obc);
-    link(f, 3 * t + 2, 3 * u + 2);
-    note_normal(f, t);
-    note_normal(f, u);
+    int after = (dot3(n3, n4) < COS_FOLD) + folded_across(f, q->ca, n3) +
+                folded_across(f, q->ad, n3) + folded_across(f, q->db, n4) +
+                folded_across(f, q->bc, n4);
+    return after < before;
+}
+
+/* The triangle a, b, c's height over its longest side, over that side's
+ * length, into *shape; 1 when ab is that side. */
+static int shape_of(const mesh *m, int32_t a, int32_t b, int32_t c, double *shape)
+{
+    double p[3][3], n[3], l2[3];
+    mesh_vertex_at(m, a, p[0]);
+    mesh_vertex_at(m, b, p[1]);
+    mesh_vertex_at(m, c, p[2]);
+    for (int k = 0; k < 3; k++) {
+        double e[3];
+        sub3(p[(k + 1) % 3], p[k], e);
+        l2[k] = dot3(e, e);
+    }
+    tri_normal3(p[0], p[1], p[2], n);
+    double top = fmax(l2[0], fmax(l2[1], l2[2]));
+    *shape = top > 0 ? sqrt(dot3(n, n)) / top : 0;
+    return l2[0] >= top;
+}
+
+/* How far the middle of side ab lies from the surface along n (not unit),
+ * looked for within the side's length; INFINITY when it is not found. */
+static double sag(const fold_mesh *f, int32_t a, int32_t b, const double n[3])
+{
+    double p[3], r[3], x[3], e[3], u[3], hit[3], hn[3];
+    mesh_vertex_at(f->m, a, p);
+    mesh_vertex_at(f->m, b, r);
+    sub3(r, p, e);
+    double l = sqrt(dot3(n, n));
+    if (!(l > 0)) return INFINITY;
+    for (int k = 0; k < 3; k++) {
+        x[k] = 0.5 * (p[k] + r[k]);
+        u[k] = n[k] / l;
+    }
+    if (!mesh_snap_probe(f->sn, x, u, sqrt(dot3(e, e)), COS_FACING, hit, hn)) return INFINITY;
+    sub3(hit, x, e);
+    return sqrt(dot3(e, e));
+}
+
+/* Whether the triangle across half-edge x has a normal within COS_SMOOTH
+ * of n (an open edge or a triangle without area: no). */
+static int smooth_across(const fold_mesh *f, int32_t x, const double n[3])
+{
+    int32_t y = f->opp[x];
+    return y >= 0 && f->has[y / 3] && dot3(n, f->n[y / 3]) >= COS_SMOOTH;
+}
+
+/* Whether t is a sliver on ab (its longest side, c within SLIVER of it)
+ * in a smooth part — u and the triangles across t's other sides turn less
+ * than 20° against each other, so ab is no sharp edge — and the flip, to
+ * normals n3 and n4, leaves two triangles that turn less than that against
+ * u and are no slivers themselves. */
+static int sliver_wanted(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3])
+{
+    const mesh *m = f->m;
+    const double *n2 = f->n[q->u];
+    double s1, s3, s4;
+    if (!f->has[q->u] || !shape_of(m, q->a, q->b, q->c, &s1) || s1 >= SLIVER) return 0;
+    if (f->has[q->t] && dot3(n3, n4) <= dot3(f->n[q->t], n2)) return 0;
+    if (!smooth_across(f, q->bc, n2) || !smooth_across(f, q->ca, n2)) return 0;
+    if (dot3(n3, n2) < COS_SMOOTH || dot3(n4, n2) < COS_SMOOTH) return 0;
+    shape_of(m, q->c, q->a, q->d, &s3);
+    shape_of(m, q->d, q->b, q->c, &s4);
+    if (s3 < SLIVER || s4 < SLIVER) return 0;
+    /* the new side nearer the surface than the old (along a surface bent
+     * one way only, a sliver along the straight way is the best shape) */
+    double n12[3], n34[3];
+    for (int k = 0; k < 3; k++) {
+        n12[k] = f->n[q->t][k] + n2[k];
+        n34[k] = n3[k] + n4[k];
+    }
+    return sag(f, q->c, q->d, n34) < sag(f, q->a, q->b, n12);
+}
+
+/* Flip the edge of half-edge x when f->wanted says so and the new edge is
+ * not there already; 1 when flipped. */
+static int try_flip(fold_mesh *f, int32_t x)
+{
+    quad q;
+    if (!quad_of(f, x, &q)) return 0;
+    double n3[3], n4[3];
+    if (!unit_normal(f->m, q.c, q.a, q.d, f->min2, n3) ||
+        !unit_normal(f->m, q.d, q.b, q.c, f->min2, n4) || !f->wanted(f, &q, n3, n4) ||
+        has_edge(f, q.ca, q.d))
+        return 0;
+    int32_t oca = f->opp[q.ca], oad = f->opp[q.ad], odb = f->opp[q.db], obc = f->opp[q.bc];
+    int32_t *tv = corners(f, q.t), *uv = corners(f, q.u);
+    tv[0] = q.c, tv[1] = q.a, tv[2] = q.d; /* c → a, a → d, d → c */
+    uv[0] = q.d, uv[1] = q.b, uv[2] = q.c; /* d → b, b → c, c → d */
+    link(f, 3 * q.t, oca);
+    link(f, 3 * q.t + 1, oad);
+    link(f, 3 * q.u, odb);
+    link(f, 3 * q.u + 1, obc);
+    link(f, 3 * q.t + 2, 3 * q.u + 2);
+    note_normal(f, q.t);
+    note_normal(f, q.u);
     return 1;
 }
 
-int mesh_unfold(mesh *m, int t0, double h)
+/* Flip edges of triangles [t0, m->nt) of m while wanted says so, in up to
+ * PASSES passes; 0 or -1 when out of memory. */
+static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *sn)
 {
     if (m->nt <= t0) return 0;
     size_t nt = (size_t)(m->nt - t0);
@@ -143,7 +269,9 @@ int mesh_unfold(mesh *m, int t0, double h)
                    malloc(3 * nt * sizeof *f.opp),
                    1e-12 * h * h * h * h,
                    malloc(nt * sizeof *f.n),
-                   malloc(nt)};
+                   malloc(nt),
+                   wanted,
+                   sn};
     if (!f.opp || !f.n || !f.has || mesh_half_twins(m, t0, f.opp) != 0) {
         free(f.opp);
         free(f.n);
@@ -162,4 +290,14 @@ int mesh_unfold(mesh *m, int t0, double h)
     free(f.n);
     free(f.has);
     return 0;
+}
+
+int mesh_unfold(mesh *m, int t0, double h)
+{
+    return flip_all(m, t0, h, fold_wanted, NULL);
+}
+
+int mesh_unsliver(mesh *m, mesh_snapper *sn, double h)
+{
+    return flip_all(m, 0, h, sliver_wanted, sn);
 }

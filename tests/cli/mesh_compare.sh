@@ -15,7 +15,7 @@
 # surfaces (within_d: faceted_prisms's plane facets at 12° to 45°, their
 # edges and corners; rounded_cube's rims; a sphere, hulls, minkowski sums,
 # render()) within their default tolerance both ways, and the torus's mesh
-# within it but for 0.5 % of its samples;
+# within it but for 0.5 % of its samples, and all within 1.5 times it;
 # and two models of tests/models closed as read back at
 # --facets=openscad.  A 30-gon prism (tests/models/polygon_prism.scad) must
 # come out in no more triangles than 1.2 times openscad's, a 24-gon frustum
@@ -92,6 +92,11 @@ for f in "$models"/*.scad; do
         d1=$(tolerance_of "$tmp/$name.json")
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --share 0.5 \
             --name "$name, 0.5 % beyond D" || failed=$((failed + 1))
+        # and all of it within 1.5 D (1.76 D where a sliver the simplifier
+        # left stood 30° off the surface, and the triangles across the top
+        # circle, bent 20° against each other there, went unmeasured)
+        "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$(tolerance_of "$tmp/$name.json" 1.5)" \
+            --name "$name, 1.5 D" || failed=$((failed + 1))
     fi
     case " $within_d " in *" $name "*)
         # mesh and exact surface within the default tolerance of each other
