@@ -14,28 +14,41 @@
  * Plane faces are known exactly: a ray through a triangle's centroid finds
  * the face under it, and a planar patch is one plane, read off that
  * crossing.  A vertex lies on those planes, of the faces under the
- * triangles around it, that pass within rounding of it.  A vertex whose
- * triangles lie over two or three planes, not all through it, moves onto
- * the line or point where they meet (a contour vertex a little off a
- * crease).  An edge whose ends share no plane, one end on A and the other
- * on B, crosses the line where A and B meet; it is split at the point of
- * that line nearest it.  A triangle whose corners still share no plane, and
- * lie on three, gets the point where the three meet as a new corner (a fan
- * of three).  Every such point must be one a ray along the planes' mean
- * normal finds on the surface (else the planes do not meet there: a face
- * lies between them), and every move or split must leave triangles with
- * area that face like the plane they lie on.  Passes repeat until one
- * changes nothing; the simplifier then runs again (mesh_dexels_simplify).
- * The contour's own mesh, before the simplifier, is crowded with slivers
- * along such edges, and most splits there would fold one.
+ * triangles around it, that pass within rounding of it.  In each pass:
+ *   - a vertex whose triangles lie over two or three planes, not all
+ *     through it, moves onto the line or point where they meet (a contour
+ *     vertex a little off a crease);
+ *   - an edge shorter than a tenth of a cell, amid plane faces, collapses
+ *     where that leaves fewer triangles that lie on no plane their corners
+ *     share or face against it (a knot of vertices the contour left about a
+ *     crease, its triangles folded back on the face);
+ *   - an edge whose ends share no plane is flipped where its quad's other
+ *     diagonal lies on the crease, else split where it crosses the crease:
+ *     one end on A and the other on B, at the point of the line where A and
+ *     B meet nearest the edge;
+ *   - a triangle whose corners still share no plane, and lie on three,
+ *     gets the point where the three meet as a new corner (a fan of three).
+ * Every such point must be one a ray along the planes' mean normal finds on
+ * the surface (else the planes do not meet there: a face lies between
+ * them), and every change must leave triangles with area that face like
+ * the plane they lie on.  Creases slighter than 10° are left to the
+ * simplifier (a faceted curve's: hull_revolve.scad's 64 x 32 facets), and
+ * only what lies about a bend is looked at; later passes look about what
+ * the last one changed.  The simplifier then runs again
+ * (mesh_dexels_simplify).  The contour's own mesh, before the simplifier,
+ * is crowded with slivers along such edges, and most splits there would
+ * fold one.
  *
  * Measured (build/tools/meshdev, the mesh models at their default
  * tolerance): star_prism.scad 122 -> 36 triangles (openscad's), its tips 14
- * D off -> exact; pinched_cells 1,874 -> 1,510, 29 -> 14 D; twist_ties
- * 1,876 -> 1,402; minkowski_solids 732 -> 568; polygon_frustum 198 -> 142
- * (openscad 92); the box above 352 -> 262, seven of its corners found where
- * five were.  A contour vertex off a crease whose triangles a move would
- * fold, and the crowded triangles about it, are still left as they are.
+ * D off -> exact; import_amf_3mf 212 -> 202, 1.09 -> 0.69 D; revolve_faceted
+ * 1,084 -> 478; pinched_cells 1,874 -> 1,354, 29 -> 14 D; twist_ties 1,876
+ * -> 1,420; minkowski_solids 732 -> 586; the box above 352 -> 206, seven of
+ * its corners found where five were.  A contour vertex off a crease whose
+ * triangles a move would fold, and the crowded triangles about it, are
+ * still left as they are.  The cost is in the rays: the corpus's twisted
+ * and scaled extrusions (linear_extrude-scale-zero-tests.scad, 140,000
+ * triangles simplified) take 1.9 s more, for a mesh a third smaller.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -45,12 +58,13 @@
 #include <string.h>
 
 #define PASSES 8
-#define MAX_PLANES 8     /* candidates per edge or triangle */
-#define COS_TURN 0.17    /* a snapped vertex's triangles turn less than 80° */
-#define COS_APART 0.9998 /* planes whose normals part by less (about 1°) do not crease */
+#define KNOT 0.1        /* cells: an edge shorter may be collapsed (collapse_knot) */
+#define MAX_PLANES 8    /* candidates per edge or triangle */
+#define COS_TURN 0.17   /* a snapped vertex's triangles turn less than 80° */
+#define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
+#define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
 
 typedef struct plane {
-    uint32_t patch; /* 0: empty slot */
     double n[3], d; /* n·x = d */
 } plane;
 
@@ -59,17 +73,23 @@ typedef struct crease_mesh {
     mesh_snapper *sn;
     mesh_fmap pos; /* every vertex by its place */
     double h;
-    plane *pl; /* open addressing by patch */
-    size_t cap, npl;
-    int32_t *tp;          /* each triangle's plane (index into pl), or -1 */
-    int32_t *start, *fan; /* the triangles around each vertex */
-    int32_t *opp;         /* each half-edge's twin */
-    uint8_t *used;        /* triangles split this pass */
+    plane *pl;          /* the planes met so far */
+    int32_t npl, cap;   /* of pl */
+    mesh_fmap by_patch; /* patch -> index into pl */
+    int32_t *tp;        /* each triangle's plane (index into pl), -1: none, -2: not looked for */
+    size_t tp_cap;
+    uint8_t *hot; /* vertices whose surroundings changed (all, at first) */
+    size_t hot_cap;
+    int32_t *start, *fan; /* the triangles around each vertex, as the pass began */
+    int32_t *opp;         /* each half-edge's twin, as the pass began */
+    uint8_t *used;        /* triangles changed this pass */
+    uint8_t *ends;        /* vertices a flip joined this pass */
+    int gone;             /* triangles emptied this pass */
 } crease_mesh;
 
 /* The plane of the planar face under triangle t (a ray along its normal
- * through its centroid), as an index into c->pl; -1 when none (or out of
- * room: c->pl holds a few thousand planes at most, then stops adding). */
+ * through its centroid), as an index into c->pl; -1 when none, -3 when out
+ * of memory. */
 static int32_t face_under(crease_mesh *c, int32_t t)
 {
     double p[3][3], g[3], n[3], hit[3], hn[3];
@@ -86,18 +106,25 @@ static int32_t face_under(crease_mesh *c, int32_t t)
     if (!mesh_snap_probe_patch(c->sn, g, n, c->h, 0.5, 0, hit, hn, &patch) || !patch ||
         !(mesh_patch_flagged(c->sn->d, patch) & MESH_PATCH_PLANAR))
         return -1;
-    size_t i = mesh_hash_mix(patch) & (c->cap - 1);
-    while (c->pl[i].patch && c->pl[i].patch != patch)
-        i = (i + 1) & (c->cap - 1);
-    if (!c->pl[i].patch) {
-        if (2 * (c->npl + 1) > c->cap || !((l = sqrt(dot3(hn, hn))) > 0)) return -1;
-        c->pl[i].patch = patch;
+    int fresh;
+    int32_t *slot = mesh_fmap_slot(&c->by_patch, patch, &fresh);
+    if (!slot) return -3;
+    if (fresh) {
+        if (c->npl == c->cap) {
+            int32_t cap = c->cap ? 2 * c->cap : 64;
+            plane *more = realloc(c->pl, (size_t)cap * sizeof *more);
+            if (!more) return -3;
+            c->pl = more;
+            c->cap = cap;
+        }
+        if (!((l = sqrt(dot3(hn, hn))) > 0)) l = 1;
+        plane *q = &c->pl[c->npl];
         for (int k = 0; k < 3; k++)
-            c->pl[i].n[k] = hn[k] / l;
-        c->pl[i].d = dot3(c->pl[i].n, hit);
-        c->npl++;
+            q->n[k] = hn[k] / l;
+        q->d = dot3(q->n, hit);
+        *slot = c->npl++;
     }
-    return (int32_t)i;
+    return *slot;
 }
 
 /* The planes under the triangles around vertices vs (nv of them),
@@ -128,6 +155,14 @@ static unsigned on_planes(const crease_mesh *c, int32_t v, const plane *const *p
     for (int i = 0; i < np; i++)
         if (fabs(dot3(pl[i]->n, x) - pl[i]->d) < eps) s |= 1u << i;
     return s;
+}
+
+/* Whether vertex v lies on the plane under one of its triangles. */
+static int on_a_plane(const crease_mesh *c, int32_t v)
+{
+    const plane *pl[MAX_PLANES];
+    int np = candidates(c, &v, 1, pl);
+    return on_planes(c, v, pl, np) != 0;
 }
 
 /* Whether x lies on the surface: a ray through it along n (not unit) finds
@@ -260,8 +295,169 @@ static int snap_vertex(crease_mesh *c, int32_t v)
                           COS_TURN, min2))
         return 0;
     int32_t *slot = mesh_fmap_slot(&c->pos, mesh_pos_key(to), &fresh);
-    if (slot) *slot = v;
-    return slot ? 1 : -1;
+    if (!slot) return -1;
+    *slot = v;
+    for (int32_t f = c->start[v]; f < c->start[v + 1]; f++)
+        c->used[c->fan[f]] = 1;
+    return 1;
+}
+
+/* Whether triangle t has corner v. */
+static int m_has(const mesh *m, int32_t t, int32_t v)
+{
+    const int32_t *tv = &m->t[3 * (size_t)t];
+    return tv[0] == v || tv[1] == v || tv[2] == v;
+}
+
+/* Whether vertices a and b share an edge (a's triangles, as the pass
+ * began). */
+static int joined(const crease_mesh *c, int32_t a, int32_t b)
+{
+    for (int32_t f = c->start[a]; f < c->start[a + 1]; f++) {
+        const int32_t *tv = &c->m->t[3 * (size_t)c->fan[f]];
+        if (tv[0] == b || tv[1] == b || tv[2] == b) return 1;
+    }
+    return 0;
+}
+
+/* Triangle t's corners with vertex v read as w, as points, into p; 0 when
+ * two of them are then one vertex (the triangle goes). */
+static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int32_t tv[3],
+                      double p[3][3])
+{
+    for (int k = 0; k < 3; k++) {
+        tv[k] = c->m->t[3 * (size_t)t + k];
+        if (tv[k] == v) tv[k] = w;
+    }
+    if (tv[0] == tv[1] || tv[1] == tv[2] || tv[2] == tv[0]) return 0;
+    for (int k = 0; k < 3; k++)
+        mesh_vertex_at(c->m, tv[k], p[k]);
+    return 1;
+}
+
+/* How many of the triangles around v and w (v read as w when `as`) lie
+ * on no plane their corners share, or face against it, or have no area. */
+static int misfits(const crease_mesh *c, int32_t v, int32_t w, int as)
+{
+    const plane *pl[MAX_PLANES];
+    int32_t ends[2] = {v, w};
+    int np = candidates(c, ends, 2, pl), bad = 0;
+    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            int32_t t = c->fan[f], tv[3];
+            double p[3][3];
+            if (e == 1 && (m_has(c->m, t, v))) continue; /* seen from v */
+            if (!corners_as(c, t, v, as ? w : v, tv, p)) continue;
+            unsigned s0 = on_planes(c, tv[0], pl, np), s1 = on_planes(c, tv[1], pl, np),
+                     s2 = on_planes(c, tv[2], pl, np), s = s0 & s1 & s2;
+            bad += !s || !half_ok(pl, s, p[0], p[1], p[2], NULL, min2);
+        }
+    return bad;
+}
+
+/* Collapse the edge of half-edge x, shorter than a tenth of a cell, one of
+ * whose ends and every other corner of whose ends' triangles lie on plane
+ * faces (not on curved ones, where a triangle lies on no plane anyway), into
+ * whichever end leaves fewer misfit triangles about it (a knot of vertices
+ * the contour left about a crease, its triangles folded back on the
+ * plane), where there are fewer than before and the ends share no
+ * neighbour but the two opposite corners (else the mesh would pinch).  The
+ * two triangles of the edge become empty (compacted after the pass).  1
+ * when collapsed, else 0. */
+static int collapse_knot(crease_mesh *c, int32_t x)
+{
+    int32_t y = c->opp[x], t = x / 3, o = y / 3;
+    if (y < 0 || t == o) return 0;
+    mesh *m = c->m;
+    int k = x % 3, j = y % 3;
+    int32_t v = m->t[3 * (size_t)t + k], w = m->t[3 * (size_t)t + (k + 1) % 3],
+            a = m->t[3 * (size_t)t + (k + 2) % 3], b = m->t[3 * (size_t)o + (j + 2) % 3];
+    double pv[3], pw[3], d[3];
+    mesh_vertex_at(m, v, pv);
+    mesh_vertex_at(m, w, pw);
+    sub3(pw, pv, d);
+    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h) || a == b) return 0;
+    int32_t ends[2] = {v, w};
+    if (!on_a_plane(c, v) && !on_a_plane(c, w)) return 0;
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            if (c->used[c->fan[f]]) return 0;
+            for (int q = 0; q < 3; q++) {
+                int32_t n = m->t[3 * (size_t)c->fan[f] + q];
+                if (n != v && n != w && !on_a_plane(c, n)) return 0;
+            }
+        }
+    /* the link: v's and w's neighbours in common are a and b alone */
+    for (int32_t f = c->start[v]; f < c->start[v + 1]; f++)
+        for (int q = 0; q < 3; q++) {
+            int32_t n = m->t[3 * (size_t)c->fan[f] + q];
+            if (n != v && n != w && n != a && n != b && joined(c, w, n)) return 0;
+        }
+    int before = misfits(c, v, w, 0), into_w = misfits(c, v, w, 1), into_v = misfits(c, w, v, 1);
+    int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v;
+    if ((from == v ? into_w : into_v) >= before) return 0;
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            int32_t *tv = &m->t[3 * (size_t)c->fan[f]];
+            for (int q = 0; q < 3; q++)
+                if (tv[q] == from) tv[q] = to;
+            if (tv[0] == tv[1] || tv[1] == tv[2] || tv[2] == tv[0]) tv[0] = tv[1] = tv[2] = -1;
+            c->used[c->fan[f]] = 1;
+        }
+    c->gone = 1;
+    return 1;
+}
+
+/* Drop the triangles collapse_knot emptied (their planes with them). */
+static void compact(crease_mesh *c)
+{
+    mesh *m = c->m;
+    int32_t n = 0;
+    for (int32_t t = 0; t < m->nt; t++) {
+        if (m->t[3 * (size_t)t] < 0) continue;
+        memmove(&m->t[3 * (size_t)n], &m->t[3 * (size_t)t], 3 * sizeof *m->t);
+        if (m->tc && m->npal) m->tc[n] = m->tc[t];
+        c->tp[n] = c->tp[t];
+        n++;
+    }
+    m->nt = n;
+}
+
+/* Flip the edge of half-edge x (triangle t = (u, w, c), its twin in o =
+ * (w, u, d)), whose ends share no plane, to c–d where then (c, u, d) and
+ * (d, w, c) each lie on a plane, facing like it: the chord's quad has its
+ * other diagonal on the crease.  1 when flipped, else 0. */
+static int flip_edge(crease_mesh *c, int32_t x)
+{
+    int32_t y = c->opp[x], t = x / 3, o = y / 3;
+    if (y < 0 || t == o || c->used[t] || c->used[o]) return 0;
+    int k = x % 3, j = y % 3;
+    mesh *m = c->m;
+    int32_t vs[4] = {m->t[3 * (size_t)t + k], m->t[3 * (size_t)t + (k + 1) % 3],
+                     m->t[3 * (size_t)t + (k + 2) % 3], m->t[3 * (size_t)o + (j + 2) % 3]};
+    if (vs[2] == vs[3]) return 0;
+    const plane *pl[MAX_PLANES];
+    int np = candidates(c, vs, 2, pl);
+    if (np < 2) return 0;
+    unsigned s[4];
+    for (int i = 0; i < 4; i++)
+        s[i] = on_planes(c, vs[i], pl, np);
+    if ((s[0] & s[1]) || !(s[2] & s[0] & s[3]) || !(s[3] & s[1] & s[2])) return 0;
+    double p[4][3];
+    for (int i = 0; i < 4; i++)
+        mesh_vertex_at(m, vs[i], p[i]);
+    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
+    if (!half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, min2) ||
+        !half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, min2) ||
+        (c->ends[vs[2]] && c->ends[vs[3]]) || joined(c, vs[2], vs[3]))
+        return 0;
+    int32_t *tv = &m->t[3 * (size_t)t], *ov = &m->t[3 * (size_t)o];
+    tv[0] = vs[2], tv[1] = vs[0], tv[2] = vs[3];
+    ov[0] = vs[3], ov[1] = vs[1], ov[2] = vs[2];
+    c->used[t] = c->used[o] = 1;
+    c->ends[vs[2]] = c->ends[vs[3]] = 1; /* (the fans do not show c–d) */
+    return 1;
 }
 
 /* Split the edge of half-edge x (triangle t = (u, w, c), its twin in o =
@@ -369,42 +565,133 @@ static int split_corner(crease_mesh *c, int32_t t)
     return 1;
 }
 
-/* One pass: the planes under the triangles, then edges, then corners;
- * *split counts the splits.  0 or -1. */
+/* Grow *a (*cap entries of size `size`) to n at least, the new entries
+ * filled with byte `fill`; 0 or -1. */
+static int grow_to(void **a, size_t *cap, size_t n, size_t size, int fill)
+{
+    if (n <= *cap) return 0;
+    size_t c = *cap ? *cap : 1024;
+    while (c < n)
+        c *= 2;
+    void *g = realloc(*a, c * size);
+    if (!g) return -1;
+    memset((char *)g + *cap * size, fill, (c - *cap) * size);
+    *a = g;
+    *cap = c;
+    return 0;
+}
+
+/* Whether vertex v is hot (one added this pass is). */
+static int is_hot(const crease_mesh *c, int32_t v)
+{
+    return (size_t)v >= c->hot_cap || c->hot[v];
+}
+
+/* Whether triangle t has a hot corner. */
+static int hot_triangle(const crease_mesh *c, int32_t t)
+{
+    const int32_t *tv = &c->m->t[3 * (size_t)t];
+    return is_hot(c, tv[0]) || is_hot(c, tv[1]) || is_hot(c, tv[2]);
+}
+
+/* Keep hot only the vertices of edges whose triangles bend by more than
+ * half the slightest crease looked at (a chord across it bends at least
+ * so), or that have no area or twin.  0 or -1. */
+static int mark_bent(crease_mesh *c, size_t nt)
+{
+    mesh *m = c->m;
+    uint8_t *bent = calloc((size_t)m->nv, 1);
+    double(*n)[3] = malloc(nt * sizeof *n);
+    if (!bent || !n) {
+        free(bent);
+        free(n);
+        return -1;
+    }
+    for (size_t t = 0; t < nt; t++) {
+        double p[3][3];
+        for (int k = 0; k < 3; k++)
+            mesh_vertex_at(m, m->t[3 * t + k], p[k]);
+        tri_normal3(p[0], p[1], p[2], n[t]);
+    }
+    for (size_t x = 0; x < 3 * nt; x++) {
+        int32_t y = c->opp[x];
+        const double *a = n[x / 3], *b = y >= 0 ? n[y / 3] : a;
+        double la = dot3(a, a), lb = dot3(b, b);
+        if (y >= 0 && la > 0 && lb > 0 && dot3(a, b) >= COS_BENT * sqrt(la * lb)) continue;
+        bent[m->t[x]] = bent[m->t[x / 3 * 3 + (x + 1) % 3]] = 1;
+    }
+    for (int32_t v = 0; v < m->nv && (size_t)v < c->hot_cap; v++)
+        c->hot[v] &= bent[v];
+    free(bent);
+    free(n);
+    return 0;
+}
+
+/* One pass over what is hot: the vertices snapped, knots collapsed, then
+ * edges flipped and split, then corners; *split counts the changes.  The
+ * corners of what changed are hot for the next.  0 or -1. */
 static int pass_once(crease_mesh *c, int *split)
 {
     mesh *m = c->m;
     size_t nt = (size_t)m->nt;
-    c->tp = malloc(nt * sizeof *c->tp);
     c->opp = malloc(3 * nt * sizeof *c->opp);
     c->used = calloc(nt, 1);
+    c->ends = calloc((size_t)m->nv, 1);
     c->start = c->fan = NULL;
+    c->gone = 0;
     int rc = -1;
-    if (!c->tp || !c->opp || !c->used || mesh_half_twins(m, 0, c->opp) != 0 ||
-        mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0)
+    if (!c->opp || !c->used || !c->ends || mesh_half_twins(m, 0, c->opp) != 0 ||
+        mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0 ||
+        grow_to((void **)&c->tp, &c->tp_cap, nt, sizeof *c->tp, 0xff) != 0)
         goto done;
+    /* only what is about a bend matters: elsewhere the triangles are flat
+     * already, or the faces' creases are slighter than COS_APART */
+    if (mark_bent(c, nt) != 0) goto done;
     for (size_t t = 0; t < nt; t++)
-        c->tp[t] = face_under(c, (int32_t)t);
+        if (c->tp[t] == -2 && hot_triangle(c, (int32_t)t))
+            if ((c->tp[t] = face_under(c, (int32_t)t)) == -3) goto done;
     for (int32_t v = 0; v < m->nv; v++) {
-        int r = snap_vertex(c, v);
+        int r = is_hot(c, v) ? snap_vertex(c, v) : 0;
         if (r < 0) goto done;
         *split += r;
     }
     for (size_t x = 0; x < 3 * nt; x++) {
-        int r = split_edge(c, (int32_t)x);
+        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
+        if (a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)))
+            *split += collapse_knot(c, (int32_t)x);
+    }
+    for (size_t x = 0; x < 3 * nt; x++) {
+        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
+        if (a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b))) *split += flip_edge(c, (int32_t)x);
+    }
+    for (size_t x = 0; x < 3 * nt; x++) {
+        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
+        int r = a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)) ? split_edge(c, (int32_t)x) : 0;
         if (r < 0) goto done;
         *split += r;
     }
     for (size_t t = 0; t < nt; t++) {
-        int r = split_corner(c, (int32_t)t);
+        int r = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t) ? split_corner(c, (int32_t)t) : 0;
         if (r < 0) goto done;
         *split += r;
     }
+    /* what is hot next: the corners of what changed, and what was added */
+    if (grow_to((void **)&c->tp, &c->tp_cap, (size_t)m->nt, sizeof *c->tp, 0xff) != 0 ||
+        grow_to((void **)&c->hot, &c->hot_cap, (size_t)m->nv, 1, 0) != 0)
+        goto done;
+    memset(c->hot, 0, (size_t)m->nv);
+    for (int32_t t = 0; t < m->nt; t++) {
+        int32_t *tv = &m->t[3 * (size_t)t];
+        if ((size_t)t < nt && !c->used[t]) continue;
+        c->tp[t] = -2;
+        if (tv[0] >= 0) c->hot[tv[0]] = c->hot[tv[1]] = c->hot[tv[2]] = 1;
+    }
     rc = 0;
 done:
-    free(c->tp);
+    if (c->gone) compact(c);
     free(c->opp);
     free(c->used);
+    free(c->ends);
     free(c->start);
     free(c->fan);
     return rc;
@@ -419,9 +706,13 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
     c.m = m;
     c.sn = sn;
     c.h = sn->d->h;
-    c.cap = 8192;
-    c.pl = calloc(c.cap, sizeof *c.pl);
-    int rc = c.pl ? 0 : -1, fresh;
+    int rc = grow_to((void **)&c.hot, &c.hot_cap, (size_t)m->nv, 1, 1) != 0 ||
+                     grow_to((void **)&c.tp, &c.tp_cap, (size_t)m->nt, sizeof *c.tp, 0xff) != 0
+                 ? -1
+                 : 0,
+        fresh;
+    for (int32_t t = 0; t < m->nt && rc == 0; t++)
+        c.tp[t] = -2;
     for (int32_t v = 0; v < m->nv && rc == 0; v++) {
         double p[3];
         mesh_vertex_at(m, v, p);
@@ -438,6 +729,10 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
         if (!split) break;
     }
     free(c.pl);
+    free(c.by_patch.key);
+    free(c.by_patch.val);
+    free(c.tp);
+    free(c.hot);
     free(c.pos.key);
     free(c.pos.val);
     return rc;

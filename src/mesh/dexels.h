@@ -247,11 +247,13 @@ void mesh_vnormals_free(mesh_vnormals *vn);
  * gets the new vertices' normals.  0 or -1 when out of memory. */
 int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn,
                       mesh_fmap *pos);
-/* Split the edges of m whose ends lie on two plane faces (and no common
- * one) on the crease where those meet, and give a triangle whose corners
- * lie on three the point where they meet, where rays find those points on
- * the surface (sn); *splits counts the splits (crease.c).  0 or -1 when
- * out of memory. */
+/* Put m's chords across the edges and corners of plane faces on them:
+ * vertices a little off a crease moved onto it, knots of short edges
+ * collapsed, edges whose ends lie on two plane faces (and no common one)
+ * flipped or split on the crease where those meet, and triangles whose
+ * corners lie on three given the point where they meet, where rays find
+ * those points on the surface (sn); *splits counts the changes (crease.c).
+ * 0 or -1 when out of memory. */
 int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits);
 /* Flip the edges of triangles [t0, m->nt) of m (grid spacing h) whose two
  * triangles lie back to back, where that leaves fewer such edges
