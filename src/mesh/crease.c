@@ -356,6 +356,23 @@ static int misfits(const crease_mesh *c, int32_t v, int32_t w, int as)
     return bad;
 }
 
+/* Whether every triangle around v and w that stays when v is read as w
+ * keeps some area. */
+static int keeps_area(const crease_mesh *c, int32_t v, int32_t w)
+{
+    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
+    int32_t ends[2] = {v, w};
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            int32_t tv[3];
+            double p[3][3], n[3];
+            if (!corners_as(c, c->fan[f], v, w, tv, p)) continue;
+            tri_normal3(p[0], p[1], p[2], n);
+            if (!(dot3(n, n) > min2)) return 0;
+        }
+    return 1;
+}
+
 /* Collapse the edge of half-edge x, shorter than a tenth of a cell, one of
  * whose ends and every other corner of whose ends' triangles lie on plane
  * faces (not on curved ones, where a triangle lies on no plane anyway), into
@@ -395,6 +412,8 @@ static int collapse_knot(crease_mesh *c, int32_t x)
             if (n != v && n != w && n != a && n != b && joined(c, w, n)) return 0;
         }
     int before = misfits(c, v, w, 0), into_w = misfits(c, v, w, 1), into_v = misfits(c, w, v, 1);
+    if (!keeps_area(c, v, w)) into_w = INT32_MAX;
+    if (!keeps_area(c, w, v)) into_v = INT32_MAX;
     int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v;
     if ((from == v ? into_w : into_v) >= before) return 0;
     for (int e = 0; e < 2; e++)
