@@ -302,6 +302,47 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     return 1;
 }
 
+/* The quad of half-edge x: its triangle t = (vs[0], vs[1], vs[2]), x from
+ * corner k, and the triangle o across, (vs[1], vs[0], vs[3]), its twin
+ * from corner j; 0 when x has no twin or the two triangles share all three
+ * corners. */
+static int quad_at(const crease_mesh *c, int32_t x, int32_t vs[4], int32_t *t, int32_t *o, int *k,
+                   int *j)
+{
+    int32_t y = c->opp[x];
+    if (y < 0 || x / 3 == y / 3) return 0;
+    const int32_t *tv = c->m->t;
+    *t = x / 3, *o = y / 3, *k = x % 3, *j = y % 3;
+    vs[0] = tv[3 * (size_t)*t + *k];
+    vs[1] = tv[3 * (size_t)*t + (*k + 1) % 3];
+    vs[2] = tv[3 * (size_t)*t + (*k + 2) % 3];
+    vs[3] = tv[3 * (size_t)*o + (*j + 2) % 3];
+    return vs[2] != vs[3];
+}
+
+/* An edge whose ends share no plane: its quad (quad_at), the planes
+ * under the triangles about its ends, and which of them each corner of the
+ * quad lies on. */
+typedef struct chord {
+    int32_t vs[4], t, o;
+    int k, j;
+    const plane *pl[MAX_PLANES];
+    int np;
+    unsigned s[4];
+} chord;
+
+/* The chord of half-edge x, its triangles unchanged this pass, into q; 0
+ * when x is none. */
+static int chord_at(crease_mesh *c, int32_t x, chord *q)
+{
+    if (!quad_at(c, x, q->vs, &q->t, &q->o, &q->k, &q->j) || c->used[q->t] || c->used[q->o])
+        return 0;
+    q->np = candidates(c, q->vs, 2, q->pl);
+    for (int i = 0; i < 4; i++)
+        q->s[i] = q->np < 2 ? 0 : on_planes(c, q->vs[i], q->pl, q->np);
+    return q->s[0] && q->s[1] && !(q->s[0] & q->s[1]);
+}
+
 /* Whether triangle t has corner v. */
 static int m_has(const mesh *m, int32_t t, int32_t v)
 {
@@ -384,17 +425,16 @@ static int keeps_area(const crease_mesh *c, int32_t v, int32_t w)
  * when collapsed, else 0. */
 static int collapse_knot(crease_mesh *c, int32_t x)
 {
-    int32_t y = c->opp[x], t = x / 3, o = y / 3;
-    if (y < 0 || t == o) return 0;
+    int32_t vs[4], t, o;
+    int k, j;
+    if (!quad_at(c, x, vs, &t, &o, &k, &j)) return 0;
     mesh *m = c->m;
-    int k = x % 3, j = y % 3;
-    int32_t v = m->t[3 * (size_t)t + k], w = m->t[3 * (size_t)t + (k + 1) % 3],
-            a = m->t[3 * (size_t)t + (k + 2) % 3], b = m->t[3 * (size_t)o + (j + 2) % 3];
+    int32_t v = vs[0], w = vs[1], a = vs[2], b = vs[3];
     double pv[3], pw[3], d[3];
     mesh_vertex_at(m, v, pv);
     mesh_vertex_at(m, w, pw);
     sub3(pw, pv, d);
-    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h) || a == b) return 0;
+    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h)) return 0;
     int32_t ends[2] = {v, w};
     if (!on_a_plane(c, v) && !on_a_plane(c, w)) return 0;
     for (int e = 0; e < 2; e++)
@@ -449,20 +489,14 @@ static void compact(crease_mesh *c)
  * other diagonal on the crease.  1 when flipped, else 0. */
 static int flip_edge(crease_mesh *c, int32_t x)
 {
-    int32_t y = c->opp[x], t = x / 3, o = y / 3;
-    if (y < 0 || t == o || c->used[t] || c->used[o]) return 0;
-    int k = x % 3, j = y % 3;
+    chord q;
+    if (!chord_at(c, x, &q)) return 0;
+    const int32_t *vs = q.vs;
+    const unsigned *s = q.s;
+    const plane *const *pl = q.pl;
+    int32_t t = q.t, o = q.o;
     mesh *m = c->m;
-    int32_t vs[4] = {m->t[3 * (size_t)t + k], m->t[3 * (size_t)t + (k + 1) % 3],
-                     m->t[3 * (size_t)t + (k + 2) % 3], m->t[3 * (size_t)o + (j + 2) % 3]};
-    if (vs[2] == vs[3]) return 0;
-    const plane *pl[MAX_PLANES];
-    int np = candidates(c, vs, 2, pl);
-    if (np < 2) return 0;
-    unsigned s[4];
-    for (int i = 0; i < 4; i++)
-        s[i] = on_planes(c, vs[i], pl, np);
-    if ((s[0] & s[1]) || !(s[2] & s[0] & s[3]) || !(s[3] & s[1] & s[2])) return 0;
+    if (!(s[2] & s[0] & s[3]) || !(s[3] & s[1] & s[2])) return 0;
     double p[4][3];
     for (int i = 0; i < 4; i++)
         mesh_vertex_at(m, vs[i], p[i]);
@@ -484,18 +518,14 @@ static int flip_edge(crease_mesh *c, int32_t x)
  * not, -1 when out of memory. */
 static int split_edge(crease_mesh *c, int32_t x)
 {
-    int32_t y = c->opp[x], t = x / 3, o = y / 3;
-    if (y < 0 || t == o || c->used[t] || c->used[o]) return 0;
-    int k = x % 3, j = y % 3;
+    chord q;
+    if (!chord_at(c, x, &q)) return 0;
+    const int32_t *vs = q.vs;
+    const plane *const *pl = q.pl;
+    int32_t t = q.t, o = q.o;
+    int k = q.k, j = q.j, np = q.np;
+    unsigned su = q.s[0], sw = q.s[1], sc = q.s[2], sd = q.s[3];
     mesh *m = c->m;
-    int32_t vs[4] = {m->t[3 * (size_t)t + k], m->t[3 * (size_t)t + (k + 1) % 3],
-                     m->t[3 * (size_t)t + (k + 2) % 3], m->t[3 * (size_t)o + (j + 2) % 3]};
-    const plane *pl[MAX_PLANES];
-    int np = candidates(c, vs, 2, pl);
-    if (np < 2) return 0;
-    unsigned su = on_planes(c, vs[0], pl, np), sw = on_planes(c, vs[1], pl, np);
-    if (!su || !sw || (su & sw)) return 0;
-    unsigned sc = on_planes(c, vs[2], pl, np), sd = on_planes(c, vs[3], pl, np);
     double u[3], w[3], pc[3], pd[3], tn[3], on[3];
     mesh_vertex_at(m, vs[0], u);
     mesh_vertex_at(m, vs[1], w);
