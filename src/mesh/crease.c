@@ -18,10 +18,11 @@
  *   - a vertex whose triangles lie over two or three planes, not all
  *     through it, moves onto the line or point where they meet (a contour
  *     vertex a little off a crease);
- *   - an edge shorter than a tenth of a cell, amid plane faces, collapses
- *     where that leaves fewer triangles that lie on no plane their corners
- *     share or face against it (a knot of vertices the contour left about a
- *     crease, its triangles folded back on the face);
+ *   - an edge shorter than half a cell, amid plane faces, collapses where
+ *     that leaves fewer triangles that lie on no plane their corners share
+ *     or face against it, and none that did lies so after (a knot of
+ *     vertices the contour left about a crease, its triangles folded back
+ *     on the face);
  *   - an edge whose ends share no plane is flipped where its quad's other
  *     diagonal lies on the crease, else split where it crosses the crease:
  *     one end on A and the other on B, at the point of the line where A and
@@ -41,14 +42,16 @@
  *
  * Measured (build/tools/meshdev, the mesh models at their default
  * tolerance): star_prism.scad 122 -> 36 triangles (openscad's), its tips 14
- * D off -> exact; import_amf_3mf 212 -> 202, 1.09 -> 0.69 D; revolve_faceted
- * 1,084 -> 478; pinched_cells 1,874 -> 1,354, 29 -> 14 D; twist_ties 1,876
- * -> 1,420; minkowski_solids 732 -> 586; the box above 352 -> 206, seven of
- * its corners found where five were.  A contour vertex off a crease whose
- * triangles a move would fold, and the crowded triangles about it, are
- * still left as they are.  The cost is in the rays: the corpus's twisted
- * and scaled extrusions (linear_extrude-scale-zero-tests.scad, 140,000
- * triangles simplified) take 1.9 s more, for a mesh a third smaller.
+ * D off -> exact; import_amf_3mf 212 -> 188, 1.09 -> 0.69 D; revolve_faceted
+ * 1,084 -> 350 (openscad 260); pinched_cells 1,874 -> 874; twist_ties 1,876
+ * -> 1,266; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 126,
+ * seven of its corners found where five were.  Over the 17 models, mesh
+ * samples beyond the tolerance 1.31 % -> 0.78 %, surface samples 67 -> 19.
+ * A contour vertex off a crease whose triangles a move would fold, and the
+ * crowded triangles about it, are still left as they are.  The cost is in
+ * the rays: the corpus's twisted and scaled extrusions
+ * (linear_extrude-scale-zero-tests.scad, 140,000 triangles simplified)
+ * take 2 s more, for a mesh of 68,000 triangles where it was 156,000.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -58,7 +61,7 @@
 #include <string.h>
 
 #define PASSES 8
-#define KNOT 0.1        /* cells: an edge shorter may be collapsed (collapse_knot) */
+#define KNOT 0.5        /* cells: an edge shorter may be collapsed (collapse_knot) */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
 #define COS_TURN 0.17   /* a snapped vertex's triangles turn less than 80° */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
@@ -376,51 +379,53 @@ static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int
     return 1;
 }
 
-/* How many of the triangles around v and w (v read as w when `as`) lie
- * on no plane their corners share, or face against it, or have no area. */
-static int misfits(const crease_mesh *c, int32_t v, int32_t w, int as)
+/* Whether triangle t, its corners tv at p, lies on a plane of pl (np)
+ * its corners share, with area, facing like it. */
+static int fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
+                int np)
+{
+    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
+    unsigned s =
+        on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
+    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, min2);
+}
+
+/* How many of the triangles around v and w would misfit (not fit) were v
+ * read as w, and how many do now (*before); -1 when one that fits now would
+ * not, or one would have no area. */
+static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int *before)
 {
     const plane *pl[MAX_PLANES];
     int32_t ends[2] = {v, w};
     int np = candidates(c, ends, 2, pl), bad = 0;
     double min2 = 1e-10 * c->h * c->h * c->h * c->h;
+    *before = 0;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
-            int32_t t = c->fan[f], tv[3];
-            double p[3][3];
-            if (e == 1 && (m_has(c->m, t, v))) continue; /* seen from v */
-            if (!corners_as(c, t, v, as ? w : v, tv, p)) continue;
-            unsigned s0 = on_planes(c, tv[0], pl, np), s1 = on_planes(c, tv[1], pl, np),
-                     s2 = on_planes(c, tv[2], pl, np), s = s0 & s1 & s2;
-            bad += !s || !half_ok(pl, s, p[0], p[1], p[2], NULL, min2);
+            int32_t t = c->fan[f], tv[3], tw[3];
+            double p[3][3], q[3][3], n[3];
+            if (e == 1 && m_has(c->m, t, v)) continue; /* seen from v */
+            corners_as(c, t, v, v, tv, p);
+            int was = fits(c, tv, p, pl, np);
+            *before += !was;
+            if (!corners_as(c, t, v, w, tw, q)) continue; /* the edge's own: it goes */
+            tri_normal3(q[0], q[1], q[2], n);
+            int is = fits(c, tw, q, pl, np);
+            if (!(dot3(n, n) > min2) || (was && !is)) return -1;
+            bad += !is;
         }
     return bad;
 }
 
-/* Whether every triangle around v and w that stays when v is read as w
- * keeps some area. */
-static int keeps_area(const crease_mesh *c, int32_t v, int32_t w)
-{
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
-    int32_t ends[2] = {v, w};
-    for (int e = 0; e < 2; e++)
-        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
-            int32_t tv[3];
-            double p[3][3], n[3];
-            if (!corners_as(c, c->fan[f], v, w, tv, p)) continue;
-            tri_normal3(p[0], p[1], p[2], n);
-            if (!(dot3(n, n) > min2)) return 0;
-        }
-    return 1;
-}
-
-/* Collapse the edge of half-edge x, shorter than a tenth of a cell, one of
+/* Collapse the edge of half-edge x, shorter than half a cell, one of
  * whose ends and every other corner of whose ends' triangles lie on plane
  * faces (not on curved ones, where a triangle lies on no plane anyway), into
- * whichever end leaves fewer misfit triangles about it (a knot of vertices
- * the contour left about a crease, its triangles folded back on the
- * plane), where there are fewer than before and the ends share no
- * neighbour but the two opposite corners (else the mesh would pinch).  The
+ * whichever end leaves fewer triangles about it that misfit (lie on no
+ * plane their corners share, or face against it: a knot of vertices the
+ * contour left about a crease, its triangles folded back on the face),
+ * where there are fewer than before, none that fits now would not, every
+ * triangle keeps some area, and the ends share no neighbour but the two
+ * opposite corners (else the mesh would pinch).  The
  * two triangles of the edge become empty (compacted after the pass).  1
  * when collapsed, else 0. */
 static int collapse_knot(crease_mesh *c, int32_t x)
@@ -451,9 +456,9 @@ static int collapse_knot(crease_mesh *c, int32_t x)
             int32_t n = m->t[3 * (size_t)c->fan[f] + q];
             if (n != v && n != w && n != a && n != b && joined(c, w, n)) return 0;
         }
-    int before = misfits(c, v, w, 0), into_w = misfits(c, v, w, 1), into_v = misfits(c, w, v, 1);
-    if (!keeps_area(c, v, w)) into_w = INT32_MAX;
-    if (!keeps_area(c, w, v)) into_v = INT32_MAX;
+    int before, into_w = misfits_after(c, v, w, &before), into_v = misfits_after(c, w, v, &before);
+    if (into_w < 0) into_w = INT32_MAX;
+    if (into_v < 0) into_v = INT32_MAX;
     int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v;
     if ((from == v ? into_w : into_v) >= before) return 0;
     for (int e = 0; e < 2; e++)
