@@ -17,12 +17,13 @@
  * triangles around it, that pass within rounding of it.  In each pass:
  *   - a vertex whose triangles lie over two or three planes, not all
  *     through it, moves onto the line or point where they meet (a contour
- *     vertex a little off a crease);
+ *     vertex a little off a crease), where no more of its triangles then
+ *     misfit (lie on no plane their corners share, or face against it) and
+ *     none that fit now would not;
  *   - an edge shorter than half a cell, amid plane faces, collapses where
- *     that leaves fewer triangles that lie on no plane their corners share
- *     or face against it, and none that did lies so after (a knot of
- *     vertices the contour left about a crease, its triangles folded back
- *     on the face);
+ *     that leaves fewer triangles that misfit, and none that fit now would
+ *     not (a knot of vertices the contour left about a crease, its
+ *     triangles folded back on the face);
  *   - an edge whose ends share no plane is flipped where its quad's other
  *     diagonal lies on the crease, else split where it crosses the crease:
  *     one end on A and the other on B, at the point of the line where A and
@@ -44,9 +45,9 @@
  * tolerance): star_prism.scad 122 -> 36 triangles (openscad's), its tips 14
  * D off -> exact; import_amf_3mf 212 -> 188, 1.09 -> 0.69 D; revolve_faceted
  * 1,084 -> 350 (openscad 260); pinched_cells 1,874 -> 874; twist_ties 1,876
- * -> 1,266; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 126,
+ * -> 1,266; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 96,
  * seven of its corners found where five were.  Over the 17 models, mesh
- * samples beyond the tolerance 1.31 % -> 0.78 %, surface samples 67 -> 19.
+ * samples beyond the tolerance 1.31 % -> 0.72 %, surface samples 67 -> 19.
  * A contour vertex off a crease whose triangles a move would fold, and the
  * crowded triangles about it, are still left as they are.  The cost is in
  * the rays: the corpus's twisted and scaled extrusions
@@ -63,7 +64,6 @@
 #define PASSES 8
 #define KNOT 0.5        /* cells: an edge shorter may be collapsed (collapse_knot) */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
-#define COS_TURN 0.17   /* a snapped vertex's triangles turn less than 80° */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
 #define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
 
@@ -263,11 +263,73 @@ static int crease_point(const plane *a, const plane *b, const double u[3], const
     return dot3(gap, gap) < h * h;
 }
 
+/* Triangle t's corners with vertex v read as w, as points, into p; 0 when
+ * two of them are then one vertex (the triangle goes). */
+static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int32_t tv[3],
+                      double p[3][3])
+{
+    for (int k = 0; k < 3; k++) {
+        tv[k] = c->m->t[3 * (size_t)t + k];
+        if (tv[k] == v) tv[k] = w;
+    }
+    if (tv[0] == tv[1] || tv[1] == tv[2] || tv[2] == tv[0]) return 0;
+    for (int k = 0; k < 3; k++)
+        mesh_vertex_at(c->m, tv[k], p[k]);
+    return 1;
+}
+
+/* Whether triangle t, its corners tv at p, lies on a plane of pl (np)
+ * its corners share, with area, facing like it. */
+static int fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
+                int np)
+{
+    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
+    unsigned s =
+        on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
+    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, min2);
+}
+
+/* Move vertex v to `to` where that leaves no more of its triangles that
+ * misfit their planes pl (np) than before, none that fit now misfitting
+ * and every one with area; 1 when moved. */
+static int move_fits(crease_mesh *c, int32_t v, const double to[3], const plane *const *pl, int np)
+{
+    enum { MAX_FAN = 64 };
+    int nf = c->start[v + 1] - c->start[v], before = 0, after = 0, lost = 0;
+    uint8_t was[MAX_FAN];
+    if (nf > MAX_FAN) return 0;
+    double min2 = 1e-10 * c->h * c->h * c->h * c->h, old[3];
+    for (int i = 0; i < nf; i++) {
+        int32_t tv[3];
+        double p[3][3];
+        corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
+        was[i] = (uint8_t)fits(c, tv, p, pl, np);
+        before += !was[i];
+    }
+    mesh_vertex_at(c->m, v, old);
+    float *pv = &c->m->v[3 * (size_t)v];
+    for (int k = 0; k < 3; k++)
+        pv[k] = (float)to[k];
+    for (int i = 0; i < nf && !lost; i++) {
+        int32_t tv[3];
+        double p[3][3], n[3];
+        corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
+        tri_normal3(p[0], p[1], p[2], n);
+        int is = fits(c, tv, p, pl, np);
+        lost = !(dot3(n, n) > min2) || (was[i] && !is);
+        after += !is;
+    }
+    if (!lost && after <= before) return 1;
+    for (int k = 0; k < 3; k++)
+        pv[k] = (float)old[k];
+    return 0;
+}
+
 /* Move vertex v, whose triangles lie over two or three plane faces, not
  * all through v, onto the line or point where those meet, where a ray
  * finds it on the surface within half a cell (a contour vertex off a
- * crease, whose chords cut it off), unless that turns one of its triangles
- * over; 1 when moved. */
+ * crease, whose chords cut it off), where move_fits allows; 1 when moved,
+ * -1 when out of memory. */
 static int snap_vertex(crease_mesh *c, int32_t v)
 {
     const plane *pl[MAX_PLANES];
@@ -292,11 +354,7 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     for (int k = 0; k < 3; k++)
         to[k] = (float)to[k];
     int fresh;
-    if (mesh_fmap_has(&c->pos, mesh_pos_key(to))) return 0;
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
-    if (!mesh_vertex_move(c->m, v, &c->fan[c->start[v]], c->start[v + 1] - c->start[v], to,
-                          COS_TURN, min2))
-        return 0;
+    if (mesh_fmap_has(&c->pos, mesh_pos_key(to)) || !move_fits(c, v, to, pl, np)) return 0;
     int32_t *slot = mesh_fmap_slot(&c->pos, mesh_pos_key(to), &fresh);
     if (!slot) return -1;
     *slot = v;
@@ -362,32 +420,6 @@ static int joined(const crease_mesh *c, int32_t a, int32_t b)
         if (tv[0] == b || tv[1] == b || tv[2] == b) return 1;
     }
     return 0;
-}
-
-/* Triangle t's corners with vertex v read as w, as points, into p; 0 when
- * two of them are then one vertex (the triangle goes). */
-static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int32_t tv[3],
-                      double p[3][3])
-{
-    for (int k = 0; k < 3; k++) {
-        tv[k] = c->m->t[3 * (size_t)t + k];
-        if (tv[k] == v) tv[k] = w;
-    }
-    if (tv[0] == tv[1] || tv[1] == tv[2] || tv[2] == tv[0]) return 0;
-    for (int k = 0; k < 3; k++)
-        mesh_vertex_at(c->m, tv[k], p[k]);
-    return 1;
-}
-
-/* Whether triangle t, its corners tv at p, lies on a plane of pl (np)
- * its corners share, with area, facing like it. */
-static int fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
-                int np)
-{
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
-    unsigned s =
-        on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
-    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, min2);
 }
 
 /* How many of the triangles around v and w would misfit (not fit) were v
