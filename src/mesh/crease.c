@@ -197,15 +197,36 @@ static int half_ok(const plane *const *pl, unsigned shared, const double p[3], c
     return dot3(t, t) > min2 && dot3(t, n) > 0;
 }
 
+/* The slot of place x in c->pos: the vertex there, or -1 where none is
+ * (one moved or collapsed away); NULL when out of memory. */
+static int32_t *place(crease_mesh *c, const double x[3])
+{
+    int fresh;
+    int32_t *slot = mesh_fmap_slot(&c->pos, mesh_pos_key(x), &fresh);
+    if (slot && fresh) *slot = -1;
+    return slot;
+}
+
+/* Vertex v leaves its place (moved or collapsed away); 0 or -1. */
+static int leave_place(crease_mesh *c, int32_t v)
+{
+    double x[3];
+    mesh_vertex_at(c->m, v, x);
+    int32_t *slot = place(c, x);
+    if (!slot) return -1;
+    if (*slot == v) *slot = -1;
+    return 0;
+}
+
 /* A vertex at x (float), not where one is; its number, -1 when one is
  * there, -2 when out of memory. */
 static int32_t add_vertex(crease_mesh *c, const double x[3])
 {
-    if (mesh_fmap_has(&c->pos, mesh_pos_key(x))) return -1;
-    int fresh;
-    int32_t v = mesh_push_vertex(c->m, x[0], x[1], x[2]);
-    int32_t *slot = v < 0 ? NULL : mesh_fmap_slot(&c->pos, mesh_pos_key(x), &fresh);
+    int32_t *slot = place(c, x);
     if (!slot) return -2;
+    if (*slot >= 0) return -1;
+    int32_t v = mesh_push_vertex(c->m, x[0], x[1], x[2]);
+    if (v < 0) return -2;
     *slot = v;
     return v;
 }
@@ -353,10 +374,15 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     if (!(dot3(d, d) < 0.25 * c->h * c->h) || !on_surface(c, to, mean)) return 0;
     for (int k = 0; k < 3; k++)
         to[k] = (float)to[k];
-    int fresh;
-    if (mesh_fmap_has(&c->pos, mesh_pos_key(to)) || !move_fits(c, v, to, pl, np)) return 0;
-    int32_t *slot = mesh_fmap_slot(&c->pos, mesh_pos_key(to), &fresh);
+    int32_t *slot = place(c, to);
     if (!slot) return -1;
+    if (*slot >= 0) return 0;
+    double from[3];
+    mesh_vertex_at(c->m, v, from);
+    if (!move_fits(c, v, to, pl, np)) return 0;
+    int32_t *old = place(c, from);
+    if (!old || !(slot = place(c, to))) return -1; /* (the map may have grown) */
+    if (*old == v) *old = -1;
     *slot = v;
     for (int32_t f = c->start[v]; f < c->start[v + 1]; f++)
         c->used[c->fan[f]] = 1;
@@ -459,7 +485,7 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int *before
  * triangle keeps some area, and the ends share no neighbour but the two
  * opposite corners (else the mesh would pinch).  The
  * two triangles of the edge become empty (compacted after the pass).  1
- * when collapsed, else 0. */
+ * when collapsed, 0 when not, -1 when out of memory. */
 static int collapse_knot(crease_mesh *c, int32_t x)
 {
     int32_t vs[4], t, o;
@@ -493,6 +519,7 @@ static int collapse_knot(crease_mesh *c, int32_t x)
     if (into_v < 0) into_v = INT32_MAX;
     int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v;
     if ((from == v ? into_w : into_v) >= before) return 0;
+    if (leave_place(c, from) != 0) return -1;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
             int32_t *tv = &m->t[3 * (size_t)c->fan[f]];
@@ -743,8 +770,10 @@ static int pass_once(crease_mesh *c, int *split)
     }
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        if (a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)))
-            *split += collapse_knot(c, (int32_t)x);
+        int r =
+            a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)) ? collapse_knot(c, (int32_t)x) : 0;
+        if (r < 0) goto done;
+        *split += r;
     }
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
@@ -795,18 +824,19 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
     int rc = grow_to((void **)&c.hot, &c.hot_cap, (size_t)m->nv, 1, 1) != 0 ||
                      grow_to((void **)&c.tp, &c.tp_cap, (size_t)m->nt, sizeof *c.tp, 0xff) != 0
                  ? -1
-                 : 0,
-        fresh;
+                 : 0;
     for (int32_t t = 0; t < m->nt && rc == 0; t++)
         c.tp[t] = -2;
-    for (int32_t v = 0; v < m->nv && rc == 0; v++) {
+    /* the places of the vertices the triangles use (the simplifier's
+     * leftovers are free) */
+    for (size_t k = 0; k < 3 * (size_t)m->nt && rc == 0; k++) {
         double p[3];
-        mesh_vertex_at(m, v, p);
-        int32_t *slot = mesh_fmap_slot(&c.pos, mesh_pos_key(p), &fresh);
+        mesh_vertex_at(m, m->t[k], p);
+        int32_t *slot = place(&c, p);
         if (!slot)
             rc = -1;
-        else if (fresh)
-            *slot = v;
+        else if (*slot < 0)
+            *slot = m->t[k];
     }
     for (int pass = 0; pass < PASSES && rc == 0; pass++) {
         int split = 0;
