@@ -87,6 +87,8 @@ typedef struct crease_mesh {
     int32_t *opp;         /* each half-edge's twin, as the pass began */
     uint8_t *used;        /* triangles changed this pass */
     uint8_t *ends;        /* vertices a flip joined this pass */
+    uint8_t *known;       /* on_a_plane\'s answers this pass: 0 not asked, 1 no, 2 yes */
+    size_t nknown;        /* of known: 0 while vertices still move */
     int gone;             /* triangles emptied this pass */
 } crease_mesh;
 
@@ -160,12 +162,15 @@ static unsigned on_planes(const crease_mesh *c, int32_t v, const plane *const *p
     return s;
 }
 
-/* Whether vertex v lies on the plane under one of its triangles. */
-static int on_a_plane(const crease_mesh *c, int32_t v)
+/* Whether vertex v lies on the plane under one of its triangles (kept in
+ * c->known once vertices stop moving in a pass). */
+static int on_a_plane(crease_mesh *c, int32_t v)
 {
+    if ((size_t)v < c->nknown && c->known[v]) return c->known[v] == 2;
     const plane *pl[MAX_PLANES];
-    int np = candidates(c, &v, 1, pl);
-    return on_planes(c, v, pl, np) != 0;
+    int np = candidates(c, &v, 1, pl), on = on_planes(c, v, pl, np) != 0;
+    if ((size_t)v < c->nknown) c->known[v] = (uint8_t)(1 + on);
+    return on;
 }
 
 /* Whether x lies on the surface: a ray through it along n (not unit) finds
@@ -750,10 +755,12 @@ static int pass_once(crease_mesh *c, int *split)
     c->opp = malloc(3 * nt * sizeof *c->opp);
     c->used = calloc(nt, 1);
     c->ends = calloc((size_t)m->nv, 1);
+    c->known = calloc((size_t)m->nv, 1);
+    c->nknown = 0;
     c->start = c->fan = NULL;
     c->gone = 0;
     int rc = -1;
-    if (!c->opp || !c->used || !c->ends || mesh_half_twins(m, 0, c->opp) != 0 ||
+    if (!c->opp || !c->used || !c->ends || !c->known || mesh_half_twins(m, 0, c->opp) != 0 ||
         mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0 ||
         grow_to((void **)&c->tp, &c->tp_cap, nt, sizeof *c->tp, 0xff) != 0)
         goto done;
@@ -768,6 +775,7 @@ static int pass_once(crease_mesh *c, int *split)
         if (r < 0) goto done;
         *split += r;
     }
+    c->nknown = (size_t)m->nv; /* the vertices stay put from here */
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
         int r =
@@ -807,6 +815,7 @@ done:
     free(c->opp);
     free(c->used);
     free(c->ends);
+    free(c->known);
     free(c->start);
     free(c->fan);
     return rc;
