@@ -25,9 +25,12 @@
  *     not (a knot of vertices the contour left about a crease, its
  *     triangles folded back on the face);
  *   - an edge whose ends share no plane is flipped where its quad's other
- *     diagonal lies on the crease, else split where it crosses the crease:
- *     one end on A and the other on B, at the point of the line where A and
- *     B meet nearest the edge;
+ *     diagonal lies on the crease; where both halves would then face
+ *     against their planes (the quad's far corners lie on the crease in the
+ *     wrong order along it: a crossed knot), those two corners are merged
+ *     and the edge's triangles go; else it is split where it crosses the
+ *     crease: one end on A and the other on B, at the point of the line
+ *     where A and B meet nearest the edge;
  *   - a triangle whose corners still share no plane, and lie on three,
  *     gets the point where the three meet as a new corner (a fan of three).
  * Every such point must be one a ray along the planes' mean normal finds on
@@ -44,15 +47,14 @@
  * Measured (build/tools/meshdev, the mesh models at their default
  * tolerance): star_prism.scad 122 -> 36 triangles (openscad's), its tips 14
  * D off -> exact; import_amf_3mf 212 -> 188, 1.09 -> 0.69 D; revolve_faceted
- * 1,084 -> 350 (openscad 260); pinched_cells 1,874 -> 874; twist_ties 1,876
- * -> 1,266; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 96,
- * seven of its corners found where five were.  Over the 17 models, mesh
+ * 1,084 -> 344 (openscad 260); pinched_cells 1,874 -> 776; twist_ties 1,876
+ * -> 1,250; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 80,
+ * all eight of its corners found where five were.  Over the 17 models, mesh
  * samples beyond the tolerance 1.31 % -> 0.72 %, surface samples 67 -> 19.
- * A contour vertex off a crease whose triangles a move would fold, and the
- * crowded triangles about it, are still left as they are.  The cost is in
- * the rays: the corpus's twisted and scaled extrusions
+ * Knots these rules do not untie are left as they are (two on the box,
+ * about its corners).  The cost: the corpus's twisted and scaled extrusions
  * (linear_extrude-scale-zero-tests.scad, 140,000 triangles simplified)
- * take 2 s more, for a mesh of 68,000 triangles where it was 156,000.
+ * take 1.2 s more, for a mesh of 68,000 triangles where it was 156,000.
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -454,9 +456,11 @@ static int joined(const crease_mesh *c, int32_t a, int32_t b)
 }
 
 /* How many of the triangles around v and w would misfit (not fit) were v
- * read as w, and how many do now (*before); -1 when one that fits now would
- * not, or one would have no area. */
-static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int *before)
+ * read as w (gone1 and gone2, and those of an edge v–w, go), and how many
+ * do now (*before); -1 when one that fits now would not, or one would have
+ * no area. */
+static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32_t gone2,
+                         int *before)
 {
     const plane *pl[MAX_PLANES];
     int32_t ends[2] = {v, w};
@@ -471,7 +475,7 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int *before
             corners_as(c, t, v, v, tv, p);
             int was = fits(c, tv, p, pl, np);
             *before += !was;
-            if (!corners_as(c, t, v, w, tw, q)) continue; /* the edge's own: it goes */
+            if (t == gone1 || t == gone2 || !corners_as(c, t, v, w, tw, q)) continue; /* it goes */
             tri_normal3(q[0], q[1], q[2], n);
             int is = fits(c, tw, q, pl, np);
             if (!(dot3(n, n) > min2) || (was && !is)) return -1;
@@ -519,7 +523,8 @@ static int collapse_knot(crease_mesh *c, int32_t x)
             int32_t n = m->t[3 * (size_t)c->fan[f] + q];
             if (n != v && n != w && n != a && n != b && joined(c, w, n)) return 0;
         }
-    int before, into_w = misfits_after(c, v, w, &before), into_v = misfits_after(c, w, v, &before);
+    int before, into_w = misfits_after(c, v, w, -1, -1, &before),
+                into_v = misfits_after(c, w, v, -1, -1, &before);
     if (into_w < 0) into_w = INT32_MAX;
     if (into_v < 0) into_v = INT32_MAX;
     int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v;
@@ -552,10 +557,56 @@ static void compact(crease_mesh *c)
     m->nt = n;
 }
 
+/* Merge the two far corners of chord q, both on the crease its ends' planes
+ * meet at but in the wrong order along it (the flip would turn both
+ * halves over: a knot the contour crossed), into whichever leaves fewer
+ * misfits: the chord's two triangles go.  Where they share no neighbour
+ * but the chord's ends, no triangle that fits would misfit, and fewer
+ * misfit than before; 1 when merged, else 0, -1 when out of memory. */
+static int merge_across(crease_mesh *c, const chord *q)
+{
+    const int32_t *vs = q->vs;
+    int32_t a = vs[2], b = vs[3], ends[2] = {a, b};
+    double pa[3], pb[3], d[3];
+    mesh_vertex_at(c->m, a, pa);
+    mesh_vertex_at(c->m, b, pb);
+    sub3(pb, pa, d);
+    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h) || joined(c, a, b)) return 0;
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            if (c->used[c->fan[f]]) return 0;
+            for (int k = 0; k < 3; k++) {
+                int32_t n = c->m->t[3 * (size_t)c->fan[f] + k];
+                if (e == 0 && n != a && n != vs[0] && n != vs[1] && joined(c, b, n)) return 0;
+            }
+        }
+    int before, into_b = misfits_after(c, a, b, q->t, q->o, &before),
+                into_a = misfits_after(c, b, a, q->t, q->o, &before);
+    if (into_b < 0) into_b = INT32_MAX;
+    if (into_a < 0) into_a = INT32_MAX;
+    int32_t from = into_b <= into_a ? a : b, to = from == a ? b : a;
+    if ((from == a ? into_b : into_a) >= before) return 0;
+    if (leave_place(c, from) != 0) return -1;
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            int32_t *tv = &c->m->t[3 * (size_t)c->fan[f]];
+            for (int k = 0; k < 3; k++)
+                if (tv[k] == from) tv[k] = to;
+            c->used[c->fan[f]] = 1;
+        }
+    int32_t *tv = &c->m->t[3 * (size_t)q->t], *ov = &c->m->t[3 * (size_t)q->o];
+    tv[0] = tv[1] = tv[2] = ov[0] = ov[1] = ov[2] = -1;
+    c->used[q->t] = c->used[q->o] = 1;
+    c->gone = 1;
+    return 1;
+}
+
 /* Flip the edge of half-edge x (triangle t = (u, w, c), its twin in o =
  * (w, u, d)), whose ends share no plane, to c–d where then (c, u, d) and
  * (d, w, c) each lie on a plane, facing like it: the chord's quad has its
- * other diagonal on the crease.  1 when flipped, else 0. */
+ * other diagonal on the crease; where both would face against their
+ * planes, merge_across.  1 when flipped (or merged), 0 when not, -1 when
+ * out of memory. */
 static int flip_edge(crease_mesh *c, int32_t x)
 {
     chord q;
@@ -570,10 +621,11 @@ static int flip_edge(crease_mesh *c, int32_t x)
     for (int i = 0; i < 4; i++)
         mesh_vertex_at(m, vs[i], p[i]);
     double min2 = 1e-10 * c->h * c->h * c->h * c->h;
-    if (!half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, min2) ||
-        !half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, min2) ||
-        (c->ends[vs[2]] && c->ends[vs[3]]) || joined(c, vs[2], vs[3]))
-        return 0;
+    if ((c->ends[vs[2]] && c->ends[vs[3]]) || joined(c, vs[2], vs[3])) return 0;
+    int up = half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, min2),
+        down = half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, min2);
+    if (!up && !down && (s[2] & s[3] & s[0]) && (s[2] & s[3] & s[1])) return merge_across(c, &q);
+    if (!up || !down) return 0;
     int32_t *tv = &m->t[3 * (size_t)t], *ov = &m->t[3 * (size_t)o];
     tv[0] = vs[2], tv[1] = vs[0], tv[2] = vs[3];
     ov[0] = vs[3], ov[1] = vs[1], ov[2] = vs[2];
@@ -785,7 +837,9 @@ static int pass_once(crease_mesh *c, int *split)
     }
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        if (a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b))) *split += flip_edge(c, (int32_t)x);
+        int r = a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)) ? flip_edge(c, (int32_t)x) : 0;
+        if (r < 0) goto done;
+        *split += r;
     }
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
