@@ -484,6 +484,34 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gon
     return bad;
 }
 
+/* Merge vertices v and w (an edge's ends, or gone1 and gone2's far
+ * corners) into whichever leaves fewer misfits about them, where fewer
+ * misfit than before and none that fits would not (misfits_after):
+ * triangles left without area (the edge's two) and gone1, gone2 are
+ * emptied (compacted after the pass).  1 when merged, 0 when not, -1 when
+ * out of memory. */
+static int merge_ends(crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32_t gone2)
+{
+    int before, into_w = misfits_after(c, v, w, gone1, gone2, &before),
+                into_v = misfits_after(c, w, v, gone1, gone2, &before);
+    if (into_w < 0) into_w = INT32_MAX;
+    if (into_v < 0) into_v = INT32_MAX;
+    int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v, ends[2] = {v, w};
+    if ((from == v ? into_w : into_v) >= before) return 0;
+    if (leave_place(c, from) != 0) return -1;
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
+            int32_t t = c->fan[f], *tv = &c->m->t[3 * (size_t)t];
+            for (int k = 0; k < 3; k++)
+                if (tv[k] == from) tv[k] = to;
+            if (t == gone1 || t == gone2 || tv[0] == tv[1] || tv[1] == tv[2] || tv[2] == tv[0])
+                tv[0] = tv[1] = tv[2] = -1;
+            c->used[t] = 1;
+        }
+    c->gone = 1;
+    return 1;
+}
+
 /* Collapse the edge of half-edge x, shorter than half a cell, one of
  * whose ends and every other corner of whose ends' triangles lie on plane
  * faces (not on curved ones, where a triangle lies on no plane anyway), into
@@ -523,23 +551,7 @@ static int collapse_knot(crease_mesh *c, int32_t x)
             int32_t n = m->t[3 * (size_t)c->fan[f] + q];
             if (n != v && n != w && n != a && n != b && joined(c, w, n)) return 0;
         }
-    int before, into_w = misfits_after(c, v, w, -1, -1, &before),
-                into_v = misfits_after(c, w, v, -1, -1, &before);
-    if (into_w < 0) into_w = INT32_MAX;
-    if (into_v < 0) into_v = INT32_MAX;
-    int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v;
-    if ((from == v ? into_w : into_v) >= before) return 0;
-    if (leave_place(c, from) != 0) return -1;
-    for (int e = 0; e < 2; e++)
-        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
-            int32_t *tv = &m->t[3 * (size_t)c->fan[f]];
-            for (int q = 0; q < 3; q++)
-                if (tv[q] == from) tv[q] = to;
-            if (tv[0] == tv[1] || tv[1] == tv[2] || tv[2] == tv[0]) tv[0] = tv[1] = tv[2] = -1;
-            c->used[c->fan[f]] = 1;
-        }
-    c->gone = 1;
-    return 1;
+    return merge_ends(c, v, w, -1, -1);
 }
 
 /* Drop the triangles collapse_knot emptied (their planes with them). */
@@ -580,25 +592,7 @@ static int merge_across(crease_mesh *c, const chord *q)
                 if (e == 0 && n != a && n != vs[0] && n != vs[1] && joined(c, b, n)) return 0;
             }
         }
-    int before, into_b = misfits_after(c, a, b, q->t, q->o, &before),
-                into_a = misfits_after(c, b, a, q->t, q->o, &before);
-    if (into_b < 0) into_b = INT32_MAX;
-    if (into_a < 0) into_a = INT32_MAX;
-    int32_t from = into_b <= into_a ? a : b, to = from == a ? b : a;
-    if ((from == a ? into_b : into_a) >= before) return 0;
-    if (leave_place(c, from) != 0) return -1;
-    for (int e = 0; e < 2; e++)
-        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
-            int32_t *tv = &c->m->t[3 * (size_t)c->fan[f]];
-            for (int k = 0; k < 3; k++)
-                if (tv[k] == from) tv[k] = to;
-            c->used[c->fan[f]] = 1;
-        }
-    int32_t *tv = &c->m->t[3 * (size_t)q->t], *ov = &c->m->t[3 * (size_t)q->o];
-    tv[0] = tv[1] = tv[2] = ov[0] = ov[1] = ov[2] = -1;
-    c->used[q->t] = c->used[q->o] = 1;
-    c->gone = 1;
-    return 1;
+    return merge_ends(c, a, b, q->t, q->o);
 }
 
 /* Flip the edge of half-edge x (triangle t = (u, w, c), its twin in o =
