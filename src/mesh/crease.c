@@ -38,8 +38,10 @@
  * them), and every change must leave triangles with area that face like
  * the plane they lie on.  Creases slighter than 10° are left to the
  * simplifier (a faceted curve's: hull_revolve.scad's 64 x 32 facets), and
- * only what lies about a bend is looked at; later passes look about what
- * the last one changed.  The simplifier then runs again
+ * only what lies about a bend is looked at; later passes look at the
+ * triangles with a corner the last one changed (and so at every edge of
+ * them: a knot's chord whose ends were not touched, between two corners
+ * that were, waited for a pass that never came).  The simplifier then runs again
  * (mesh_dexels_simplify).  The contour's own mesh, before the simplifier,
  * is crowded with slivers along such edges, and most splits there would
  * fold one.
@@ -48,7 +50,7 @@
  * tolerance): star_prism.scad 122 -> 36 triangles (openscad's), its tips 14
  * D off -> exact; import_amf_3mf 212 -> 188, 1.09 -> 0.69 D; revolve_faceted
  * 1,084 -> 344 (openscad 260); pinched_cells 1,874 -> 776; twist_ties 1,876
- * -> 1,250; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 80,
+ * -> 1,250; svg_import 968 -> 800, 30 -> 10 D; the box above 352 -> 68,
  * all eight of its corners found where five were.  Over the 17 models, mesh
  * samples beyond the tolerance 1.31 % -> 0.72 %, surface samples 67 -> 19.
  * Knots these rules do not untie are left as they are (two on the box,
@@ -381,6 +383,9 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     if (!(dot3(d, d) < 0.25 * c->h * c->h) || !on_surface(c, to, mean)) return 0;
     for (int k = 0; k < 3; k++)
         to[k] = (float)to[k];
+    if (to[0] == (float)x[0] && to[1] == (float)x[1] && to[2] == (float)x[2])
+        return 0; /* there already, to float precision: a "move" would only block its
+                     neighbours this pass, and every pass */
     int32_t *slot = place(c, to);
     if (!slot) return -1;
     if (*slot >= 0) return 0;
@@ -824,20 +829,22 @@ static int pass_once(crease_mesh *c, int *split)
     c->nknown = (size_t)m->nv; /* the vertices stay put from here */
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
+        int r = a >= 0 && b >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? collapse_knot(c, (int32_t)x)
+                                                                      : 0;
+        if (r < 0) goto done;
+        *split += r;
+    }
+    for (size_t x = 0; x < 3 * nt; x++) {
+        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
         int r =
-            a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)) ? collapse_knot(c, (int32_t)x) : 0;
+            a >= 0 && b >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? flip_edge(c, (int32_t)x) : 0;
         if (r < 0) goto done;
         *split += r;
     }
     for (size_t x = 0; x < 3 * nt; x++) {
         int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        int r = a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)) ? flip_edge(c, (int32_t)x) : 0;
-        if (r < 0) goto done;
-        *split += r;
-    }
-    for (size_t x = 0; x < 3 * nt; x++) {
-        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        int r = a >= 0 && b >= 0 && (is_hot(c, a) || is_hot(c, b)) ? split_edge(c, (int32_t)x) : 0;
+        int r =
+            a >= 0 && b >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? split_edge(c, (int32_t)x) : 0;
         if (r < 0) goto done;
         *split += r;
     }
