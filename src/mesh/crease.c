@@ -78,8 +78,8 @@ typedef struct plane {
 typedef struct crease_mesh {
     mesh *m;
     mesh_snapper *sn;
-    mesh_fmap pos; /* every vertex by its place */
-    double h;
+    mesh_fmap pos;      /* the vertex at each place in use, -1 at one left */
+    double h, min2;     /* the cell; twice a triangle's area squared, at least */
     plane *pl;          /* the planes met so far */
     int32_t npl, cap;   /* of pl */
     mesh_fmap by_patch; /* patch -> index into pl */
@@ -91,7 +91,7 @@ typedef struct crease_mesh {
     int32_t *opp;         /* each half-edge's twin, as the pass began */
     uint8_t *used;        /* triangles changed this pass */
     uint8_t *ends;        /* vertices a flip joined this pass */
-    uint8_t *known;       /* on_a_plane\'s answers this pass: 0 not asked, 1 no, 2 yes */
+    uint8_t *known;       /* on_a_plane's answers this pass: 0 not asked, 1 no, 2 yes */
     size_t nknown;        /* of known: 0 while vertices still move */
     int gone;             /* triangles emptied this pass */
 } crease_mesh;
@@ -313,10 +313,9 @@ static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int
 static int fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
                 int np)
 {
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
     unsigned s =
         on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
-    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, min2);
+    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, c->min2);
 }
 
 /* Move vertex v to `to` where that leaves no more of its triangles that
@@ -328,7 +327,7 @@ static int move_fits(crease_mesh *c, int32_t v, const double to[3], const plane 
     int nf = c->start[v + 1] - c->start[v], before = 0, after = 0, lost = 0;
     uint8_t was[MAX_FAN];
     if (nf > MAX_FAN) return 0;
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h, old[3];
+    double old[3];
     for (int i = 0; i < nf; i++) {
         int32_t tv[3];
         double p[3][3];
@@ -346,7 +345,7 @@ static int move_fits(crease_mesh *c, int32_t v, const double to[3], const plane 
         corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
         tri_normal3(p[0], p[1], p[2], n);
         int is = fits(c, tv, p, pl, np);
-        lost = !(dot3(n, n) > min2) || (was[i] && !is);
+        lost = !(dot3(n, n) > c->min2) || (was[i] && !is);
         after += !is;
     }
     if (!lost && after <= before) return 1;
@@ -389,10 +388,8 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     int32_t *slot = place(c, to);
     if (!slot) return -1;
     if (*slot >= 0) return 0;
-    double from[3];
-    mesh_vertex_at(c->m, v, from);
     if (!move_fits(c, v, to, pl, np)) return 0;
-    int32_t *old = place(c, from);
+    int32_t *old = place(c, x);
     if (!old || !(slot = place(c, to))) return -1; /* (the map may have grown) */
     if (*old == v) *old = -1;
     *slot = v;
@@ -453,10 +450,8 @@ static int m_has(const mesh *m, int32_t t, int32_t v)
  * began). */
 static int joined(const crease_mesh *c, int32_t a, int32_t b)
 {
-    for (int32_t f = c->start[a]; f < c->start[a + 1]; f++) {
-        const int32_t *tv = &c->m->t[3 * (size_t)c->fan[f]];
-        if (tv[0] == b || tv[1] == b || tv[2] == b) return 1;
-    }
+    for (int32_t f = c->start[a]; f < c->start[a + 1]; f++)
+        if (m_has(c->m, c->fan[f], b)) return 1;
     return 0;
 }
 
@@ -470,7 +465,6 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gon
     const plane *pl[MAX_PLANES];
     int32_t ends[2] = {v, w};
     int np = candidates(c, ends, 2, pl), bad = 0;
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
     *before = 0;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
@@ -483,7 +477,7 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gon
             if (t == gone1 || t == gone2 || !corners_as(c, t, v, w, tw, q)) continue; /* it goes */
             tri_normal3(q[0], q[1], q[2], n);
             int is = fits(c, tw, q, pl, np);
-            if (!(dot3(n, n) > min2) || (was && !is)) return -1;
+            if (!(dot3(n, n) > c->min2) || (was && !is)) return -1;
             bad += !is;
         }
     return bad;
@@ -517,6 +511,28 @@ static int merge_ends(crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32
     return 1;
 }
 
+/* Whether vertices a and b lie within KNOT cells of each other, their
+ * triangles unchanged this pass, and share no neighbour but p and q (else
+ * merging them would pinch the mesh). */
+static int mergeable(const crease_mesh *c, int32_t a, int32_t b, int32_t p, int32_t q)
+{
+    double pa[3], pb[3], d[3];
+    mesh_vertex_at(c->m, a, pa);
+    mesh_vertex_at(c->m, b, pb);
+    sub3(pb, pa, d);
+    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h)) return 0;
+    int32_t ends[2] = {a, b};
+    for (int e = 0; e < 2; e++)
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++)
+            if (c->used[c->fan[f]]) return 0;
+    for (int32_t f = c->start[a]; f < c->start[a + 1]; f++)
+        for (int k = 0; k < 3; k++) {
+            int32_t n = c->m->t[3 * (size_t)c->fan[f] + k];
+            if (n != a && n != b && n != p && n != q && joined(c, b, n)) return 0;
+        }
+    return 1;
+}
+
 /* Collapse the edge of half-edge x, shorter than half a cell, one of
  * whose ends and every other corner of whose ends' triangles lie on plane
  * faces (not on curved ones, where a triangle lies on no plane anyway), into
@@ -534,32 +550,18 @@ static int collapse_knot(crease_mesh *c, int32_t x)
     int k, j;
     if (!quad_at(c, x, vs, &t, &o, &k, &j)) return 0;
     mesh *m = c->m;
-    int32_t v = vs[0], w = vs[1], a = vs[2], b = vs[3];
-    double pv[3], pw[3], d[3];
-    mesh_vertex_at(m, v, pv);
-    mesh_vertex_at(m, w, pw);
-    sub3(pw, pv, d);
-    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h)) return 0;
-    int32_t ends[2] = {v, w};
-    if (!on_a_plane(c, v) && !on_a_plane(c, w)) return 0;
+    int32_t v = vs[0], w = vs[1], ends[2] = {v, w};
+    if (!mergeable(c, v, w, vs[2], vs[3]) || (!on_a_plane(c, v) && !on_a_plane(c, w))) return 0;
     for (int e = 0; e < 2; e++)
-        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
-            if (c->used[c->fan[f]]) return 0;
+        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++)
             for (int q = 0; q < 3; q++) {
                 int32_t n = m->t[3 * (size_t)c->fan[f] + q];
                 if (n != v && n != w && !on_a_plane(c, n)) return 0;
             }
-        }
-    /* the link: v's and w's neighbours in common are a and b alone */
-    for (int32_t f = c->start[v]; f < c->start[v + 1]; f++)
-        for (int q = 0; q < 3; q++) {
-            int32_t n = m->t[3 * (size_t)c->fan[f] + q];
-            if (n != v && n != w && n != a && n != b && joined(c, w, n)) return 0;
-        }
     return merge_ends(c, v, w, -1, -1);
 }
 
-/* Drop the triangles collapse_knot emptied (their planes with them). */
+/* Drop the triangles merge_ends emptied (their planes with them). */
 static void compact(crease_mesh *c)
 {
     mesh *m = c->m;
@@ -583,20 +585,8 @@ static void compact(crease_mesh *c)
 static int merge_across(crease_mesh *c, const chord *q)
 {
     const int32_t *vs = q->vs;
-    int32_t a = vs[2], b = vs[3], ends[2] = {a, b};
-    double pa[3], pb[3], d[3];
-    mesh_vertex_at(c->m, a, pa);
-    mesh_vertex_at(c->m, b, pb);
-    sub3(pb, pa, d);
-    if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h) || joined(c, a, b)) return 0;
-    for (int e = 0; e < 2; e++)
-        for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
-            if (c->used[c->fan[f]]) return 0;
-            for (int k = 0; k < 3; k++) {
-                int32_t n = c->m->t[3 * (size_t)c->fan[f] + k];
-                if (e == 0 && n != a && n != vs[0] && n != vs[1] && joined(c, b, n)) return 0;
-            }
-        }
+    int32_t a = vs[2], b = vs[3];
+    if (joined(c, a, b) || !mergeable(c, a, b, vs[0], vs[1])) return 0;
     return merge_ends(c, a, b, q->t, q->o);
 }
 
@@ -615,15 +605,15 @@ static int flip_edge(crease_mesh *c, int32_t x)
     const plane *const *pl = q.pl;
     int32_t t = q.t, o = q.o;
     mesh *m = c->m;
-    if (!(s[2] & s[0] & s[3]) || !(s[3] & s[1] & s[2])) return 0;
+    if (!(s[2] & s[0] & s[3]) || !(s[3] & s[1] & s[2]) || (c->ends[vs[2]] && c->ends[vs[3]]) ||
+        joined(c, vs[2], vs[3]))
+        return 0;
     double p[4][3];
     for (int i = 0; i < 4; i++)
         mesh_vertex_at(m, vs[i], p[i]);
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
-    if ((c->ends[vs[2]] && c->ends[vs[3]]) || joined(c, vs[2], vs[3])) return 0;
-    int up = half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, min2),
-        down = half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, min2);
-    if (!up && !down && (s[2] & s[3] & s[0]) && (s[2] & s[3] & s[1])) return merge_across(c, &q);
+    int up = half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, c->min2),
+        down = half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, c->min2);
+    if (!up && !down) return merge_across(c, &q); /* c, d both on the crease */
     if (!up || !down) return 0;
     int32_t *tv = &m->t[3 * (size_t)t], *ov = &m->t[3 * (size_t)o];
     tv[0] = vs[2], tv[1] = vs[0], tv[2] = vs[3];
@@ -653,7 +643,6 @@ static int split_edge(crease_mesh *c, int32_t x)
     mesh_vertex_at(m, vs[3], pd);
     tri_normal3(u, w, pc, tn);
     tri_normal3(w, u, pd, on);
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
     for (int a = 0; a < np; a++)
         for (int b = 0; b < np; b++) {
             double xp[3], mean[3];
@@ -665,10 +654,10 @@ static int split_edge(crease_mesh *c, int32_t x)
             for (int i = 0; i < 3; i++)
                 xp[i] = (float)xp[i]; /* as the mesh will hold it */
             unsigned sx = 1u << a | 1u << b;
-            if (!half_ok(pl, su & sx & sc, u, xp, pc, tn, min2) ||
-                !half_ok(pl, sx & sw & sc, xp, w, pc, tn, min2) ||
-                !half_ok(pl, sw & sx & sd, w, xp, pd, on, min2) ||
-                !half_ok(pl, sx & su & sd, xp, u, pd, on, min2))
+            if (!half_ok(pl, su & sx & sc, u, xp, pc, tn, c->min2) ||
+                !half_ok(pl, sx & sw & sc, xp, w, pc, tn, c->min2) ||
+                !half_ok(pl, sw & sx & sd, w, xp, pd, on, c->min2) ||
+                !half_ok(pl, sx & su & sd, xp, u, pd, on, c->min2))
                 continue;
             int32_t v = add_vertex(c, xp);
             if (v == -2) return -1;
@@ -718,10 +707,9 @@ static int split_corner(crease_mesh *c, int32_t t)
     if (!(dot3(g, g) < 4 * c->h * c->h) || !on_surface(c, x, mean)) return 0;
     for (int i = 0; i < 3; i++)
         x[i] = (float)x[i];
-    double min2 = 1e-10 * c->h * c->h * c->h * c->h;
     unsigned sv[3] = {s0, s1, s2};
     for (int q = 0; q < 3; q++)
-        if (!half_ok(pl, sv[q] & sv[(q + 1) % 3], p[q], p[(q + 1) % 3], x, mean, min2)) return 0;
+        if (!half_ok(pl, sv[q] & sv[(q + 1) % 3], p[q], p[(q + 1) % 3], x, mean, c->min2)) return 0;
     int32_t v = add_vertex(c, x);
     if (v == -2) return -1;
     if (v < 0) return 0;
@@ -796,6 +784,19 @@ static int mark_bent(crease_mesh *c, size_t nt)
     return 0;
 }
 
+/* Apply op to every half-edge of the first nt triangles that has a hot
+ * corner and has not been emptied this pass, counting its changes in
+ * *split; 0, or -1 when op ran out of memory. */
+static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int32_t), int *split)
+{
+    for (size_t x = 0; x < 3 * nt; x++) {
+        int r = c->m->t[x] >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? op(c, (int32_t)x) : 0;
+        if (r < 0) return -1;
+        *split += r;
+    }
+    return 0;
+}
+
 /* One pass over what is hot: the vertices snapped, knots collapsed, then
  * edges flipped and split, then corners; *split counts the changes.  The
  * corners of what changed are hot for the next.  0 or -1. */
@@ -812,8 +813,7 @@ static int pass_once(crease_mesh *c, int *split)
     c->gone = 0;
     int rc = -1;
     if (!c->opp || !c->used || !c->ends || !c->known || mesh_half_twins(m, 0, c->opp) != 0 ||
-        mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0 ||
-        grow_to((void **)&c->tp, &c->tp_cap, nt, sizeof *c->tp, 0xff) != 0)
+        mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0)
         goto done;
     /* only what is about a bend matters: elsewhere the triangles are flat
      * already, or the faces' creases are slighter than COS_APART */
@@ -827,27 +827,9 @@ static int pass_once(crease_mesh *c, int *split)
         *split += r;
     }
     c->nknown = (size_t)m->nv; /* the vertices stay put from here */
-    for (size_t x = 0; x < 3 * nt; x++) {
-        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        int r = a >= 0 && b >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? collapse_knot(c, (int32_t)x)
-                                                                      : 0;
-        if (r < 0) goto done;
-        *split += r;
-    }
-    for (size_t x = 0; x < 3 * nt; x++) {
-        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        int r =
-            a >= 0 && b >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? flip_edge(c, (int32_t)x) : 0;
-        if (r < 0) goto done;
-        *split += r;
-    }
-    for (size_t x = 0; x < 3 * nt; x++) {
-        int32_t a = m->t[x], b = m->t[x / 3 * 3 + (x + 1) % 3];
-        int r =
-            a >= 0 && b >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? split_edge(c, (int32_t)x) : 0;
-        if (r < 0) goto done;
-        *split += r;
-    }
+    if (each_hot_edge(c, nt, collapse_knot, split) != 0 ||
+        each_hot_edge(c, nt, flip_edge, split) != 0 || each_hot_edge(c, nt, split_edge, split) != 0)
+        goto done;
     for (size_t t = 0; t < nt; t++) {
         int r = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t) ? split_corner(c, (int32_t)t) : 0;
         if (r < 0) goto done;
@@ -885,6 +867,7 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
     c.m = m;
     c.sn = sn;
     c.h = sn->d->h;
+    c.min2 = 1e-10 * c.h * c.h * c.h * c.h;
     int rc = grow_to((void **)&c.hot, &c.hot_cap, (size_t)m->nv, 1, 1) != 0 ||
                      grow_to((void **)&c.tp, &c.tp_cap, (size_t)m->nt, sizeof *c.tp, 0xff) != 0
                  ? -1
