@@ -46,6 +46,12 @@
  * no triangle is degenerate or folded; otherwise it is fanned around its QEF
  * vertex.  Since consecutive loop vertices lie on one cell face and the fan
  * centre lies at least EPS·h off every face, no fan triangle has zero area.
+ * A fan that would turn a triangle over (against the normals at its loop
+ * corners) is replaced: by one about the sharp edge's point within the
+ * cell, or the loop triangulated alone (fan_free), or about the QEF vertex
+ * unsnapped or the loop's centre.  Such fans were where a crease clips a
+ * corner of its cell, and they lasted through every later stage: 48
+ * triangles turned over on the bench part, 153 on pinched_cells.scad.
  *
  * The sweep goes up the z slabs and keeps two layers of node signs and of
  * edge-vertex indices, so its memory beyond the output is O(n²) plus the z
@@ -675,6 +681,24 @@ static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[
     return 1;
 }
 
+/* x moved onto the surfaces of loop's samples (mesh_snap) within the box
+ * blo..bhi; the number of surfaces it is on. */
+static int snap_within(sweep *s, const sample *smp, const int *loop, int nl, const double blo[3],
+                       const double bhi[3], double x[3])
+{
+    double sp[12][3], nrm[12][3];
+    uint32_t patch[12];
+    for (int q = 0; q < nl; q++) {
+        patch[q] = smp[loop[q]].patch;
+        for (int c = 0; c < 3; c++) {
+            sp[q][c] = smp[loop[q]].x[c];
+            nrm[q][c] = smp[loop[q]].n[c];
+        }
+    }
+    return mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, patch, nl, -1, blo,
+                     bhi, x);
+}
+
 /* A loop vertex moved onto the exact surface, sharp edge or corner of its
  * samples.  On a sharp edge it may leave its cell by up to a cell: where a
  * concave crease runs just beyond a face of the cell (the groove between
@@ -690,22 +714,13 @@ static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[
 static int snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl, const lvert *lv,
                             int nv, const double lo[3], double x[3])
 {
-    double h = s->d->h, sp[12][3], nrm[12][3], blo[3], bhi[3], y[3];
-    uint32_t patch[12];
-    for (int q = 0; q < nl; q++) {
-        patch[q] = smp[loop[q]].patch;
-        for (int c = 0; c < 3; c++) {
-            sp[q][c] = smp[loop[q]].x[c];
-            nrm[q][c] = smp[loop[q]].n[c];
-        }
-    }
+    double h = s->d->h, blo[3], bhi[3], y[3];
     for (int c = 0; c < 3; c++) {
         blo[c] = lo[c] - h;
         bhi[c] = lo[c] + 2 * h;
         y[c] = x[c];
     }
-    int surfaces = mesh_snap(&s->snap, (const double(*)[3])sp, (const double(*)[3])nrm, patch, nl,
-                             -1, blo, bhi, y);
+    int surfaces = snap_within(s, smp, loop, nl, blo, bhi, y);
     int kept = surfaces == 2 && fan_keeps(lv, nv, x, y, h), inside = 1;
     for (int c = 0; c < 3; c++)
         inside &= y[c] >= lo[c] + EPS * h && y[c] <= lo[c] + (1 - EPS) * h;
@@ -741,6 +756,107 @@ static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
         return 1;
     }
     return 0;
+}
+
+/* How far triangle (a, b, c) of loop lv turns from the surface at its
+ * corners: the cosine of its normal with the nearest of the crossings'
+ * normals there (a face point has none; with none at all, navg's); -2
+ * when it has no area (twice it, squared, at most min2).  Across a sharp
+ * edge a triangle may lean more than 90° from the sum of two surfaces'
+ * normals, not from both. */
+static double facing(const sample *smp, const lvert *lv, int a, int b, int c, const double navg[3],
+                     double min2)
+{
+    double n[3];
+    tri_normal3(lv[a].p, lv[b].p, lv[c].p, n);
+    double l2 = dot3(n, n), best = -2;
+    if (!(l2 > min2)) return -2;
+    int idx[3] = {a, b, c}, any = 0;
+    for (int k = 0; k < 3; k++) {
+        if (lv[idx[k]].edge < 0) continue;
+        any = 1;
+        const double *r = smp[lv[idx[k]].edge].n;
+        best = fmax(best, dot3(n, r) / sqrt(l2 * dot3(r, r)));
+    }
+    double rl = sqrt(dot3(navg, navg));
+    if (!any && rl > 0) best = dot3(n, navg) / (sqrt(l2) * rl);
+    return best;
+}
+
+/* The cell faces vertex v of a loop lies on, as a bit mask. */
+static int faces_of(const sweep *s, const lvert *v)
+{
+    return v->edge >= 0 ? s->tb.edge_faces[v->edge] : 1 << v->face;
+}
+
+/* Triangulate loop lv (nv vertices) among its own vertices where no centre
+ * can be fanned from without turning a triangle over: of the
+ * triangulations whose added diagonals each join two vertices on no
+ * common cell face (no other cell can draw them), whose triangles have
+ * area, the one whose worst triangle turns least from the normals at its
+ * corners (dynamic programming over the polygon), if that turns less than
+ * 90°.  A crease that clips a corner of the cell leaves a loop of two
+ * surfaces, both of whose pieces lie along the cell's faces: no point
+ * sees all of it the right way round (the bench part's bores, where they
+ * meet the cube's faces a thousandth of a cell off a node: 48 folded
+ * triangles).  1 when done. */
+static int fan_free(sweep *s, const sample *smp, const lvert *lv, int nv, const double navg[3])
+{
+    enum { MAXV = 24 };
+    double h = s->d->h, min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    double best[MAXV][MAXV];
+    int8_t pick[MAXV][MAXV];
+    if (nv > MAXV || nv < 3) return 0;
+    for (int len = 1; len < nv; len++)
+        for (int i = 0; i + len < nv; i++) {
+            int j = i + len;
+            best[i][j] = len == 1 ? 2 : -3;
+            pick[i][j] = -1;
+            if (len == 1) continue;
+            /* (i, j) a diagonal unless it is the closing side */
+            if (!(i == 0 && j == nv - 1) && (faces_of(s, &lv[i]) & faces_of(s, &lv[j]))) continue;
+            for (int k = i + 1; k < j; k++) {
+                double f = facing(smp, lv, i, k, j, navg, min2);
+                double w = fmin(f, fmin(best[i][k], best[k][j]));
+                if (w > best[i][j]) {
+                    best[i][j] = w;
+                    pick[i][j] = (int8_t)k;
+                }
+            }
+        }
+    if (!(best[0][nv - 1] > 0)) return 0;
+    int stack[2 * MAXV][2], n = 0;
+    stack[n][0] = 0;
+    stack[n++][1] = nv - 1;
+    while (n) {
+        n--;
+        int i = stack[n][0], j = stack[n][1], k = pick[i][j];
+        if (k < 0) continue;
+        if (mesh_push_triangle(s->m, lv[i].vid, lv[k].vid, lv[j].vid, lv[k].color) < 0) s->oom = 1;
+        stack[n][0] = i;
+        stack[n++][1] = k;
+        stack[n][0] = k;
+        stack[n++][1] = j;
+    }
+    return 1;
+}
+
+/* Whether the fan around c of loop lv faces the way the surface does:
+ * each triangle with area and turned less than 90° from the normals at
+ * its loop corners (see facing). */
+static int fan_faces(const sample *smp, const lvert *lv, int nv, const double c[3],
+                     const double navg[3], double h)
+{
+    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    lvert t[3];
+    memcpy(t[0].p, c, sizeof t[0].p);
+    t[0].edge = -1;
+    for (int q = 0; q < nv; q++) {
+        t[1] = lv[q];
+        t[2] = lv[(q + 1) % nv];
+        if (!(facing(smp, t, 0, 1, 2, navg, min2) > 0)) return 0;
+    }
+    return 1;
 }
 
 /* Whether face f of cell (i, j, s->k), its corners' signs in[] (in
@@ -1018,6 +1134,42 @@ static void cell(sweep *s, int i, int j, int mask)
                     c[k] = fmin(fmax(c[k], lo[k] + EPS * h), lo[k] + (1 - EPS) * h);
                 on = 0;
                 break;
+            }
+        }
+        /* A fan turned over about c: the sharp edge's point nearest the
+         * QEF vertex within the cell, or the loop alone, if either faces it
+         * — not where c was put on the sharp edge beyond the cell, which
+         * stands for a sliver of solid whose grid edges cross the surface
+         * twice, held by no cell's loop (bored_cone.scad's cross hole under
+         * the cone: cut off there, its rim's samples lay 1.5 tolerances off
+         * the mesh) — else the QEF vertex or the loop's centre, if one does. */
+        if (!fan_faces(smp, lv, nv, c, navg, h)) {
+            int beyond = 0;
+            double in[3], blo[3], bhi[3];
+            for (int k = 0; k < 3; k++) {
+                beyond |= c[k] < lo[k] || c[k] > lo[k] + h;
+                in[k] = unsnapped[k];
+                blo[k] = lo[k] + EPS * h;
+                bhi[k] = lo[k] + (1 - EPS) * h;
+            }
+            if (!beyond && snap_within(s, smp, loop, nl, blo, bhi, in) == 2 &&
+                fan_faces(smp, lv, nv, in, navg, h)) {
+                memcpy(c, in, sizeof c);
+                on = 1;
+            } else if (!beyond && fan_free(s, smp, lv, nv, navg)) {
+                continue;
+            } else {
+                double mc[3];
+                loop_mass(smp, loop, nl, mc);
+                for (int k = 0; k < 3; k++)
+                    mc[k] = fmin(fmax(mc[k], blo[k]), bhi[k]);
+                const double *alt = fan_faces(smp, lv, nv, unsnapped, navg, h) ? unsnapped
+                                    : fan_faces(smp, lv, nv, mc, navg, h)      ? mc
+                                                                               : NULL;
+                if (alt) {
+                    memmove(c, alt, sizeof c);
+                    on = 0;
+                }
             }
         }
         int32_t cv = push_snapped(s, c, unsnapped, on, lo);
