@@ -46,8 +46,9 @@
 
 #define ROUNDS 8 /* on sharp edges; elsewhere PROBE_ROUNDS */
 #define PROBE_ROUNDS 3
-#define COS_BENT 0.985 /* cos 10° */
-#define OFF 0.01       /* cells: a midpoint farther from the surface is split there */
+#define COS_BENT 0.985   /* cos 10° */
+#define OFF 0.01         /* cells: a midpoint farther from the surface is split there */
+#define COS_TURNED 0.707 /* cos 45°: a half turned more from its triangle is checked by rays */
 
 typedef struct edge_map {
     uint64_t *key; /* (a + 1) << 32 | (b + 1), a < b; 0 = empty */
@@ -192,9 +193,11 @@ static int halves_ok(const mesh *m, mesh_snapper *sn, int32_t t, int k, const do
     double min2 = 1e-10 * h * h * h * h;
     if (!(dot3(n1, n1) > min2 && dot3(n2, n2) > min2)) return 0;
     /* a split onto the surface under the middle must not turn a half
-     * over against it (a sharp edge's split is held to its surfaces below) */
-    if (!vn && not_over(sn, a, b, c, n) &&
-        (!not_over(sn, a, p, c, n1) || !not_over(sn, p, b, c, n2)))
+     * over against it (a sharp edge's split is held to its surfaces below);
+     * asked by rays only of a half turned 45° or more from t */
+    double l = sqrt(dot3(n, n)), l1 = sqrt(dot3(n1, n1)), l2 = sqrt(dot3(n2, n2));
+    if (!vn && (dot3(n, n1) < COS_TURNED * l * l1 || dot3(n, n2) < COS_TURNED * l * l2) &&
+        not_over(sn, a, b, c, n) && (!not_over(sn, a, p, c, n1) || !not_over(sn, p, b, c, n2)))
         return 0;
     if (!vn || !vnormal(vn, tv[k], r1) || !vnormal(vn, tv[(k + 1) % 3], r2))
         return dot3(n, n1) > 0 && dot3(n, n2) > 0;
