@@ -11,12 +11,12 @@
 # Distance from the exact surface (build/tools/meshdev, both ways, by rays):
 # the bench part and a sphere at --mesh-size 0.25 --mesh-tolerance 0.008
 # must lie within the tolerance; bored_cone's exact surface (its sharp
-# rims) within its default tolerance of its mesh, nine models' meshes and
+# rims) within its default tolerance of its mesh, ten models' meshes and
 # surfaces (within_d: faceted_prisms's plane facets at 12° to 45°, their
 # edges and corners; rounded_cube's rims; star_prism's tips; the bench
 # part's bores where they meet the cube's faces; imported
-# meshes; a sphere, hulls, minkowski sums, render()) within their default tolerance both ways, and the torus's mesh
-# within it but for 0.5 % of its samples, and all within 1.5 times it;
+# meshes; a sphere, a torus, hulls, minkowski sums, render()) within their
+# default tolerance both ways;
 # and two models of tests/models closed as read back at
 # --facets=openscad.  A 30-gon prism (tests/models/polygon_prism.scad) must
 # come out in no more triangles than 1.2 times openscad's, a 24-gon frustum
@@ -53,7 +53,7 @@ tolerance_of() {
 
 # the models whose meshes are within their default tolerance both ways
 within_d="cube_sphere_cylinders faceted_prisms hull_booleans import_amf_3mf minkowski_solids"
-within_d="$within_d render_mode rounded_cube sphere star_prism"
+within_d="$within_d render_mode rounded_cube sphere star_prism torus"
 printf '%-24s %10s %10s %8s %7s %6s %8s %8s %8s %8s\n' model "vol ours" "vol oscad" "dvol" \
     hausdf "/h" "tri ours" "tri osc" "t ours" "t oscad"
 for f in "$models"/*.scad; do
@@ -91,18 +91,6 @@ for f in "$models"/*.scad; do
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --surface-only \
             --name "$name rim, D" || failed=$((failed + 1))
     fi
-    if [ "$name" = torus ]; then
-        # a smooth surface within its tolerance but for a few samples
-        # (1.2 % beyond it before mesh_tighten, 0.13 % now)
-        d1=$(tolerance_of "$tmp/$name.json")
-        "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --share 0.5 \
-            --name "$name, 0.5 % beyond D" || failed=$((failed + 1))
-        # and all of it within 1.5 D (1.76 D where a sliver the simplifier
-        # left stood 30° off the surface, and the triangles across the top
-        # circle, bent 20° against each other there, went unmeasured)
-        "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$(tolerance_of "$tmp/$name.json" 1.5)" \
-            --name "$name, 1.5 D" || failed=$((failed + 1))
-    fi
     case " $within_d " in *" $name "*)
         # mesh and exact surface within the default tolerance of each other
         # (faceted_prisms: every edge between two facets, however slight,
@@ -111,7 +99,10 @@ for f in "$models"/*.scad; do
         # go onto its sharp edge was cut along it; star_prism: its tips, cut
         # off by up to 14 D before mesh_split_creases put them back;
         # import_amf_3mf: 1.09 D where a knot of vertices folded about a
-        # corner of the part's spherical bite)
+        # corner of the part's spherical bite; cube_sphere_cylinders: 3.24 D
+        # where contour fans turned over at the bores' rims; torus: 1.30 D
+        # where tighten's seven points missed a sliver's sag, or left a
+        # triangle whose neighbour another split had taken)
         d1=$(tolerance_of "$tmp/$name.json")
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" \
             --name "$name, D" || failed=$((failed + 1))
