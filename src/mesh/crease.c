@@ -58,6 +58,7 @@
  * (linear_extrude-scale-zero-tests.scad, 140,000 triangles simplified)
  * take 1.2 s more, for a mesh of 68,000 triangles where it was 156,000.
  */
+#include "../geom/closest.h"
 #include "../intervals/vec3.h"
 #include "dexels.h"
 
@@ -67,6 +68,7 @@
 
 #define PASSES 8
 #define KNOT 0.5        /* cells: an edge shorter may be collapsed (collapse_knot) */
+#define TIE 0.001       /* cells: see stays() */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
 #define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
@@ -483,9 +485,29 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gon
     return bad;
 }
 
+/* Whether merging vertex v into w takes nothing off the surface: v lies
+ * within TIE cells of the triangles about it then (gone1, gone2 and the
+ * edge's go).  A merge that mends no misfit may still untie a knot (the
+ * oblique box's last two, 24 -> 16 triangles); it may not take a vertex
+ * off a curved part or a sharp edge (hull_extrusions.scad's cone rims, 2 D
+ * more at 0.1 cells). */
+static int stays(const crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32_t gone2)
+{
+    double pv[3], best = INFINITY;
+    mesh_vertex_at(c->m, v, pv);
+    for (int32_t f = c->start[v]; f < c->start[v + 1]; f++) {
+        int32_t t = c->fan[f], tv[3];
+        double p[3][3];
+        if (t == gone1 || t == gone2 || !corners_as(c, t, v, w, tv, p)) continue;
+        best = fmin(best, geom_triangle_dist2(pv, p[0], p[1], p[2]));
+    }
+    return best <= TIE * TIE * c->h * c->h;
+}
+
 /* Merge vertices v and w (an edge's ends, or gone1 and gone2's far
  * corners) into whichever leaves fewer misfits about them, where fewer
- * misfit than before and none that fits would not (misfits_after):
+ * misfit than before (or as many, where the merged vertex stays on the
+ * surface: stays) and none that fits would not (misfits_after):
  * triangles left without area (the edge's two) and gone1, gone2 are
  * emptied (compacted after the pass).  1 when merged, 0 when not, -1 when
  * out of memory. */
@@ -496,7 +518,8 @@ static int merge_ends(crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32
     if (into_w < 0) into_w = INT32_MAX;
     if (into_v < 0) into_v = INT32_MAX;
     int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v, ends[2] = {v, w};
-    if ((from == v ? into_w : into_v) >= before) return 0;
+    int after = from == v ? into_w : into_v;
+    if (after > before || (after == before && !stays(c, from, to, gone1, gone2))) return 0;
     if (leave_place(c, from) != 0) return -1;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
