@@ -667,11 +667,19 @@ typedef struct lvert {
     int8_t face;    /* a face point's cell face; -1 for a crossing */
 } lvert;
 
+/* Twice the smallest area a fan triangle around a QEF vertex can have
+ * (see the file comment), squared: below it, a triangle has none. */
+static double fan_min2(double h)
+{
+    double a = EPS * EPS * h * h;
+    return a * a;
+}
+
 /* 1 when moving the centre of the fan around the loop lv from x to y turns
  * none of its triangles over or leaves one without area. */
 static int fan_keeps(const lvert *lv, int nv, const double x[3], const double y[3], double h)
 {
-    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    double min2 = fan_min2(h);
     for (int q = 0; q < nv; q++) {
         double n0[3], n1[3];
         tri_normal3(x, lv[q].p, lv[(q + 1) % nv].p, n0);
@@ -733,10 +741,7 @@ static int snap_loop_vertex(sweep *s, const sample *smp, const int *loop, int nl
  * start vertex, if that is safe (see the file comment); 1 when done. */
 static int fan_plain(sweep *s, const lvert *lv, int nl, const double navg[3])
 {
-    double h = s->d->h;
-    /* Twice the smallest area a fan triangle around a QEF vertex can have
-     * (see the file comment), squared: below it, prefer the fan. */
-    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    double min2 = fan_min2(s->d->h); /* below it, prefer the fan */
     for (int st = 0; st < nl; st++) {
         int ok = 1;
         for (int q = 2; q < nl - 1 && ok; q++) {
@@ -803,7 +808,7 @@ static int faces_of(const sweep *s, const lvert *v)
 static int fan_free(sweep *s, const sample *smp, const lvert *lv, int nv, const double navg[3])
 {
     enum { MAXV = 24 };
-    double h = s->d->h, min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    double h = s->d->h, min2 = fan_min2(h);
     double best[MAXV][MAXV];
     int8_t pick[MAXV][MAXV];
     if (nv > MAXV || nv < 3) return 0;
@@ -847,7 +852,7 @@ static int fan_free(sweep *s, const sample *smp, const lvert *lv, int nv, const 
 static int fan_faces(const sample *smp, const lvert *lv, int nv, const double c[3],
                      const double navg[3], double h)
 {
-    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    double min2 = fan_min2(h);
     lvert t[3];
     memcpy(t[0].p, c, sizeof t[0].p);
     t[0].edge = -1;
@@ -942,7 +947,7 @@ static int split_loop(sweep *s, const sample *smp, const lvert *lv, int nv, cons
         fp[1] = (fp[0] + nv - 1) % nv;
     }
     double h = s->d->h, centre[2][3];
-    double min2 = (EPS * EPS * h * h) * (EPS * EPS * h * h);
+    double min2 = fan_min2(h);
     int count[2];
     for (int side = 0; side < 2; side++) {
         /* lv[fp[side]] .. lv[fp[1 - side]], around the loop */

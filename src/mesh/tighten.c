@@ -58,9 +58,9 @@
 #define COS_SMOOTH 0.94 /* cos 20° */
 #define COS_ALONG 0.866 /* cos 30° */
 #define COS_FACING 0.5  /* the surface under a split turned no more than 60° from it */
-#define AIM                                                                                        \
-    0.95          /* of the tolerance: a measured point farther strays (the                        \
-                   * surface between the points strays a little further) */
+/* Of the tolerance: a measured point farther strays (the surface between
+ * the points strays a little further). */
+#define AIM 0.95
 #define LATTICE 4 /* a curved sliver's lattice: steps along its sides */
 
 /* Corner k of triangle t. */
@@ -95,8 +95,16 @@ static int within(mesh_snapper *sn, const double x[3], const double n[3], const 
     return !any || best <= tol;
 }
 
-/* Whether triangle t strays: a point of it farther than tol from the
- * surface (within). */
+/* Point i of the four under which triangle p's surface is probed: its
+ * centroid (i = 0), then nine tenths of the way from it to corner i - 1. */
+static void probe_point(const double p[3][3], int i, double x[3])
+{
+    for (int k = 0; k < 3; k++) {
+        double c = (p[0][k] + p[1][k] + p[2][k]) / 3;
+        x[k] = i ? c + 0.9 * (p[i - 1][k] - c) : c;
+    }
+}
+
 /* Whether the surface under triangle p (unit normal n) is curved: the
  * crossings under its centroid and nine tenths of the way to each corner
  * all on curved patches (a hull's facets are planes: the contour's error
@@ -107,10 +115,7 @@ static int over_curved(mesh_snapper *sn, const double p[3][3], const double n[3]
     for (int i = 0; i < 4; i++) {
         double x[3], hit[3], hn[3];
         uint32_t patch = 0;
-        for (int k = 0; k < 3; k++) {
-            double c = (p[0][k] + p[1][k] + p[2][k]) / 3;
-            x[k] = i ? c + 0.9 * (p[i - 1][k] - c) : c;
-        }
+        probe_point(p, i, x);
         if (!mesh_snap_probe_patch(sn, x, n, REACH * tol, COS_FACING, 0, hit, hn, &patch) ||
             (patch & MESH_PATCH_PLANAR))
             return 0;
@@ -118,6 +123,8 @@ static int over_curved(mesh_snapper *sn, const double p[3][3], const double n[3]
     return 1;
 }
 
+/* Whether triangle t strays: a point of it farther than tol from the
+ * surface (within). */
 static int strays(const mesh *m, mesh_snapper *sn, int32_t t, double tol)
 {
     double p[3][3], n[3], e[3];
@@ -200,10 +207,7 @@ static int over_smooth(const mesh *m, mesh_snapper *sn, const round_view *rv, in
         corner(m, t, k, p[k]);
     for (int i = 0; i < 4; i++) {
         double x[3], n[3];
-        for (int k = 0; k < 3; k++) {
-            double c = (p[0][k] + p[1][k] + p[2][k]) / 3;
-            x[k] = i ? c + 0.9 * (p[i - 1][k] - c) : c;
-        }
+        probe_point((const double(*)[3])p, i, x);
         if (!surface_normal(sn, x, rv->tn[t], tol, i ? n : cn)) return 0;
         if (i && dot3(n, cn) < COS_SMOOTH) return 0;
     }
@@ -361,9 +365,9 @@ static int crease_point(const mesh *m, mesh_snapper *sn, int32_t t, int k, int32
                      x) == 2;
 }
 
-/* Split edge k of triangle t, and the triangle across it, at the surface
- * under the edge's middle, where the triangle across is smooth and unused
- * this round, both keep their halves and no vertex is there already (pos
+/* Split edge k of triangle t, and the triangle across it (unused this
+ * round: the caller sees to that), at the surface under the edge's middle,
+ * where the triangle across is smooth, both keep their halves and no vertex is there already (pos
  * holds them all; the new one is added); the four triangles flagged used
  * and in nx.  1 when split, 0 when not, -1 when out of memory. */
 static int split_edge(mesh *m, mesh_snapper *sn, const round_view *rv, mesh_fmap *pos, int32_t t,
@@ -373,7 +377,7 @@ static int split_edge(mesh *m, mesh_snapper *sn, const round_view *rv, mesh_fmap
     corner(m, t, k, p[0]);
     corner(m, t, (k + 1) % 3, p[1]);
     int32_t h = rv->opp[3 * t + k];
-    if (h < 0 || used[h / 3]) return 0;
+    if (h < 0) return 0;
     int32_t o = h / 3;
     int j = h % 3;
     if (!smooth(m, sn, rv, o, tol)) return 0;

@@ -21,10 +21,10 @@
 # --facets=openscad.  A 30-gon prism (tests/models/polygon_prism.scad) must
 # come out in no more triangles than 1.2 times openscad's, a 24-gon frustum
 # (polygon_frustum.scad) 1.4 times, faceted_prisms 1.5, star_prism 1.2 and
-# an obliquely turned box 1.5 (16 triangles where openscad writes 12; 352
+# an obliquely turned box 1.5 (12 triangles, as openscad writes; 352
 # before src/mesh/crease.c, 68 while the contour's splits could turn a
-# half over, 24 while a knot's merge had to mend a misfit): their facets
-# flat,
+# half over, 24 while a knot's merge had to mend a misfit, 16 before
+# refine's rounds took edges in triangle order): their facets flat,
 # their edges followed exactly.  (The other models at their default
 # tolerance are not checked yet: at the default grid the contour's own
 # error, a tenth of a cell at sharp features, is often larger; and meshdev
