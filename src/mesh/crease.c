@@ -69,6 +69,8 @@
 #define PASSES 8
 #define KNOT 0.5        /* cells: an edge shorter may be collapsed (collapse_knot) */
 #define TIE 0.001       /* cells: see stays() */
+#define ON 1e-4         /* cells: a vertex this near a plane lies on it (see near_planes) */
+#define NEAR 0.01       /* cells: see misfits_after() */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
 #define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
@@ -155,17 +157,25 @@ static int candidates(const crease_mesh *c, const int32_t *vs, int nv, const pla
     return n;
 }
 
-/* Which of the planes pl (np) vertex v lies on, as bits. */
-static unsigned on_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np)
+/* Which of the planes pl (np) vertex v lies within `cells` of (or of
+ * rounding: vertices are floats), as bits. */
+static unsigned near_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np,
+                            double cells)
 {
     double x[3];
     mesh_vertex_at(c->m, v, x);
     double big = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
-    double eps = fmax(1e-4 * c->h, 5e-7 * big); /* vertices are floats */
+    double eps = fmax(cells * c->h, 5e-7 * big);
     unsigned s = 0;
     for (int i = 0; i < np; i++)
         if (fabs(dot3(pl[i]->n, x) - pl[i]->d) < eps) s |= 1u << i;
     return s;
+}
+
+/* Which of the planes pl (np) vertex v lies on, as bits. */
+static unsigned on_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np)
+{
+    return near_planes(c, v, pl, np, ON);
 }
 
 /* Whether vertex v lies on the plane under one of its triangles (kept in
@@ -310,14 +320,22 @@ static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int
     return 1;
 }
 
+/* Whether triangle t, its corners tv at p, lies within `cells` of a plane
+ * of pl (np) its corners share, with area, facing like it. */
+static int fits_within(const crease_mesh *c, const int32_t tv[3], double p[3][3],
+                       const plane *const *pl, int np, double cells)
+{
+    unsigned s = near_planes(c, tv[0], pl, np, cells) & near_planes(c, tv[1], pl, np, cells) &
+                 near_planes(c, tv[2], pl, np, cells);
+    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, c->min2);
+}
+
 /* Whether triangle t, its corners tv at p, lies on a plane of pl (np)
  * its corners share, with area, facing like it. */
 static int fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
                 int np)
 {
-    unsigned s =
-        on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
-    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, c->min2);
+    return fits_within(c, tv, p, pl, np, ON);
 }
 
 /* Move vertex v to `to` where that leaves no more of its triangles that
@@ -460,7 +478,11 @@ static int joined(const crease_mesh *c, int32_t a, int32_t b)
 /* How many of the triangles around v and w would misfit (not fit) were v
  * read as w (gone1 and gone2, and those of an edge v–w, go), and how many
  * do now (*before); -1 when one that fits now would not, or one would have
- * no area. */
+ * no area.  One that fits within NEAR cells counts as fitting for that: a
+ * contour vertex a hair off a crease (0.002 cells, hull_extrusions.scad's
+ * cylinder rim under a hull's slope) misfits every triangle it is on, and
+ * merged into the knot's far end, 0.5 cells away, it took a strip of the
+ * face off the mesh (17 tolerances). */
 static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32_t gone2,
                          int *before)
 {
@@ -476,6 +498,7 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gon
             corners_as(c, t, v, v, tv, p);
             int was = fits(c, tv, p, pl, np);
             *before += !was;
+            was = was || fits_within(c, tv, p, pl, np, NEAR);
             if (t == gone1 || t == gone2 || !corners_as(c, t, v, w, tw, q)) continue; /* it goes */
             tri_normal3(q[0], q[1], q[2], n);
             int is = fits(c, tw, q, pl, np);

@@ -240,11 +240,13 @@ typedef struct mesh_vnormals {
 /* 0, or -1 when out of memory. */
 int mesh_vnormal_set(mesh_vnormals *vn, int32_t v, const double n[3], int on_edge, uint32_t patch);
 void mesh_vnormals_free(mesh_vnormals *vn);
-/* Split the edges of triangles [t0, m->nt) of m (made on sampling grid
- * sn->d) whose midpoints lie off the exact surface where it bends, by more
- * than a hundredth of a cell or (tol > 0) half of tol, never at a place in
- * pos (every vertex by mesh_pos_key; the new ones are added) (refine.c); vn
- * gets the new vertices' normals.  0 or -1 when out of memory. */
+/* Move the vertices of triangles [t0, m->nt) of m (made on sampling grid
+ * sn->d) that have no normal in vn and lie off the exact surface onto it,
+ * then split the edges whose midpoints lie off it where it bends, each by
+ * more than a hundredth of a cell or (tol > 0) half of tol, never to a
+ * place in pos (every vertex by mesh_pos_key; the new places are added)
+ * (refine.c); vn gets the moved and new vertices' normals.  0 or -1 when
+ * out of memory. */
 int mesh_refine_edges(mesh *m, int t0, double tol, mesh_snapper *sn, mesh_vnormals *vn,
                       mesh_fmap *pos);
 /* Put m's chords across the edges and corners of plane faces on them:
