@@ -10,8 +10,9 @@
 # exact volume.
 # Distance from the exact surface (build/tools/meshdev, both ways, by rays):
 # the bench part and a sphere at --mesh-size 0.25 --mesh-tolerance 0.008
-# must lie within the tolerance; bored_cone's exact surface (its sharp
-# rims) within its default tolerance of its mesh, ten models' meshes and
+# must lie within the tolerance; five models' exact surfaces (surface_d:
+# their sharp rims and corners) within its default tolerance of their
+# meshes, ten models' meshes and
 # surfaces (within_d: faceted_prisms's plane facets at 12° to 45°, their
 # edges and corners; rounded_cube's rims; star_prism's tips; the bench
 # part's bores where they meet the cube's faces; imported
@@ -20,7 +21,8 @@
 # and two models of tests/models closed as read back at
 # --facets=openscad.  A 30-gon prism (tests/models/polygon_prism.scad) must
 # come out in no more triangles than 1.2 times openscad's, a 24-gon frustum
-# (polygon_frustum.scad) 1.4 times, faceted_prisms 1.5, star_prism 1.2 and
+# (polygon_frustum.scad) 1.2 times (1.30 before refine.c settled the
+# contour's vertices that lay off its facets), faceted_prisms 1.5, star_prism 1.2 and
 # an obliquely turned box 1.5 (12 triangles, as openscad writes; 352
 # before src/mesh/crease.c, 68 while the contour's splits could turn a
 # half over, 24 while a knot's merge had to mend a misfit, 16 before
@@ -55,6 +57,9 @@ tolerance_of() {
 # the models whose meshes are within their default tolerance both ways
 within_d="cube_sphere_cylinders faceted_prisms hull_booleans import_amf_3mf minkowski_solids"
 within_d="$within_d render_mode rounded_cube sphere star_prism torus"
+# the models whose exact surface alone is within it (their meshes still
+# stray beyond it at folds about rims and corners)
+surface_d="bored_cone hull_extrusions pinched_cells revolve_faceted rotated_box_pin"
 printf '%-24s %10s %10s %8s %7s %6s %8s %8s %8s %8s\n' model "vol ours" "vol oscad" "dvol" \
     hausdf "/h" "tri ours" "tri osc" "t ours" "t oscad"
 for f in "$models"/*.scad; do
@@ -83,15 +88,18 @@ for f in "$models"/*.scad; do
     times=$("$py" -c 'import sys; a,b,c=map(float,sys.argv[1:]); print("%.2fs,%.2fs" % (c-b, b-a))' "$t0" "$t1" "$t2")
     "$meshcmp" "$tmp/$name.stl" "$tmp/$name.ref.stl" --h "$h" --name "$name" --times "$times" ||
         failed=$((failed + 1))
-    if [ "$name" = bored_cone ]; then
-        # the cross hole's rim on the cone: every sample of the exact
-        # surface within the default tolerance of the mesh (it was 34
-        # tolerances off where the contour cut across the rim, 1.63 while
-        # mesh_balance moved vertices by more than half its bound)
+    case " $surface_d " in *" $name "*)
+        # every sample of the exact surface within the default tolerance of
+        # the mesh: nothing cut off (bored_cone: the cross hole's rim on the
+        # cone was 34 tolerances off where the contour cut across it, 1.63
+        # while mesh_balance moved vertices by more than half its bound;
+        # hull_extrusions: 17 D where a knot's merge took a vertex a hair off
+        # the cylinder's rim half a cell away)
         d1=$(tolerance_of "$tmp/$name.json")
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --surface-only \
-            --name "$name rim, D" || failed=$((failed + 1))
-    fi
+            --name "$name surface, D" || failed=$((failed + 1))
+        ;;
+    esac
     case " $within_d " in *" $name "*)
         # mesh and exact surface within the default tolerance of each other
         # (faceted_prisms: every edge between two facets, however slight,
@@ -143,7 +151,7 @@ for name in cones_through_sphere cubes_touching_edge; do
 done
 # Plane-faceted models in no more triangles than a multiple of openscad's
 # (a mesh model's meshes, at the same defaults, are the loop's above).
-for spec in models/polygon_prism:1.2 models/polygon_frustum:1.4 mesh_models/faceted_prisms:1.5 \
+for spec in models/polygon_prism:1.2 models/polygon_frustum:1.2 mesh_models/faceted_prisms:1.5 \
     mesh_models/star_prism:1.2 models/rotated_box:1.5; do
     path=${spec%%:*} most=${spec#*:} name=$(basename "${spec%%:*}")
     f=$(realpath "$(dirname "$0")/../$path.scad")
