@@ -32,7 +32,13 @@
  *     crease: one end on A and the other on B, at the point of the line
  *     where A and B meet nearest the edge;
  *   - a triangle whose corners still share no plane, and lie on three,
- *     gets the point where the three meet as a new corner (a fan of three).
+ *     gets the point where the three meet as a new corner (a fan of three);
+ *   - last, a knot about a corner where three planes meet (the vertices
+ *     within three cells of it, reached through each other: a twisted
+ *     extrusion's acute corners held 40) goes whole where some of its
+ *     triangles misfit: its triangles become a fan from the corner to
+ *     their rim, where the rim is one loop and every fan triangle lies on
+ *     a plane its corners share, facing like it, over the surface.
  * Every such point must be one a ray along the planes' mean normal finds on
  * the surface (else the planes do not meet there: a face lies between
  * them), and every change must leave triangles with area that face like
@@ -41,8 +47,8 @@
  * only what lies about a bend is looked at; later passes look at the
  * triangles with a corner the last one changed (and so at every edge of
  * them: a knot's chord whose ends were not touched, between two corners
- * that were, waited for a pass that never came).  The simplifier then runs again
- * (mesh_dexels_simplify).  The contour's own mesh, before the simplifier,
+ * that were, waited for a pass that never came).  The simplifier then runs
+ * again (mesh_dexels_simplify).  The contour's own mesh, before the simplifier,
  * is crowded with slivers along such edges, and most splits there would
  * fold one.
  *
@@ -54,9 +60,13 @@
  * all eight of its corners found where five were.  Over the 17 models, mesh
  * samples beyond the tolerance 1.31 % -> 0.72 %, surface samples 67 -> 19.
  * Knots these rules do not untie are left as they are (two on the box,
- * about its corners).  The cost: the corpus's twisted and scaled extrusions
- * (linear_extrude-scale-zero-tests.scad, 140,000 triangles simplified)
- * take 1.2 s more, for a mesh of 68,000 triangles where it was 156,000.
+ * about its corners).  The cost: the corpus's twisted and scaled
+ * extrusions (linear_extrude-scale-zero-tests.scad, 140,000 triangles
+ * simplified) take 1.2 s more, for a mesh of 68,000 triangles where it was
+ * 156,000.  Knots fanned from their corners, later: over the 17 models,
+ * mesh samples beyond the tolerance 0.29 % -> 0.21 % on average,
+ * pinched_cells 480 -> 268 triangles (openscad 216), the 24-gon frustum of
+ * tests/models 100 -> 92 (openscad's).
  */
 #include "../geom/closest.h"
 #include "../intervals/vec3.h"
@@ -71,6 +81,7 @@
 #define TIE 0.001       /* cells: see stays() */
 #define ON 1e-4         /* cells: a vertex this near a plane lies on it (see near_planes) */
 #define NEAR 0.01       /* cells: see misfits_after() */
+#define KNOT_R 3.0      /* cells: see untie_corner() */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
 #define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
@@ -768,6 +779,165 @@ static int split_corner(crease_mesh *c, int32_t t)
     return 1;
 }
 
+/* Which of the planes pl (np) point x lies on (ON), as bits. */
+static unsigned point_planes(const crease_mesh *c, const double x[3], const plane *const *pl,
+                             int np)
+{
+    double big = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
+    double eps = fmax(ON * c->h, 5e-7 * big);
+    unsigned s = 0;
+    for (int i = 0; i < np; i++)
+        if (fabs(dot3(pl[i]->n, x) - pl[i]->d) < eps) s |= 1u << i;
+    return s;
+}
+
+enum { KNOT_VERTS = 48, KNOT_TRIS = 192 };
+
+static int in_list(const int32_t *a, int n, int32_t x)
+{
+    for (int i = 0; i < n; i++)
+        if (a[i] == x) return 1;
+    return 0;
+}
+
+/* Replace the knot about corner x (the vertices within KNOT_R cells of it
+ * that v reaches through them) by a fan from x to the rim of their
+ * triangles, where the rim is one loop, every fan triangle lies on a plane
+ * of pl its corners and x share, faces like it and lies on the surface,
+ * and some triangle of the knot misfits; 1 when done, 0 when not, -1 when
+ * out of memory. */
+static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *const *pl, int np)
+{
+    mesh *m = c->m;
+    int32_t kv[KNOT_VERTS], kt[KNOT_TRIS];
+    int nkv = 0, nkt = 0;
+    kv[nkv++] = v;
+    for (int i = 0; i < nkv; i++) /* the knot: breadth first through near vertices */
+        for (int32_t f = c->start[kv[i]]; f < c->start[kv[i] + 1]; f++) {
+            int32_t t = c->fan[f];
+            if (c->used[t] || m->t[3 * (size_t)t] < 0) return 0;
+            if (!in_list(kt, nkt, t)) {
+                if (nkt == KNOT_TRIS) return 0;
+                kt[nkt++] = t;
+            }
+            for (int k = 0; k < 3; k++) {
+                int32_t w = m->t[3 * (size_t)t + k];
+                double p[3], d[3];
+                mesh_vertex_at(m, w, p);
+                sub3(p, x, d);
+                if (in_list(kv, nkv, w) || !(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
+                if (nkv == KNOT_VERTS) return 0;
+                kv[nkv++] = w;
+            }
+        }
+    /* the rim: the knot's half-edges whose twins are not the knot's */
+    int32_t from[KNOT_TRIS], to[KNOT_TRIS], rt[KNOT_TRIS];
+    int nr = 0, misfit = 0;
+    for (int i = 0; i < nkt; i++) {
+        int32_t t = kt[i], tv[3];
+        double p[3][3];
+        corners_as(c, t, -1, -1, tv, p);
+        misfit += !fits(c, tv, p, pl, np);
+        for (int k = 0; k < 3; k++) {
+            int32_t y = c->opp[3 * t + k];
+            if (y < 0) return 0;
+            if (in_list(kt, nkt, y / 3)) continue;
+            if (nr == KNOT_TRIS) return 0;
+            from[nr] = tv[k];
+            to[nr] = tv[(k + 1) % 3];
+            rt[nr++] = t;
+        }
+    }
+    /* one loop through distinct vertices, and the knot a disc (V - E + F
+     * = 1 with the rim's vertices) */
+    if (!misfit || nr < 3 || nkv + nr - (3 * nkt + nr) / 2 + nkt != 1) return 0;
+    for (int i = 0; i < nr; i++)
+        for (int j = i + 1; j < nr; j++)
+            if (from[i] == from[j]) return 0;
+    int32_t centre = -1, *slot = place(c, x);
+    if (!slot) return -1;
+    if (*slot >= 0) {
+        if (!in_list(kv, nkv, *slot)) return 0;
+        centre = *slot; /* the corner is a vertex of the knot already: it stays */
+    }
+    unsigned sx = point_planes(c, x, pl, np);
+    for (int i = 0; i < nr; i++) {
+        double a[3], b[3], g[3], n[3];
+        mesh_vertex_at(m, from[i], a);
+        mesh_vertex_at(m, to[i], b);
+        unsigned sh = sx & on_planes(c, from[i], pl, np) & on_planes(c, to[i], pl, np);
+        if (!sh || !half_ok(pl, sh, a, b, x, NULL, c->min2)) return 0;
+        tri_normal3(a, b, x, n);
+        for (int k = 0; k < 3; k++)
+            g[k] = (a[k] + b[k] + x[k]) / 3;
+        if (!on_surface(c, g, n)) return 0;
+    }
+    if (centre < 0 && (centre = add_vertex(c, x)) < 0) return centre == -2 ? -1 : 0;
+    for (int i = 0; i < nkv; i++)
+        if (kv[i] != centre && leave_place(c, kv[i]) != 0) return -1;
+    for (int i = 0; i < nr; i++) {
+        uint16_t col = m->tc && m->npal ? m->tc[rt[i]] : 0;
+        if (i < nkt) {
+            int32_t *tv = &m->t[3 * (size_t)kt[i]];
+            tv[0] = from[i], tv[1] = to[i], tv[2] = centre;
+            if (m->tc && m->npal) m->tc[kt[i]] = col;
+        } else if (mesh_push_triangle(m, from[i], to[i], centre, col) < 0) {
+            return -1;
+        }
+    }
+    for (int i = 0; i < nkt; i++) {
+        c->used[kt[i]] = 1;
+        if (i >= nr) {
+            m->t[3 * (size_t)kt[i]] = m->t[3 * (size_t)kt[i] + 1] = m->t[3 * (size_t)kt[i] + 2] =
+                -1;
+            c->gone = 1;
+        }
+    }
+    return 1;
+}
+
+/* A knot of vertices the contour left about a corner where three plane
+ * faces meet (a twisted extrusion's acute top corners: 40 vertices within
+ * four cells), fanned from the corner (fan_knot): the points where three
+ * of the planes under the triangles about v and its neighbours meet,
+ * within KNOT_R cells of v and on the surface, each tried in turn.  1 when
+ * done, 0 when not, -1 when out of memory. */
+static int untie_corner(crease_mesh *c, int32_t v)
+{
+    mesh *m = c->m;
+    int32_t ring[64];
+    int n = 0;
+    ring[n++] = v;
+    for (int32_t f = c->start[v]; f < c->start[v + 1]; f++) {
+        if (c->used[c->fan[f]]) return 0; /* changed this pass */
+        for (int k = 0; k < 3; k++) {
+            int32_t w = m->t[3 * (size_t)c->fan[f] + k];
+            if (n < 64 && !in_list(ring, n, w)) ring[n++] = w;
+        }
+    }
+    const plane *pl[MAX_PLANES];
+    int np = candidates(c, ring, n, pl);
+    if (np < 3) return 0;
+    double p[3];
+    mesh_vertex_at(m, v, p);
+    for (int i = 0; i < np; i++)
+        for (int j = i + 1; j < np; j++)
+            for (int k = j + 1; k < np; k++) {
+                double x[3], d[3], mean[3];
+                if (!corner_point(pl[i], pl[j], pl[k], x)) continue;
+                sub3(x, p, d);
+                for (int q = 0; q < 3; q++) {
+                    mean[q] = pl[i]->n[q] + pl[j]->n[q] + pl[k]->n[q];
+                    x[q] = (float)x[q];
+                }
+                if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h) || !on_surface(c, x, mean))
+                    continue;
+                int r = fan_knot(c, v, x, pl, np);
+                if (r != 0) return r;
+            }
+    return 0;
+}
+
 /* Grow *a (*cap entries of size `size`) to n at least, the new entries
  * filled with byte `fill`; 0 or -1. */
 static int grow_to(void **a, size_t *cap, size_t n, size_t size, int fill)
@@ -844,12 +1014,14 @@ static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int
 }
 
 /* One pass over what is hot: the vertices snapped, knots collapsed, then
- * edges flipped and split, then corners; *split counts the changes.  The
- * corners of what changed are hot for the next.  0 or -1. */
+ * edges flipped and split, then corners, then knots fanned from corners
+ * (last: a fan's new corner has no fan of its own this pass); *split
+ * counts the changes.  The corners of what changed are hot for the next.
+ * 0 or -1. */
 static int pass_once(crease_mesh *c, int *split)
 {
     mesh *m = c->m;
-    size_t nt = (size_t)m->nt;
+    size_t nt = (size_t)m->nt, nv = (size_t)m->nv;
     c->opp = malloc(3 * nt * sizeof *c->opp);
     c->used = calloc(nt, 1);
     c->ends = calloc((size_t)m->nv, 1);
@@ -878,6 +1050,11 @@ static int pass_once(crease_mesh *c, int *split)
         goto done;
     for (size_t t = 0; t < nt; t++) {
         int r = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t) ? split_corner(c, (int32_t)t) : 0;
+        if (r < 0) goto done;
+        *split += r;
+    }
+    for (int32_t v = 0; v < (int32_t)nv; v++) {
+        int r = is_hot(c, v) ? untie_corner(c, v) : 0;
         if (r < 0) goto done;
         *split += r;
     }

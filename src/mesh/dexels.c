@@ -326,12 +326,25 @@ static size_t patch_slot(const uint32_t *key, size_t cap, uint32_t k)
     return p;
 }
 
+/* Whether grid d has crossings of patch p (without the flag): 0 none, 1
+ * all of one normal, 2 not. */
+static int patch_in(const mesh_dexels *d, uint32_t p)
+{
+    if (!d->patch_key) return 0;
+    size_t q = patch_slot(d->patch_key, d->patch_cap, p);
+    return d->patch_key[q] != p ? 0 : d->patch_curved[q] ? 2 : 1;
+}
+
 uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p)
 {
     p &= ~MESH_PATCH_PLANAR;
-    if (!d->patch_key) return p;
-    size_t q = patch_slot(d->patch_key, d->patch_cap, p);
-    return d->patch_key[q] == p && !d->patch_curved[q] ? p | MESH_PATCH_PLANAR : p;
+    int seen = 0;
+    for (; d; d = d->next) { /* every grid of the sampling: each holds its part's patches */
+        int k = patch_in(d, p);
+        if (k == 2) return p;
+        seen |= k;
+    }
+    return seen ? p | MESH_PATCH_PLANAR : p;
 }
 
 /* The patches seen so far: an open-addressing table, kept at most half
@@ -411,8 +424,10 @@ static int mark_planar(mesh_dexels *d)
     d->patch_curved = t.curved;
     d->patch_cap = t.cap;
     for (int a = 0; a < 3; a++)
-        for (size_t i = 0; i < d->nhit[a]; i++)
-            d->hit[a][i].patch = mesh_patch_flagged(d, d->hit[a][i].patch);
+        for (size_t i = 0; i < d->nhit[a]; i++) {
+            uint32_t p = d->hit[a][i].patch & ~MESH_PATCH_PLANAR;
+            d->hit[a][i].patch = patch_in(d, p) == 1 ? p | MESH_PATCH_PLANAR : p;
+        }
     return 0;
 }
 

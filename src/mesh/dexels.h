@@ -117,8 +117,8 @@ static inline uint32_t mesh_patch_of(int32_t prim, uint16_t part)
            1;
 }
 
-/* Patch p (mesh_patch_of) flagged MESH_PATCH_PLANAR when d holds it as a
- * plane (dexels.c). */
+/* Patch p (mesh_patch_of) flagged MESH_PATCH_PLANAR when the grids of
+ * sampling d (d and those after it) hold it as a plane (dexels.c). */
 uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p);
 
 /* Whether surfaces of patches pa and pb, their normals' cosine c, meet at a
