@@ -63,10 +63,12 @@
  * about its corners).  The cost: the corpus's twisted and scaled
  * extrusions (linear_extrude-scale-zero-tests.scad, 140,000 triangles
  * simplified) take 1.2 s more, for a mesh of 68,000 triangles where it was
- * 156,000.  Knots fanned from their corners, later: over the 17 models,
- * mesh samples beyond the tolerance 0.29 % -> 0.21 % on average,
- * pinched_cells 480 -> 268 triangles (openscad 216), the 24-gon frustum of
- * tests/models 100 -> 92 (openscad's).
+ * 156,000.  Knots fanned from their corners, later (first in a pass: run
+ * last, they found their triangles changed by the other rules pass after
+ * pass): over the 17 models, mesh samples beyond the tolerance 0.29 % ->
+ * 0.13 % on average, pinched_cells 480 -> 204 triangles (openscad 216) and
+ * exact, twist_ties 978 -> 310, the 24-gon frustum of tests/models 100 ->
+ * 92 (openscad's).
  */
 #include "../geom/closest.h"
 #include "../intervals/vec3.h"
@@ -1013,11 +1015,12 @@ static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int
     return 0;
 }
 
-/* One pass over what is hot: the vertices snapped, knots collapsed, then
- * edges flipped and split, then corners, then knots fanned from corners
- * (last: a fan's new corner has no fan of its own this pass); *split
- * counts the changes.  The corners of what changed are hot for the next.
- * 0 or -1. */
+/* One pass over what is hot: knots fanned from their corners, and where
+ * there were none (the other rules read the fans as the pass began, and a
+ * fan's new corner has none), the vertices snapped, knots collapsed, then
+ * edges flipped and split, then corners; *split counts the changes.  The
+ * corners of what changed are hot for the next (and after knots, what is
+ * hot now).  0 or -1. */
 static int pass_once(crease_mesh *c, int *split)
 {
     mesh *m = c->m;
@@ -1039,6 +1042,14 @@ static int pass_once(crease_mesh *c, int *split)
     for (size_t t = 0; t < nt; t++)
         if (c->tp[t] == -2 && hot_triangle(c, (int32_t)t))
             if ((c->tp[t] = face_under(c, (int32_t)t)) == -3) goto done;
+    int knots = 0;
+    for (int32_t v = 0; v < (int32_t)nv; v++) {
+        int r = is_hot(c, v) ? untie_corner(c, v) : 0;
+        if (r < 0) goto done;
+        knots += r;
+    }
+    *split += knots;
+    if (knots) goto next; /* the other rules next pass, on the fans as they are then */
     for (int32_t v = 0; v < m->nv; v++) {
         int r = is_hot(c, v) ? snap_vertex(c, v) : 0;
         if (r < 0) goto done;
@@ -1053,16 +1064,13 @@ static int pass_once(crease_mesh *c, int *split)
         if (r < 0) goto done;
         *split += r;
     }
-    for (int32_t v = 0; v < (int32_t)nv; v++) {
-        int r = is_hot(c, v) ? untie_corner(c, v) : 0;
-        if (r < 0) goto done;
-        *split += r;
-    }
-    /* what is hot next: the corners of what changed, and what was added */
+next:
+    /* what is hot next: the corners of what changed, and what was added
+     * (and, after knots only, what is hot now) */
     if (grow_to((void **)&c->tp, &c->tp_cap, (size_t)m->nt, sizeof *c->tp, 0xff) != 0 ||
         grow_to((void **)&c->hot, &c->hot_cap, (size_t)m->nv, 1, 0) != 0)
         goto done;
-    memset(c->hot, 0, (size_t)m->nv);
+    if (!knots) memset(c->hot, 0, (size_t)m->nv);
     for (int32_t t = 0; t < m->nt; t++) {
         int32_t *tv = &m->t[3 * (size_t)t];
         if ((size_t)t < nt && !c->used[t]) continue;
