@@ -805,7 +805,9 @@ static int in_list(const int32_t *a, int n, int32_t x)
 /* Replace the knot about corner x (the vertices within KNOT_R cells of it
  * that v reaches through them) by a fan from x to the rim of their
  * triangles, where the rim is one loop, every fan triangle lies on a plane
- * of pl its corners and x share, faces like it and lies on the surface,
+ * of pl its corners and x share, faces like it and lies on the surface
+ * (rays through its centroid and halfway from there to each corner find
+ * it there: a notch of the model within the knot would not be covered),
  * and some triangle of the knot misfits; 1 when done, 0 when not, -1 when
  * out of memory. */
 static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *const *pl, int np)
@@ -870,9 +872,14 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *c
         unsigned sh = sx & on_planes(c, from[i], pl, np) & on_planes(c, to[i], pl, np);
         if (!sh || !half_ok(pl, sh, a, b, x, NULL, c->min2)) return 0;
         tri_normal3(a, b, x, n);
-        for (int k = 0; k < 3; k++)
-            g[k] = (a[k] + b[k] + x[k]) / 3;
-        if (!on_surface(c, g, n)) return 0;
+        for (int q = 0; q < 4; q++) { /* its centroid, and halfway to each corner */
+            const double *e = q == 0 ? NULL : q == 1 ? a : q == 2 ? b : x;
+            for (int k = 0; k < 3; k++) {
+                g[k] = (a[k] + b[k] + x[k]) / 3;
+                if (e) g[k] = 0.5 * (g[k] + e[k]);
+            }
+            if (!on_surface(c, g, n)) return 0;
+        }
     }
     if (centre < 0 && (centre = add_vertex(c, x)) < 0) return centre == -2 ? -1 : 0;
     for (int i = 0; i < nkv; i++)
