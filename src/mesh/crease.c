@@ -68,7 +68,9 @@
  * pass): over the 17 models, mesh samples beyond the tolerance 0.29 % ->
  * 0.13 % on average, pinched_cells 480 -> 204 triangles (openscad 216) and
  * exact, twist_ties 978 -> 310, the 24-gon frustum of tests/models 100 ->
- * 92 (openscad's).
+ * 92 (openscad's); the scaled extrusions above 5.1 -> 6.5 s (each knot
+ * tried once a pass whichever of its vertices finds it, not at all about
+ * a corner where a crowd of vertices is too big to be one: 20 s before).
  */
 #include "../geom/closest.h"
 #include "../intervals/vec3.h"
@@ -85,6 +87,7 @@
 #define NEAR 0.01       /* cells: see misfits_after() */
 #define KNOT_R 3.0      /* cells: see untie_corner() */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
+#define KNOT_PLANES 16  /* candidates about a knot (fan_knot) */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
 #define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
 
@@ -102,7 +105,11 @@ typedef struct crease_mesh {
     mesh_fmap by_patch; /* patch -> index into pl */
     int32_t *tp;        /* each triangle's plane (index into pl), -1: none, -2: not looked for */
     size_t tp_cap;
-    uint8_t *hot; /* vertices whose surroundings changed (all, at first) */
+    uint8_t *hot;                      /* vertices whose surroundings changed (all, at first) */
+    uint32_t *vmark, *tmark, mark_now; /* fan_knot's marks on vertices and triangles */
+    uint64_t *tried;   /* by vertex: the corner (place) its knot last tried this pass */
+    mesh_fmap crowded; /* the corners (places) whose knots were too big this pass */
+    int32_t nv0;       /* the vertices as the pass began */
     size_t hot_cap;
     int32_t *start, *fan; /* the triangles around each vertex, as the pass began */
     int32_t *opp;         /* each half-edge's twin, as the pass began */
@@ -155,7 +162,8 @@ static int32_t face_under(crease_mesh *c, int32_t t)
 
 /* The planes under the triangles around vertices vs (nv of them),
  * distinct, into out (MAX_PLANES at most); their count. */
-static int candidates(const crease_mesh *c, const int32_t *vs, int nv, const plane **out)
+static int candidates_max(const crease_mesh *c, const int32_t *vs, int nv, const plane **out,
+                          int cap)
 {
     int n = 0;
     for (int i = 0; i < nv; i++)
@@ -165,9 +173,14 @@ static int candidates(const crease_mesh *c, const int32_t *vs, int nv, const pla
             int seen = 0;
             for (int j = 0; j < n && !seen; j++)
                 seen = out[j] == p;
-            if (!seen && n < MAX_PLANES) out[n++] = p;
+            if (!seen && n < cap) out[n++] = p;
         }
     return n;
+}
+
+static int candidates(const crease_mesh *c, const int32_t *vs, int nv, const plane **out)
+{
+    return candidates_max(c, vs, nv, out, MAX_PLANES);
 }
 
 /* Which of the planes pl (np) vertex v lies within `cells` of (or of
@@ -223,7 +236,7 @@ static int half_ok(const plane *const *pl, unsigned shared, const double p[3], c
 {
     double t[3];
     tri_normal3(p, q, r, t);
-    for (int i = 0; i < MAX_PLANES; i++)
+    for (int i = 0; i < KNOT_PLANES; i++)
         if (shared >> i & 1) {
             n = pl[i]->n;
             break;
@@ -810,30 +823,57 @@ static int in_list(const int32_t *a, int n, int32_t x)
  * it there: a notch of the model within the knot would not be covered),
  * and some triangle of the knot misfits; 1 when done, 0 when not, -1 when
  * out of memory. */
-static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *const *pl, int np)
+static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const double dir[3])
 {
     mesh *m = c->m;
     int32_t kv[KNOT_VERTS], kt[KNOT_TRIS];
     int nkv = 0, nkt = 0;
+    uint32_t mk = ++c->mark_now; /* kv's and kt's members marked so */
     kv[nkv++] = v;
-    for (int i = 0; i < nkv; i++) /* the knot: breadth first through near vertices */
-        for (int32_t f = c->start[kv[i]]; f < c->start[kv[i] + 1]; f++) {
+    c->vmark[v] = mk;
+    int whole = 1; /* the knot: breadth first through near vertices */
+    for (int i = 0; i < nkv && whole; i++)
+        for (int32_t f = c->start[kv[i]]; f < c->start[kv[i] + 1] && whole; f++) {
             int32_t t = c->fan[f];
-            if (c->used[t] || m->t[3 * (size_t)t] < 0) return 0;
-            if (!in_list(kt, nkt, t)) {
-                if (nkt == KNOT_TRIS) return 0;
-                kt[nkt++] = t;
+            if (c->used[t] || m->t[3 * (size_t)t] < 0) {
+                whole = 0; /* changed this pass */
+                break;
             }
-            for (int k = 0; k < 3; k++) {
+            if (c->tmark[t] != mk && nkt == KNOT_TRIS) {
+                whole = -1; /* too big */
+                break;
+            }
+            if (c->tmark[t] != mk) {
+                kt[nkt++] = t;
+                c->tmark[t] = mk;
+            }
+            for (int k = 0; k < 3 && whole; k++) {
                 int32_t w = m->t[3 * (size_t)t + k];
                 double p[3], d[3];
+                if (c->vmark[w] == mk) continue;
                 mesh_vertex_at(m, w, p);
                 sub3(p, x, d);
-                if (in_list(kv, nkv, w) || !(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
-                if (nkv == KNOT_VERTS) return 0;
-                kv[nkv++] = w;
+                if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
+                if (nkv == KNOT_VERTS)
+                    whole = -1;
+                else {
+                    kv[nkv++] = w;
+                    c->vmark[w] = mk;
+                }
             }
         }
+    /* whichever of its vertices finds the knot, it is the same: it is not
+     * tried at x again from any of them this pass */
+    uint64_t key = mesh_pos_key(x);
+    for (int i = 0; i < nkv; i++)
+        c->tried[kv[i]] = key;
+    if (whole < 0) { /* nor from any other vertex near x: the crowd there is too big */
+        int fresh;
+        if (!mesh_fmap_slot(&c->crowded, key, &fresh)) return -1;
+    }
+    if (whole != 1) return 0;
+    const plane *pl[KNOT_PLANES]; /* the planes under its triangles */
+    int np = candidates_max(c, kv, nkv, pl, KNOT_PLANES);
     /* the rim: the knot's half-edges whose twins are not the knot's */
     int32_t from[KNOT_TRIS], to[KNOT_TRIS], rt[KNOT_TRIS];
     int nr = 0, misfit = 0;
@@ -845,7 +885,7 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *c
         for (int k = 0; k < 3; k++) {
             int32_t y = c->opp[3 * t + k];
             if (y < 0) return 0;
-            if (in_list(kt, nkt, y / 3)) continue;
+            if (c->tmark[y / 3] == mk) continue;
             if (nr == KNOT_TRIS) return 0;
             from[nr] = tv[k];
             to[nr] = tv[(k + 1) % 3];
@@ -861,16 +901,22 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *c
     int32_t centre = -1, *slot = place(c, x);
     if (!slot) return -1;
     if (*slot >= 0) {
-        if (!in_list(kv, nkv, *slot)) return 0;
+        if (*slot >= c->nv0 || c->vmark[*slot] != mk) return 0;
         centre = *slot; /* the corner is a vertex of the knot already: it stays */
     }
     unsigned sx = point_planes(c, x, pl, np);
     for (int i = 0; i < nr; i++) {
-        double a[3], b[3], g[3], n[3];
+        double a[3], b[3];
         mesh_vertex_at(m, from[i], a);
         mesh_vertex_at(m, to[i], b);
         unsigned sh = sx & on_planes(c, from[i], pl, np) & on_planes(c, to[i], pl, np);
         if (!sh || !half_ok(pl, sh, a, b, x, NULL, c->min2)) return 0;
+    }
+    if (!on_surface(c, x, dir)) return 2;
+    for (int i = 0; i < nr; i++) {
+        double a[3], b[3], g[3], n[3];
+        mesh_vertex_at(m, from[i], a);
+        mesh_vertex_at(m, to[i], b);
         tri_normal3(a, b, x, n);
         for (int q = 0; q < 4; q++) { /* its centroid, and halfway to each corner */
             const double *e = q == 0 ? NULL : q == 1 ? a : q == 2 ? b : x;
@@ -925,9 +971,17 @@ static int untie_corner(crease_mesh *c, int32_t v)
         }
     }
     const plane *pl[MAX_PLANES];
-    int np = candidates(c, ring, n, pl);
+    int np = candidates(c, ring, n, pl), misfit = 0;
     if (np < 3) return 0;
-    double p[3];
+    for (int32_t f = c->start[v]; f < c->start[v + 1] && !misfit; f++) {
+        int32_t tv[3];
+        double q[3][3];
+        corners_as(c, c->fan[f], -1, -1, tv, q);
+        misfit = !fits(c, tv, q, pl, np);
+    }
+    if (!misfit) return 0;
+    double p[3], tried[16][3];
+    int ntried = 0;
     mesh_vertex_at(m, v, p);
     for (int i = 0; i < np; i++)
         for (int j = i + 1; j < np; j++)
@@ -939,10 +993,20 @@ static int untie_corner(crease_mesh *c, int32_t v)
                     mean[q] = pl[i]->n[q] + pl[j]->n[q] + pl[k]->n[q];
                     x[q] = (float)x[q];
                 }
-                if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h) || !on_surface(c, x, mean))
+                if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
+                /* a corner of more than three planes is found by more than
+                 * one triple: its knot is tried once (but the ray's answer
+                 * at a corner, a point of the surface, depends on its
+                 * direction: each triple's is asked) */
+                int seen = 0;
+                for (int q = 0; q < ntried && !seen; q++)
+                    seen = tried[q][0] == x[0] && tried[q][1] == x[1] && tried[q][2] == x[2];
+                if (seen) continue;
+                if (c->tried[v] == mesh_pos_key(x) || mesh_fmap_has(&c->crowded, mesh_pos_key(x)))
                     continue;
-                int r = fan_knot(c, v, x, pl, np);
-                if (r != 0) return r;
+                int r = fan_knot(c, v, x, mean);
+                if (r == 0 && ntried < 16) memcpy(tried[ntried++], x, sizeof x);
+                if (r == 1 || r == -1) return r;
             }
     return 0;
 }
@@ -1036,12 +1100,18 @@ static int pass_once(crease_mesh *c, int *split)
     c->used = calloc(nt, 1);
     c->ends = calloc((size_t)m->nv, 1);
     c->known = calloc((size_t)m->nv, 1);
+    c->vmark = calloc((size_t)m->nv, sizeof *c->vmark);
+    c->tried = calloc((size_t)m->nv, sizeof *c->tried);
+    memset(&c->crowded, 0, sizeof c->crowded);
+    c->tmark = calloc(nt, sizeof *c->tmark);
+    c->mark_now = 0;
+    c->nv0 = m->nv;
     c->nknown = 0;
     c->start = c->fan = NULL;
     c->gone = 0;
     int rc = -1;
-    if (!c->opp || !c->used || !c->ends || !c->known || mesh_half_twins(m, 0, c->opp) != 0 ||
-        mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0)
+    if (!c->opp || !c->used || !c->ends || !c->known || !c->vmark || !c->tmark || !c->tried ||
+        mesh_half_twins(m, 0, c->opp) != 0 || mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0)
         goto done;
     /* only what is about a bend matters: elsewhere the triangles are flat
      * already, or the faces' creases are slighter than COS_APART */
@@ -1091,6 +1161,11 @@ done:
     free(c->used);
     free(c->ends);
     free(c->known);
+    free(c->vmark);
+    free(c->tried);
+    free(c->crowded.key);
+    free(c->crowded.val);
+    free(c->tmark);
     free(c->start);
     free(c->fan);
     return rc;
