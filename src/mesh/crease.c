@@ -161,7 +161,7 @@ static int32_t face_under(crease_mesh *c, int32_t t)
 }
 
 /* The planes under the triangles around vertices vs (nv of them),
- * distinct, into out (MAX_PLANES at most); their count. */
+ * distinct, into out (cap at most); their count. */
 static int candidates_max(const crease_mesh *c, const int32_t *vs, int nv, const plane **out,
                           int cap)
 {
@@ -178,24 +178,32 @@ static int candidates_max(const crease_mesh *c, const int32_t *vs, int nv, const
     return n;
 }
 
+/* candidates_max, MAX_PLANES at most. */
 static int candidates(const crease_mesh *c, const int32_t *vs, int nv, const plane **out)
 {
     return candidates_max(c, vs, nv, out, MAX_PLANES);
 }
 
-/* Which of the planes pl (np) vertex v lies within `cells` of (or of
+/* Which of the planes pl (np) point x lies within `cells` of (or of
  * rounding: vertices are floats), as bits. */
-static unsigned near_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np,
+static unsigned planes_near(const crease_mesh *c, const double x[3], const plane *const *pl, int np,
                             double cells)
 {
-    double x[3];
-    mesh_vertex_at(c->m, v, x);
     double big = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
     double eps = fmax(cells * c->h, 5e-7 * big);
     unsigned s = 0;
     for (int i = 0; i < np; i++)
         if (fabs(dot3(pl[i]->n, x) - pl[i]->d) < eps) s |= 1u << i;
     return s;
+}
+
+/* planes_near for vertex v. */
+static unsigned near_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np,
+                            double cells)
+{
+    double x[3];
+    mesh_vertex_at(c->m, v, x);
+    return planes_near(c, x, pl, np, cells);
 }
 
 /* Which of the planes pl (np) vertex v lies on, as bits. */
@@ -794,18 +802,6 @@ static int split_corner(crease_mesh *c, int32_t t)
     return 1;
 }
 
-/* Which of the planes pl (np) point x lies on (ON), as bits. */
-static unsigned point_planes(const crease_mesh *c, const double x[3], const plane *const *pl,
-                             int np)
-{
-    double big = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
-    double eps = fmax(ON * c->h, 5e-7 * big);
-    unsigned s = 0;
-    for (int i = 0; i < np; i++)
-        if (fabs(dot3(pl[i]->n, x) - pl[i]->d) < eps) s |= 1u << i;
-    return s;
-}
-
 enum { KNOT_VERTS = 48, KNOT_TRIS = 192 };
 
 static int in_list(const int32_t *a, int n, int32_t x)
@@ -904,7 +900,7 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const double d
         if (*slot >= c->nv0 || c->vmark[*slot] != mk) return 0;
         centre = *slot; /* the corner is a vertex of the knot already: it stays */
     }
-    unsigned sx = point_planes(c, x, pl, np);
+    unsigned sx = planes_near(c, x, pl, np, ON);
     for (int i = 0; i < nr; i++) {
         double a[3], b[3];
         mesh_vertex_at(m, from[i], a);
