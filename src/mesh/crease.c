@@ -33,12 +33,13 @@
  *     where A and B meet nearest the edge;
  *   - a triangle whose corners still share no plane, and lie on three,
  *     gets the point where the three meet as a new corner (a fan of three);
- *   - last, a knot about a corner where three planes meet (the vertices
- *     within three cells of it, reached through each other: a twisted
- *     extrusion's acute corners held 40) goes whole where some of its
- *     triangles misfit: its triangles become a fan from the corner to
- *     their rim, where the rim is one loop and every fan triangle lies on
- *     a plane its corners share, facing like it, over the surface.
+ *   - and first of all, a knot about a corner where three planes meet
+ *     (the vertices within three cells of it, reached through each other:
+ *     a twisted extrusion's acute corners held 40) goes whole where some
+ *     of its triangles misfit: its triangles become a fan from the corner
+ *     to their rim, where the rim is one loop and every fan triangle lies
+ *     on a plane its corners share, facing like it, over the surface (a
+ *     pass that fans knots leaves the rules above to the next).
  * Every such point must be one a ray along the planes' mean normal finds on
  * the surface (else the planes do not meet there: a face lies between
  * them), and every change must leave triangles with area that face like
