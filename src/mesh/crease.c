@@ -869,32 +869,36 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const double d
         if (!mesh_fmap_slot(&c->crowded, key, &fresh)) return -1;
     }
     if (whole != 1) return 0;
-    const plane *pl[KNOT_PLANES]; /* the planes under its triangles */
-    int np = candidates_max(c, kv, nkv, pl, KNOT_PLANES);
     /* the rim: the knot's half-edges whose twins are not the knot's */
     int32_t from[KNOT_TRIS], to[KNOT_TRIS], rt[KNOT_TRIS];
-    int nr = 0, misfit = 0;
+    int nr = 0;
     for (int i = 0; i < nkt; i++) {
-        int32_t t = kt[i], tv[3];
-        double p[3][3];
-        corners_as(c, t, -1, -1, tv, p);
-        misfit += !fits(c, tv, p, pl, np);
+        const int32_t *tv = &m->t[3 * (size_t)kt[i]];
         for (int k = 0; k < 3; k++) {
-            int32_t y = c->opp[3 * t + k];
+            int32_t y = c->opp[3 * kt[i] + k];
             if (y < 0) return 0;
             if (c->tmark[y / 3] == mk) continue;
             if (nr == KNOT_TRIS) return 0;
             from[nr] = tv[k];
             to[nr] = tv[(k + 1) % 3];
-            rt[nr++] = t;
+            rt[nr++] = kt[i];
         }
     }
     /* one loop through distinct vertices, and the knot a disc (V - E + F
      * = 1 with the rim's vertices) */
-    if (!misfit || nr < 3 || nkv + nr - (3 * nkt + nr) / 2 + nkt != 1) return 0;
+    if (nr < 3 || nkv + nr - (3 * nkt + nr) / 2 + nkt != 1) return 0;
     for (int i = 0; i < nr; i++)
         for (int j = i + 1; j < nr; j++)
             if (from[i] == from[j]) return 0;
+    const plane *pl[KNOT_PLANES]; /* the planes under its triangles */
+    int np = candidates_max(c, kv, nkv, pl, KNOT_PLANES), misfit = 0;
+    for (int i = 0; i < nkt && !misfit; i++) {
+        int32_t tv[3];
+        double p[3][3];
+        corners_as(c, kt[i], -1, -1, tv, p);
+        misfit = !fits(c, tv, p, pl, np);
+    }
+    if (!misfit) return 0;
     int32_t centre = -1, *slot = place(c, x);
     if (!slot) return -1;
     if (*slot >= 0) {
@@ -978,8 +982,12 @@ static int untie_corner(crease_mesh *c, int32_t v)
     }
     if (!misfit) return 0;
     double p[3], tried[16][3];
-    int ntried = 0;
+    int ntried = 0, near = 0;
     mesh_vertex_at(m, v, p);
+    /* a corner within KNOT_R cells is at least as near each of its planes */
+    for (int i = 0; i < np; i++)
+        if (fabs(dot3(pl[i]->n, p) - pl[i]->d) < KNOT_R * c->h) pl[near++] = pl[i];
+    np = near;
     for (int i = 0; i < np; i++)
         for (int j = i + 1; j < np; j++)
             for (int k = j + 1; k < np; k++) {
@@ -1086,10 +1094,10 @@ static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int
 /* One pass over what is hot: knots fanned from their corners, and where
  * there were none (the other rules read the fans as the pass began, and a
  * fan's new corner has none), the vertices snapped, knots collapsed, then
- * edges flipped and split, then corners; *split counts the changes.  The
- * corners of what changed are hot for the next (and after knots, what is
- * hot now).  0 or -1. */
-static int pass_once(crease_mesh *c, int *split)
+ * edges flipped and split, then corners; *split counts the changes,
+ * *knotted is set when knots were fanned.  The corners of what changed
+ * are hot for the next (and after knots, what is hot now).  0 or -1. */
+static int pass_once(crease_mesh *c, int *split, int *knotted)
 {
     mesh *m = c->m;
     size_t nt = (size_t)m->nt, nv = (size_t)m->nv;
@@ -1123,6 +1131,7 @@ static int pass_once(crease_mesh *c, int *split)
         knots += r;
     }
     *split += knots;
+    *knotted = knots > 0;
     if (knots) goto next; /* the other rules next pass, on the fans as they are then */
     for (int32_t v = 0; v < m->nv; v++) {
         int r = is_hot(c, v) ? snap_vertex(c, v) : 0;
@@ -1195,11 +1204,14 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
         else if (*slot < 0)
             *slot = m->t[k];
     }
-    for (int pass = 0; pass < PASSES && rc == 0; pass++) {
-        int split = 0;
-        rc = pass_once(&c, &split);
+    /* PASSES of the rules, and as many more that fan knots */
+    for (int rules = 0, knots = 0; rules < PASSES && knots < PASSES && rc == 0;) {
+        int split = 0, knotted = 0;
+        rc = pass_once(&c, &split, &knotted);
         *splits += split;
         if (!split) break;
+        knots += knotted;
+        rules += !knotted;
     }
     free(c.pl);
     free(c.by_patch.key);
