@@ -814,12 +814,14 @@ static int in_list(const int32_t *a, int n, int32_t x)
 
 /* Replace the knot about corner x (the vertices within KNOT_R cells of it
  * that v reaches through them) by a fan from x to the rim of their
- * triangles, where the rim is one loop, every fan triangle lies on a plane
- * of pl its corners and x share, faces like it and lies on the surface
- * (rays through its centroid and halfway from there to each corner find
- * it there: a notch of the model within the knot would not be covered),
- * and some triangle of the knot misfits; 1 when done, 0 when not, -1 when
- * out of memory. */
+ * triangles, where the rim is one loop, some triangle of the knot misfits,
+ * every fan triangle lies on a plane under the knot's triangles that its
+ * corners and x share, faces like it and lies on the surface (rays through
+ * its centroid and halfway from there to each corner find it there: a
+ * notch of the model within the knot would not be covered), and a ray
+ * along dir finds x itself on the surface; 1 when done, 2 when only that
+ * last ray refused, 0 when not, -1 when out of memory.  Every vertex of
+ * the knot gets x as its last corner tried (c->tried). */
 static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const double dir[3])
 {
     mesh *m = c->m;
@@ -1000,15 +1002,15 @@ static int untie_corner(crease_mesh *c, int32_t v)
                 }
                 if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
                 /* a corner of more than three planes is found by more than
-                 * one triple: its knot is tried once (but the ray's answer
-                 * at a corner, a point of the surface, depends on its
-                 * direction: each triple's is asked) */
+                 * one triple: not tried again where its knot was refused
+                 * (tried, kept here only then), nor right after any try
+                 * of it (c->tried: the last corner v's knot was tried at),
+                 * nor where the crowd about it was too big */
                 int seen = 0;
                 for (int q = 0; q < ntried && !seen; q++)
                     seen = tried[q][0] == x[0] && tried[q][1] == x[1] && tried[q][2] == x[2];
-                if (seen) continue;
-                if (c->tried[v] == mesh_pos_key(x) || mesh_fmap_has(&c->crowded, mesh_pos_key(x)))
-                    continue;
+                uint64_t key = mesh_pos_key(x);
+                if (seen || c->tried[v] == key || mesh_fmap_has(&c->crowded, key)) continue;
                 int r = fan_knot(c, v, x, mean);
                 if (r == 0 && ntried < 16) memcpy(tried[ntried++], x, sizeof x);
                 if (r == 1 || r == -1) return r;

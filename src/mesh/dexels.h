@@ -174,6 +174,9 @@ static inline void mesh_vertex_at(const mesh *m, int32_t i, double p[3])
         p[c] = m->v[3 * (size_t)i + c];
 }
 
+/* The tri_normal3 of triangle t of m (not unit: twice its area long). */
+void mesh_triangle_normal(const mesh *m, int32_t t, double n[3]);
+
 /* The triangles [t0, m->nt) around each vertex: fan[start[v] .. start[v +
  * 1]) for vertex v (both free by the caller); 0, or -1 when out of memory
  * (nothing to free). */

@@ -103,8 +103,7 @@ int mesh_half_twins(const mesh *m, int32_t t0, int32_t *opp)
     return 0;
 }
 
-/* The tri_normal3 of triangle t of m. */
-static void triangle_normal(const mesh *m, int32_t t, double n[3])
+void mesh_triangle_normal(const mesh *m, int32_t t, double n[3])
 {
     double p[3][3];
     for (int k = 0; k < 3; k++)
@@ -118,14 +117,14 @@ int mesh_vertex_move(mesh *m, int32_t v, const int32_t *fan, int nf, const doubl
     if (nf > 64) return 0;
     double before[64][3], old[3];
     for (int f = 0; f < nf; f++)
-        triangle_normal(m, fan[f], before[f]);
+        mesh_triangle_normal(m, fan[f], before[f]);
     mesh_vertex_at(m, v, old);
     float *pv = &m->v[3 * (size_t)v];
     for (int c = 0; c < 3; c++)
         pv[c] = (float)to[c];
     for (int f = 0; f < nf; f++) {
         double n[3];
-        triangle_normal(m, fan[f], n);
+        mesh_triangle_normal(m, fan[f], n);
         double l0 = sqrt(dot3(before[f], before[f])), l1 = sqrt(dot3(n, n));
         if (!(dot3(n, before[f]) > min_cos * l0 * l1 && dot3(n, n) > min2)) {
             for (int c = 0; c < 3; c++)

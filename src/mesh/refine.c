@@ -495,12 +495,8 @@ static int settle(mesh *m, int t0, double off, mesh_snapper *sn, mesh_vnormals *
         double x[3], n[3] = {0, 0, 0}, p[3], pn[3], d[3];
         if (start[v] == start[v + 1] || vnormal(vn, v, x)) continue;
         for (int f = start[v]; f < start[v + 1]; f++) {
-            const int32_t *tv = &m->t[3 * (size_t)fan[f]];
-            double a[3], b[3], c[3], tn[3];
-            mesh_vertex_at(m, tv[0], a);
-            mesh_vertex_at(m, tv[1], b);
-            mesh_vertex_at(m, tv[2], c);
-            tri_normal3(a, b, c, tn);
+            double tn[3];
+            mesh_triangle_normal(m, fan[f], tn);
             for (int k = 0; k < 3; k++)
                 n[k] += tn[k];
         }

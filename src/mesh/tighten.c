@@ -341,10 +341,8 @@ static int crease_point(const mesh *m, mesh_snapper *sn, int32_t t, int k, int32
     double sp[2][3], sn_n[2][3], lo[3], hi[3], a[3], b[3];
     int32_t tri[2] = {t, o}, far[2] = {(k + 2) % 3, (j + 2) % 3};
     for (int s = 0; s < 2; s++) {
-        double p[3][3], n[3], q[3], c[3];
-        for (int i = 0; i < 3; i++)
-            corner(m, tri[s], i, p[i]);
-        tri_normal3(p[0], p[1], p[2], n);
+        double n[3], q[3], c[3];
+        mesh_triangle_normal(m, tri[s], n);
         double l = sqrt(dot3(n, n));
         if (!(l > 0)) return 0;
         corner(m, tri[s], far[s], c);
@@ -367,9 +365,10 @@ static int crease_point(const mesh *m, mesh_snapper *sn, int32_t t, int k, int32
 
 /* Split edge k of triangle t, and the triangle across it (unused this
  * round: the caller sees to that), at the surface under the edge's middle,
- * where the triangle across is smooth, both keep their halves and no vertex is there already (pos
- * holds them all; the new one is added); the four triangles flagged used
- * and in nx.  1 when split, 0 when not, -1 when out of memory. */
+ * where the triangle across is smooth, both keep their halves and no
+ * vertex is there already (pos holds them all; the new one is added); the
+ * four triangles flagged used and in nx.  1 when split, 0 when not, -1
+ * when out of memory. */
 static int split_edge(mesh *m, mesh_snapper *sn, const round_view *rv, mesh_fmap *pos, int32_t t,
                       int k, double tol, uint8_t *used, uint8_t *nx)
 {
