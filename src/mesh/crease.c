@@ -40,9 +40,9 @@
  *     to their rim, where the rim is one loop and every fan triangle lies
  *     on a plane its corners share, facing like it, over the surface (a
  *     pass that fans knots leaves the rules above to the next).
- * Every such point must be one a ray along the planes' mean normal finds on
- * the surface (else the planes do not meet there: a face lies between
- * them), and every change must leave triangles with area that face like
+ * Every such point must be one a ray through it finds on the surface (else
+ * the planes do not meet there: a face lies between them; meets_on_surface),
+ * and every change must leave triangles with area that face like
  * the plane they lie on.  Creases slighter than 10° are left to the
  * simplifier (a faceted curve's: hull_revolve.scad's 64 x 32 facets), and
  * only what lies about a bend is looked at; later passes look at the
@@ -237,6 +237,30 @@ static int on_surface(crease_mesh *c, const double x[3], const double n[3])
     return dot3(d, d) < 1e-8 * c->h * c->h;
 }
 
+/* Whether x, where the n (2 or 3) planes pl meet, lies on the surface: a ray
+ * through it along the sum of their normals finds the surface there, or one
+ * along a pair's sum, or along one normal.  The sum alone can miss: where a
+ * concave edge meets a face (a faceted sphere minus a faceted cylinder, at
+ * the hole's rim) the solid about x is a thin wedge that the line along the
+ * sum only touches at x, and whether a ray through a touching point reports
+ * a crossing is left to rounding. */
+static int meets_on_surface(crease_mesh *c, const double x[3], const plane *const *pl, int n)
+{
+    static const unsigned order[] = {7, 3, 5, 6, 1, 2, 4};
+    unsigned all = (1u << n) - 1;
+    for (size_t i = 0; i < sizeof order / sizeof *order; i++) {
+        unsigned s = order[i] & all;
+        if (s != order[i]) continue;
+        double d[3] = {0, 0, 0};
+        for (int p = 0; p < n; p++)
+            if (s >> p & 1)
+                for (int k = 0; k < 3; k++)
+                    d[k] += pl[p]->n[k];
+        if (on_surface(c, x, d)) return 1;
+    }
+    return 0;
+}
+
 /* Whether the triangle p, q, r has area and faces like the first of the
  * planes of bits `shared` of pl, which its corners share (like n where
  * they share none: it still crosses a crease). */
@@ -419,7 +443,7 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     const plane *pl[MAX_PLANES];
     int np = candidates(c, &v, 1, pl);
     if (np < 2 || np > 3 || on_planes(c, v, pl, np) == (1u << np) - 1) return 0;
-    double x[3], to[3], mean[3], d[3];
+    double x[3], to[3], d[3];
     mesh_vertex_at(c->m, v, x);
     if (np == 3) {
         if (!corner_point(pl[0], pl[1], pl[2], to)) return 0;
@@ -431,12 +455,9 @@ static int snap_vertex(crease_mesh *c, int32_t v)
         for (int k = 0; k < 3; k++)
             to[k] = p0[k] + t * e[k];
     }
-    for (int k = 0; k < 3; k++)
-        mean[k] = pl[0]->n[k] + pl[1]->n[k] + (np == 3 ? pl[2]->n[k] : 0);
     sub3(to, x, d);
-    if (!(dot3(d, d) < 0.25 * c->h * c->h) || !on_surface(c, to, mean)) return 0;
-    for (int k = 0; k < 3; k++)
-        to[k] = (float)to[k];
+    if (!(dot3(d, d) < 0.25 * c->h * c->h) || !meets_on_surface(c, to, pl, np)) return 0;
+    mesh_round_to_float(to);
     if (to[0] == (float)x[0] && to[1] == (float)x[1] && to[2] == (float)x[2])
         return 0; /* there already, to float precision: a "move" would only block its
                      neighbours this pass, and every pass */
@@ -726,14 +747,12 @@ static int split_edge(crease_mesh *c, int32_t x)
     tri_normal3(w, u, pd, on);
     for (int a = 0; a < np; a++)
         for (int b = 0; b < np; b++) {
-            double xp[3], mean[3];
-            if (!(su >> a & 1) || !(sw >> b & 1) || !crease_point(pl[a], pl[b], u, w, c->h, xp))
+            double xp[3];
+            const plane *two[2] = {pl[a], pl[b]};
+            if (!(su >> a & 1) || !(sw >> b & 1) || !crease_point(pl[a], pl[b], u, w, c->h, xp) ||
+                !meets_on_surface(c, xp, two, 2))
                 continue;
-            for (int i = 0; i < 3; i++)
-                mean[i] = pl[a]->n[i] + pl[b]->n[i];
-            if (!on_surface(c, xp, mean)) continue;
-            for (int i = 0; i < 3; i++)
-                xp[i] = (float)xp[i]; /* as the mesh will hold it */
+            mesh_round_to_float(xp); /* as the mesh will hold it */
             unsigned sx = 1u << a | 1u << b;
             if (!half_ok(pl, su & sx & sc, u, xp, pc, tn, c->min2) ||
                 !half_ok(pl, sx & sw & sc, xp, w, pc, tn, c->min2) ||
@@ -785,9 +804,8 @@ static int split_corner(crease_mesh *c, int32_t t)
         mesh_vertex_at(m, vs[q], p[q]);
     for (int i = 0; i < 3; i++)
         g[i] = (p[0][i] + p[1][i] + p[2][i]) / 3 - x[i];
-    if (!(dot3(g, g) < 4 * c->h * c->h) || !on_surface(c, x, mean)) return 0;
-    for (int i = 0; i < 3; i++)
-        x[i] = (float)x[i];
+    if (!(dot3(g, g) < 4 * c->h * c->h) || !meets_on_surface(c, x, three, 3)) return 0;
+    mesh_round_to_float(x);
     unsigned sv[3] = {s0, s1, s2};
     for (int q = 0; q < 3; q++)
         if (!half_ok(pl, sv[q] & sv[(q + 1) % 3], p[q], p[(q + 1) % 3], x, mean, c->min2)) return 0;
@@ -818,11 +836,11 @@ static int in_list(const int32_t *a, int n, int32_t x)
  * every fan triangle lies on a plane under the knot's triangles that its
  * corners and x share, faces like it and lies on the surface (rays through
  * its centroid and halfway from there to each corner find it there: a
- * notch of the model within the knot would not be covered), and a ray
- * along dir finds x itself on the surface; 1 when done, 2 when only that
- * last ray refused, 0 when not, -1 when out of memory.  Every vertex of
+ * notch of the model within the knot would not be covered), and x, where
+ * the planes `three` meet, lies on the surface (meets_on_surface); 1 when
+ * done, 2 when only that last check refused, 0 when not, -1 when out of memory.  Every vertex of
  * the knot gets x as its last corner tried (c->tried). */
-static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const double dir[3])
+static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *const *three)
 {
     mesh *m = c->m;
     int32_t kv[KNOT_VERTS], kt[KNOT_TRIS];
@@ -915,7 +933,7 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const double d
         unsigned sh = sx & on_planes(c, from[i], pl, np) & on_planes(c, to[i], pl, np);
         if (!sh || !half_ok(pl, sh, a, b, x, NULL, c->min2)) return 0;
     }
-    if (!on_surface(c, x, dir)) return 2;
+    if (!meets_on_surface(c, x, three, 3)) return 2;
     for (int i = 0; i < nr; i++) {
         double a[3], b[3], g[3], n[3];
         mesh_vertex_at(m, from[i], a);
@@ -993,13 +1011,11 @@ static int untie_corner(crease_mesh *c, int32_t v)
     for (int i = 0; i < np; i++)
         for (int j = i + 1; j < np; j++)
             for (int k = j + 1; k < np; k++) {
-                double x[3], d[3], mean[3];
+                double x[3], d[3];
+                const plane *three[3] = {pl[i], pl[j], pl[k]};
                 if (!corner_point(pl[i], pl[j], pl[k], x)) continue;
                 sub3(x, p, d);
-                for (int q = 0; q < 3; q++) {
-                    mean[q] = pl[i]->n[q] + pl[j]->n[q] + pl[k]->n[q];
-                    x[q] = (float)x[q];
-                }
+                mesh_round_to_float(x);
                 if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
                 /* a corner of more than three planes is found by more than
                  * one triple: not tried again where its knot was refused
@@ -1011,7 +1027,7 @@ static int untie_corner(crease_mesh *c, int32_t v)
                     seen = tried[q][0] == x[0] && tried[q][1] == x[1] && tried[q][2] == x[2];
                 uint64_t key = mesh_pos_key(x);
                 if (seen || c->tried[v] == key || mesh_fmap_has(&c->crowded, key)) continue;
-                int r = fan_knot(c, v, x, mean);
+                int r = fan_knot(c, v, x, three);
                 if (r == 0 && ntried < 16) memcpy(tried[ntried++], x, sizeof x);
                 if (r == 1 || r == -1) return r;
             }

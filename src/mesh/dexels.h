@@ -174,6 +174,10 @@ static inline void mesh_vertex_at(const mesh *m, int32_t i, double p[3])
         p[c] = m->v[3 * (size_t)i + c];
 }
 
+/* x as a vertex of a mesh holds it: each coordinate rounded to float (the
+ * build keeps GCC 12's SLP vectorizer from dropping this; see Makefile). */
+void mesh_round_to_float(double x[3]);
+
 /* The tri_normal3 of triangle t of m (not unit: twice its area long). */
 void mesh_triangle_normal(const mesh *m, int32_t t, double n[3]);
 

@@ -39,6 +39,12 @@ int mesh_push_vertex(mesh *m, double x, double y, double z)
     return m->nv++;
 }
 
+void mesh_round_to_float(double x[3])
+{
+    for (int c = 0; c < 3; c++)
+        x[c] = (float)x[c];
+}
+
 int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan)
 {
     int32_t *st = calloc((size_t)m->nv + 1, sizeof *st);

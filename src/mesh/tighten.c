@@ -398,8 +398,8 @@ static int split_edge(mesh *m, mesh_snapper *sn, const round_view *rv, mesh_fmap
         if (!mesh_snap_probe(sn, mid, dir, REACH * tol, COS_FACING, hit, hn)) return 0;
     }
     /* the place as the mesh will hold it (floats) */
-    for (int i = 0; i < 3; i++)
-        c[i] = (float)hit[i];
+    memcpy(c, hit, sizeof hit);
+    mesh_round_to_float(c);
     double min2 = 1e-12 * tol * tol * tol * tol;
     if (mesh_fmap_has(pos, mesh_pos_key(c)) || !halves_keep(m, t, k, c, min2) ||
         !halves_keep(m, o, j, c, min2))
