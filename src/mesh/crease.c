@@ -830,17 +830,94 @@ static int in_list(const int32_t *a, int n, int32_t x)
     return 0;
 }
 
+/* The planes of bits s of pl that the corners of fan triangle ft (-1: x,
+ * on the planes sx) share. */
+static unsigned fan_shared(crease_mesh *c, const int32_t ft[3], unsigned sx, const plane *const *pl,
+                           int np)
+{
+    unsigned s = ~0u;
+    for (int k = 0; k < 3; k++)
+        s &= ft[k] < 0 ? sx : on_planes(c, ft[k], pl, np);
+    return s;
+}
+
+/* The triangles of a fan from x (on the planes sx) to the rim edges from[i]
+ * -> to[i] into ft, rim edge i's first (-1 standing for x): whether each
+ * lies on a plane its corners share, faces like it and lies on the surface
+ * (rays along its normal through its centroid, halfway from there to each
+ * corner and nine tenths of the way to its last find it there: a notch of
+ * the model within the knot would not be covered, and x is no corner of
+ * the model unless the faces reach it — a ray through x itself can only
+ * touch the solid at an overhanging corner, a twisted extrusion's top
+ * corner where four planes meet).  A rim edge that runs along a crease out
+ * of x (x and its ends on two planes: one line) would make a needle; the
+ * edge from x to the farther end is flipped with the fan triangle beyond
+ * it instead: (a, b, x) and (b, q, x) become (a, b, q) and (a, q, x). */
+static int fan_triangles(crease_mesh *c, const double x[3], unsigned sx, const plane *const *pl,
+                         int np, const int32_t *from, const int32_t *to, int nr, int32_t (*ft)[3])
+{
+    uint8_t straight[KNOT_TRIS] = {0}, taken[KNOT_TRIS] = {0};
+    for (int i = 0; i < nr; i++) {
+        ft[i][0] = from[i], ft[i][1] = to[i], ft[i][2] = -1;
+        unsigned sh = fan_shared(c, ft[i], sx, pl, np);
+        double a[3], b[3];
+        mesh_vertex_at(c->m, from[i], a);
+        mesh_vertex_at(c->m, to[i], b);
+        straight[i] = (sh & (sh - 1)) && !half_ok(pl, sh, a, b, x, NULL, c->min2);
+    }
+    for (int i = 0; i < nr; i++) {
+        if (!straight[i]) continue;
+        double a[3], b[3], da[3], db[3];
+        mesh_vertex_at(c->m, from[i], a);
+        mesh_vertex_at(c->m, to[i], b);
+        sub3(a, x, da);
+        sub3(b, x, db);
+        if (!(dot3(da, db) > 0)) return 0; /* x between them */
+        int near_a = dot3(da, da) < dot3(db, db), j = 0;
+        while (j < nr && (near_a ? from[j] != to[i] : to[j] != from[i]))
+            j++;
+        if (j == nr || straight[j] || taken[j]) return 0;
+        taken[j] = 1;
+        if (near_a) { /* (b, q, x) beyond */
+            int32_t q = to[j];
+            ft[i][0] = from[i], ft[i][1] = to[i], ft[i][2] = q;
+            ft[j][0] = from[i], ft[j][1] = q, ft[j][2] = -1;
+        } else { /* (p, a, x) before */
+            int32_t p = from[j];
+            ft[i][0] = p, ft[i][1] = from[i], ft[i][2] = to[i];
+            ft[j][0] = p, ft[j][1] = to[i], ft[j][2] = -1;
+        }
+    }
+    static const double toward[5] = {0, 0.5, 0.5, 0.5, 0.9};
+    for (int i = 0; i < nr; i++) {
+        double p[3][3], g[3], n[3];
+        for (int k = 0; k < 3; k++)
+            if (ft[i][k] < 0)
+                memcpy(p[k], x, sizeof p[k]);
+            else
+                mesh_vertex_at(c->m, ft[i][k], p[k]);
+        unsigned sh = fan_shared(c, ft[i], sx, pl, np);
+        if (!sh || !half_ok(pl, sh, p[0], p[1], p[2], NULL, c->min2)) return 0;
+        tri_normal3(p[0], p[1], p[2], n);
+        for (int q = 0; q < 5; q++) {
+            const double *e = p[q == 1 ? 0 : q == 2 ? 1 : 2];
+            for (int k = 0; k < 3; k++) {
+                g[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
+                g[k] += toward[q] * (e[k] - g[k]);
+            }
+            if (!on_surface(c, g, n)) return 0;
+        }
+    }
+    return 1;
+}
+
 /* Replace the knot about corner x (the vertices within KNOT_R cells of it
  * that v reaches through them) by a fan from x to the rim of their
- * triangles, where the rim is one loop, some triangle of the knot misfits,
- * every fan triangle lies on a plane under the knot's triangles that its
- * corners and x share, faces like it and lies on the surface (rays through
- * its centroid and halfway from there to each corner find it there: a
- * notch of the model within the knot would not be covered), and x, where
- * the planes `three` meet, lies on the surface (meets_on_surface); 1 when
- * done, 2 when only that last check refused, 0 when not, -1 when out of memory.  Every vertex of
- * the knot gets x as its last corner tried (c->tried). */
-static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *const *three)
+ * triangles, where the rim is one loop, some triangle of the knot misfits
+ * and the fan passes fan_triangles; 1 when done, 0 when not, -1 when out
+ * of memory.  Every vertex of the knot gets x as its last corner tried
+ * (c->tried). */
+static int fan_knot(crease_mesh *c, int32_t v, const double x[3])
 {
     mesh *m = c->m;
     int32_t kv[KNOT_VERTS], kt[KNOT_TRIS];
@@ -926,38 +1003,20 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3], const plane *c
         centre = *slot; /* the corner is a vertex of the knot already: it stays */
     }
     unsigned sx = planes_near(c, x, pl, np, ON);
-    for (int i = 0; i < nr; i++) {
-        double a[3], b[3];
-        mesh_vertex_at(m, from[i], a);
-        mesh_vertex_at(m, to[i], b);
-        unsigned sh = sx & on_planes(c, from[i], pl, np) & on_planes(c, to[i], pl, np);
-        if (!sh || !half_ok(pl, sh, a, b, x, NULL, c->min2)) return 0;
-    }
-    if (!meets_on_surface(c, x, three, 3)) return 2;
-    for (int i = 0; i < nr; i++) {
-        double a[3], b[3], g[3], n[3];
-        mesh_vertex_at(m, from[i], a);
-        mesh_vertex_at(m, to[i], b);
-        tri_normal3(a, b, x, n);
-        for (int q = 0; q < 4; q++) { /* its centroid, and halfway to each corner */
-            const double *e = q == 0 ? NULL : q == 1 ? a : q == 2 ? b : x;
-            for (int k = 0; k < 3; k++) {
-                g[k] = (a[k] + b[k] + x[k]) / 3;
-                if (e) g[k] = 0.5 * (g[k] + e[k]);
-            }
-            if (!on_surface(c, g, n)) return 0;
-        }
-    }
+    int32_t ft[KNOT_TRIS][3]; /* the new triangles, -1 for the centre */
+    if (!fan_triangles(c, x, sx, pl, np, from, to, nr, ft)) return 0;
     if (centre < 0 && (centre = add_vertex(c, x)) < 0) return centre == -2 ? -1 : 0;
     for (int i = 0; i < nkv; i++)
         if (kv[i] != centre && leave_place(c, kv[i]) != 0) return -1;
     for (int i = 0; i < nr; i++) {
         uint16_t col = m->tc && m->npal ? m->tc[rt[i]] : 0;
+        int32_t tv3[3];
+        for (int k = 0; k < 3; k++)
+            tv3[k] = ft[i][k] < 0 ? centre : ft[i][k];
         if (i < nkt) {
-            int32_t *tv = &m->t[3 * (size_t)kt[i]];
-            tv[0] = from[i], tv[1] = to[i], tv[2] = centre;
+            memcpy(&m->t[3 * (size_t)kt[i]], tv3, sizeof tv3);
             if (m->tc && m->npal) m->tc[kt[i]] = col;
-        } else if (mesh_push_triangle(m, from[i], to[i], centre, col) < 0) {
+        } else if (mesh_push_triangle(m, tv3[0], tv3[1], tv3[2], col) < 0) {
             return -1;
         }
     }
@@ -1012,14 +1071,13 @@ static int untie_corner(crease_mesh *c, int32_t v)
         for (int j = i + 1; j < np; j++)
             for (int k = j + 1; k < np; k++) {
                 double x[3], d[3];
-                const plane *three[3] = {pl[i], pl[j], pl[k]};
                 if (!corner_point(pl[i], pl[j], pl[k], x)) continue;
                 sub3(x, p, d);
                 mesh_round_to_float(x);
                 if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
                 /* a corner of more than three planes is found by more than
                  * one triple: not tried again where its knot was refused
-                 * (tried, kept here only then), nor right after any try
+                 * (tried), nor right after any try
                  * of it (c->tried: the last corner v's knot was tried at),
                  * nor where the crowd about it was too big */
                 int seen = 0;
@@ -1027,9 +1085,9 @@ static int untie_corner(crease_mesh *c, int32_t v)
                     seen = tried[q][0] == x[0] && tried[q][1] == x[1] && tried[q][2] == x[2];
                 uint64_t key = mesh_pos_key(x);
                 if (seen || c->tried[v] == key || mesh_fmap_has(&c->crowded, key)) continue;
-                int r = fan_knot(c, v, x, three);
-                if (r == 0 && ntried < 16) memcpy(tried[ntried++], x, sizeof x);
-                if (r == 1 || r == -1) return r;
+                int r = fan_knot(c, v, x);
+                if (r != 0) return r;
+                if (ntried < 16) memcpy(tried[ntried++], x, sizeof x);
             }
     return 0;
 }
