@@ -877,6 +877,8 @@ static int fan_triangles(crease_mesh *c, const double x[3], unsigned sx, const p
         while (j < nr && (near_a ? from[j] != to[i] : to[j] != from[i]))
             j++;
         if (j == nr || straight[j] || taken[j]) return 0;
+        /* the new edge, a–q or p–b, may not be one the mesh has */
+        if (near_a ? joined(c, from[i], to[j]) : joined(c, from[j], to[i])) return 0;
         taken[j] = 1;
         if (near_a) { /* (b, q, x) beyond */
             int32_t q = to[j];
