@@ -35,11 +35,13 @@
  *     gets the point where the three meet as a new corner (a fan of three);
  *   - and first of all, a knot about a corner where three planes meet
  *     (the vertices within three cells of it, reached through each other:
- *     a twisted extrusion's acute corners held 40) goes whole where some
- *     of its triangles misfit: its triangles become a fan from the corner
- *     to their rim, where the rim is one loop and every fan triangle lies
- *     on a plane its corners share, facing like it, over the surface (a
- *     pass that fans knots leaves the rules above to the next).
+ *     a twisted extrusion's acute corners held 40), or about a point of a
+ *     crease, goes whole where some of its triangles misfit: its triangles
+ *     become a fan from the corner to their rim, where the rim is one loop
+ *     and every fan triangle lies on a plane its corners share, facing like
+ *     it, over the surface (a pass that fans knots leaves the rules above
+ *     to the next; a vertex whose knots were refused is not tried again
+ *     until its triangles change).
  * Every such point must be one a ray through it finds on the surface (else
  * the planes do not meet there: a face lies between them; meets_on_surface),
  * and every change must leave triangles with area that face like
@@ -87,6 +89,7 @@
 #define ON 1e-4         /* cells: a vertex this near a plane lies on it (see near_planes) */
 #define NEAR 0.01       /* cells: see misfits_after() */
 #define KNOT_R 3.0      /* cells: see untie_corner() */
+#define REFUSED 2       /* c->hot: see knot_refused() */
 #define MAX_PLANES 8    /* candidates per edge or triangle */
 #define KNOT_PLANES 16  /* candidates about a knot (fan_knot) */
 #define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
@@ -106,7 +109,7 @@ typedef struct crease_mesh {
     mesh_fmap by_patch; /* patch -> index into pl */
     int32_t *tp;        /* each triangle's plane (index into pl), -1: none, -2: not looked for */
     size_t tp_cap;
-    uint8_t *hot;                      /* vertices whose surroundings changed (all, at first) */
+    uint8_t *hot; /* vertices whose surroundings changed (all, at first), or REFUSED */
     uint32_t *vmark, *tmark, mark_now; /* fan_knot's marks on vertices and triangles */
     uint64_t *tried;   /* by vertex: the corner (place) its knot last tried this pass */
     mesh_fmap crowded; /* the corners (places) whose knots were too big this pass */
@@ -1037,8 +1040,10 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3])
  * faces meet (a twisted extrusion's acute top corners: 40 vertices within
  * four cells), fanned from the corner (fan_knot): the points where three
  * of the planes under the triangles about v and its neighbours meet,
- * within KNOT_R cells of v and on the surface, each tried in turn.  1 when
- * done, 0 when not, -1 when out of memory. */
+ * within KNOT_R cells of v and on the surface, each tried in turn; where
+ * none is, a knot along a crease of two (vertices of either plane carried
+ * past it: twist_ties' side facets), fanned from the crease's point nearest
+ * v.  1 when done, 0 when not, -1 when out of memory. */
 static int untie_corner(crease_mesh *c, int32_t v)
 {
     mesh *m = c->m;
@@ -1054,7 +1059,7 @@ static int untie_corner(crease_mesh *c, int32_t v)
     }
     const plane *pl[MAX_PLANES];
     int np = candidates(c, ring, n, pl), misfit = 0;
-    if (np < 3) return 0;
+    if (np < 2) return 0;
     for (int32_t f = c->start[v]; f < c->start[v + 1] && !misfit; f++) {
         int32_t tv[3];
         double q[3][3];
@@ -1091,6 +1096,31 @@ static int untie_corner(crease_mesh *c, int32_t v)
                 if (r != 0) return r;
                 if (ntried < 16) memcpy(tried[ntried++], x, sizeof x);
             }
+    /* no corner: a knot along a crease, fanned from the point of the crease
+     * nearest v (the fan's rim runs along the crease on both sides), the
+     * crease of two planes some triangles about v lie on */
+    unsigned under = 0;
+    for (int32_t f = c->start[v]; f < c->start[v + 1]; f++) {
+        const int32_t *tv = &m->t[3 * (size_t)c->fan[f]];
+        under |=
+            on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
+    }
+    for (int i = 0; i < np; i++)
+        for (int j = i + 1; j < np; j++) {
+            double p0[3], e[3], x[3], d[3];
+            if (!(under >> i & under >> j & 1) || !crease_line(pl[i], pl[j], p0, e)) continue;
+            sub3(p, p0, d);
+            double t = dot3(d, e) / dot3(e, e);
+            for (int k = 0; k < 3; k++)
+                x[k] = p0[k] + t * e[k];
+            sub3(x, p, d);
+            mesh_round_to_float(x);
+            uint64_t key = mesh_pos_key(x);
+            if (!(dot3(d, d) < KNOT * KNOT * c->h * c->h) || mesh_fmap_has(&c->crowded, key))
+                continue;
+            int r = fan_knot(c, v, x);
+            if (r != 0) return r;
+        }
     return 0;
 }
 
@@ -1114,6 +1144,15 @@ static int grow_to(void **a, size_t *cap, size_t n, size_t size, int fill)
 static int is_hot(const crease_mesh *c, int32_t v)
 {
     return (size_t)v >= c->hot_cap || c->hot[v];
+}
+
+/* Whether vertex v's knot was refused in an earlier pass and none of its
+ * triangles has changed since (c->hot REFUSED: still hot for the other
+ * rules).  A failed knot fails again: the first knot passes of a corpus
+ * file tried 160,000 crease points each, to fan a few knots a pass. */
+static int knot_refused(const crease_mesh *c, int32_t v)
+{
+    return (size_t)v < c->hot_cap && c->hot[v] == REFUSED;
 }
 
 /* Whether triangle t has a hot corner. */
@@ -1150,7 +1189,7 @@ static int mark_bent(crease_mesh *c, size_t nt)
         bent[m->t[x]] = bent[m->t[x / 3 * 3 + (x + 1) % 3]] = 1;
     }
     for (int32_t v = 0; v < m->nv && (size_t)v < c->hot_cap; v++)
-        c->hot[v] &= bent[v];
+        if (!bent[v]) c->hot[v] = 0;
     free(bent);
     free(n);
     return 0;
@@ -1204,8 +1243,9 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
             if ((c->tp[t] = face_under(c, (int32_t)t)) == -3) goto done;
     int knots = 0;
     for (int32_t v = 0; v < (int32_t)nv; v++) {
-        int r = is_hot(c, v) ? untie_corner(c, v) : 0;
+        int r = is_hot(c, v) && !knot_refused(c, v) ? untie_corner(c, v) : 0;
         if (r < 0) goto done;
+        if (r == 0 && (size_t)v < c->hot_cap && c->hot[v]) c->hot[v] = REFUSED;
         knots += r;
     }
     *split += knots;
