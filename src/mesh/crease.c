@@ -1198,10 +1198,23 @@ static int mark_bent(crease_mesh *c, size_t nt)
 /* Apply op to every half-edge of the first nt triangles that has a hot
  * corner and has not been emptied this pass, counting its changes in
  * *split; 0, or -1 when op ran out of memory. */
+/* The rules' scale, c->h, to the spacing of the grid that sampled the
+ * part vertex v lies in (a model's far-apart parts have grids of their own,
+ * sized to each). */
+static void scale_at(crease_mesh *c, int32_t v)
+{
+    double p[3];
+    mesh_vertex_at(c->m, v, p);
+    c->h = mesh_dexels_h_at(c->sn->d, p);
+    c->min2 = 1e-10 * c->h * c->h * c->h * c->h;
+}
+
 static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int32_t), int *split)
 {
     for (size_t x = 0; x < 3 * nt; x++) {
-        int r = c->m->t[x] >= 0 && hot_triangle(c, (int32_t)(x / 3)) ? op(c, (int32_t)x) : 0;
+        int hot = c->m->t[x] >= 0 && hot_triangle(c, (int32_t)(x / 3));
+        if (hot) scale_at(c, c->m->t[x]);
+        int r = hot ? op(c, (int32_t)x) : 0;
         if (r < 0) return -1;
         *split += r;
     }
@@ -1239,11 +1252,15 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
      * already, or the faces' creases are slighter than COS_APART */
     if (mark_bent(c, nt) != 0) goto done;
     for (size_t t = 0; t < nt; t++)
-        if (c->tp[t] == -2 && hot_triangle(c, (int32_t)t))
+        if (c->tp[t] == -2 && hot_triangle(c, (int32_t)t)) {
+            scale_at(c, m->t[3 * t]);
             if ((c->tp[t] = face_under(c, (int32_t)t)) == -3) goto done;
+        }
     int knots = 0;
     for (int32_t v = 0; v < (int32_t)nv; v++) {
-        int r = is_hot(c, v) && !knot_refused(c, v) ? untie_corner(c, v) : 0;
+        int try = is_hot(c, v) && !knot_refused(c, v);
+        if (try) scale_at(c, v);
+        int r = try ? untie_corner(c, v) : 0;
         if (r < 0) goto done;
         if (r == 0 && (size_t)v < c->hot_cap && c->hot[v]) c->hot[v] = REFUSED;
         knots += r;
@@ -1252,6 +1269,7 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
     *knotted = knots > 0;
     if (knots) goto next; /* the other rules next pass, on the fans as they are then */
     for (int32_t v = 0; v < m->nv; v++) {
+        if (is_hot(c, v)) scale_at(c, v);
         int r = is_hot(c, v) ? snap_vertex(c, v) : 0;
         if (r < 0) goto done;
         *split += r;
@@ -1261,7 +1279,9 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
         each_hot_edge(c, nt, flip_edge, split) != 0 || each_hot_edge(c, nt, split_edge, split) != 0)
         goto done;
     for (size_t t = 0; t < nt; t++) {
-        int r = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t) ? split_corner(c, (int32_t)t) : 0;
+        int hot = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
+        if (hot) scale_at(c, m->t[3 * t]);
+        int r = hot ? split_corner(c, (int32_t)t) : 0;
         if (r < 0) goto done;
         *split += r;
     }

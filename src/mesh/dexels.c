@@ -347,6 +347,17 @@ uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p)
     return seen ? p | MESH_PATCH_PLANAR : p;
 }
 
+double mesh_dexels_h_at(const mesh_dexels *d, const double p[3])
+{
+    for (const mesh_dexels *g = d; g; g = g->next) {
+        int in = 1;
+        for (int a = 0; a < 3 && in; a++)
+            in = p[a] >= g->org[a] - g->h && p[a] <= g->org[a] + (g->n[a] + 1) * g->h;
+        if (in) return g->h;
+    }
+    return d->h;
+}
+
 /* The patches seen so far: an open-addressing table, kept at most half
  * full, of each patch's first normal and whether another differed. */
 typedef struct patch_table {

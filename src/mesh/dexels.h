@@ -117,6 +117,10 @@ static inline uint32_t mesh_patch_of(int32_t prim, uint16_t part)
            1;
 }
 
+/* The spacing of the grid of d (or of a later one: d->next...) whose box,
+ * a cell larger all round, holds p; d->h where none does. */
+double mesh_dexels_h_at(const mesh_dexels *d, const double p[3]);
+
 /* Patch p (mesh_patch_of) flagged MESH_PATCH_PLANAR when the grids of
  * sampling d (d and those after it) hold it as a plane (dexels.c). */
 uint32_t mesh_patch_flagged(const mesh_dexels *d, uint32_t p);
