@@ -329,6 +329,19 @@ static int crease_line(const plane *a, const plane *b, double p0[3], double e[3]
     return 1;
 }
 
+/* The point of the line where planes a and b meet nearest p, into x; 0
+ * when they part by less than COS_APART. */
+static int crease_nearest(const plane *a, const plane *b, const double p[3], double x[3])
+{
+    double p0[3], e[3], d[3];
+    if (!crease_line(a, b, p0, e)) return 0;
+    sub3(p, p0, d);
+    double t = dot3(d, e) / dot3(e, e);
+    for (int k = 0; k < 3; k++)
+        x[k] = p0[k] + t * e[k];
+    return 1;
+}
+
 /* Where planes a, b and c meet, into x; 0 when they nearly share a line. */
 static int corner_point(const plane *a, const plane *b, const plane *c, double x[3])
 {
@@ -450,13 +463,8 @@ static int snap_vertex(crease_mesh *c, int32_t v)
     mesh_vertex_at(c->m, v, x);
     if (np == 3) {
         if (!corner_point(pl[0], pl[1], pl[2], to)) return 0;
-    } else {
-        double p0[3], e[3];
-        if (!crease_line(pl[0], pl[1], p0, e)) return 0;
-        sub3(x, p0, d);
-        double t = dot3(d, e) / dot3(e, e);
-        for (int k = 0; k < 3; k++)
-            to[k] = p0[k] + t * e[k];
+    } else if (!crease_nearest(pl[0], pl[1], x, to)) {
+        return 0;
     }
     sub3(to, x, d);
     if (!(dot3(d, d) < 0.25 * c->h * c->h) || !meets_on_surface(c, to, pl, np)) return 0;
@@ -1084,9 +1092,9 @@ static int untie_corner(crease_mesh *c, int32_t v)
                 if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
                 /* a corner of more than three planes is found by more than
                  * one triple: not tried again where its knot was refused
-                 * (tried), nor right after any try
-                 * of it (c->tried: the last corner v's knot was tried at),
-                 * nor where the crowd about it was too big */
+                 * (tried), nor right after any try of it (c->tried: the
+                 * last corner v's knot was tried at), nor where the crowd
+                 * about it was too big */
                 int seen = 0;
                 for (int q = 0; q < ntried && !seen; q++)
                     seen = tried[q][0] == x[0] && tried[q][1] == x[1] && tried[q][2] == x[2];
@@ -1107,12 +1115,8 @@ static int untie_corner(crease_mesh *c, int32_t v)
     }
     for (int i = 0; i < np; i++)
         for (int j = i + 1; j < np; j++) {
-            double p0[3], e[3], x[3], d[3];
-            if (!(under >> i & under >> j & 1) || !crease_line(pl[i], pl[j], p0, e)) continue;
-            sub3(p, p0, d);
-            double t = dot3(d, e) / dot3(e, e);
-            for (int k = 0; k < 3; k++)
-                x[k] = p0[k] + t * e[k];
+            double x[3], d[3];
+            if (!(under >> i & under >> j & 1) || !crease_nearest(pl[i], pl[j], p, x)) continue;
             sub3(x, p, d);
             mesh_round_to_float(x);
             uint64_t key = mesh_pos_key(x);
@@ -1195,9 +1199,6 @@ static int mark_bent(crease_mesh *c, size_t nt)
     return 0;
 }
 
-/* Apply op to every half-edge of the first nt triangles that has a hot
- * corner and has not been emptied this pass, counting its changes in
- * *split; 0, or -1 when op ran out of memory. */
 /* The rules' scale, c->h, to the spacing of the grid that sampled the
  * part vertex v lies in (a model's far-apart parts have grids of their own,
  * sized to each). */
@@ -1208,6 +1209,10 @@ static void scale_at(crease_mesh *c, int32_t v)
     c->h = mesh_dexels_h_at(c->sn->d, p);
     c->min2 = 1e-10 * c->h * c->h * c->h * c->h;
 }
+
+/* Apply op to every half-edge of the first nt triangles that has a hot
+ * corner and has not been emptied this pass, counting its changes in
+ * *split; 0, or -1 when op ran out of memory. */
 
 static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int32_t), int *split)
 {
