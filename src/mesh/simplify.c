@@ -298,6 +298,13 @@ static int near_enough(simp *s, int32_t x, int32_t on, double nt[][3][3], const 
 }
 
 static int32_t across(const simp *s, int32_t t, int32_t a, int32_t b);
+
+/* Whether p lies within s->flat_eps of the plane through `on` across n
+ * (of length l). */
+static int in_plane(const simp *s, const double n[3], double l, const double *on, const double *p)
+{
+    return fabs(dot3(n, p) - dot3(n, on)) <= s->flat_eps * l;
+}
 static int flat_stays_near(queue *qu, int32_t v, const int32_t *moved, double nt[][3][3],
                            const uint8_t *edgy, int nmoved);
 
@@ -465,8 +472,8 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
         double l0 = sqrt(dot3(n0, n0)), l1 = sqrt(dot3(n1, n1));
         if (!(l1 > 0) || (dot3(n0, n1) < COS_TURN * l0 * l1 && !sliver(a, l0, s->crease_tol2)))
             return 0;
-        qu->exact_after[m] = s->exact[moved[m]] && dot3(n0, n1) > 0 &&
-                             fabs(dot3(n0, pu) - dot3(n0, P(s, b[m]))) <= s->flat_eps * l0;
+        qu->exact_after[m] =
+            s->exact[moved[m]] && dot3(n0, n1) > 0 && in_plane(s, n0, l0, P(s, b[m]), pu);
         double q0 = quality(a[0], a[1], a[2], l0), q1 = quality(an[0], an[1], an[2], l1);
         if (q0 < worst_old) worst_old = q0;
         if (q1 < worst_new) worst_new = q1;
@@ -500,19 +507,20 @@ static int flat_stays_near(queue *qu, int32_t v, const int32_t *moved, double nt
     simp *s = qu->s;
     const double *pv = P(s, v);
     int drop = 1;
+    for (int32_t k = s->head[v]; k >= 0 && drop; k = s->next[k])
+        drop = s->exact[k / 3];
+    for (int m = 0; m < nmoved && drop; m++)
+        drop = qu->exact_after[m];
+    /* all in one plane: their normals parallel (each holds v) */
     double ref[3] = {0, 0, 0};
     for (int32_t k = s->head[v]; k >= 0 && drop; k = s->next[k]) {
         const int32_t *tv = s->t + 3 * (k / 3);
-        double n[3];
+        double n[3], c[3];
         tri_normal3(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), n);
-        if (!s->exact[k / 3]) drop = 0;
         if (k == s->head[v]) memcpy(ref, n, sizeof n);
-        double c[3];
         cross3(ref, n, c);
-        if (!(dot3(ref, n) > 0 && dot3(c, c) <= 1e-12 * dot3(ref, ref) * dot3(n, n))) drop = 0;
+        drop = dot3(ref, n) > 0 && dot3(c, c) <= 1e-12 * dot3(ref, ref) * dot3(n, n);
     }
-    for (int m = 0; m < nmoved && drop; m++)
-        drop = qu->exact_after[m];
     qu->drop = drop;
     if (drop) return 1;
     for (int m = 0; m < nmoved; m++)
@@ -758,7 +766,7 @@ static int flat_within(const simp *s, const double *tn, int32_t t)
         const double *no = tn + 3 * (size_t)o;
         if (!(dot3(n, no) > 0)) return 0;
         for (int i = 0; i < 3; i++)
-            if (fabs(dot3(n, P(s, ov[i])) - dot3(n, P(s, tv[0]))) > s->flat_eps * l) return 0;
+            if (!in_plane(s, n, l, P(s, tv[0]), P(s, ov[i]))) return 0;
     }
     return 1;
 }
