@@ -8,7 +8,10 @@
  * raises the entry, each it runs out of lowers the exit, and a plane the line
  * is parallel to keeps it all or nothing — the same closed-halfspace rule as
  * shapes.c's halfspace, so two polytopes sharing a face leave no crack.  The
- * boundary's part is the index of the plane that made it.
+ * boundary's part is the index of the plane that made it, the first of
+ * those alike to rounding (a hull's flat face is many triangles, each its
+ * own plane: which of them a line meets first was rounding's choice, and a
+ * part that changed with it made a flat face look like many).
  *
  * A hull of many faces knows which faces border which (iv_polytope_set_faces:
  * each plane one triangle of the hull).  A line then walks instead of
@@ -51,6 +54,7 @@ struct iv_polytope {
     double (*edge)[3][4];           /* each triangle's edges as planes across it, outward */
     int32_t start[6 * BINS * BINS]; /* per direction bin: the plane facing against it most */
     double eps;                     /* how far beyond an edge a crossing may lie */
+    uint16_t *part;                 /* per plane: the first plane alike, its part */
 };
 
 void iv_polytope_retain(iv_polytope *p)
@@ -63,9 +67,64 @@ void iv_polytope_release(iv_polytope *p)
     if (atomic_fetch_sub(&p->refs, 1) != 1) return;
     free(p->nb);
     free(p->edge);
+    free(p->part);
     free(p->pl);
     free(p->v);
     free(p);
+}
+
+typedef struct {
+    double nx;
+    int32_t i;
+} by_nx;
+
+static int cmp_nx(const void *a, const void *b)
+{
+    const by_nx *x = a, *y = b;
+    return x->nx < y->nx ? -1 : x->nx > y->nx ? 1 : (x->i > y->i) - (x->i < y->i);
+}
+
+/* The first plane alike plane i (part[] holds links toward it). */
+static int first_alike(uint16_t *part, int i)
+{
+    while (part[i] != i)
+        i = part[i] = part[part[i]];
+    return i;
+}
+
+/* p->part: each plane's first alike (normals within ALIKE, offsets within
+ * ALIKE of the polytope's size), found among the planes sorted on their
+ * normals' x. */
+static int alike_planes(iv_polytope *p)
+{
+    const double ALIKE = 1e-9;
+    by_nx *o = malloc((size_t)p->n * sizeof *o);
+    p->part = malloc((size_t)p->n * sizeof *p->part);
+    if (!o || !p->part) {
+        free(o);
+        return -1;
+    }
+    double scale = 0;
+    for (int k = 0; k < 3; k++)
+        scale = fmax(scale, fmax(fabs(p->lo[k]), fabs(p->hi[k])));
+    for (int i = 0; i < p->n; i++) {
+        o[i] = (by_nx){p->pl[i][0], i};
+        p->part[i] = (uint16_t)i;
+    }
+    qsort(o, (size_t)p->n, sizeof *o, cmp_nx);
+    for (int a = 0; a < p->n; a++)
+        for (int b = a + 1; b < p->n && o[b].nx - o[a].nx <= ALIKE; b++) {
+            const double *q = p->pl[o[b].i], *r = p->pl[o[a].i];
+            if (fabs(q[1] - r[1]) > ALIKE || fabs(q[2] - r[2]) > ALIKE ||
+                fabs(q[3] - r[3]) > ALIKE * scale)
+                continue;
+            int x = first_alike(p->part, o[a].i), y = first_alike(p->part, o[b].i);
+            p->part[x > y ? x : y] = (uint16_t)(x < y ? x : y);
+        }
+    for (int i = 0; i < p->n; i++)
+        p->part[i] = (uint16_t)first_alike(p->part, i);
+    free(o);
+    return 0;
 }
 
 int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes, const double (*verts)[3],
@@ -97,12 +156,14 @@ int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes, const
         }
     p->n = nplanes;
     p->nv = nverts;
+    if (alike_planes(p) != 0) goto fail;
     atomic_init(&p->refs, 1);
     memset(s, 0, sizeof *s);
     s->kind = IV_SHAPE_POLYTOPE;
     s->u.polytope.p = p;
     return 0;
 fail:
+    free(p->part);
     free(p->pl);
     free(p->v);
     free(p);
@@ -346,8 +407,8 @@ int iv_polytope_intersect(const iv_polytope *p, const double o[3], const double 
     if (!hit) return 0;
     if (out->n >= out->cap) return -1;
     iv_span *sp = &out->v[out->n++];
-    sp->enter = (iv_bound){t0, prim, (uint16_t)p0, 0};
-    sp->exit = (iv_bound){t1, prim, (uint16_t)p1, 0};
+    sp->enter = (iv_bound){t0, prim, p->part[p0], 0};
+    sp->exit = (iv_bound){t1, prim, p->part[p1], 0};
     return 1;
 }
 

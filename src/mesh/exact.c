@@ -100,6 +100,8 @@ typedef int (*eval_fn)(void *ctx, sample *s);
 /* One level of the nesting: integrate eval over [a, b]. */
 typedef struct level {
     eval_fn eval;
+    /* Evaluate s again, hinted by guide (see bracket); NULL: none. */
+    int (*again)(void *ctx, sample *s, const sample *guide);
     void *ctx;
     double tol; /* absolute error allowed per unit of x (error norm below) */
     double weight[NF];
@@ -324,6 +326,17 @@ static int push_event(events *E, const sample *a, const sample *b)
     return 0;
 }
 
+/* Whether the section area jumps between lines a and b: it is continuous
+ * (no face lies along the lines), and where it rises steepest, as the
+ * square root of the distance past a silhouette's turn, it changes across
+ * a bracket by at most twice the bracket times its steeper end's slope.  A
+ * jump is a piece that one line missed: less area. */
+static int jumps(const sample *a, const sample *b)
+{
+    double w = b->x - a->x, s = fmax(fabs(a->slope), fabs(b->slope));
+    return fabs(b->f[0] - a->f[0]) > 4 * w * (isfinite(s) ? s : 0) + 1e-9 * (a->f[0] + b->f[0]);
+}
+
 /* Bracket the events between samples l and r of different signatures into
  * E.  Where the samples know their slopes, a step first tries the kink of
  * their lines, two samples eps/2 either side of it — one try, where both
@@ -387,6 +400,10 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
          * it show.  An end whose signature changes moves the search. */
         sample s[4] = {*l, a, b, *r};
         if (L->eval(L->ctx, &s[1]) != 0 || L->eval(L->ctx, &s[2]) != 0) return -1;
+        if (L->again && jumps(&s[1], &s[2])) {
+            int k = s[1].f[0] < s[2].f[0] ? 1 : 2;
+            if (L->again(L->ctx, &s[k], &s[3 - k]) != 0) return -1;
+        }
         if (s[1].sig != a.sig || s[2].sig != b.sig) {
             for (int i = 0; i < 3; i++)
                 if (s[i].sig != s[i + 1].sig && bracket(L, &s[i], &s[i + 1], depth + 1, E) != 0)
@@ -498,9 +515,10 @@ typedef struct pass {
     seed *seeds;         /* the primitives' boxes */
     int nseeds;
     double outer_hints[MAX_HINTS];
-    long long budget; /* rays this pass may cast (see RAY_INTERVALS); < 0: no limit */
-    long long spent;  /* of it */
-    int over;         /* it needed more */
+    const line *guide; /* a line whose pieces hint the next one (see line_again) */
+    long long budget;  /* rays this pass may cast (see RAY_INTERVALS); < 0: no limit */
+    long long spent;   /* of it */
+    int over;          /* it needed more */
     int rc;
 } pass;
 
@@ -692,6 +710,7 @@ static int line_eval(void *ctx, sample *sm)
                *L2 = up < P->nlines ? &P->lines[up] : NULL,
                *L3 = up + 1 < P->nlines ? &P->lines[up + 1] : NULL;
     int n = 0;
+    if (P->guide) hints_from(P->guide, NULL, v, 0, P->hints, &n, MAX_HINTS);
     if (L1) hints_from(L1, L0, v, 0, P->hints, &n, MAX_HINTS);
     if (L2) hints_from(L2, L3, v, 0, P->hints, &n, MAX_HINTS);
     if (L1 && L2) hints_from(L1, L2, v, PAIR * 2 * P->reach, P->hints, &n, MAX_HINTS);
@@ -732,6 +751,28 @@ static int line_eval(void *ctx, sample *sm)
     return 0;
 }
 
+/* The line at s->x again, hinted first by the pieces of the line at
+ * guide->x: a piece that the line missed while its nearest lines did too
+ * (the tip of a primitive, narrower than the first samples, that a later
+ * line found). */
+static int line_again(void *ctx, sample *s, const sample *guide)
+{
+    pass *P = ctx;
+    int lo = 0, hi = P->nlines;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (P->lines[mid].v < guide->x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo == P->nlines || P->lines[lo].v != guide->x) return 0;
+    P->guide = &P->lines[lo];
+    int rc = line_eval(P, s);
+    P->guide = NULL;
+    return rc;
+}
+
 static void *run_pass(void *arg)
 {
     pass *P = arg;
@@ -770,6 +811,7 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
     /* Error norms: the volume and moments in units of the bounding
      * sphere's, the area in its. */
     P->outer.eval = line_eval;
+    P->outer.again = line_again;
     P->outer.ctx = P;
     /* An event across the lines is bracketed by whole lines; the bracket
      * is integrated by the trapezoid rule.  Where a silhouette turns back
@@ -790,6 +832,7 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
     P->outer.weight[4] = 1;
     P->inner = P->outer;
     P->inner.eval = ray_eval;
+    P->inner.again = NULL;
     P->inner.tol = 0.1 * tol * span;
     P->inner.eps = P->inner.try_eps = EPS * span;
     P->outer.across = 1;
