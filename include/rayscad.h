@@ -70,7 +70,8 @@ typedef enum rayscad_status {
     /* An argument the call cannot take: an unknown colour scheme, a camera
      * whose eye and centre coincide, an unknown output format. */
     RAYSCAD_ERROR_ARGUMENT = -5,
-    /* The caller's cancel hook asked to stop (rayscad_render_options). */
+    /* The caller's cancel hook asked to stop (rayscad_render_options,
+     * rayscad_measure_options). */
     RAYSCAD_CANCELLED = -6,
     /* An exact measurement needed more rays than max_rays
      * (rayscad_measure_options). */
@@ -600,10 +601,16 @@ typedef struct rayscad_measure_options {
     long long max_rays; /* past it: RAYSCAD_ERROR_RAYS; <= 0: no limit (a ray of n
                          * intervals counts 1 + n / 4: many cost more) */
     int max_intervals;  /* a ray's interval list past it: RAYSCAD_ERROR_INTERVALS; 0: the default */
+    /* May be NULL: asked from the measuring threads every few thousand
+     * rays; when it returns nonzero the measurement stops with
+     * RAYSCAD_CANCELLED.  It must be safe to call from any thread. */
+    int (*cancelled)(void *cancel_ud);
+    void *cancel_ud;
 } rayscad_measure_options;
 void rayscad_measure_options_default(rayscad_measure_options *o);
-/* RAYSCAD_OK, RAYSCAD_ERROR_RAYS, RAYSCAD_ERROR_INTERVALS or RAYSCAD_ERROR
- * (an unbounded model, out of memory), with a message in err. */
+/* RAYSCAD_OK, RAYSCAD_ERROR_RAYS, RAYSCAD_ERROR_INTERVALS, RAYSCAD_CANCELLED
+ * or RAYSCAD_ERROR (an unbounded model, out of memory), with a message in
+ * err. */
 rayscad_status rayscad_scene_measure(const rayscad_scene *s, const rayscad_measure_options *o,
                                      rayscad_measurement *out, char *err, size_t errlen);
 

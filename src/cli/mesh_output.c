@@ -24,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static void print_vec(const char *fmt, const double v[3])
 {
@@ -36,6 +37,7 @@ typedef struct how {
     double h, tolerance;
     double mesh_tolerance; /* what the mesh was simplified to (0: not) */
     long long over;        /* the exact measurement needed more rays than this */
+    double over_s;         /* or more seconds than this */
 } how;
 
 static void print_measure(const cli_options *o, const rayscad_measurement *m, how w,
@@ -59,6 +61,7 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
         else
             printf("  \"method\": \"grid\",\n  \"crossings\": %lld", m->crossings);
         if (w.over) printf(",\n  \"exact_needs_more_rays_than\": %lld", w.over);
+        if (w.over_s > 0) printf(",\n  \"exact_needs_more_seconds_than\": %g", w.over_s);
         if (w.h > 0) printf(",\n  \"grid_spacing\": %.10g", w.h);
         if (msh)
             printf(",\n  \"mesh\": {\"vertices\": %d, \"triangles\": %d, \"volume\": %.10g, "
@@ -84,6 +87,10 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
         printf("method:         grid (exact needs more than %lld rays; a larger "
                "--measure-tolerance fewer)\n",
                w.over);
+    if (w.over_s > 0)
+        printf("method:         grid (exact needs more than %g s; a larger "
+               "--measure-tolerance less)\n",
+               w.over_s);
     if (w.h > 0) printf("grid spacing:   %.10g\n", w.h);
     if (msh)
         printf("mesh:           %d vertices, %d triangles, volume %.10g\n",
@@ -100,6 +107,23 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
 /* With a mesh output, whose grid measures anyway: a box or a sphere (60,000
  * rays, 5 ms), no more. */
 #define MEASURE_MAX_RAYS_MESH (1LL << 17)
+/* Nor longer than this: a ray's cost is not its intervals alone (a
+ * rotate_extrude of a smooth circle, a torus of 256 cone bands, spent a
+ * minute on 2^25 rays). */
+#define MEASURE_MAX_SECONDS 5.0
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The measurement's cancel hook: past the deadline *ud. */
+static int past(void *ud)
+{
+    return now_s() > *(const double *)ud;
+}
 
 /* --measure without --mesh-size (or with --measure-tolerance): exactly,
  * into *m; 1 when measured, 0 when it needs more than max_rays
@@ -113,13 +137,22 @@ static int measure_exact(const cli_options *o, const rayscad_scene *scene, long 
     if (o->measure_tolerance > 0) mo.tolerance = o->measure_tolerance;
     mo.max_rays = max_rays;
     mo.max_intervals = o->max_intervals;
+    double deadline = now_s() + MEASURE_MAX_SECONDS;
+    mo.cancelled = past;
+    mo.cancel_ud = &deadline;
     char err[512];
     rayscad_status rc = rayscad_scene_measure(scene, &mo, m, err, sizeof err);
     w->tolerance = mo.tolerance;
     if (rc == RAYSCAD_OK) return 1;
-    if (rc == RAYSCAD_ERROR_RAYS) {
+    if (rc == RAYSCAD_ERROR_RAYS || rc == RAYSCAD_CANCELLED) {
         w->tolerance = 0;
-        w->over = max_rays;
+        if (rc == RAYSCAD_ERROR_RAYS)
+            w->over = max_rays;
+        else
+            w->over_s = MEASURE_MAX_SECONDS;
+        if (rc == RAYSCAD_CANCELLED)
+            snprintf(err, sizeof err, "the exact measurement needs more than %g s",
+                     MEASURE_MAX_SECONDS);
         if (!o->quiet && o->measure_tolerance > 0)
             fprintf(stderr,
                     "rayscad: warning: %s; measured on a grid instead (a larger "
@@ -218,7 +251,7 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
 {
     int write_mesh = n > 0;
     rayscad_measurement m;
-    how w = {0, 0, 0, 0};
+    how w = {0};
     int exact = 0;
     if (o->measure && (o->measure_tolerance > 0 || !(o->mesh_size > 0))) {
         /* where a mesh's grid measures anyway, exact only while cheap */

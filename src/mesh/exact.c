@@ -519,6 +519,8 @@ typedef struct pass {
     long long budget;  /* rays this pass may cast (see RAY_INTERVALS); < 0: no limit */
     long long spent;   /* of it */
     int over;          /* it needed more */
+    const mesh_exact_limits *limits;
+    int cancelled; /* the limits' hook said stop */
     int rc;
 } pass;
 
@@ -588,6 +590,11 @@ static int ray_eval(void *ctx, sample *sm)
     iv_list l;
     if (P->budget >= 0 && P->spent >= P->budget) {
         P->over = 1;
+        return -1;
+    }
+    if ((P->count & 4095) == 0 && P->limits->cancelled &&
+        (P->cancelled || P->limits->cancelled(P->limits->cancel_ud))) {
+        P->cancelled = 1;
         return -1;
     }
     P->count++;
@@ -983,9 +990,11 @@ static int leaf_boxes(const csg_scene *s, int root, double (**box)[2][3])
     return n;
 }
 
-int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_rays,
-                       int max_intervals, mesh_measure *out, char *err, size_t errlen)
+int mesh_measure_exact(const csg_scene *s, int root, double tol, const mesh_exact_limits *limits,
+                       mesh_measure *out, char *err, size_t errlen)
 {
+    long long max_rays = limits->max_rays;
+    int max_intervals = limits->max_intervals;
     memset(out, 0, sizeof *out);
     for (int k = 0; k < 3; k++) {
         out->lo[k] = INFINITY;
@@ -1023,6 +1032,7 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_r
         if (!P[k].arena) rc = -1;
         if (P[k].arena && max_intervals > 0) iv_arena_set_list_limit(P[k].arena, max_intervals);
         P[k].budget = max_rays > 0 ? max_rays / 3 + 1 : -1;
+        P[k].limits = limits;
     }
     free(leaf);
     for (int k = 1; k < 3 && rc == 0; k++)
@@ -1033,11 +1043,12 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_r
         if (started[k]) pthread_join(th[k], NULL);
     }
     long long count = 0;
-    int too_long = 0, over = 0;
+    int too_long = 0, over = 0, cancelled = 0;
     for (int k = 0; k < 3; k++) {
         if (P[k].rc != 0) rc = -1;
         if (P[k].arena && iv_arena_failure(P[k].arena) == IV_ARENA_LIST_TOO_LONG) too_long = 1;
         over |= P[k].over;
+        cancelled |= P[k].cancelled;
         count += P[k].count;
     }
     for (int a = 0; a < 3 && rc == 0; a++)
@@ -1063,6 +1074,9 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_r
         rc = RAYSCAD_ERROR_INTERVALS;
         snprintf(err, errlen, "a ray's interval list holds more than %d intervals",
                  max_intervals > 0 ? max_intervals : IV_LIST_LIMIT_DEFAULT);
+    } else if (cancelled) {
+        rc = RAYSCAD_CANCELLED;
+        snprintf(err, errlen, "the exact measurement was stopped");
     } else if (over) {
         rc = RAYSCAD_ERROR_RAYS;
         snprintf(err, errlen, "the exact measurement needs more than %lld rays", max_rays);

@@ -149,13 +149,24 @@ int mesh_from_scene(const csg_scene *s, const mesh_options *o, mesh **out, mesh_
 int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *out, char *err,
                        size_t errlen);
 
+/* How far mesh_measure_exact may go: at most max_rays rays (<= 0: no
+ * limit) whose lists hold at most max_intervals (0: the default), and it
+ * stops where cancelled (NULL: never; asked from its threads every few
+ * thousand rays) returns nonzero. */
+typedef struct mesh_exact_limits {
+    long long max_rays;
+    int max_intervals;
+    int (*cancelled)(void *cancel_ud);
+    void *cancel_ud;
+} mesh_exact_limits;
+
 /* Volume, surface area, centre of mass and bounds of root `root` of s
- * integrated from rays to a relative tolerance tol (exact.c), casting at
- * most max_rays (<= 0: no limit) whose lists hold at most max_intervals
- * (0: the default); out->crossings is the number of rays cast.  0,
- * RAYSCAD_ERROR_RAYS, RAYSCAD_ERROR_INTERVALS or -1, with a message. */
-int mesh_measure_exact(const csg_scene *s, int root, double tol, long long max_rays,
-                       int max_intervals, mesh_measure *out, char *err, size_t errlen);
+ * integrated from rays to a relative tolerance tol (exact.c) within
+ * limits; out->crossings is the number of rays cast.  0,
+ * RAYSCAD_ERROR_RAYS, RAYSCAD_ERROR_INTERVALS, RAYSCAD_CANCELLED or -1,
+ * with a message. */
+int mesh_measure_exact(const csg_scene *s, int root, double tol, const mesh_exact_limits *limits,
+                       mesh_measure *out, char *err, size_t errlen);
 
 void mesh_free(mesh *m);
 int mesh_vertex_count(const mesh *m);

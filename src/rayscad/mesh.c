@@ -70,12 +70,14 @@ rayscad_status rayscad_scene_measure(const rayscad_scene *s, const rayscad_measu
         rayscad_measure_options_default(&def);
         o = &def;
     }
+    mesh_exact_limits lim = {o->max_rays, o->max_intervals, o->cancelled, o->cancel_ud};
     int rc = mesh_measure_exact(s->s, o->root,
-                                o->tolerance > 0 ? o->tolerance : RAYSCAD_MEASURE_TOLERANCE,
-                                o->max_rays, o->max_intervals, out, err, errlen);
-    return rc == 0                                                     ? RAYSCAD_OK
-           : rc == RAYSCAD_ERROR_RAYS || rc == RAYSCAD_ERROR_INTERVALS ? (rayscad_status)rc
-                                                                       : RAYSCAD_ERROR;
+                                o->tolerance > 0 ? o->tolerance : RAYSCAD_MEASURE_TOLERANCE, &lim,
+                                out, err, errlen);
+    return rc == 0 || rc == RAYSCAD_ERROR_RAYS || rc == RAYSCAD_ERROR_INTERVALS ||
+                   rc == RAYSCAD_CANCELLED
+               ? (rayscad_status)rc
+               : RAYSCAD_ERROR;
 }
 
 void rayscad_sampling_thin(const rayscad_sampling *d, double thickness, rayscad_thin *out)

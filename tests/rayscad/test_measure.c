@@ -138,6 +138,23 @@ Test(measure, extrusion_is_exact)
 }
 
 /* Booleans of boxes: a square hole through a cube; two overlapping cubes. */
+/* A faceted cylinder is the hull of its corners, each side a quad of two
+ * coplanar triangles: a line meeting that face must name it alike whichever
+ * triangle rounding picks, or the measurement sees an event at every ray. */
+Test(measure, faceted_frustum_is_exact)
+{
+    rayscad_measurement m =
+        measure("rotate([40.38, 59.79, 43.21])"
+                " cylinder(r1 = 1, r2 = 3.02, h = 4.62, center = true, $fn = 8);",
+                0);
+    double n = 8, h = 4.62, r1 = 1, r2 = 3.02, c = cos(PI / n), s = sin(PI / n);
+    double a1 = n * r1 * r1 * s * c, a2 = n * r2 * r2 * s * c; /* the octagons */
+    double side = n * (r1 + r2) * s * sqrt(h * h + (r2 - r1) * (r2 - r1) * c * c);
+    near(m.volume, h / 3 * (a1 + a2 + sqrt(a1 * a2)), 1e-9, "volume");
+    near(m.area, a1 + a2 + side, 1e-9, "area");
+    cr_expect(m.crossings < 1000000, "%lld rays for ten faces", m.crossings);
+}
+
 Test(measure, box_booleans_are_exact)
 {
     rayscad_measurement m =
@@ -205,6 +222,12 @@ Test(measure, bench_part_volume)
     near(m.volume, 2404.778358, 1e-6, "volume");
 }
 
+static int stop_at_once(void *ud)
+{
+    (void)ud;
+    return 1;
+}
+
 Test(measure, empty_and_limits)
 {
     rayscad_measurement m = measure("cube(0);", 0);
@@ -217,5 +240,9 @@ Test(measure, empty_and_limits)
     char err[256] = "";
     cr_expect_eq(rayscad_scene_measure(scene, &o, &m, err, sizeof err), RAYSCAD_ERROR_RAYS);
     cr_expect_str_eq(err, "the exact measurement needs more than 1000 rays");
+    o.max_rays = 0;
+    o.cancelled = stop_at_once;
+    cr_expect_eq(rayscad_scene_measure(scene, &o, &m, err, sizeof err), RAYSCAD_CANCELLED);
+    cr_expect_str_eq(err, "the exact measurement was stopped");
     rayscad_scene_free(scene);
 }
