@@ -115,6 +115,8 @@ typedef struct level {
     int across;          /* the level across the lines (see integrate, bracket) */
     int quick;           /* pieces by the trapezoid rule, for signatures (see bracket) */
     int bisecting;       /* evaluating a bracket's samples (see line_eval) */
+    int slow;            /* bracket's samples in full too (see bracket_all) */
+    int misled;          /* quick samples misled a search (see bracket) */
     int samples;         /* even first samples */
     const double *hints; /* points to sample first, besides the even ones */
     int nhints;
@@ -375,7 +377,7 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
         step = 0;
         double a0 = a.x, b0 = b.x;
         for (int i = 0; i < n; i++) {
-            L->bisecting = L->across;
+            L->bisecting = L->across && !L->slow;
             int rc = L->eval(L->ctx, &m[i]);
             L->bisecting = 0;
             if (rc != 0) return -1;
@@ -388,6 +390,7 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
             } else if (m[i].sig != a.sig && m[i].sig != b.sig && depth < MAX_DEPTH) {
                 /* a third signature: two events or more */
                 if (bracket(L, &a, &m[i], depth + 1, E) != 0) return -1;
+                if (L->misled) return 0;
                 return bracket(L, &m[i], &b, depth + 1, E);
             }
         }
@@ -404,6 +407,10 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
             int k = s[1].f[0] < s[2].f[0] ? 1 : 2;
             if (L->again(L->ctx, &s[k], &s[3 - k]) != 0) return -1;
         }
+        if ((s[1].sig != a.sig || s[2].sig != b.sig) && !L->slow) {
+            L->misled = 1;
+            return 0;
+        }
         if (s[1].sig != a.sig || s[2].sig != b.sig) {
             for (int i = 0; i < 3; i++)
                 if (s[i].sig != s[i + 1].sig && bracket(L, &s[i], &s[i + 1], depth + 1, E) != 0)
@@ -419,6 +426,25 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
  * signature from event to event whole, and each event's bracket by the
  * values either side up to the kink (its middle where the slopes do not
  * say). */
+/* bracket() between samples integrated in full: where a full line's
+ * signature showed that the quick ones misled the search (a piece found
+ * between a quick line's samples), the search again with every line in
+ * full. */
+static int bracket_all(level *L, const sample *l, const sample *r, int depth, events *E)
+{
+    int n = E->n;
+    L->misled = 0;
+    int rc = bracket(L, l, r, depth, E);
+    if (rc == 0 && L->misled) {
+        E->n = n;
+        L->misled = 0;
+        L->slow = 1;
+        rc = bracket(L, l, r, depth, E);
+        L->slow = 0;
+    }
+    return rc;
+}
+
 static int stretch(level *L, const sample *s, int n, int depth)
 {
     events E = {NULL, 0, 0};
@@ -427,7 +453,7 @@ static int stretch(level *L, const sample *s, int n, int depth)
     for (int i = 1; i < n && rc == 0; i++) {
         if (s[i].sig == start.sig) continue;
         E.n = 0;
-        rc = bracket(L, &s[i - 1], &s[i], depth, &E);
+        rc = bracket_all(L, &s[i - 1], &s[i], depth, &E);
         for (int e = 0; e < E.n && rc == 0; e++) {
             const sample *a = &E.ab[e][0], *b = &E.ab[e][1];
             if (a->x > start.x) rc = panel(L, &start, a, depth);
