@@ -306,8 +306,12 @@ cli: all
 viewer: all
 	tests/viewer_test.sh $(BUILD)
 
+# Against the real openscad: rendered masks (tests/cli/compare_openscad.sh), and
+# --measure on random faceted CSG against the volume and area of openscad's STL
+# (tests/cli/measure_openscad.py).
 compare: all
 	tests/cli/compare_openscad.sh $(BUILD)
+	tests/cli/measure_openscad.py $(BUILD)
 
 # Hostile inputs and OpenSCAD's examples: no signal, no hang, no sanitizer report,
 # no output left behind by a failure (tests/cli/hostile.sh).

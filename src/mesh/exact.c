@@ -72,6 +72,7 @@
 #define MIN_PANEL 1e-7 /* of the span: see panel() */
 #define SLIVER 1e-9    /* of the span: a piece too narrow to sign a line */
 #define MAX_SEEDS 4096 /* primitives whose boxes hint first samples */
+#define RECHECKS 2     /* passes run again, twice the samples each time (see passes_disagree) */
 #define PAIR 1e-7      /* of the span: samples either side of an event foreseen */
 #define PAD 1e-7       /* around the model's box, of the span */
 /* A ray of n intervals counts 1 + n / RAY_INTERVALS rays against the
@@ -872,6 +873,45 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
     P->outer.samples = P->inner.samples = SAMPLES;
 }
 
+/* run_pass on each pass k with run[k] set, side by side. */
+static void run_passes(pass *P, const int run[3])
+{
+    pthread_t th[3];
+    int started[3] = {0, 0, 0};
+    for (int k = 1; k < 3; k++)
+        started[k] = run[k] && pthread_create(&th[k], NULL, run_pass, &P[k]) == 0;
+    if (run[0]) run_pass(&P[0]);
+    for (int k = 1; k < 3; k++) {
+        if (run[k] && !started[k]) run_pass(&P[k]);
+        if (started[k]) pthread_join(th[k], NULL);
+    }
+}
+
+/* The three passes each measure the volume: where they disagree by more
+ * than the tolerance, the first samples of one stepped over a piece (a
+ * fragment of a difference seen edge-on, a thin wall) that another found,
+ * and which one cannot be told (two can miss alike): 1, all three to run
+ * again. */
+static int passes_disagree(const pass *P, double tol)
+{
+    double lo = INFINITY, hi = -INFINITY, span = 2 * P[0].reach;
+    for (int k = 0; k < 3; k++) {
+        lo = fmin(lo, P[k].outer.sum[0]);
+        hi = fmax(hi, P[k].outer.sum[0]);
+    }
+    return hi - lo > 0.1 * tol * fmax(fabs(lo), fabs(hi)) + 1e-12 * span * span * span;
+}
+
+/* Ready pass P to run again with twice the first samples. */
+static void pass_again(pass *P)
+{
+    for (int i = 0; i < P->nlines; i++)
+        free(P->lines[i].p);
+    P->nlines = 0;
+    P->outer.samples *= 2;
+    P->inner.samples *= 2;
+}
+
 static void pass_free(pass *P)
 {
     for (int i = 0; i < P->nlines; i++)
@@ -1043,8 +1083,7 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, const mesh_exac
                           {-0.485399362751, 0.820537458717, 0.301837269870},
                           {0.375401361149, -0.116186365095, 0.919551274597}};
     pass P[3];
-    pthread_t th[3];
-    int started[3] = {0, 0, 0}, rc = 0;
+    int rc = 0;
     double(*leaf)[2][3];
     int nleaf = leaf_boxes(s, root, &leaf); /* for seed_hints */
     if (nleaf < 0) rc = -1;
@@ -1061,12 +1100,12 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, const mesh_exac
         P[k].limits = limits;
     }
     free(leaf);
-    for (int k = 1; k < 3 && rc == 0; k++)
-        started[k] = pthread_create(&th[k], NULL, run_pass, &P[k]) == 0;
-    if (rc == 0) run_pass(&P[0]);
-    for (int k = 1; k < 3; k++) {
-        if (!started[k] && rc == 0) run_pass(&P[k]);
-        if (started[k]) pthread_join(th[k], NULL);
+    int run[3] = {1, 1, 1};
+    for (int round = 0; rc == 0; round++) {
+        run_passes(P, run);
+        if (round == RECHECKS || P[0].rc || P[1].rc || P[2].rc || !passes_disagree(P, tol)) break;
+        for (int k = 0; k < 3; k++)
+            pass_again(&P[k]);
     }
     long long count = 0;
     int too_long = 0, over = 0, cancelled = 0;
