@@ -51,7 +51,10 @@
  * A polyhedral model comes out exact to rounding; a curved one converges
  * as the tolerance falls.  A feature narrower than the first samples can
  * slip between two that agree: lines are hinted by their neighbours' pieces
- * and by the primitives' boxes, and the Kronrod nodes catch what they can.
+ * and by the primitives' boxes, the Kronrod nodes catch what they can, a
+ * section area that jumps across the lines sends the line with less of it
+ * back for the piece it missed, and three passes whose volumes disagree run
+ * again with twice the samples (passes_disagree).
  */
 #include "mesh.h"
 
