@@ -748,8 +748,11 @@ static int line_eval(void *ctx, sample *sm)
                *L3 = up + 1 < P->nlines ? &P->lines[up + 1] : NULL;
     int n = 0;
     if (P->guide) hints_from(P->guide, NULL, v, 0, P->hints, &n, MAX_HINTS);
-    if (L1) hints_from(L1, L0, v, 0, P->hints, &n, MAX_HINTS);
-    if (L2) hints_from(L2, L3, v, 0, P->hints, &n, MAX_HINTS);
+    /* (lines either side alike: their pieces carried to v below cover
+     * their own middles, 3 % of the bench part's rays) */
+    int alike = L1 && L2 && L1->seq == L2->seq && L1->np == L2->np;
+    if (L1 && !alike) hints_from(L1, L0, v, 0, P->hints, &n, MAX_HINTS);
+    if (L2 && !alike) hints_from(L2, L3, v, 0, P->hints, &n, MAX_HINTS);
     if (L1 && L2) hints_from(L1, L2, v, PAIR * 2 * P->reach, P->hints, &n, MAX_HINTS);
     seed_hints(P, v, (ub - ua) / SAMPLES, P->hints, &n, MAX_HINTS);
     P->v = v;
