@@ -404,7 +404,8 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
         /* The two ends integrated in full.  A line is also only as good as
          * its hints: one integrated while its nearest neighbours were far
          * may have missed a narrow piece that the lines now either side of
-         * it show.  An end whose signature changes moves the search. */
+         * it show.  An end whose signature changes moves the search, and
+         * where the search ran on quick lines, misled it (bracket_all). */
         sample s[4] = {*l, a, b, *r};
         if (L->eval(L->ctx, &s[1]) != 0 || L->eval(L->ctx, &s[2]) != 0) return -1;
         if (L->again && jumps(&s[1], &s[2])) {
@@ -697,6 +698,20 @@ static void hints_from(const line *a, const line *b, double v, double pair, doub
     }
 }
 
+/* The index of the first line of the history at v or beyond. */
+static int line_index(const pass *P, double v)
+{
+    int lo = 0, hi = P->nlines;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (P->lines[mid].v < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 /* Put line l into the history at index at, replacing one at the same v. */
 static int keep_line(pass *P, int at, line l)
 {
@@ -734,14 +749,7 @@ static int line_eval(void *ctx, sample *sm)
         *sig = 0;
         return 0;
     }
-    int lo = 0, hi = P->nlines;
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        if (P->lines[mid].v < v)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    int lo = line_index(P, v);
     int up = lo < P->nlines && P->lines[lo].v == v ? lo + 1 : lo; /* past itself */
     const line *L0 = lo >= 2 ? &P->lines[lo - 2] : NULL, *L1 = lo >= 1 ? &P->lines[lo - 1] : NULL,
                *L2 = up < P->nlines ? &P->lines[up] : NULL,
@@ -764,11 +772,12 @@ static int line_eval(void *ctx, sample *sm)
     sm->slope = f[5];
     /* The line's signature: the multiset of its events (the changes in
      * the set of faces from piece to piece), less slivers narrower than
-     * SLIVER of the span; the pieces' order (seq) matches lines for hints.  Where bisection lands
-     * decides whether it sees a sliver at all (one that exists only next to an event), and a
-     * signature that flickered with it would bracket events that are not
-     * there; a true event's new piece is dropped only while it is a
-     * sliver, which moves the event by as little. */
+     * SLIVER of the span; the pieces' order (seq) matches lines for
+     * hints.  Where bisection lands decides whether it sees a sliver at
+     * all (one that exists only next to an event), and a signature that
+     * flickered with it would bracket events that are not there; a true
+     * event's new piece is dropped only while it is a sliver, which moves
+     * the event by as little. */
     uint64_t seq = 0, last = 0, lastset = 0, changes = 0;
     int any = 0;
     for (int k = 0; k < P->inner.npieces; k++) {
@@ -798,16 +807,9 @@ static int line_eval(void *ctx, sample *sm)
 static int line_again(void *ctx, sample *s, const sample *guide)
 {
     pass *P = ctx;
-    int lo = 0, hi = P->nlines;
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        if (P->lines[mid].v < guide->x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    int lo = line_index(P, guide->x);
     if (lo == P->nlines || P->lines[lo].v != guide->x) return 0;
-    P->guide = &P->lines[lo];
+    P->guide = &P->lines[lo]; /* (read for hints before line_eval moves the lines) */
     int rc = line_eval(P, s);
     P->guide = NULL;
     return rc;
