@@ -109,8 +109,11 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
 #define MEASURE_MAX_RAYS_MESH (1LL << 17)
 /* Nor longer than this: a ray's cost is not its intervals alone (a
  * rotate_extrude of a smooth circle, a torus of 256 cone bands, spent a
- * minute on 2^25 rays). */
-#define MEASURE_MAX_SECONDS 5.0
+ * minute on 2^25 rays).  About twice what 2^25 plain rays take, so that
+ * the ray budget decides where rays are plain (a sanitizer build's are
+ * three times slower: tests/cli/measure_openscad.py's slowest scene takes
+ * 3 s there). */
+#define MEASURE_MAX_SECONDS 10.0
 
 static double now_s(void)
 {
