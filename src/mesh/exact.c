@@ -896,10 +896,12 @@ static void run_passes(pass *P, const int run[3])
 }
 
 /* The three passes each measure the volume: where they disagree by more
- * than the tolerance, the first samples of one stepped over a piece (a
- * fragment of a difference seen edge-on, a thin wall) that another found,
- * and which one cannot be told (two can miss alike): 1, all three to run
- * again. */
+ * than a tenth of the tolerance, the first samples of one stepped over a
+ * piece (a fragment of a difference seen edge-on, a thin wall) that another
+ * found, and which one cannot be told (two can miss alike): 1, all three
+ * to run again.  Likewise where none found anything in the model's box: a
+ * small fragment can slip between the first samples of all three (a
+ * difference's sliver of 1.3e-4 in a box of 30). */
 static int passes_disagree(const pass *P, double tol)
 {
     double lo = INFINITY, hi = -INFINITY, span = 2 * P[0].reach;
@@ -907,7 +909,7 @@ static int passes_disagree(const pass *P, double tol)
         lo = fmin(lo, P[k].outer.sum[0]);
         hi = fmax(hi, P[k].outer.sum[0]);
     }
-    return hi - lo > 0.1 * tol * fmax(fabs(lo), fabs(hi)) + 1e-12 * span * span * span;
+    return hi - lo > 0.1 * tol * fmax(fabs(lo), fabs(hi)) + 1e-12 * span * span * span || hi <= 0;
 }
 
 /* Ready pass P to run again with twice the first samples. */
