@@ -149,13 +149,13 @@ static int measure_exact(const cli_options *o, const rayscad_scene *scene, long 
     if (rc == RAYSCAD_OK) return 1;
     if (rc == RAYSCAD_ERROR_RAYS || rc == RAYSCAD_CANCELLED) {
         w->tolerance = 0;
-        if (rc == RAYSCAD_ERROR_RAYS)
+        if (rc == RAYSCAD_ERROR_RAYS) {
             w->over = max_rays;
-        else
+        } else {
             w->over_s = MEASURE_MAX_SECONDS;
-        if (rc == RAYSCAD_CANCELLED)
             snprintf(err, sizeof err, "the exact measurement needs more than %g s",
                      MEASURE_MAX_SECONDS);
+        }
         if (!o->quiet && o->measure_tolerance > 0)
             fprintf(stderr,
                     "rayscad: warning: %s; measured on a grid instead (a larger "

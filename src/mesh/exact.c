@@ -412,11 +412,11 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
             int k = s[1].f[0] < s[2].f[0] ? 1 : 2;
             if (L->again(L->ctx, &s[k], &s[3 - k]) != 0) return -1;
         }
-        if ((s[1].sig != a.sig || s[2].sig != b.sig) && !L->slow) {
-            L->misled = 1;
-            return 0;
-        }
         if (s[1].sig != a.sig || s[2].sig != b.sig) {
+            if (!L->slow) {
+                L->misled = 1;
+                return 0;
+            }
             for (int i = 0; i < 3; i++)
                 if (s[i].sig != s[i + 1].sig && bracket(L, &s[i], &s[i + 1], depth + 1, E) != 0)
                     return -1;
@@ -427,10 +427,6 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
     return push_event(E, &a, &b);
 }
 
-/* Integrate over samples s[0 .. n-1] (in order): each piece of one
- * signature from event to event whole, and each event's bracket by the
- * values either side up to the kink (its middle where the slopes do not
- * say). */
 /* bracket() between samples integrated in full: where a full line's
  * signature showed that the quick ones misled the search (a piece found
  * between a quick line's samples), the search again with every line in
@@ -450,6 +446,10 @@ static int bracket_all(level *L, const sample *l, const sample *r, int depth, ev
     return rc;
 }
 
+/* Integrate over samples s[0 .. n-1] (in order): each piece of one
+ * signature from event to event whole, and each event's bracket by the
+ * values either side up to the kink (its middle where the slopes do not
+ * say). */
 static int stretch(level *L, const sample *s, int n, int depth)
 {
     events E = {NULL, 0, 0};
@@ -881,16 +881,16 @@ static void pass_init(pass *P, const csg_scene *s, int root, double frame[3][3],
     P->outer.samples = P->inner.samples = SAMPLES;
 }
 
-/* run_pass on each pass k with run[k] set, side by side. */
-static void run_passes(pass *P, const int run[3])
+/* run_pass on the three passes, side by side. */
+static void run_passes(pass *P)
 {
     pthread_t th[3];
     int started[3] = {0, 0, 0};
     for (int k = 1; k < 3; k++)
-        started[k] = run[k] && pthread_create(&th[k], NULL, run_pass, &P[k]) == 0;
-    if (run[0]) run_pass(&P[0]);
+        started[k] = pthread_create(&th[k], NULL, run_pass, &P[k]) == 0;
+    run_pass(&P[0]);
     for (int k = 1; k < 3; k++) {
-        if (run[k] && !started[k]) run_pass(&P[k]);
+        if (!started[k]) run_pass(&P[k]);
         if (started[k]) pthread_join(th[k], NULL);
     }
 }
@@ -912,20 +912,25 @@ static int passes_disagree(const pass *P, double tol)
     return hi - lo > 0.1 * tol * fmax(fabs(lo), fabs(hi)) + 1e-12 * span * span * span || hi <= 0;
 }
 
-/* Ready pass P to run again with twice the first samples. */
-static void pass_again(pass *P)
+/* Empty pass P's history of lines. */
+static void forget_lines(pass *P)
 {
     for (int i = 0; i < P->nlines; i++)
         free(P->lines[i].p);
     P->nlines = 0;
+}
+
+/* Ready pass P to run again with twice the first samples. */
+static void pass_again(pass *P)
+{
+    forget_lines(P);
     P->outer.samples *= 2;
     P->inner.samples *= 2;
 }
 
 static void pass_free(pass *P)
 {
-    for (int i = 0; i < P->nlines; i++)
-        free(P->lines[i].p);
+    forget_lines(P);
     free(P->lines);
     free(P->inner.pieces);
     free(P->outer.pieces);
@@ -1110,9 +1115,8 @@ int mesh_measure_exact(const csg_scene *s, int root, double tol, const mesh_exac
         P[k].limits = limits;
     }
     free(leaf);
-    int run[3] = {1, 1, 1};
     for (int round = 0; rc == 0; round++) {
-        run_passes(P, run);
+        run_passes(P);
         if (round == RECHECKS || P[0].rc || P[1].rc || P[2].rc || !passes_disagree(P, tol)) break;
         for (int k = 0; k < 3; k++)
             pass_again(&P[k]);
