@@ -41,9 +41,13 @@
  *     and every fan triangle lies on a plane its corners share, facing like
  *     it, over the surface (a pass that fans knots leaves the rules above
  *     to the next; a vertex whose knots were refused is not tried again
- *     until its triangles change).
+ *     until its triangles change);
+ *   - next after the vertices snap (before the edge rules would pick at
+ *     it), a cap the contour left across an acute crease, short of it, is
+ *     unzipped into strips on the crease's two faces (crease_cap.c; a pass
+ *     that unzips caps, too, leaves the other rules to the next).
  * Every such point must be one a ray through it finds on the surface (else
- * the planes do not meet there: a face lies between them; meets_on_surface),
+ * the planes do not meet there: a face lies between them; crease_meets_on_surface),
  * and every change must leave triangles with area that face like
  * the plane they lie on.  Creases slighter than 10° are left to the
  * simplifier (a faceted curve's: hull_revolve.scad's 64 x 32 facets), and
@@ -77,52 +81,18 @@
  */
 #include "../geom/closest.h"
 #include "../intervals/vec3.h"
-#include "dexels.h"
+#include "crease.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define PASSES 8
-#define KNOT 0.5        /* cells: an edge shorter may be collapsed (collapse_knot) */
-#define TIE 0.001       /* cells: see stays() */
-#define ON 1e-4         /* cells: a vertex this near a plane lies on it (see near_planes) */
-#define NEAR 0.01       /* cells: see misfits_after() */
-#define KNOT_R 3.0      /* cells: see untie_corner() */
-#define REFUSED 2       /* c->hot: see knot_refused() */
-#define MAX_PLANES 8    /* candidates per edge or triangle */
-#define KNOT_PLANES 16  /* candidates about a knot (fan_knot) */
-#define COS_APART 0.985 /* planes whose normals part by less (10°) are left to the simplifier */
-#define COS_BENT 0.996  /* cos 5°: a chord across a crease of 10° bends more */
-
-typedef struct plane {
-    double n[3], d; /* n·x = d */
-} plane;
-
-typedef struct crease_mesh {
-    mesh *m;
-    mesh_snapper *sn;
-    mesh_fmap pos;      /* the vertex at each place in use, -1 at one left */
-    double h, min2;     /* the cell; twice a triangle's area squared, at least */
-    plane *pl;          /* the planes met so far */
-    int32_t npl, cap;   /* of pl */
-    mesh_fmap by_patch; /* patch -> index into pl */
-    int32_t *tp;        /* each triangle's plane (index into pl), -1: none, -2: not looked for */
-    size_t tp_cap;
-    uint8_t *hot; /* vertices whose surroundings changed (all, at first), or REFUSED */
-    uint32_t *vmark, *tmark, mark_now; /* fan_knot's marks on vertices and triangles */
-    uint64_t *tried;   /* by vertex: the corner (place) its knot last tried this pass */
-    mesh_fmap crowded; /* the corners (places) whose knots were too big this pass */
-    int32_t nv0;       /* the vertices as the pass began */
-    size_t hot_cap;
-    int32_t *start, *fan; /* the triangles around each vertex, as the pass began */
-    int32_t *opp;         /* each half-edge's twin, as the pass began */
-    uint8_t *used;        /* triangles changed this pass */
-    uint8_t *ends;        /* vertices a flip joined this pass */
-    uint8_t *known;       /* on_a_plane's answers this pass: 0 not asked, 1 no, 2 yes */
-    size_t nknown;        /* of known: 0 while vertices still move */
-    int gone;             /* triangles emptied this pass */
-} crease_mesh;
+#define KNOT 0.5       /* cells: an edge shorter may be collapsed (collapse_knot) */
+#define TIE 0.001      /* cells: see stays() */
+#define NEAR 0.01      /* cells: see misfits_after() */
+#define REFUSED 2      /* c->hot: see knot_refused() */
+#define COS_BENT 0.996 /* cos 5°: a chord across a crease of 10° bends more */
 
 /* The plane of the planar face under triangle t (a ray along its normal
  * through its centroid), as an index into c->pl; -1 when none, -3 when out
@@ -183,14 +153,14 @@ static int candidates_max(const crease_mesh *c, const int32_t *vs, int nv, const
 }
 
 /* candidates_max, MAX_PLANES at most. */
-static int candidates(const crease_mesh *c, const int32_t *vs, int nv, const plane **out)
+int crease_candidates(const crease_mesh *c, const int32_t *vs, int nv, const plane **out)
 {
     return candidates_max(c, vs, nv, out, MAX_PLANES);
 }
 
 /* Which of the planes pl (np) point x lies within `cells` of (or of
  * rounding: vertices are floats), as bits. */
-static unsigned planes_near(const crease_mesh *c, const double x[3], const plane *const *pl, int np,
+unsigned crease_planes_near(const crease_mesh *c, const double x[3], const plane *const *pl, int np,
                             double cells)
 {
     double big = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
@@ -207,29 +177,29 @@ static unsigned near_planes(const crease_mesh *c, int32_t v, const plane *const 
 {
     double x[3];
     mesh_vertex_at(c->m, v, x);
-    return planes_near(c, x, pl, np, cells);
+    return crease_planes_near(c, x, pl, np, cells);
 }
 
 /* Which of the planes pl (np) vertex v lies on, as bits. */
-static unsigned on_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np)
+unsigned crease_on_planes(const crease_mesh *c, int32_t v, const plane *const *pl, int np)
 {
     return near_planes(c, v, pl, np, ON);
 }
 
 /* Whether vertex v lies on the plane under one of its triangles (kept in
  * c->known once vertices stop moving in a pass). */
-static int on_a_plane(crease_mesh *c, int32_t v)
+int crease_on_a_plane(crease_mesh *c, int32_t v)
 {
     if ((size_t)v < c->nknown && c->known[v]) return c->known[v] == 2;
     const plane *pl[MAX_PLANES];
-    int np = candidates(c, &v, 1, pl), on = on_planes(c, v, pl, np) != 0;
+    int np = crease_candidates(c, &v, 1, pl), on = crease_on_planes(c, v, pl, np) != 0;
     if ((size_t)v < c->nknown) c->known[v] = (uint8_t)(1 + on);
     return on;
 }
 
 /* Whether x lies on the surface: a ray through it along n (not unit) finds
  * the surface there. */
-static int on_surface(crease_mesh *c, const double x[3], const double n[3])
+int crease_on_surface(crease_mesh *c, const double x[3], const double n[3])
 {
     double u[3], hit[3], hn[3], d[3], l = sqrt(dot3(n, n));
     if (!(l > 1e-9)) return 0;
@@ -240,6 +210,25 @@ static int on_surface(crease_mesh *c, const double x[3], const double n[3])
     return dot3(d, d) < 1e-8 * c->h * c->h;
 }
 
+/* Whether a triangle at p lies on the surface: rays along its normal
+ * through its centroid, halfway from there to each corner and nine tenths
+ * of the way to its last find it there. */
+int crease_lies_on_surface(crease_mesh *c, double p[3][3])
+{
+    static const double toward[5] = {0, 0.5, 0.5, 0.5, 0.9};
+    double n[3], g[3];
+    tri_normal3(p[0], p[1], p[2], n);
+    for (int q = 0; q < 5; q++) {
+        const double *e = p[q == 1 ? 0 : q == 2 ? 1 : 2];
+        for (int k = 0; k < 3; k++) {
+            g[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
+            g[k] += toward[q] * (e[k] - g[k]);
+        }
+        if (!crease_on_surface(c, g, n)) return 0;
+    }
+    return 1;
+}
+
 /* Whether x, where the n (2 or 3) planes pl meet, lies on the surface: a ray
  * through it along the sum of their normals finds the surface there, or one
  * along a pair's sum, or along one normal.  The sum alone can miss: where a
@@ -247,7 +236,7 @@ static int on_surface(crease_mesh *c, const double x[3], const double n[3])
  * the hole's rim) the solid about x is a thin wedge that the line along the
  * sum only touches at x, and whether a ray through a touching point reports
  * a crossing is left to rounding. */
-static int meets_on_surface(crease_mesh *c, const double x[3], const plane *const *pl, int n)
+int crease_meets_on_surface(crease_mesh *c, const double x[3], const plane *const *pl, int n)
 {
     static const unsigned order[] = {7, 3, 5, 6, 1, 2, 4};
     unsigned all = (1u << n) - 1;
@@ -259,7 +248,7 @@ static int meets_on_surface(crease_mesh *c, const double x[3], const plane *cons
             if (s >> p & 1)
                 for (int k = 0; k < 3; k++)
                     d[k] += pl[p]->n[k];
-        if (on_surface(c, x, d)) return 1;
+        if (crease_on_surface(c, x, d)) return 1;
     }
     return 0;
 }
@@ -267,7 +256,7 @@ static int meets_on_surface(crease_mesh *c, const double x[3], const plane *cons
 /* Whether the triangle p, q, r has area and faces like the first of the
  * planes of bits `shared` of pl, which its corners share (like n where
  * they share none: it still crosses a crease). */
-static int half_ok(const plane *const *pl, unsigned shared, const double p[3], const double q[3],
+int crease_half_ok(const plane *const *pl, unsigned shared, const double p[3], const double q[3],
                    const double r[3], const double n[3], double min2)
 {
     double t[3];
@@ -282,7 +271,7 @@ static int half_ok(const plane *const *pl, unsigned shared, const double p[3], c
 
 /* The slot of place x in c->pos: the vertex there, or -1 where none is
  * (one moved or collapsed away); NULL when out of memory. */
-static int32_t *place(crease_mesh *c, const double x[3])
+int32_t *crease_place(crease_mesh *c, const double x[3])
 {
     int fresh;
     int32_t *slot = mesh_fmap_slot(&c->pos, mesh_pos_key(x), &fresh);
@@ -291,11 +280,11 @@ static int32_t *place(crease_mesh *c, const double x[3])
 }
 
 /* Vertex v leaves its place (moved or collapsed away); 0 or -1. */
-static int leave_place(crease_mesh *c, int32_t v)
+int crease_leave_place(crease_mesh *c, int32_t v)
 {
     double x[3];
     mesh_vertex_at(c->m, v, x);
-    int32_t *slot = place(c, x);
+    int32_t *slot = crease_place(c, x);
     if (!slot) return -1;
     if (*slot == v) *slot = -1;
     return 0;
@@ -303,9 +292,9 @@ static int leave_place(crease_mesh *c, int32_t v)
 
 /* A vertex at x (float), not where one is; its number, -1 when one is
  * there, -2 when out of memory. */
-static int32_t add_vertex(crease_mesh *c, const double x[3])
+int32_t crease_add_vertex(crease_mesh *c, const double x[3])
 {
-    int32_t *slot = place(c, x);
+    int32_t *slot = crease_place(c, x);
     if (!slot) return -2;
     if (*slot >= 0) return -1;
     int32_t v = mesh_push_vertex(c->m, x[0], x[1], x[2]);
@@ -316,7 +305,7 @@ static int32_t add_vertex(crease_mesh *c, const double x[3])
 
 /* A point of the line where planes a and b meet into p0, its direction
  * (not unit) into e; 0 when they are parallel. */
-static int crease_line(const plane *a, const plane *b, double p0[3], double e[3])
+int crease_line(const plane *a, const plane *b, double p0[3], double e[3])
 {
     cross3(a->n, b->n, e);
     double ee = dot3(e, e), t1[3], t2[3];
@@ -343,7 +332,7 @@ static int crease_nearest(const plane *a, const plane *b, const double p[3], dou
 }
 
 /* Where planes a, b and c meet, into x; 0 when they nearly share a line. */
-static int corner_point(const plane *a, const plane *b, const plane *c, double x[3])
+int crease_corner(const plane *a, const plane *b, const plane *c, double x[3])
 {
     double bc[3], ca[3], ab[3];
     cross3(b->n, c->n, bc);
@@ -382,7 +371,7 @@ static int crease_point(const plane *a, const plane *b, const double u[3], const
 
 /* Triangle t's corners with vertex v read as w, as points, into p; 0 when
  * two of them are then one vertex (the triangle goes). */
-static int corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int32_t tv[3],
+int crease_corners_as(const crease_mesh *c, int32_t t, int32_t v, int32_t w, int32_t tv[3],
                       double p[3][3])
 {
     for (int k = 0; k < 3; k++) {
@@ -402,12 +391,12 @@ static int fits_within(const crease_mesh *c, const int32_t tv[3], double p[3][3]
 {
     unsigned s = near_planes(c, tv[0], pl, np, cells) & near_planes(c, tv[1], pl, np, cells) &
                  near_planes(c, tv[2], pl, np, cells);
-    return s && half_ok(pl, s, p[0], p[1], p[2], NULL, c->min2);
+    return s && crease_half_ok(pl, s, p[0], p[1], p[2], NULL, c->min2);
 }
 
 /* Whether triangle t, its corners tv at p, lies on a plane of pl (np)
  * its corners share, with area, facing like it. */
-static int fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
+int crease_fits(const crease_mesh *c, const int32_t tv[3], double p[3][3], const plane *const *pl,
                 int np)
 {
     return fits_within(c, tv, p, pl, np, ON);
@@ -426,8 +415,8 @@ static int move_fits(crease_mesh *c, int32_t v, const double to[3], const plane 
     for (int i = 0; i < nf; i++) {
         int32_t tv[3];
         double p[3][3];
-        corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
-        was[i] = (uint8_t)fits(c, tv, p, pl, np);
+        crease_corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
+        was[i] = (uint8_t)crease_fits(c, tv, p, pl, np);
         before += !was[i];
     }
     mesh_vertex_at(c->m, v, old);
@@ -437,9 +426,9 @@ static int move_fits(crease_mesh *c, int32_t v, const double to[3], const plane 
     for (int i = 0; i < nf && !lost; i++) {
         int32_t tv[3];
         double p[3][3], n[3];
-        corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
+        crease_corners_as(c, c->fan[c->start[v] + i], v, v, tv, p);
         tri_normal3(p[0], p[1], p[2], n);
-        int is = fits(c, tv, p, pl, np);
+        int is = crease_fits(c, tv, p, pl, np);
         lost = !(dot3(n, n) > c->min2) || (was[i] && !is);
         after += !is;
     }
@@ -457,27 +446,27 @@ static int move_fits(crease_mesh *c, int32_t v, const double to[3], const plane 
 static int snap_vertex(crease_mesh *c, int32_t v)
 {
     const plane *pl[MAX_PLANES];
-    int np = candidates(c, &v, 1, pl);
-    if (np < 2 || np > 3 || on_planes(c, v, pl, np) == (1u << np) - 1) return 0;
+    int np = crease_candidates(c, &v, 1, pl);
+    if (np < 2 || np > 3 || crease_on_planes(c, v, pl, np) == (1u << np) - 1) return 0;
     double x[3], to[3], d[3];
     mesh_vertex_at(c->m, v, x);
     if (np == 3) {
-        if (!corner_point(pl[0], pl[1], pl[2], to)) return 0;
+        if (!crease_corner(pl[0], pl[1], pl[2], to)) return 0;
     } else if (!crease_nearest(pl[0], pl[1], x, to)) {
         return 0;
     }
     sub3(to, x, d);
-    if (!(dot3(d, d) < 0.25 * c->h * c->h) || !meets_on_surface(c, to, pl, np)) return 0;
+    if (!(dot3(d, d) < 0.25 * c->h * c->h) || !crease_meets_on_surface(c, to, pl, np)) return 0;
     mesh_round_to_float(to);
     if (to[0] == (float)x[0] && to[1] == (float)x[1] && to[2] == (float)x[2])
         return 0; /* there already, to float precision: a "move" would only block its
                      neighbours this pass, and every pass */
-    int32_t *slot = place(c, to);
+    int32_t *slot = crease_place(c, to);
     if (!slot) return -1;
     if (*slot >= 0) return 0;
     if (!move_fits(c, v, to, pl, np)) return 0;
-    int32_t *old = place(c, x);
-    if (!old || !(slot = place(c, to))) return -1; /* (the map may have grown) */
+    int32_t *old = crease_place(c, x);
+    if (!old || !(slot = crease_place(c, to))) return -1; /* (the map may have grown) */
     if (*old == v) *old = -1;
     *slot = v;
     for (int32_t f = c->start[v]; f < c->start[v + 1]; f++)
@@ -520,14 +509,14 @@ static int chord_at(crease_mesh *c, int32_t x, chord *q)
 {
     if (!quad_at(c, x, q->vs, &q->t, &q->o, &q->k, &q->j) || c->used[q->t] || c->used[q->o])
         return 0;
-    q->np = candidates(c, q->vs, 2, q->pl);
+    q->np = crease_candidates(c, q->vs, 2, q->pl);
     for (int i = 0; i < 4; i++)
-        q->s[i] = q->np < 2 ? 0 : on_planes(c, q->vs[i], q->pl, q->np);
+        q->s[i] = q->np < 2 ? 0 : crease_on_planes(c, q->vs[i], q->pl, q->np);
     return q->s[0] && q->s[1] && !(q->s[0] & q->s[1]);
 }
 
 /* Whether triangle t has corner v. */
-static int m_has(const mesh *m, int32_t t, int32_t v)
+int crease_has(const mesh *m, int32_t t, int32_t v)
 {
     const int32_t *tv = &m->t[3 * (size_t)t];
     return tv[0] == v || tv[1] == v || tv[2] == v;
@@ -538,7 +527,7 @@ static int m_has(const mesh *m, int32_t t, int32_t v)
 static int joined(const crease_mesh *c, int32_t a, int32_t b)
 {
     for (int32_t f = c->start[a]; f < c->start[a + 1]; f++)
-        if (m_has(c->m, c->fan[f], b)) return 1;
+        if (crease_has(c->m, c->fan[f], b)) return 1;
     return 0;
 }
 
@@ -555,20 +544,21 @@ static int misfits_after(const crease_mesh *c, int32_t v, int32_t w, int32_t gon
 {
     const plane *pl[MAX_PLANES];
     int32_t ends[2] = {v, w};
-    int np = candidates(c, ends, 2, pl), bad = 0;
+    int np = crease_candidates(c, ends, 2, pl), bad = 0;
     *before = 0;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
             int32_t t = c->fan[f], tv[3], tw[3];
             double p[3][3], q[3][3], n[3];
-            if (e == 1 && m_has(c->m, t, v)) continue; /* seen from v */
-            corners_as(c, t, v, v, tv, p);
-            int was = fits(c, tv, p, pl, np);
+            if (e == 1 && crease_has(c->m, t, v)) continue; /* seen from v */
+            crease_corners_as(c, t, v, v, tv, p);
+            int was = crease_fits(c, tv, p, pl, np);
             *before += !was;
             was = was || fits_within(c, tv, p, pl, np, NEAR);
-            if (t == gone1 || t == gone2 || !corners_as(c, t, v, w, tw, q)) continue; /* it goes */
+            if (t == gone1 || t == gone2 || !crease_corners_as(c, t, v, w, tw, q))
+                continue; /* it goes */
             tri_normal3(q[0], q[1], q[2], n);
-            int is = fits(c, tw, q, pl, np);
+            int is = crease_fits(c, tw, q, pl, np);
             if (!(dot3(n, n) > c->min2) || (was && !is)) return -1;
             bad += !is;
         }
@@ -588,7 +578,7 @@ static int stays(const crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int3
     for (int32_t f = c->start[v]; f < c->start[v + 1]; f++) {
         int32_t t = c->fan[f], tv[3];
         double p[3][3];
-        if (t == gone1 || t == gone2 || !corners_as(c, t, v, w, tv, p)) continue;
+        if (t == gone1 || t == gone2 || !crease_corners_as(c, t, v, w, tv, p)) continue;
         best = fmin(best, geom_triangle_dist2(pv, p[0], p[1], p[2]));
     }
     return best <= TIE * TIE * c->h * c->h;
@@ -610,7 +600,7 @@ static int merge_ends(crease_mesh *c, int32_t v, int32_t w, int32_t gone1, int32
     int32_t from = into_w <= into_v ? v : w, to = from == v ? w : v, ends[2] = {v, w};
     int after = from == v ? into_w : into_v;
     if (after > before || (after == before && !stays(c, from, to, gone1, gone2))) return 0;
-    if (leave_place(c, from) != 0) return -1;
+    if (crease_leave_place(c, from) != 0) return -1;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++) {
             int32_t t = c->fan[f], *tv = &c->m->t[3 * (size_t)t];
@@ -664,12 +654,13 @@ static int collapse_knot(crease_mesh *c, int32_t x)
     if (!quad_at(c, x, vs, &t, &o, &k, &j)) return 0;
     mesh *m = c->m;
     int32_t v = vs[0], w = vs[1], ends[2] = {v, w};
-    if (!mergeable(c, v, w, vs[2], vs[3]) || (!on_a_plane(c, v) && !on_a_plane(c, w))) return 0;
+    if (!mergeable(c, v, w, vs[2], vs[3]) || (!crease_on_a_plane(c, v) && !crease_on_a_plane(c, w)))
+        return 0;
     for (int e = 0; e < 2; e++)
         for (int32_t f = c->start[ends[e]]; f < c->start[ends[e] + 1]; f++)
             for (int q = 0; q < 3; q++) {
                 int32_t n = m->t[3 * (size_t)c->fan[f] + q];
-                if (n != v && n != w && !on_a_plane(c, n)) return 0;
+                if (n != v && n != w && !crease_on_a_plane(c, n)) return 0;
             }
     return merge_ends(c, v, w, -1, -1);
 }
@@ -724,8 +715,8 @@ static int flip_edge(crease_mesh *c, int32_t x)
     double p[4][3];
     for (int i = 0; i < 4; i++)
         mesh_vertex_at(m, vs[i], p[i]);
-    int up = half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, c->min2),
-        down = half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, c->min2);
+    int up = crease_half_ok(pl, s[2] & s[0] & s[3], p[2], p[0], p[3], NULL, c->min2),
+        down = crease_half_ok(pl, s[3] & s[1] & s[2], p[3], p[1], p[2], NULL, c->min2);
     if (!up && !down) return merge_across(c, &q); /* c, d both on the crease */
     if (!up || !down) return 0;
     int32_t *tv = &m->t[3 * (size_t)t], *ov = &m->t[3 * (size_t)o];
@@ -761,16 +752,16 @@ static int split_edge(crease_mesh *c, int32_t x)
             double xp[3];
             const plane *two[2] = {pl[a], pl[b]};
             if (!(su >> a & 1) || !(sw >> b & 1) || !crease_point(pl[a], pl[b], u, w, c->h, xp) ||
-                !meets_on_surface(c, xp, two, 2))
+                !crease_meets_on_surface(c, xp, two, 2))
                 continue;
             mesh_round_to_float(xp); /* as the mesh will hold it */
             unsigned sx = 1u << a | 1u << b;
-            if (!half_ok(pl, su & sx & sc, u, xp, pc, tn, c->min2) ||
-                !half_ok(pl, sx & sw & sc, xp, w, pc, tn, c->min2) ||
-                !half_ok(pl, sw & sx & sd, w, xp, pd, on, c->min2) ||
-                !half_ok(pl, sx & su & sd, xp, u, pd, on, c->min2))
+            if (!crease_half_ok(pl, su & sx & sc, u, xp, pc, tn, c->min2) ||
+                !crease_half_ok(pl, sx & sw & sc, xp, w, pc, tn, c->min2) ||
+                !crease_half_ok(pl, sw & sx & sd, w, xp, pd, on, c->min2) ||
+                !crease_half_ok(pl, sx & su & sd, xp, u, pd, on, c->min2))
                 continue;
-            int32_t v = add_vertex(c, xp);
+            int32_t v = crease_add_vertex(c, xp);
             if (v == -2) return -1;
             if (v < 0) continue;
             uint16_t ct = m->tc && m->npal ? m->tc[t] : 0, co = m->tc && m->npal ? m->tc[o] : 0;
@@ -795,9 +786,9 @@ static int split_corner(crease_mesh *c, int32_t t)
     int32_t vs[3];
     memcpy(vs, &m->t[3 * (size_t)t], sizeof vs);
     const plane *pl[MAX_PLANES];
-    int np = candidates(c, vs, 3, pl);
-    unsigned s0 = on_planes(c, vs[0], pl, np), s1 = on_planes(c, vs[1], pl, np),
-             s2 = on_planes(c, vs[2], pl, np), all = s0 | s1 | s2;
+    int np = crease_candidates(c, vs, 3, pl);
+    unsigned s0 = crease_on_planes(c, vs[0], pl, np), s1 = crease_on_planes(c, vs[1], pl, np),
+             s2 = crease_on_planes(c, vs[2], pl, np), all = s0 | s1 | s2;
     if (!s0 || !s1 || !s2 || (s0 & s1 & s2)) return 0;
     const plane *three[3];
     int n3 = 0;
@@ -808,19 +799,20 @@ static int split_corner(crease_mesh *c, int32_t t)
         }
     if (n3 != 3) return 0;
     double x[3], mean[3], p[3][3], g[3];
-    if (!corner_point(three[0], three[1], three[2], x)) return 0;
+    if (!crease_corner(three[0], three[1], three[2], x)) return 0;
     for (int i = 0; i < 3; i++)
         mean[i] = three[0]->n[i] + three[1]->n[i] + three[2]->n[i];
     for (int q = 0; q < 3; q++)
         mesh_vertex_at(m, vs[q], p[q]);
     for (int i = 0; i < 3; i++)
         g[i] = (p[0][i] + p[1][i] + p[2][i]) / 3 - x[i];
-    if (!(dot3(g, g) < 4 * c->h * c->h) || !meets_on_surface(c, x, three, 3)) return 0;
+    if (!(dot3(g, g) < 4 * c->h * c->h) || !crease_meets_on_surface(c, x, three, 3)) return 0;
     mesh_round_to_float(x);
     unsigned sv[3] = {s0, s1, s2};
     for (int q = 0; q < 3; q++)
-        if (!half_ok(pl, sv[q] & sv[(q + 1) % 3], p[q], p[(q + 1) % 3], x, mean, c->min2)) return 0;
-    int32_t v = add_vertex(c, x);
+        if (!crease_half_ok(pl, sv[q] & sv[(q + 1) % 3], p[q], p[(q + 1) % 3], x, mean, c->min2))
+            return 0;
+    int32_t v = crease_add_vertex(c, x);
     if (v == -2) return -1;
     if (v < 0) return 0;
     uint16_t ct = m->tc && m->npal ? m->tc[t] : 0;
@@ -848,7 +840,7 @@ static unsigned fan_shared(crease_mesh *c, const int32_t ft[3], unsigned sx, con
 {
     unsigned s = ~0u;
     for (int k = 0; k < 3; k++)
-        s &= ft[k] < 0 ? sx : on_planes(c, ft[k], pl, np);
+        s &= ft[k] < 0 ? sx : crease_on_planes(c, ft[k], pl, np);
     return s;
 }
 
@@ -874,7 +866,7 @@ static int fan_triangles(crease_mesh *c, const double x[3], unsigned sx, const p
         double a[3], b[3];
         mesh_vertex_at(c->m, from[i], a);
         mesh_vertex_at(c->m, to[i], b);
-        straight[i] = (sh & (sh - 1)) && !half_ok(pl, sh, a, b, x, NULL, c->min2);
+        straight[i] = (sh & (sh - 1)) && !crease_half_ok(pl, sh, a, b, x, NULL, c->min2);
     }
     for (int i = 0; i < nr; i++) {
         if (!straight[i]) continue;
@@ -901,25 +893,17 @@ static int fan_triangles(crease_mesh *c, const double x[3], unsigned sx, const p
             ft[j][0] = p, ft[j][1] = to[i], ft[j][2] = -1;
         }
     }
-    static const double toward[5] = {0, 0.5, 0.5, 0.5, 0.9};
     for (int i = 0; i < nr; i++) {
-        double p[3][3], g[3], n[3];
+        double p[3][3];
         for (int k = 0; k < 3; k++)
             if (ft[i][k] < 0)
                 memcpy(p[k], x, sizeof p[k]);
             else
                 mesh_vertex_at(c->m, ft[i][k], p[k]);
         unsigned sh = fan_shared(c, ft[i], sx, pl, np);
-        if (!sh || !half_ok(pl, sh, p[0], p[1], p[2], NULL, c->min2)) return 0;
-        tri_normal3(p[0], p[1], p[2], n);
-        for (int q = 0; q < 5; q++) {
-            const double *e = p[q == 1 ? 0 : q == 2 ? 1 : 2];
-            for (int k = 0; k < 3; k++) {
-                g[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
-                g[k] += toward[q] * (e[k] - g[k]);
-            }
-            if (!on_surface(c, g, n)) return 0;
-        }
+        if (!sh || !crease_half_ok(pl, sh, p[0], p[1], p[2], NULL, c->min2) ||
+            !crease_lies_on_surface(c, p))
+            return 0;
     }
     return 1;
 }
@@ -1005,22 +989,22 @@ static int fan_knot(crease_mesh *c, int32_t v, const double x[3])
     for (int i = 0; i < nkt && !misfit; i++) {
         int32_t tv[3];
         double p[3][3];
-        corners_as(c, kt[i], -1, -1, tv, p);
-        misfit = !fits(c, tv, p, pl, np);
+        crease_corners_as(c, kt[i], -1, -1, tv, p);
+        misfit = !crease_fits(c, tv, p, pl, np);
     }
     if (!misfit) return 0;
-    int32_t centre = -1, *slot = place(c, x);
+    int32_t centre = -1, *slot = crease_place(c, x);
     if (!slot) return -1;
     if (*slot >= 0) {
         if (*slot >= c->nv0 || c->vmark[*slot] != mk) return 0;
         centre = *slot; /* the corner is a vertex of the knot already: it stays */
     }
-    unsigned sx = planes_near(c, x, pl, np, ON);
+    unsigned sx = crease_planes_near(c, x, pl, np, ON);
     int32_t ft[KNOT_TRIS][3]; /* the new triangles, -1 for the centre */
     if (!fan_triangles(c, x, sx, pl, np, from, to, nr, ft)) return 0;
-    if (centre < 0 && (centre = add_vertex(c, x)) < 0) return centre == -2 ? -1 : 0;
+    if (centre < 0 && (centre = crease_add_vertex(c, x)) < 0) return centre == -2 ? -1 : 0;
     for (int i = 0; i < nkv; i++)
-        if (kv[i] != centre && leave_place(c, kv[i]) != 0) return -1;
+        if (kv[i] != centre && crease_leave_place(c, kv[i]) != 0) return -1;
     for (int i = 0; i < nr; i++) {
         uint16_t col = m->tc && m->npal ? m->tc[rt[i]] : 0;
         int32_t tv3[3];
@@ -1066,13 +1050,13 @@ static int untie_corner(crease_mesh *c, int32_t v)
         }
     }
     const plane *pl[MAX_PLANES];
-    int np = candidates(c, ring, n, pl), misfit = 0;
+    int np = crease_candidates(c, ring, n, pl), misfit = 0;
     if (np < 2) return 0;
     for (int32_t f = c->start[v]; f < c->start[v + 1] && !misfit; f++) {
         int32_t tv[3];
         double q[3][3];
-        corners_as(c, c->fan[f], -1, -1, tv, q);
-        misfit = !fits(c, tv, q, pl, np);
+        crease_corners_as(c, c->fan[f], -1, -1, tv, q);
+        misfit = !crease_fits(c, tv, q, pl, np);
     }
     if (!misfit) return 0;
     double p[3], tried[16][3];
@@ -1086,7 +1070,7 @@ static int untie_corner(crease_mesh *c, int32_t v)
         for (int j = i + 1; j < np; j++)
             for (int k = j + 1; k < np; k++) {
                 double x[3], d[3];
-                if (!corner_point(pl[i], pl[j], pl[k], x)) continue;
+                if (!crease_corner(pl[i], pl[j], pl[k], x)) continue;
                 sub3(x, p, d);
                 mesh_round_to_float(x);
                 if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) continue;
@@ -1110,8 +1094,8 @@ static int untie_corner(crease_mesh *c, int32_t v)
     unsigned under = 0;
     for (int32_t f = c->start[v]; f < c->start[v + 1]; f++) {
         const int32_t *tv = &m->t[3 * (size_t)c->fan[f]];
-        under |=
-            on_planes(c, tv[0], pl, np) & on_planes(c, tv[1], pl, np) & on_planes(c, tv[2], pl, np);
+        under |= crease_on_planes(c, tv[0], pl, np) & crease_on_planes(c, tv[1], pl, np) &
+                 crease_on_planes(c, tv[2], pl, np);
     }
     for (int i = 0; i < np; i++)
         for (int j = i + 1; j < np; j++) {
@@ -1261,7 +1245,7 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
             scale_at(c, m->t[3 * t]);
             if ((c->tp[t] = face_under(c, (int32_t)t)) == -3) goto done;
         }
-    int knots = 0;
+    int knots = 0, caps = 0;
     for (int32_t v = 0; v < (int32_t)nv; v++) {
         int try = is_hot(c, v) && !knot_refused(c, v);
         if (try) scale_at(c, v);
@@ -1280,6 +1264,18 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
         *split += r;
     }
     c->nknown = (size_t)m->nv; /* the vertices stay put from here */
+    /* caps next: the rules below would pick at them (and where some were
+     * unzipped, those rules wait for the next pass, as after knots) */
+    for (size_t t = 0; t < nt; t++) {
+        int hot = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
+        if (hot) scale_at(c, m->t[3 * t]);
+        int r = hot ? crease_unzip_cap(c, (int32_t)t) : 0;
+        if (r < 0) goto done;
+        caps += r;
+    }
+    *split += caps;
+    *knotted = caps > 0; /* (a pass of the rules is yet to come) */
+    if (caps) goto next;
     if (each_hot_edge(c, nt, collapse_knot, split) != 0 ||
         each_hot_edge(c, nt, flip_edge, split) != 0 || each_hot_edge(c, nt, split_edge, split) != 0)
         goto done;
@@ -1296,7 +1292,7 @@ next:
     if (grow_to((void **)&c->tp, &c->tp_cap, (size_t)m->nt, sizeof *c->tp, 0xff) != 0 ||
         grow_to((void **)&c->hot, &c->hot_cap, (size_t)m->nv, 1, 0) != 0)
         goto done;
-    if (!knots) memset(c->hot, 0, (size_t)m->nv);
+    if (!knots && !caps) memset(c->hot, 0, (size_t)m->nv);
     for (int32_t t = 0; t < m->nt; t++) {
         int32_t *tv = &m->t[3 * (size_t)t];
         if ((size_t)t < nt && !c->used[t]) continue;
@@ -1341,7 +1337,7 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
     for (size_t k = 0; k < 3 * (size_t)m->nt && rc == 0; k++) {
         double p[3];
         mesh_vertex_at(m, m->t[k], p);
-        int32_t *slot = place(&c, p);
+        int32_t *slot = crease_place(&c, p);
         if (!slot)
             rc = -1;
         else if (*slot < 0)
@@ -1356,6 +1352,7 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
         knots += knotted;
         rules += !knotted;
     }
+    free(c.capk);
     free(c.pl);
     free(c.by_patch.key);
     free(c.by_patch.val);

@@ -67,9 +67,11 @@ tolerance_of() {
 }
 
 # the models whose meshes are within their default tolerance both ways
-within_d="cube_sphere_cylinders faceted_prisms hull_booleans import_amf_3mf minkowski_solids"
+within_d="acute_tips cube_sphere_cylinders faceted_prisms hull_booleans import_amf_3mf minkowski_solids"
 within_d="$within_d knot_flips notched_box pinched_cells render_mode rounded_cube sphere star_prism"
 within_d="$within_d torus twist_ties"
+# the models that warn of walls thinner than the grid: their acute tips
+tips="acute_tips"
 # the models whose exact surface alone is within it (their meshes still
 # stray beyond it at folds about rims and corners; hull_extrusions' was
 # 1.002 D off at one sample, where two of a 24-gon's facets meet at 15°
@@ -94,6 +96,12 @@ for f in "$models"/*.scad; do
         continue
     fi
     t2=$(now)
+    case " $tips " in *" $name "*)
+        # its tips are walls thinner than the grid near their edge, as said
+        grep -v "warning: walls thinner than the grid spacing" "$tmp/$name.err" >"$tmp/$name.err2"
+        mv "$tmp/$name.err2" "$tmp/$name.err"
+        ;;
+    esac
     if [ -s "$tmp/$name.err" ]; then
         echo "FAIL $name: rayscad warned"
         cat "$tmp/$name.err"
@@ -115,7 +123,9 @@ for f in "$models"/*.scad; do
     esac
     case " $within_d " in *" $name "*)
         # mesh and exact surface within the default tolerance of each other
-        # (faceted_prisms: every edge between two facets, however slight,
+        # (acute_tips: two stars' 20° to 24° points, up to 39 D short
+        # before src/mesh/crease_cap.c unzipped the contour's caps across
+        # them; faceted_prisms: every edge between two facets, however slight,
         # followed, where the contour smoothed those under 30° over: 2.3 D;
         # rounded_cube: its rims, 1.36 D before a loop whose vertex could not
         # go onto its sharp edge was cut along it; star_prism: its tips, cut
