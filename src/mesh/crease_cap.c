@@ -198,9 +198,10 @@ static int clip_ears(const crease_mesh *c, crease_cap *k, int *poly, int n, cons
     int *idx = k->idx;
     for (int i = 0; i < n; i++)
         idx[i] = i;
-    while (n > 3) {
+    for (int from = 0; n > 3;) { /* the search resumes where the last ear was */
         int ear = -1;
-        for (int i = 0; i < n && ear < 0; i++) {
+        for (int s = 0; s < n && ear < 0; s++) {
+            int i = (from + s) % n;
             const double *a = q[idx[(i + n - 1) % n]], *b = q[idx[i]], *d = q[idx[(i + 1) % n]];
             double turn = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
             if (!(turn > 0)) continue;
@@ -221,6 +222,7 @@ static int clip_ears(const crease_mesh *c, crease_cap *k, int *poly, int n, cons
             return 0;
         memmove(&idx[ear], &idx[ear + 1], (size_t)(n - ear - 1) * sizeof *idx);
         n--;
+        from = ear > 0 ? ear - 1 : 0;
     }
     return n < 3 || cap_triangle(c, k, poly[idx[0]], poly[idx[1]], poly[idx[2]], pl);
 }
