@@ -42,10 +42,9 @@
  *     it, over the surface (a pass that fans knots leaves the rules above
  *     to the next; a vertex whose knots were refused is not tried again
  *     until its triangles change);
- *   - next after the vertices snap (before the edge rules would pick at
- *     it), a cap the contour left across an acute crease, short of it, is
- *     unzipped into strips on the crease's two faces (crease_cap.c; a pass
- *     that unzips caps, too, leaves the other rules to the next).
+ *   - and last, where the rules change nothing more, a cap the contour
+ *     left across an acute crease, short of it, is unzipped into strips on
+ *     the crease's two faces (crease_cap.c), and the rules run again.
  * Every such point must be one a ray through it finds on the surface (else
  * the planes do not meet there: a face lies between them; crease_meets_on_surface),
  * and every change must leave triangles with area that face like
@@ -1212,11 +1211,13 @@ static int each_hot_edge(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int
 
 /* One pass over what is hot: knots fanned from their corners, and where
  * there were none (the other rules read the fans as the pass began, and a
- * fan's new corner has none), the vertices snapped, knots collapsed, then
- * edges flipped and split, then corners; *split counts the changes,
- * *knotted is set when knots were fanned.  The corners of what changed
- * are hot for the next (and after knots, what is hot now).  0 or -1. */
-static int pass_once(crease_mesh *c, int *split, int *knotted)
+ * fan's new corner has none), the vertices snapped, knots collapsed,
+ * edges flipped and split, then corners; or, with caps_only, caps across
+ * acute creases unzipped about every bend; *split counts the changes,
+ * *kind is 1 when knots were fanned, 2 for caps, else 0.  The corners of
+ * what changed are hot for the next (and after knots or caps, what is hot
+ * now).  0 or -1. */
+static int pass_once(crease_mesh *c, int caps_only, int *split, int *kind)
 {
     mesh *m = c->m;
     size_t nt = (size_t)m->nt, nv = (size_t)m->nv;
@@ -1238,7 +1239,9 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
         mesh_half_twins(m, 0, c->opp) != 0 || mesh_vertex_fans(m, 0, &c->start, &c->fan) != 0)
         goto done;
     /* only what is about a bend matters: elsewhere the triangles are flat
-     * already, or the faces' creases are slighter than COS_APART */
+     * already, or the faces' creases are slighter than COS_APART (a pass
+     * for caps looks at every bend) */
+    if (caps_only) memset(c->hot, 1, c->hot_cap);
     if (mark_bent(c, nt) != 0) goto done;
     for (size_t t = 0; t < nt; t++)
         if (c->tp[t] == -2 && hot_triangle(c, (int32_t)t)) {
@@ -1246,6 +1249,19 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
             if ((c->tp[t] = face_under(c, (int32_t)t)) == -3) goto done;
         }
     int knots = 0, caps = 0;
+    if (caps_only) {
+        c->nknown = (size_t)m->nv; /* the vertices stay put */
+        for (size_t t = 0; t < nt; t++) {
+            int hot = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
+            if (hot) scale_at(c, m->t[3 * t]);
+            int r = hot ? crease_unzip_cap(c, (int32_t)t) : 0;
+            if (r < 0) goto done;
+            caps += r;
+        }
+        *split += caps;
+        *kind = 2;
+        goto next;
+    }
     for (int32_t v = 0; v < (int32_t)nv; v++) {
         int try = is_hot(c, v) && !knot_refused(c, v);
         if (try) scale_at(c, v);
@@ -1255,7 +1271,7 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
         knots += r;
     }
     *split += knots;
-    *knotted = knots > 0;
+    *kind = knots > 0;
     if (knots) goto next; /* the other rules next pass, on the fans as they are then */
     for (int32_t v = 0; v < m->nv; v++) {
         if (is_hot(c, v)) scale_at(c, v);
@@ -1264,18 +1280,6 @@ static int pass_once(crease_mesh *c, int *split, int *knotted)
         *split += r;
     }
     c->nknown = (size_t)m->nv; /* the vertices stay put from here */
-    /* caps next: the rules below would pick at them (and where some were
-     * unzipped, those rules wait for the next pass, as after knots) */
-    for (size_t t = 0; t < nt; t++) {
-        int hot = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
-        if (hot) scale_at(c, m->t[3 * t]);
-        int r = hot ? crease_unzip_cap(c, (int32_t)t) : 0;
-        if (r < 0) goto done;
-        caps += r;
-    }
-    *split += caps;
-    *knotted = caps > 0; /* (a pass of the rules is yet to come) */
-    if (caps) goto next;
     if (each_hot_edge(c, nt, collapse_knot, split) != 0 ||
         each_hot_edge(c, nt, flip_edge, split) != 0 || each_hot_edge(c, nt, split_edge, split) != 0)
         goto done;
@@ -1343,14 +1347,26 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits)
         else if (*slot < 0)
             *slot = m->t[k];
     }
-    /* PASSES of the rules, and as many more that fan knots */
-    for (int rules = 0, knots = 0; rules < PASSES && knots < PASSES && rc == 0;) {
-        int split = 0, knotted = 0;
-        rc = pass_once(&c, &split, &knotted);
+    /* PASSES of the rules, and as many more that fan knots; where they
+     * change nothing more (or may not), a pass that unzips caps across
+     * acute creases (crease_cap.c: the last resort, for what the rules
+     * leave), and the rules again after it, PASSES such at most */
+    int passes[3] = {0, 0, 0}, caps_next = 0;
+    while (rc == 0) {
+        int spent = passes[0] >= PASSES || passes[1] >= PASSES, caps_only = caps_next || spent;
+        if (caps_only && passes[2] >= PASSES) break;
+        int split = 0, kind = 0;
+        rc = pass_once(&c, caps_only, &split, &kind);
         *splits += split;
-        if (!split) break;
-        knots += knotted;
-        rules += !knotted;
+        if (caps_only) {
+            passes[2]++;
+            if (!split || spent) break;
+            caps_next = 0;
+        } else if (!split) {
+            caps_next = 1;
+        } else {
+            passes[kind]++;
+        }
     }
     free(c.capk);
     free(c.pl);
