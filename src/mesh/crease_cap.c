@@ -70,7 +70,6 @@ typedef struct crease_cap {
     int loop[CAP_RIM + 2], nloop; /* the rim, as points, in the mesh's order */
     int32_t outer[CAP_RIM + 2];   /* the triangle across the rim's edge from loop[i] */
     int tri[2 * CAP_POINTS][3], ntri;
-    const plane *tri_pl[2 * CAP_POINTS];
     int32_t split[2], split_tri[2][3]; /* triangles across the ends, split at a corner */
     int nsplit;
     int32_t moved[2]; /* rim vertices moved into a corner, at their points' x */
@@ -174,7 +173,7 @@ static int cap_triangle(const crease_mesh *c, crease_cap *k, int p, int q, int r
         !crease_half_ok(one, 1, k->x[p], k->x[q], k->x[r], NULL, c->min2))
         return 0;
     k->tri[k->ntri][0] = p, k->tri[k->ntri][1] = q, k->tri[k->ntri][2] = r;
-    k->tri_pl[k->ntri++] = pl;
+    k->ntri++;
     return 1;
 }
 
