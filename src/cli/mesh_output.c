@@ -24,7 +24,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 static void print_vec(const char *fmt, const double v[3])
 {
@@ -115,17 +114,10 @@ static void print_measure(const cli_options *o, const rayscad_measurement *m, ho
  * 3 s there). */
 #define MEASURE_MAX_SECONDS 10.0
 
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 /* The measurement's cancel hook: past the deadline *ud. */
 static int past(void *ud)
 {
-    return now_s() > *(const double *)ud;
+    return cli_now_s() > *(const double *)ud;
 }
 
 /* --measure without --mesh-size (or with --measure-tolerance): exactly,
@@ -140,7 +132,7 @@ static int measure_exact(const cli_options *o, const rayscad_scene *scene, long 
     if (o->measure_tolerance > 0) mo.tolerance = o->measure_tolerance;
     mo.max_rays = max_rays;
     mo.max_intervals = o->max_intervals;
-    double deadline = now_s() + MEASURE_MAX_SECONDS;
+    double deadline = cli_now_s() + MEASURE_MAX_SECONDS;
     mo.cancelled = past;
     mo.cancel_ud = &deadline;
     char err[512];

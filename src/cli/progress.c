@@ -8,6 +8,13 @@
 #include <string.h>
 #include <unistd.h>
 
+double cli_now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 void progress_start(progress *p, const char *label)
 {
     p->label = label;

@@ -32,4 +32,7 @@ void progress_finish(progress *p);
  * strings). */
 void progress_phase(void *ud, const char *phase, double done);
 
+/* Seconds on the monotonic clock (for spans of time: deadlines, timings). */
+double cli_now_s(void);
+
 #endif

@@ -32,6 +32,7 @@
 #include <time.h>
 
 #include "accumulate.h"
+#include "progress.h"
 #include "viewer_text.h"
 #include "watch.h"
 
@@ -94,13 +95,6 @@ typedef struct viewer {
     cli_accum accum;     /* the passes' mean */
     double ms_per_pixel; /* of the last reduced frame */
 } viewer;
-
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static void wake(viewer *V)
 {
@@ -192,7 +186,7 @@ static void *render_main(void *arg)
             V->level = 0;
             V->settled = 0;
         }
-        int moving = now_s() - V->moved_at < REST_MS / 1000.0;
+        int moving = cli_now_s() - V->moved_at < REST_MS / 1000.0;
         int next = moving ? 1 : V->level < 2 ? 2 : V->level + 1;
         int traced = V->o->optics.path_trace > 0;
         int fixed = traced ? 2 : MAX_SAMPLES + 1; /* the last level drawn once; then passes */
@@ -251,11 +245,11 @@ static void *render_main(void *arg)
             }
         }
         rayscad_camera cam;
-        double t0 = now_s();
+        double t0 = cli_now_s();
         int ok = need <= cap &&
                  rayscad_camera_frame(scene, &rv, w, h, &cam, NULL, 0) == RAYSCAD_OK &&
                  rayscad_render(scene, &cam, &ro, buf, NULL, 0) == RAYSCAD_OK;
-        double ms = 1000 * (now_s() - t0);
+        double ms = 1000 * (cli_now_s() - t0);
         /* the passes: their mean, from the last fixed level's picture on */
         double err = INFINITY;
         if (ok && next >= fixed) {
@@ -323,11 +317,11 @@ static void *load_main(void *arg)
         memset(&file, 0, sizeof file);
         char **files = NULL, err[512] = "";
         int nfiles = 0;
-        double t0 = now_s();
+        double t0 = cli_now_s();
         rayscad_status st =
             V->load(V->load_ud, v.r, v.t, v.d, &scene, &file, &files, &nfiles, err, sizeof err);
         if (V->o->stats)
-            fprintf(stderr, "loaded in %.1f ms%s\n", 1000 * (now_s() - t0),
+            fprintf(stderr, "loaded in %.1f ms%s\n", 1000 * (cli_now_s() - t0),
                     st == RAYSCAD_OK ? "" : " (failed)");
         if (watch) cli_watch_set(watch, (const char *const *)files, nfiles);
         free_files(files, nfiles);
@@ -443,7 +437,7 @@ static void present(SDL_Renderer *ren, SDL_Texture **tex, int *tw, int *th, view
 
 static void changed(viewer *V)
 {
-    V->moved_at = now_s();
+    V->moved_at = cli_now_s();
     atomic_fetch_add(&V->gen, 1);
     pthread_cond_broadcast(&V->cv);
 }
@@ -751,7 +745,7 @@ int cli_viewer_run(const cli_options *o, cli_viewer_load load, void *ud)
                             "frame %dx%d samples %d pass %d: %.1f ms, %.0f ms after the last "
                             "input, at %.3f\n",
                             V.iw, V.ih, V.isamples * V.isamples, V.ipass, V.ims,
-                            1000 * (now_s() - V.moved_at),
+                            1000 * (cli_now_s() - V.moved_at),
                             (double)t.tv_sec + 1e-9 * (double)t.tv_nsec);
                 }
             }
