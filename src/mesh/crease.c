@@ -1193,6 +1193,22 @@ static void scale_at(crease_mesh *c, int32_t v)
     c->min2 = 1e-10 * c->h * c->h * c->h * c->h;
 }
 
+/* Apply op to each of the first nt triangles that has a hot corner and has
+ * not been emptied this pass, counting its changes in *count; 0, or -1
+ * when op ran out of memory. */
+static int each_hot_triangle(crease_mesh *c, size_t nt, int (*op)(crease_mesh *, int32_t),
+                             int *count)
+{
+    for (size_t t = 0; t < nt; t++) {
+        int hot = c->m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
+        if (hot) scale_at(c, c->m->t[3 * t]);
+        int r = hot ? op(c, (int32_t)t) : 0;
+        if (r < 0) return -1;
+        *count += r;
+    }
+    return 0;
+}
+
 /* Apply op to every half-edge of the first nt triangles that has a hot
  * corner and has not been emptied this pass, counting its changes in
  * *split; 0, or -1 when op ran out of memory. */
@@ -1251,13 +1267,7 @@ static int pass_once(crease_mesh *c, int caps_only, int *split, int *kind)
     int knots = 0, caps = 0;
     if (caps_only) {
         c->nknown = (size_t)m->nv; /* the vertices stay put */
-        for (size_t t = 0; t < nt; t++) {
-            int hot = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
-            if (hot) scale_at(c, m->t[3 * t]);
-            int r = hot ? crease_unzip_cap(c, (int32_t)t) : 0;
-            if (r < 0) goto done;
-            caps += r;
-        }
+        if (each_hot_triangle(c, nt, crease_unzip_cap, &caps) != 0) goto done;
         *split += caps;
         *kind = 2;
         goto next;
@@ -1283,13 +1293,7 @@ static int pass_once(crease_mesh *c, int caps_only, int *split, int *kind)
     if (each_hot_edge(c, nt, collapse_knot, split) != 0 ||
         each_hot_edge(c, nt, flip_edge, split) != 0 || each_hot_edge(c, nt, split_edge, split) != 0)
         goto done;
-    for (size_t t = 0; t < nt; t++) {
-        int hot = m->t[3 * t] >= 0 && hot_triangle(c, (int32_t)t);
-        if (hot) scale_at(c, m->t[3 * t]);
-        int r = hot ? split_corner(c, (int32_t)t) : 0;
-        if (r < 0) goto done;
-        *split += r;
-    }
+    if (each_hot_triangle(c, nt, split_corner, split) != 0) goto done;
 next:
     /* what is hot next: the corners of what changed, and what was added
      * (and, after knots only, what is hot now) */

@@ -45,7 +45,7 @@ typedef struct crease_mesh {
     uint8_t *known;          /* on_a_plane's answers this pass: 0 not asked, 1 no, 2 yes */
     size_t nknown;           /* of known: 0 while vertices still move */
     int gone;                /* triangles emptied this pass */
-    struct crease_cap *capk; /* unzip_cap's (large) cap */
+    struct crease_cap *capk; /* crease_unzip_cap's (large) cap */
 } crease_mesh;
 
 /* A vertex at x (float), not where one is; its number, -1 when one is

@@ -94,14 +94,20 @@ static unsigned cap_side(const crease_mesh *c, const crease_cap *k, const double
     return crease_planes_near(c, x, k->ab, 2, ON);
 }
 
+/* The crease's parameter at x (along A x B from its point p0). */
+static double along(const double p0[3], const double e[3], const double x[3])
+{
+    double d[3];
+    sub3(x, p0, d);
+    return dot3(d, e) / dot3(e, e);
+}
+
 /* How far x lies from the cap's crease, squared. */
 static double off_crease2(const crease_cap *k, const double x[3])
 {
-    double d[3], u;
-    sub3(x, k->p0, d);
-    u = dot3(d, k->e) / dot3(k->e, k->e);
+    double d[3], u = along(k->p0, k->e, x);
     for (int q = 0; q < 3; q++)
-        d[q] -= u * k->e[q];
+        d[q] = x[q] - k->p0[q] - u * k->e[q];
     return dot3(d, d);
 }
 
@@ -138,14 +144,6 @@ static int cap_like(crease_mesh *c, const crease_cap *k, int32_t t)
     if (all) return k->wide;
     const plane *pl[MAX_PLANES];
     return !crease_fits(c, tv, p, pl, crease_candidates(c, tv, 3, pl));
-}
-
-/* The crease's parameter at x (along A x B from its point p0). */
-static double along(const double p0[3], const double e[3], const double x[3])
-{
-    double d[3];
-    sub3(x, p0, d);
-    return dot3(d, e) / dot3(e, e);
 }
 
 /* A new point of the cap at x (float), on the surface where planes pl (n)
@@ -279,11 +277,11 @@ static int cap_end(crease_mesh *c, crease_cap *k, int i)
     if (!three[2] || !crease_corner(three[0], three[1], three[2], x)) return 0;
     sub3(x, k->x[k->loop[i]], d);
     if (!(dot3(d, d) < KNOT_R * KNOT_R * c->h * c->h)) return 0;
+    double r[3] = {x[0], x[1], x[2]};
+    mesh_round_to_float(r);
     for (int e = 0; e < 2; e++) {
         int j = (i + e) % k->nloop;
         int32_t v = e ? b : a;
-        double r[3] = {x[0], x[1], x[2]};
-        mesh_round_to_float(r);
         if (!crease_planes_near(c, k->x[k->loop[j]], &three[2], 1, ON) ||
             !crease_meets_on_surface(c, r, three, 3) || !may_move(c, k, v, r))
             continue;
@@ -441,10 +439,14 @@ static int unzip_pair(crease_mesh *c, int32_t t0, const plane *A, const plane *B
     /* its rim: one loop, the cap a disc */
     int32_t *from = k->from, *to = k->to, *out = k->out;
     int nr = 0;
+    double deep = 0; /* how far from the crease it reaches, squared */
     for (int i = 0; i < nkt; i++)
         for (int q = 0; q < 3; q++) {
             const int32_t *tv = &m->t[3 * (size_t)kt[i]];
             if (c->vmark[tv[q]] != mk) {
+                double x[3];
+                mesh_vertex_at(m, tv[q], x);
+                deep = fmax(deep, off_crease2(k, x));
                 c->vmark[tv[q]] = mk;
                 nverts++;
             }
@@ -456,13 +458,6 @@ static int unzip_pair(crease_mesh *c, int32_t t0, const plane *A, const plane *B
     if (nr < 3 || nverts - (3 * nkt + nr) / 2 + nkt != 1) return 0;
     /* a cap that reaches no farther than half a cell from the crease is
      * the chord rules' (a quad's diagonal across it, flipped) */
-    double deep = 0;
-    for (int i = 0; i < nkt; i++)
-        for (int q = 0; q < 3; q++) {
-            double x[3];
-            mesh_vertex_at(m, m->t[3 * (size_t)kt[i] + q], x);
-            deep = fmax(deep, off_crease2(k, x));
-        }
     if (!(deep > 0.25 * c->h * c->h)) return 0;
     for (int i = 0, cur = 0; i < nr; i++) {
         int next = -1;
