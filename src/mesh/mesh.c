@@ -73,39 +73,41 @@ int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan)
 
 int mesh_half_twins(const mesh *m, int32_t t0, int32_t *opp)
 {
-    size_t nt = (size_t)(m->nt > t0 ? m->nt - t0 : 0), cap = 16;
-    while (cap < 6 * nt)
-        cap *= 2;
-    uint64_t *key = calloc(cap, sizeof *key);
-    int32_t *at = malloc(cap * sizeof *at);
-    if (!key || !at) {
-        free(key);
-        free(at);
+    /* Half-edge x (a → b) pairs with the last earlier b → a that found
+     * no twin when it came, if that is still unpaired: the twins of a
+     * manifold mesh, and a fixed choice where more than two triangles share
+     * an edge.  The candidates are among the triangles about a (its fan,
+     * in the order the triangles were made: a map of the edges visited its
+     * slots at random, most of the time this took). */
+    size_t nt = (size_t)(m->nt > t0 ? m->nt - t0 : 0);
+    int32_t *start, *fan;
+    uint8_t *waits = calloc(3 * nt + 1, 1); /* found no twin when it came */
+    if (!waits || mesh_vertex_fans(m, t0, &start, &fan) != 0) {
+        free(waits);
         return -1;
     }
     for (size_t x = 0; x < 3 * nt; x++) {
-        opp[x] = -1;
-        const int32_t *tv = &m->t[3 * ((size_t)t0 + x / 3)];
-        int32_t a = tv[x % 3], b = tv[(x % 3 + 1) % 3];
-        /* the twin's key is this half-edge's reversed */
-        uint64_t mine = (uint64_t)(a + 1) << 32 | (uint64_t)(b + 1),
-                 want = (uint64_t)(b + 1) << 32 | (uint64_t)(a + 1);
-        size_t p = mesh_hash_mix(want) & (cap - 1);
-        while (key[p] && key[p] != want)
-            p = (p + 1) & (cap - 1);
-        if (key[p] == want && opp[at[p]] < 0) {
-            opp[x] = at[p];
-            opp[at[p]] = (int32_t)x;
-            continue;
+        const int32_t *tx = &m->t[3 * ((size_t)t0 + x / 3)];
+        int32_t a = tx[x % 3], b = tx[(x % 3 + 1) % 3], best = -1;
+        for (int32_t f = start[a]; f < start[a + 1]; f++) {
+            const int32_t *ty = &m->t[3 * (size_t)fan[f]];
+            for (int k = 0; k < 3; k++) {
+                int32_t y = 3 * (fan[f] - t0) + k;
+                if (ty[k] == b && ty[(k + 1) % 3] == a && (size_t)y < x && waits[y] && y > best)
+                    best = y;
+            }
         }
-        p = mesh_hash_mix(mine) & (cap - 1);
-        while (key[p] && key[p] != mine)
-            p = (p + 1) & (cap - 1);
-        key[p] = mine;
-        at[p] = (int32_t)x;
+        opp[x] = -1;
+        if (best >= 0 && opp[best] < 0) {
+            opp[x] = best;
+            opp[best] = (int32_t)x;
+        } else {
+            waits[x] = 1;
+        }
     }
-    free(key);
-    free(at);
+    free(start);
+    free(fan);
+    free(waits);
     return 0;
 }
 

@@ -43,8 +43,9 @@
 
 typedef struct quad quad;
 typedef struct fold_mesh fold_mesh;
-/* Whether the edge of quad q should be flipped, to normals n3 and n4. */
-typedef int (*flip_rule)(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3]);
+/* Whether the edge of quad q should be flipped; the flipped triangles'
+ * unit normals into n3 and n4 (flip_normals) where it should. */
+typedef int (*flip_rule)(const fold_mesh *f, const quad *q, double n3[3], double n4[3]);
 
 struct fold_mesh {
     mesh *m;
@@ -144,12 +145,21 @@ static int quad_of(const fold_mesh *f, int32_t x, quad *q)
     return q->c != q->d;
 }
 
+/* The unit normals of the quad's triangles after a flip, (c, a, d) and
+ * (d, b, c), into n3 and n4; 0 when one has no area. */
+static int flip_normals(const fold_mesh *f, const quad *q, double n3[3], double n4[3])
+{
+    return unit_normal(f->m, q->c, q->a, q->d, f->min2, n3) &&
+           unit_normal(f->m, q->d, q->b, q->c, f->min2, n4);
+}
+
 /* Whether the quad's triangles are folded and a flip, to normals n3 and
  * n4, leaves fewer folded edges among the five it touches. */
-static int fold_wanted(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3])
+static int fold_wanted(const fold_mesh *f, const quad *q, double n3[3], double n4[3])
 {
     const double *n1 = f->n[q->t], *n2 = f->n[q->u];
-    if (!f->has[q->t] || !f->has[q->u] || !(dot3(n1, n2) < COS_FOLD)) return 0;
+    if (!f->has[q->t] || !f->has[q->u] || !(dot3(n1, n2) < COS_FOLD) || !flip_normals(f, q, n3, n4))
+        return 0;
     int before = 1 + folded_across(f, q->bc, n1) + folded_across(f, q->ca, n1) +
                  folded_across(f, q->ad, n2) + folded_across(f, q->db, n2);
     /* after: (c, a, d) holds c → a and a → d, (d, b, c) holds d → b and b → c */
@@ -210,12 +220,14 @@ static int smooth_across(const fold_mesh *f, int32_t x, const double n[3])
  * than 20° against each other, so ab is no sharp edge — and the flip, to
  * normals n3 and n4, leaves two triangles that turn less than that against
  * u and are no slivers themselves. */
-static int sliver_wanted(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3])
+static int sliver_wanted(const fold_mesh *f, const quad *q, double n3[3], double n4[3])
 {
     const mesh *m = f->m;
     const double *n2 = f->n[q->u];
     double s1, s3, s4;
-    if (!f->has[q->u] || !shape_of(m, q->a, q->b, q->c, &s1) || s1 >= SLIVER) return 0;
+    if (!f->has[q->u] || !shape_of(m, q->a, q->b, q->c, &s1) || s1 >= SLIVER ||
+        !flip_normals(f, q, n3, n4))
+        return 0;
     if (f->has[q->t] && dot3(n3, n4) <= dot3(f->n[q->t], n2)) return 0;
     if (!smooth_across(f, q->bc, n2) || !smooth_across(f, q->ca, n2)) return 0;
     if (dot3(n3, n2) < COS_SMOOTH || dot3(n4, n2) < COS_SMOOTH) return 0;
@@ -239,10 +251,7 @@ static int try_flip(fold_mesh *f, int32_t x)
     quad q;
     if (!quad_of(f, x, &q)) return 0;
     double n3[3], n4[3];
-    if (!unit_normal(f->m, q.c, q.a, q.d, f->min2, n3) ||
-        !unit_normal(f->m, q.d, q.b, q.c, f->min2, n4) || !f->wanted(f, &q, n3, n4) ||
-        has_edge(f, q.ca, q.d))
-        return 0;
+    if (!f->wanted(f, &q, n3, n4) || has_edge(f, q.ca, q.d)) return 0;
     int32_t oca = f->opp[q.ca], oad = f->opp[q.ad], odb = f->opp[q.db], obc = f->opp[q.bc];
     int32_t *tv = corners(f, q.t), *uv = corners(f, q.u);
     tv[0] = q.c, tv[1] = q.a, tv[2] = q.d; /* c → a, a → d, d → c */
