@@ -675,12 +675,8 @@ static int ray_eval(void *ctx, sample *sm)
 /* Hints for the line at v from lines a and b of the history (a pair of
  * the same make-up: each piece's ends carried to v along the straight line
  * through theirs, which is where they are on plane faces; else the middles
- * of a's pieces) appended to h[*n], up to cap: the pieces' middles and,
- * with pair > 0 (a and b either side of v), two samples pair either side
- * of each foreseen event, whose bracket then starts that narrow (a fifth
- * fewer rays on the bench part). */
-static void hints_from(const line *a, const line *b, double v, double pair, double *h, int *n,
-                       int cap)
+ * of a's pieces) appended to h[*n], up to cap: the pieces' middles. */
+static void hints_from(const line *a, const line *b, double v, double *h, int *n, int cap)
 {
     int same = b && b->seq == a->seq && b->np == a->np && b->v != a->v;
     for (int k = 0; k < a->np && *n < cap; k++) {
@@ -691,10 +687,87 @@ static void hints_from(const line *a, const line *b, double v, double pair, doub
             x1 += s * (b->p[k].x1 - x1);
         }
         if (x1 > x0) h[(*n)++] = 0.5 * (x0 + x1);
-        if (same && pair > 0 && k + 1 < a->np && *n + 2 <= cap && x1 - pair > x0) {
-            h[(*n)++] = x1 - pair;
-            h[(*n)++] = x1 + pair;
+    }
+}
+
+/* Where line l's pieces change (x) and what changes there (the set of
+ * faces after less the set before: the same event on every line that has
+ * it, whatever else the ray crosses), and which of the line's events with
+ * that change it is, counted along the line (occ) out of how many (of). */
+typedef struct event_at {
+    double x;
+    uint64_t key;
+    int occ, of;
+} event_at;
+
+static int line_events(const line *l, event_at *e, int cap)
+{
+    int n = 0;
+    for (int k = 0; k + 1 < l->np && n < cap; k++)
+        e[n++] = (event_at){l->p[k].x1, l->p[k + 1].set - l->p[k].set, 0, 1};
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++)
+            if (e[j].key == e[i].key) {
+                e[j].occ++;
+                e[i].of++;
+                e[j].of++;
+            }
+    return n;
+}
+
+/* Line l's event like e (the same change, as many of them, the same one
+ * of those counted along the line): its x, NAN where l has none. */
+static double event_like(const event_at *le, int ln, const event_at *e)
+{
+    for (int i = 0; i < ln; i++)
+        if (le[i].key == e->key && le[i].occ == e->occ) return le[i].of == e->of ? le[i].x : NAN;
+    return NAN;
+}
+
+#define LINE_EVENTS 256
+
+/* Hints for the line at v from the events of the lines about it (ls[0..3]:
+ * two below v and two above, nearest in the middle; NULL where none): each
+ * event of the nearest line below (ls[1]) that the nearest above has too,
+ * its place at v interpolated through every line that has it (Neville), and
+ * two samples either side of it, the larger of pair and three times the
+ * interpolation's own error estimate (the last term it added) apart.  Lines
+ * whose make-up differs (an event between them that appears, ends or
+ * passes another) share their other events: matched one by one, those are
+ * foreseen too (a quick line bracketing an event across the lines had
+ * none, and its every event started from the first samples). */
+static void event_hints(const line *const ls[4], double v, double pair, double span, double *h,
+                        int *n, int cap)
+{
+    static _Thread_local event_at ev[4][LINE_EVENTS];
+    int ne[4] = {0, 0, 0, 0};
+    if (!ls[1] || !ls[2]) return;
+    for (int i = 0; i < 4; i++)
+        if (ls[i]) ne[i] = line_events(ls[i], ev[i], LINE_EVENTS);
+    for (int k = 0; k < ne[1] && *n + 2 <= cap; k++) {
+        double vs[4], xs[4];
+        int m = 0, both = 1; /* the nearest either side both have it */
+        for (int i = 0; i < 4; i++) {
+            double x = ls[i] ? event_like(ev[i], ne[i], &ev[1][k]) : NAN;
+            if (isnan(x)) {
+                both &= i == 0 || i == 3;
+                continue;
+            }
+            vs[m] = ls[i]->v;
+            xs[m++] = x;
         }
+        if (!both) continue;
+        /* Neville: xs[0] becomes the polynomial through all m at v */
+        double err = 0;
+        for (int d = 1; d < m; d++) {
+            for (int i = 0; i + d < m; i++)
+                xs[i] = ((v - vs[i + d]) * xs[i] + (vs[i] - v) * xs[i + 1]) / (vs[i] - vs[i + d]);
+            if (d == m - 1 && m > 2) err = fabs(xs[0] - xs[1]);
+        }
+        double w = fmax(pair, 3 * err);
+        if (!(w < 1e-3 * span)) continue; /* foreseen too roughly to pair */
+        h[(*n)++] = xs[0] - w;
+        h[(*n)++] = xs[0] + w;
     }
 }
 
@@ -755,13 +828,15 @@ static int line_eval(void *ctx, sample *sm)
                *L2 = up < P->nlines ? &P->lines[up] : NULL,
                *L3 = up + 1 < P->nlines ? &P->lines[up + 1] : NULL;
     int n = 0;
-    if (P->guide) hints_from(P->guide, NULL, v, 0, P->hints, &n, MAX_HINTS);
+    if (P->guide) hints_from(P->guide, NULL, v, P->hints, &n, MAX_HINTS);
     /* (lines either side alike: their pieces carried to v below cover
      * their own middles, 3 % of the bench part's rays) */
     int alike = L1 && L2 && L1->seq == L2->seq && L1->np == L2->np;
-    if (L1 && !alike) hints_from(L1, L0, v, 0, P->hints, &n, MAX_HINTS);
-    if (L2 && !alike) hints_from(L2, L3, v, 0, P->hints, &n, MAX_HINTS);
-    if (L1 && L2) hints_from(L1, L2, v, PAIR * 2 * P->reach, P->hints, &n, MAX_HINTS);
+    if (L1 && !alike) hints_from(L1, L0, v, P->hints, &n, MAX_HINTS);
+    if (L2 && !alike) hints_from(L2, L3, v, P->hints, &n, MAX_HINTS);
+    if (L1 && L2) hints_from(L1, L2, v, P->hints, &n, MAX_HINTS);
+    const line *ls[4] = {L0, L1, L2, L3};
+    event_hints(ls, v, PAIR * 2 * P->reach, 2 * P->reach, P->hints, &n, MAX_HINTS);
     seed_hints(P, v, (ub - ua) / SAMPLES, P->hints, &n, MAX_HINTS);
     P->v = v;
     P->inner.quick = P->outer.bisecting;
