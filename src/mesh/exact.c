@@ -991,9 +991,10 @@ static double narrowing(const line *next2, const line *next, const line *near, c
         int n = 0;
         for (int i = 0; i < 3; i++) {
             double d = i ? event_like(ev[i], ne[i], f) - event_like(ev[i], ne[i], e) : f->x - e->x;
-            if (!ls[i] || !(d > 0) || (n && !(d > y[n - 1]))) break; /* narrowing toward far */
+            double yd = kind ? d : d * d;
+            if (!ls[i] || !(d > 0) || (n && !(yd > y[n - 1]))) break; /* narrowing toward far */
             w[n] = ls[i]->v - near->v;
-            y[n++] = kind ? d : d * d;
+            y[n++] = yd;
         }
         if (n < 2) continue;
         double t = root_toward(w, y, n, sgn);
