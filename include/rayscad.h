@@ -544,9 +544,17 @@ typedef struct rayscad_mesh_options {
      * 1.3 times the distance).  <= 0: the contour as it is. */
     double tolerance;
     /* > 0: a contour of more triangles than this is left as it is whatever
-     * `tolerance` says (simplifying takes about 5 µs a triangle, two to
-     * three times the contouring).  0: no limit. */
+     * `tolerance` says (simplifying takes about 2 µs a triangle, more than
+     * the contouring), but see the next.  0: no limit. */
     long long simplify_max_triangles;
+    /* > 0: a contour past simplify_max_triangles but of no more than this
+     * is simplified all the same where fewer than one vertex in a hundred
+     * is a corner, three sharp edges (20°) or more meeting there: plane and
+     * smooth faces, text, thin walls, which come down to thousands of
+     * triangles.  A surface of facets finer than the grid (a heightmap),
+     * with such a corner at every few vertices, is left as it is: it
+     * simplifies little, at many times the cost.  0: none. */
+    long long simplify_max_triangles_smooth;
     /* May be NULL: told, on the calling thread, how far a phase has come
      * ("sampling": each grid's rays, again for a refined one; "contouring"),
      * done in [0, 1]. */
@@ -643,6 +651,9 @@ int rayscad_mesh_triangle_count(const rayscad_mesh *m);
 const float *rayscad_mesh_vertices(const rayscad_mesh *m);    /* borrowed from m */
 const int32_t *rayscad_mesh_triangles(const rayscad_mesh *m); /* borrowed from m */
 double rayscad_mesh_volume(const rayscad_mesh *m);            /* signed: positive when outward */
+/* The distance m was simplified to (rayscad_mesh_options.tolerance); 0
+ * when it is the contour as it is. */
+double rayscad_mesh_tolerance(const rayscad_mesh *m);
 /* The colours of the model's color() calls that the surface shows; 0 when
  * the model gives none.  rayscad_mesh_colors: 4 floats a colour (sRGB and
  * alpha in [0, 1]); rayscad_mesh_triangle_colors: per triangle, k for

@@ -64,6 +64,7 @@ void mesh_options_default(mesh_options *o)
     o->resolve_thin = 1;
     o->tolerance = 0;
     o->simplify_max_triangles = 0;
+    o->simplify_max_triangles_smooth = 0;
     o->progress = NULL;
     o->progress_ud = NULL;
 }

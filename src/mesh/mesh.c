@@ -298,3 +298,40 @@ int mesh_measure_scene(const csg_scene *s, const mesh_options *o, mesh_measure *
     mesh_dexels_free(d);
     return 0;
 }
+
+double mesh_corner_share(const mesh *m)
+{
+    size_t nt = (size_t)m->nt, nv = (size_t)m->nv;
+    int32_t *opp = malloc(3 * nt * sizeof *opp + 1);
+    uint8_t *deg = calloc(nv + 1, 1); /* sharp edges at each vertex, up to 255 */
+    uint8_t *used = calloc(nv + 1, 1);
+    double(*tn)[3] = malloc(nt * sizeof *tn + 1);
+    if (!opp || !deg || !used || !tn || mesh_half_twins(m, 0, opp) != 0) {
+        free(opp);
+        free(deg);
+        free(used);
+        free(tn);
+        return -1;
+    }
+    for (size_t t = 0; t < nt; t++)
+        mesh_triangle_normal(m, (int32_t)t, tn[t]);
+    for (size_t x = 0; x < 3 * nt; x++) {
+        int32_t p = m->t[x], q = m->t[3 * (x / 3) + (x % 3 + 1) % 3];
+        used[p] = 1;
+        if (opp[x] >= 0 && (size_t)opp[x] < x) continue; /* each edge once */
+        const double *a = tn[x / 3], *b = opp[x] >= 0 ? tn[opp[x] / 3] : NULL;
+        if (b && dot3(a, b) >= 0.94 * sqrt(dot3(a, a) * dot3(b, b))) continue; /* cos 20° */
+        if (deg[p] < 255) deg[p]++;
+        if (deg[q] < 255) deg[q]++;
+    }
+    size_t n = 0, corners = 0;
+    for (size_t v = 0; v < nv; v++) {
+        n += used[v];
+        corners += deg[v] >= 3;
+    }
+    free(opp);
+    free(deg);
+    free(used);
+    free(tn);
+    return n ? (double)corners / (double)n : 0;
+}

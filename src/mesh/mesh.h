@@ -196,4 +196,10 @@ mesh *mesh_new_from_arrays(const float *v, int nv, const int32_t *t, int nt);
 double mesh_signed_volume(const mesh *m);
 double mesh_area(const mesh *m);
 
+/* The share of m's vertices where three sharp edges or more meet (edges
+ * whose triangles' normals are more than 20° apart, or open ones): one in
+ * a few on a surface of facets finer than the grid (a heightmap), a box's
+ * eight on a plane-faced part; -1 when out of memory. */
+double mesh_corner_share(const mesh *m);
+
 #endif

@@ -94,6 +94,7 @@ static rayscad_mesh *wrap(mesh *m)
         return NULL;
     }
     r->m = m;
+    r->tolerance = 0;
     return r;
 }
 
@@ -104,14 +105,23 @@ rayscad_status rayscad_sampling_mesh(const rayscad_sampling *d, const rayscad_me
     if (!err) err = local, errlen = sizeof local;
     mesh *m;
     if (mesh_dexels_contour(d->d, o, &m, err, errlen) != 0) return RAYSCAD_ERROR;
-    if (o && o->tolerance > 0 &&
-        !(o->simplify_max_triangles > 0 && mesh_triangle_count(m) > o->simplify_max_triangles) &&
-        mesh_dexels_simplify(d->d, m, o->tolerance, o, err, errlen) != 0) {
+    int simplify = o && o->tolerance > 0;
+    long long n = mesh_triangle_count(m);
+    if (simplify && o->simplify_max_triangles > 0 && n > o->simplify_max_triangles) {
+        double share = o->simplify_max_triangles_smooth > 0 && n <= o->simplify_max_triangles_smooth
+                           ? mesh_corner_share(m)
+                           : 1;
+        simplify = share >= 0 && share < 0.01;
+    }
+    if (simplify && mesh_dexels_simplify(d->d, m, o->tolerance, o, err, errlen) != 0) {
         mesh_free(m);
         return RAYSCAD_ERROR_MEMORY;
     }
     *out = wrap(m);
-    if (*out) return RAYSCAD_OK;
+    if (*out) {
+        (*out)->tolerance = simplify ? o->tolerance : 0;
+        return RAYSCAD_OK;
+    }
     rayscad_say(err, errlen, "out of memory");
     return RAYSCAD_ERROR_MEMORY;
 }
@@ -146,6 +156,11 @@ const int32_t *rayscad_mesh_triangles(const rayscad_mesh *m)
 double rayscad_mesh_volume(const rayscad_mesh *m)
 {
     return mesh_signed_volume(m->m);
+}
+
+double rayscad_mesh_tolerance(const rayscad_mesh *m)
+{
+    return m->tolerance;
 }
 
 int rayscad_mesh_color_count(const rayscad_mesh *m)

@@ -25,6 +25,7 @@ struct rayscad_sampling {
 
 struct rayscad_mesh {
     mesh *m;
+    double tolerance; /* simplified to; 0: the contour as it is */
 };
 
 /* err (errlen bytes, may be NULL) gets the message. */

@@ -438,7 +438,7 @@ Test(io_export, mesh_write_chooses_by_extension)
 {
     mesh *m = mesh_new_from_arrays(&box_v[0][0], 8, &box_t[0][0], 12);
     cr_assert_not_null(m);
-    rayscad_mesh rm = {m};
+    rayscad_mesh rm = {m, 0};
     const char *names[2] = {"w.AMF", "w.3Mf"};
     reader rs[2] = {io_amf_read, io_3mf_read};
     for (int q = 0; q < 2; q++) {

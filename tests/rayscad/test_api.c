@@ -553,8 +553,10 @@ Test(api, facet_deviation_is_openscads_chord_sag)
 }
 
 /* The number of triangles rayscad_sampling_mesh makes of src at tolerance
- * tol with at most max contour triangles simplified. */
-static int mesh_triangles_of(const char *src, double tol, long long max)
+ * tol with at most max contour triangles simplified (smooth: at most that
+ * many where few vertices are on sharp edges), negative when it left the
+ * contour as it is. */
+static int mesh_triangles_of2(const char *src, double tol, long long max, long long smooth)
 {
     rayscad_scene *scene = scene_of(src, NULL);
     rayscad_mesh_options mo;
@@ -562,16 +564,25 @@ static int mesh_triangles_of(const char *src, double tol, long long max)
     mo.h = 0.25;
     mo.tolerance = tol;
     mo.simplify_max_triangles = max;
+    mo.simplify_max_triangles_smooth = smooth;
     rayscad_sampling *d;
     char err[256];
     cr_assert_eq(rayscad_sampling_new(scene, &mo, &d, err, sizeof err), RAYSCAD_OK, "%s", err);
     rayscad_mesh *mesh;
     cr_assert_eq(rayscad_sampling_mesh(d, &mo, &mesh, err, sizeof err), RAYSCAD_OK, "%s", err);
     int n = rayscad_mesh_triangle_count(mesh);
+    double got = rayscad_mesh_tolerance(mesh);
+    cr_expect(got == 0 || got == tol, "simplified to %g, asked %g", got, tol);
     rayscad_mesh_free(mesh);
     rayscad_sampling_free(d);
     rayscad_scene_free(scene);
-    return n;
+    return got > 0 ? n : -n;
+}
+
+/* As mesh_triangles_of2 with no smooth limit: the count. */
+static int mesh_triangles_of(const char *src, double tol, long long max)
+{
+    return abs(mesh_triangles_of2(src, tol, max, 0));
 }
 
 /* A box simplifies to its 12 triangles; over simplify_max_triangles its
@@ -584,4 +595,25 @@ Test(api, simplification_has_a_size_limit)
     cr_expect_eq(mesh_triangles_of(box, 0.01, 0), 12);
     cr_expect_eq(mesh_triangles_of(box, 0.01, raw), 12);
     cr_expect_eq(mesh_triangles_of(box, 0.01, raw - 1), raw);
+}
+
+/* Past simplify_max_triangles, a contour of few corners of three sharp
+ * edges (a box: its 8) is simplified all the same within
+ * simplify_max_triangles_smooth; a surface of facets finer than the grid
+ * (a saw of 0.1 teeth on a grid of 0.25, whose contour vertices lie on
+ * the teeth's edges) is not, nor anything past the smooth limit. */
+Test(api, smooth_contours_are_simplified_past_the_limit)
+{
+    const char *box = "cube([10, 20, 30]);";
+    int raw = mesh_triangles_of(box, 0, 0);
+    cr_expect_eq(mesh_triangles_of2(box, 0.01, raw - 1, raw), 12);
+    cr_expect_eq(mesh_triangles_of2(box, 0.01, raw - 1, raw - 1), -raw);
+    char saw[8192];
+    int n = snprintf(saw, sizeof saw, "linear_extrude(5) polygon([[0, -2]");
+    for (int i = 0; i <= 100; i++)
+        n += snprintf(saw + n, sizeof saw - (size_t)n, ", [%g, %g]", 0.1 * i, i % 2 ? 0.3 : 0.0);
+    snprintf(saw + n, sizeof saw - (size_t)n, ", [10, -2]]);");
+    int teeth = mesh_triangles_of(saw, 0, 0);
+    cr_expect_eq(mesh_triangles_of2(saw, 0.01, teeth - 1, teeth), -teeth);
+    cr_expect_lt(mesh_triangles_of(saw, 0.01, 0), teeth); /* (it does simplify, asked) */
 }
