@@ -835,12 +835,23 @@ Test(scad_limits, round_points_and_minkowski_sums_are_steps)
 Test(scad_limits, twisted_extrusion_vertices_are_steps)
 {
     /* a 100,000-gon at 25,000 slices: 2.5·10^9 mesh vertices, once built
-     * until memory ran out (minutes, then nothing drawn) */
+     * until memory ran out (minutes, then nothing drawn); with OpenSCAD's
+     * facets (else the circle is a smooth one's 256-gon), and a radius at
+     * which Clipper keeps every point (each 0.001 or more off the line
+     * through its neighbours) */
     lines m = {0};
-    cr_assert_eq(
-        eval_steps("linear_extrude(height = 1, twist = 90, slices = 25000) circle(1, $fn = 1e9);",
-                   &m, 0),
-        -1);
+    scad_options o;
+    memset(&o, 0, sizeof o);
+    o.services = test_services();
+    o.message = collect;
+    o.ud = &m;
+    o.facets = RAYSCAD_FACETS_OPENSCAD;
+    scad_result r;
+    cr_assert_eq(scad_eval_string("t.scad",
+                                  "linear_extrude(height = 1, twist = 90, slices = 25000) "
+                                  "circle(1e6, $fn = 1e9);",
+                                  &o, &r),
+                 -1);
     cr_expect(has_line(
         &m, "t.scad:1:1: error: evaluation took more than 1000000000 steps (linear_extrude)"));
     lines_free(&m);

@@ -8,8 +8,8 @@
  * replaces each 2D leaf by the extrusion of that leaf: the prism's z range
  * for a straight linear_extrude, a revolve of the leaf's region (with the
  * leaf's own 2D transform baked in) for rotate_extrude.  With a twist or a
- * scale each 2D leaf becomes OpenSCAD's own polyhedron (src/geom/extrude.c)
- * and the booleans above the leaves stay exact CSG.  3D children are
+ * scale the children's 2D union becomes OpenSCAD's own polyhedron
+ * (src/geom/extrude.c), one leaf (see twisted).  3D children are
  * ignored, as OpenSCAD ignores them.  Reading a drawing from file= (the
  * deprecated form) is printed in .csg but builds nothing — nor do the
  * children then, which OpenSCAD ignores in favour of the file.
@@ -93,76 +93,50 @@ static iv_region *shadow_region(const double *local_from_world, const scad_geom 
     return out;
 }
 
-typedef struct twist_ctx {
-    scad_eval *ev;
-    scad_loc loc;
-    const double *local_from_world;
-    const double *world_from_local;
-    geom_extrusion e;
-    scad_facet_params f;
-    double max_r2, max_d2; /* the scan's results */
-} twist_ctx;
-
-/* The largest squared radius of the shadow's vertices, and the largest
- * squared distance a vertex moves between bottom and top scale — what
- * OpenSCAD sizes its default slices by.  The shadow is bounded as in
- * revolve_scan: a difference by its first operand. */
-static void twist_scan(twist_ctx *c, const scad_geom *g)
+/* With a twist or a scale OpenSCAD extrudes the union of its children as
+ * Clipper leaves it (outlines that share an edge merged, collinear and
+ * duplicate points dropped) as one polygon set: each outline's vertices
+ * climb the slices, so they shape the side faces (two squares side by side,
+ * twisted by 180°, are a twisted rectangle, 2.5 % more than two twisted
+ * squares; a polygon's points along a straight side are no vertices).  So
+ * the children are flattened (scad_flatten_2d) and the union becomes one
+ * leaf, OpenSCAD's polyhedron of it (src/geom/extrude.c), in the state's
+ * colour: colours inside are lost, as in OpenSCAD.  NULL: nothing (or an
+ * error reported). */
+static scad_geom *twisted(scad_call *c, geom_extrusion e, const csg_affine local_from_world,
+                          scad_facet_params f, const scad_geom *kids)
 {
-    if (!g) return;
-    if (!g->is_leaf) {
-        int n = g->op == CSG_OP_DIFFERENCE && g->n > 0 ? 1 : g->n;
-        for (int i = 0; i < n; i++)
-            twist_scan(c, g->kids[i]);
-        return;
-    }
-    if (g->shape.kind != IV_SHAPE_PRISM) return;
-    iv_region *r = shadow_region(c->local_from_world, g, scad_leaf_fragments(g, c->f), 1);
-    if (!r) return;
-    int n;
-    const double(*P)[2] = iv_region_points(r, &n);
+    scad_eval *ev = c->ev;
+    scad_paths P;
+    if (scad_flatten_2d(ev, kids, local_from_world, f, c->st->loc, "linear_extrude", &P) != 0)
+        return NULL;
+    int n = P.npaths ? P.start[P.npaths] : 0;
+    iv_region *r = n ? iv_region_new((const double(*)[2])P.pts, P.start, P.npaths) : NULL;
+    double max_r2 = 0, max_d2 = 0; /* what OpenSCAD sizes its default slices by */
     for (int i = 0; i < n; i++) {
-        double x = P[i][0], y = P[i][1];
-        double dx = x - x * c->e.scale[0], dy = y - y * c->e.scale[1];
-        c->max_r2 = fmax(c->max_r2, x * x + y * y);
-        c->max_d2 = fmax(c->max_d2, dx * dx + dy * dy);
+        double x = P.pts[i][0], y = P.pts[i][1];
+        double dx = x - x * e.scale[0], dy = y - y * e.scale[1];
+        max_r2 = fmax(max_r2, x * x + y * y);
+        max_d2 = fmax(max_d2, dx * dx + dy * dy);
     }
-    iv_region_release(r);
-}
-
-static void twist_tree(twist_ctx *c, scad_geom *g)
-{
-    if (!g || c->ev->aborted) return;
-    if (!g->is_leaf) {
-        for (int i = 0; i < g->n; i++)
-            twist_tree(c, g->kids[i]);
-        return;
-    }
-    if (g->shape.kind != IV_SHAPE_PRISM) { /* a 3D child: OpenSCAD ignores it */
-        make_empty(g);
-        return;
-    }
-    iv_region *r = shadow_region(c->local_from_world, g, scad_leaf_fragments(g, c->f), 1);
+    scad_paths_free(&P);
+    if (!r) return NULL;
+    if (e.slices == 0) e.slices = geom_extrusion_slices(&e, max_r2, max_d2, f.fn, f.fa, f.fs);
     iv_shape s;
-    int n = 0, rc = -1;
-    if (r) iv_region_points(r, &n);
+    int rc = -1;
     /* each vertex of the mesh is a step of work: a 100,000-gon at 25,000
      * slices would be 2.5·10^9 */
-    if (r && !scad_eval_steps(c->ev, (long)n * (c->e.slices + 1), c->loc, "linear_extrude")) {
-        rc = geom_extrusion_mesh(&c->e, r, &s);
+    if (!scad_eval_steps(ev, (long)n * (e.slices + 1), c->st->loc, "linear_extrude")) {
+        rc = geom_extrusion_mesh(&e, r, &s);
         if (rc != 0)
-            scad_eval_error(c->ev, c->loc,
+            scad_eval_error(ev, c->st->loc,
                             "linear_extrude(): no mesh of %d points at %d slices (out of "
                             "memory); nothing is drawn",
-                            n, c->e.slices);
+                            n, e.slices);
     }
-    if (r) iv_region_release(r);
-    if (rc != 0 || scad_geom_keep(c->ev, &s) != 0) {
-        make_empty(g);
-        return;
-    }
-    g->shape = s;
-    memcpy(g->xf, c->world_from_local, sizeof(csg_affine));
+    iv_region_release(r);
+    if (rc != 0 || scad_geom_keep(ev, &s) != 0) return NULL;
+    return scad_optics_leaf(c, &s, NULL);
 }
 
 /* ---- linear_extrude ------------------------------------------------------------ */
@@ -257,40 +231,28 @@ static int linear_print(scad_call *c, const void *args, scad_buf *b)
 static scad_geom *linear_build(scad_call *c, const void *args)
 {
     const linear_args *p = args;
-    scad_eval *ev = c->ev;
     double h = p->height;
     /* with file= 2021.01 extrudes the drawing instead of the children */
     if (!(h > 0) || p->file.name) return NULL;
-    twist_ctx t = {.ev = ev,
-                   .loc = c->st->loc,
-                   .world_from_local = c->state->xf,
-                   .e = {.h1 = p->center ? -h / 2 : 0,
-                         .h2 = p->center ? h / 2 : h,
-                         .twist = p->twist,
-                         .scale = {p->scale[0], p->scale[1]}},
-                   .f = p->f};
+    geom_extrusion e = {.h1 = p->center ? -h / 2 : 0,
+                        .h2 = p->center ? h / 2 : h,
+                        .twist = p->twist,
+                        .scale = {p->scale[0], p->scale[1]}};
     for (int k = 0; k < 2; k++) /* NaN: no top; infinite: none */
-        if (!(t.e.scale[k] >= 0) || !isfinite(t.e.scale[k]))
-            t.e.scale[k] = t.e.scale[k] > 0 ? 1 : 0;
+        if (!(e.scale[k] >= 0) || !isfinite(e.scale[k])) e.scale[k] = e.scale[k] > 0 ? 1 : 0;
     if (isfinite(p->slices) && p->slices >= 1)
-        t.e.slices = p->slices > 100000 ? 100000 : (int)p->slices;
+        e.slices = p->slices > 100000 ? 100000 : (int)p->slices;
     scad_geom *kids = scad_call_children(c, NULL);
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
-    if (t.e.twist == 0 && t.e.scale[0] == 1 && t.e.scale[1] == 1) {
+    if (e.twist == 0 && e.scale[0] == 1 && e.scale[1] == 1) {
         /* straight: the exact prism (more slices change nothing) */
-        linear_tree(kids, inv, c->state->xf, t.e.h1, t.e.h2);
+        linear_tree(kids, inv, c->state->xf, e.h1, e.h2);
         kids->whole = !kids->is_leaf;
         return kids;
     }
-    t.local_from_world = inv;
-    twist_scan(&t, kids);
-    if (t.e.slices == 0)
-        t.e.slices = geom_extrusion_slices(&t.e, t.max_r2, t.max_d2, t.f.fn, t.f.fa, t.f.fs);
-    twist_tree(&t, kids);
-    kids->whole = !kids->is_leaf;
-    return kids;
+    return twisted(c, e, inv, p->f, kids);
 }
 
 static const char *const linear_extrude_params[] = {
