@@ -709,7 +709,7 @@ Test(scad_limits, list_and_string_sizes)
 }
 
 /* Evaluates src with a step limit (0: the default); the messages into m. */
-static int eval_steps(const char *src, lines *m, long max_steps)
+static int eval_steps_facets(const char *src, lines *m, long max_steps, int facets)
 {
     scad_options o;
     memset(&o, 0, sizeof o);
@@ -717,10 +717,16 @@ static int eval_steps(const char *src, lines *m, long max_steps)
     o.message = collect;
     o.ud = m;
     o.max_steps = max_steps;
+    o.facets = facets;
     scad_result r;
     int rc = scad_eval_string("t.scad", src, &o, &r);
     if (rc == 0) scad_result_free(&r);
     return rc;
+}
+
+static int eval_steps(const char *src, lines *m, long max_steps)
+{
+    return eval_steps_facets(src, m, max_steps, 0);
 }
 
 Test(scad_env, special_variables_are_dynamically_scoped)
@@ -819,14 +825,7 @@ Test(scad_limits, round_points_and_minkowski_sums_are_steps)
         lines_free(&m);
     }
     /* and so does a sphere built with OpenSCAD's facets */
-    scad_options o;
-    memset(&o, 0, sizeof o);
-    o.services = test_services();
-    o.message = collect;
-    o.ud = &m;
-    o.facets = RAYSCAD_FACETS_OPENSCAD;
-    scad_result r;
-    cr_expect_eq(scad_eval_string("t.scad", "sphere(1, $fn = 1e9);", &o, &r), -1);
+    cr_expect_eq(eval_steps_facets("sphere(1, $fn = 1e9);", &m, 0, RAYSCAD_FACETS_OPENSCAD), -1);
     cr_expect(
         has_line(&m, "t.scad:1:1: error: evaluation took more than 1000000000 steps (sphere)"));
     lines_free(&m);
@@ -840,17 +839,9 @@ Test(scad_limits, twisted_extrusion_vertices_are_steps)
      * which Clipper keeps every point (each 0.001 or more off the line
      * through its neighbours) */
     lines m = {0};
-    scad_options o;
-    memset(&o, 0, sizeof o);
-    o.services = test_services();
-    o.message = collect;
-    o.ud = &m;
-    o.facets = RAYSCAD_FACETS_OPENSCAD;
-    scad_result r;
-    cr_assert_eq(scad_eval_string("t.scad",
-                                  "linear_extrude(height = 1, twist = 90, slices = 25000) "
-                                  "circle(1e6, $fn = 1e9);",
-                                  &o, &r),
+    cr_assert_eq(eval_steps_facets("linear_extrude(height = 1, twist = 90, slices = 25000) "
+                                   "circle(1e6, $fn = 1e9);",
+                                   &m, 0, RAYSCAD_FACETS_OPENSCAD),
                  -1);
     cr_expect(has_line(
         &m, "t.scad:1:1: error: evaluation took more than 1000000000 steps (linear_extrude)"));
