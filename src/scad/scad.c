@@ -37,9 +37,12 @@ enum { DEFAULT_MAX_RECURSION = 10000 };
 /* The csg tree of g (NULL for the empty set).  Out of memory, *oom is set
  * to the node that could not be made or take a child (its location goes
  * into the error). */
-static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
+/* g as a csg tree; with marked, only the leaves a '#' still marks (one
+ * inside an extrusion is lost: extrude.c's extrusion_colour). */
+static csg_node *to_csg(const scad_geom *g, int marked, const scad_geom **oom)
 {
-    if (!g || *oom || scad_geom_is_empty(g)) return NULL;
+    if (!g || *oom || scad_geom_is_empty(g) || (marked && g->is_leaf && !g->mat.highlight))
+        return NULL;
     if (g->is_leaf) {
         csg_node *n = csg_node_shape(&g->shape, g->xf, &g->mat);
         if (!n) *oom = g;
@@ -52,7 +55,7 @@ static csg_node *to_csg(const scad_geom *g, const scad_geom **oom)
     }
     if (g->whole) csg_node_frame_whole(n);
     for (int i = 0; i < g->n; i++) {
-        csg_node *k = to_csg(g->kids[i], oom);
+        csg_node *k = to_csg(g->kids[i], marked, oom);
         if (k && csg_node_add(n, k) && !*oom) *oom = g;
     }
     return n;
@@ -190,17 +193,17 @@ static void flatten_root(scad_eval *ev, const scad_geom *g, scad_result *out)
         ev->aborted = 1;
 }
 
-static csg_node *list_to_csg(scad_geom **v, int n, const scad_geom **oom)
+static csg_node *list_to_csg(scad_geom **v, int n, int marked, const scad_geom **oom)
 {
     if (n == 0) return NULL;
-    if (n == 1) return to_csg(v[0], oom);
+    if (n == 1) return to_csg(v[0], marked, oom);
     csg_node *u = csg_node_op(CSG_OP_UNION);
     if (!u) {
         *oom = v[0];
         return NULL;
     }
     for (int i = 0; i < n; i++) {
-        csg_node *k = to_csg(v[i], oom);
+        csg_node *k = to_csg(v[i], marked, oom);
         if (k && csg_node_add(u, k) && !*oom) *oom = v[i];
     }
     return u;
@@ -439,9 +442,9 @@ static void run_job(job *j)
             if (ev.has_root) model = ev.root;
             double sag = facet_sag(model);
             j->out->facet_sag = sag < INFINITY ? sag : 0;
-            j->out->model = to_csg(model, &oom);
-            j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, &oom);
-            j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, &oom);
+            j->out->model = to_csg(model, 0, &oom);
+            j->out->highlight = list_to_csg(ev.highlights, ev.nhighlights, 1, &oom);
+            j->out->background = list_to_csg(ev.backgrounds, ev.nbackgrounds, 0, &oom);
             if (oom) {
                 scad_diag_error(j->d, oom->loc.file ? oom->loc : ev.at, "out of memory");
                 scad_result_free(j->out);

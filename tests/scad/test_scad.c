@@ -415,6 +415,37 @@ Test(scad_tree, color_forms)
     csg_scene_free(s);
 }
 
+/* OpenSCAD 2021.01 extrudes its children's 2D geometry, which has no
+ * colour: a color() or '#' inside linear_extrude() or rotate_extrude() is
+ * lost (its preview draws the default yellow, and nothing highlighted),
+ * one outside it is kept. */
+Test(scad_tree, colours_inside_extrusions_are_lost)
+{
+    const char *lost[] = {"linear_extrude(5) color(\"red\") square(5);",
+                          "linear_extrude(5, twist = 30) color(\"red\") square(5);",
+                          "rotate_extrude() color(\"red\") translate([5, 0]) circle(1);"};
+    csg_scene *s;
+    for (int i = 0; i < 3; i++) {
+        const csg_material *m = first_material(lost[i], &s);
+        cr_expect_eq(m->has_color, 0, "%s", lost[i]);
+        csg_scene_free(s);
+    }
+    const csg_material *m = first_material("color(\"blue\") linear_extrude(5) color(\"red\") "
+                                           "square(5);",
+                                           &s);
+    cr_expect(m->has_color && m->rgba[2] == 1 && m->rgba[0] == 0);
+    csg_scene_free(s);
+    lines l = {0};
+    scad_result r;
+    cr_assert_eq(eval_src("linear_extrude(5) #square(5);", &l, &r, 0), 0);
+    cr_expect_null(r.highlight, "a '#' inside an extrusion highlights nothing");
+    scad_result_free(&r);
+    cr_assert_eq(eval_src("#linear_extrude(5) square(5);", &l, &r, 0), 0);
+    cr_expect_not_null(r.highlight);
+    scad_result_free(&r);
+    lines_free(&l);
+}
+
 Test(scad_tree, modifiers)
 {
     lines m = {0};

@@ -40,13 +40,23 @@ static void make_empty(scad_geom *g)
     g->n = 0;
 }
 
+/* OpenSCAD extrudes its children's 2D geometry, which has no colour: the
+ * solid takes the extrusion's own (a color() or a '#' inside is lost). */
+static void extrusion_colour(scad_geom *g, const csg_material *m)
+{
+    memcpy(g->mat.rgba, m->rgba, sizeof m->rgba);
+    g->mat.has_color = m->has_color;
+    g->mat.highlight = m->highlight;
+}
+
 static void linear_tree(scad_geom *g, const csg_affine local_from_world,
-                        const csg_affine world_from_local, double z0, double z1)
+                        const csg_affine world_from_local, const csg_material *mat, double z0,
+                        double z1)
 {
     if (!g) return;
     if (!g->is_leaf) {
         for (int i = 0; i < g->n; i++)
-            linear_tree(g->kids[i], local_from_world, world_from_local, z0, z1);
+            linear_tree(g->kids[i], local_from_world, world_from_local, mat, z0, z1);
         return;
     }
     if (g->shape.kind != IV_SHAPE_PRISM) { /* a 3D child: OpenSCAD ignores it */
@@ -59,6 +69,7 @@ static void linear_tree(scad_geom *g, const csg_affine local_from_world,
     g->shape.u.prism.z0 = z0;
     g->shape.u.prism.z1 = z1;
     g->extruded = 1;
+    extrusion_colour(g, mat);
 }
 
 /* The region of a 2D leaf in the extrusion's frame (a new reference), x
@@ -248,7 +259,7 @@ static scad_geom *linear_build(scad_call *c, const void *args)
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
     if (e.twist == 0 && e.scale[0] == 1 && e.scale[1] == 1) {
         /* straight: the exact prism (more slices change nothing) */
-        linear_tree(kids, inv, c->state->xf, e.h1, e.h2);
+        linear_tree(kids, inv, c->state->xf, &c->state->mat, e.h1, e.h2);
         kids->whole = !kids->is_leaf;
         return kids;
     }
@@ -267,6 +278,7 @@ typedef struct revolve_ctx {
     scad_eval *ev;
     const double *local_from_world;
     const double *world_place; /* world_from_local ∘ the flips */
+    const csg_material *mat;   /* the extrusion's (extrusion_colour) */
     double xmin, xmax;
     double angle;
     double sign; /* -1: the profile is on the negative side, mirrored */
@@ -367,6 +379,7 @@ static void revolve_tree(revolve_ctx *c, scad_geom *g)
     }
     g->shape = s;
     memcpy(g->xf, c->world_place, sizeof(csg_affine));
+    extrusion_colour(g, c->mat);
 }
 
 enum { RX_FILE, RX_LAYER, RX_ORIGIN, RX_SCALE, RX_ANGLE, RX_CONVEXITY };
@@ -436,7 +449,8 @@ static scad_geom *rotate_build(scad_call *c, const void *args)
     if (!kids) return NULL;
     csg_affine inv;
     if (csg_affine_invert(c->state->xf, inv) != 0) return NULL;
-    revolve_ctx r = {ev, inv, NULL, INFINITY, -INFINITY, fabs(angle), 1, 256, p->f, 0, 0};
+    revolve_ctx r = {ev,          inv, NULL, &c->state->mat, INFINITY, -INFINITY,
+                     fabs(angle), 1,   256,  p->f,           0,        0};
     revolve_scan(&r, kids, &r.xmin, &r.xmax);
     if (!(r.xmin <= r.xmax)) return NULL;
     if (r.xmin < 0 && r.xmax > 0) {
