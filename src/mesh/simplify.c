@@ -50,10 +50,7 @@
  * Plane faces.  A triangle whose neighbours all lie in its plane is exact:
  * its shape is the surface there.  While collapses keep it in its plane it
  * needs no points, and a vertex whose triangles are all exact, in one
- * plane, goes without becoming one (flat_within, flat_stays_near).  Before
- * any collapse, each such vertex inside a plane face is taken out and its
- * ring of neighbours triangulated across the hole (drop_flat_vertices):
- * no cost, no check against points, one vertex at a time in sweeps.
+ * plane, goes without becoming one (flat_within, flat_stays_near).
  *
  * Edges between two colours add a plane through the edge across the
  * surface to both ends' quadrics, so a colour's border keeps its course.
@@ -134,11 +131,10 @@ typedef struct simp {
     uint8_t *region; /* each vertex's region: only its queue collapses it */
     /* the points taken away: a list per triangle, through pnext */
     int32_t *phead, *ptail, *pnext;
-    int32_t *best;      /* scratch: a point's nearest new triangle */
-    uint8_t *crease;    /* a point on a sharp edge: it must stay near an edge */
-    uint8_t *curved;    /* a vertex whose triangles bend (by 0.5° to 20°): on a curve */
-    uint8_t *exact;     /* a triangle that is its part of a plane face (flat_within) */
-    const uint16_t *tc; /* each triangle's colour (the mesh's), NULL: none */
+    int32_t *best;   /* scratch: a point's nearest new triangle */
+    uint8_t *crease; /* a point on a sharp edge: it must stay near an edge */
+    uint8_t *curved; /* a vertex whose triangles bend (by 0.5° to 20°): on a curve */
+    uint8_t *exact;  /* a triangle that is its part of a plane face (flat_within) */
     double tol2, crease_tol2, len_scale, flat_eps;
     int nregions;
 } simp;
@@ -832,7 +828,6 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_s
         !s->val || !s->stamp || !s->mark || !s->phead || !s->ptail || !s->pnext || !s->best ||
         !s->crease || !s->curved || !s->exact)
         return -1;
-    s->tc = m->npal ? m->tc : NULL;
     for (size_t i = 0; i < 3 * nv; i++)
         s->p[i] = m->v[i];
     memcpy(s->t, m->t, 3 * nt * sizeof *s->t);
@@ -908,233 +903,6 @@ static int simp_init(simp *s, const mesh *m, double tol, double edge_tol, mesh_s
     return 0;
 }
 
-/* ---- plane faces' inner vertices ---------------------------------------- */
-
-/* Vertex v's neighbours in order round it (triangle tri[i] is v, r[i],
- * r[i + 1]) into r and tri: their number, or 0 where they close no single
- * loop of distinct vertices (a border, a pinch) or pass FAN_MAX. */
-static int ring_of(const simp *s, int32_t v, int32_t *r, int32_t *tri)
-{
-    int32_t b[FAN_MAX], d[FAN_MAX], t[FAN_MAX];
-    int k = 0;
-    for (int32_t c = s->head[v]; c >= 0; c = s->next[c]) {
-        if (k == FAN_MAX) return 0;
-        t[k] = c / 3;
-        b[k] = s->t[3 * (c / 3) + (c % 3 + 1) % 3];
-        d[k++] = s->t[3 * (c / 3) + (c % 3 + 2) % 3];
-    }
-    if (k < 3) return 0;
-    uint64_t used = 1;
-    r[0] = b[0];
-    tri[0] = t[0];
-    int32_t at = d[0];
-    for (int n = 1; n < k; n++) {
-        int j = 1;
-        while (j < k && ((used >> j & 1) || b[j] != at))
-            j++;
-        if (j == k) return 0;
-        used |= 1ULL << j;
-        r[n] = b[j];
-        tri[n] = t[j];
-        at = d[j];
-    }
-    if (at != r[0]) return 0;
-    for (int i = 0; i < k; i++)
-        for (int j = i + 1; j < k; j++)
-            if (r[i] == r[j]) return 0;
-    return k;
-}
-
-/* Whether the mesh has edge a–c in a triangle other than the n in tri. */
-static int has_edge_besides(const simp *s, int32_t a, int32_t c, const int32_t *tri, int n)
-{
-    for (int32_t k = s->head[a]; k >= 0; k = s->next[k]) {
-        int32_t t = k / 3, mine = 0;
-        for (int i = 0; i < n && !mine; i++)
-            mine = tri[i] == t;
-        if (!mine && (s->t[3 * t] == c || s->t[3 * t + 1] == c || s->t[3 * t + 2] == c)) return 1;
-    }
-    return 0;
-}
-
-/* Whether 2-D point p lies in or on triangle abc (counter-clockwise). */
-static int in_triangle2(const double *a, const double *b, const double *c, const double *p)
-{
-    double d1 = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-    double d2 = (c[0] - b[0]) * (p[1] - b[1]) - (c[1] - b[1]) * (p[0] - b[0]);
-    double d3 = (a[0] - c[0]) * (p[1] - c[1]) - (a[1] - c[1]) * (p[0] - c[0]);
-    return d1 >= 0 && d2 >= 0 && d3 >= 0;
-}
-
-/* Ear clipping of the k points q (a counter-clockwise ring about the
- * hole of a vertex taken out, r their vertices, tri the triangles around
- * it): each time the best-shaped ear (area over its sides' squares) that
- * turns like the ring, holds no other point in or on it, and whose new
- * edge the mesh has nowhere else.  The k - 2 triangles into out (indices
- * into the ring); 0 when no ear would do. */
-static int clip_ring(const simp *s, double (*q)[2], const int32_t *r, const int32_t *tri, int k,
-                     double scale2, int (*out)[3])
-{
-    int idx[FAN_MAX], m = k, nout = 0;
-    uint64_t no = 0; /* ears whose new edge the mesh has */
-    for (int i = 0; i < k; i++)
-        idx[i] = i;
-    while (m > 2) {
-        int best = -1;
-        double bq = 0;
-        for (int j = 0; j < m; j++) {
-            int a = idx[(j + m - 1) % m], b = idx[j], c = idx[(j + 1) % m];
-            double area = (q[b][0] - q[a][0]) * (q[c][1] - q[a][1]) -
-                          (q[b][1] - q[a][1]) * (q[c][0] - q[a][0]);
-            if (!(area > 1e-12 * scale2) || (no >> b & 1)) continue;
-            int blocked = 0;
-            for (int i = 0; i < m && !blocked; i++) {
-                int x = idx[i];
-                blocked = x != a && x != b && x != c && in_triangle2(q[a], q[b], q[c], q[x]);
-            }
-            if (blocked) continue;
-            double e = 0;
-            for (int i = 0; i < 2; i++)
-                e += (q[b][i] - q[a][i]) * (q[b][i] - q[a][i]) +
-                     (q[c][i] - q[b][i]) * (q[c][i] - q[b][i]) +
-                     (q[a][i] - q[c][i]) * (q[a][i] - q[c][i]);
-            if (area / e > bq) {
-                bq = area / e;
-                best = j;
-            }
-        }
-        if (best < 0) return 0;
-        int a = idx[(best + m - 1) % m], c = idx[(best + 1) % m];
-        if (m > 3 && has_edge_besides(s, r[a], r[c], tri, k)) {
-            no |= 1ULL << idx[best]; /* not this ear while the ring is as it is */
-            continue;
-        }
-        no = 0;
-        out[nout][0] = a;
-        out[nout][1] = idx[best];
-        out[nout++][2] = c;
-        for (int j = best; j + 1 < m; j++)
-            idx[j] = idx[j + 1];
-        m--;
-    }
-    return 1;
-}
-
-/* Take vertex v out of the middle of a plane face — its triangles all
- * exact (flat_within), with no points, of one colour, in one plane — and
- * triangulate its ring of neighbours across the hole (clip_ring); v's
- * quadric goes to its nearest neighbour.  The new triangles are exact:
- * their neighbours are in the plane too.  1 when taken out, else nothing
- * changes: 0 where v is inside a plane face but no ear would do now, -1
- * where it is not.  r gets the ring (*nr of them). */
-static int drop_flat(simp *s, int32_t v, int32_t *r, int *nr)
-{
-    int32_t tri[FAN_MAX];
-    *nr = 0;
-    for (int32_t c = s->head[v]; c >= 0; c = s->next[c])
-        if (!s->exact[c / 3] || s->phead[c / 3] >= 0 ||
-            (s->tc && s->tc[c / 3] != s->tc[s->head[v] / 3]))
-            return -1;
-    int k = ring_of(s, v, r, tri);
-    *nr = k;
-    if (k == 0 || s->crease[v]) return -1;
-    double n[3], c[3];
-    for (int i = 0; i < k; i++) {
-        const int32_t *tv = s->t + 3 * tri[i];
-        double m[3];
-        tri_normal3(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), m);
-        if (i == 0) memcpy(n, m, sizeof m);
-        cross3(n, m, c);
-        if (!(dot3(n, m) > 0 && dot3(c, c) <= 1e-12 * dot3(n, n) * dot3(m, m))) return -1;
-    }
-    /* the ring in the plane, counter-clockwise about n */
-    double e1[3], e2[3], a0[3] = {0, 0, 0}, q[FAN_MAX][2], scale2 = 0;
-    a0[fabs(n[0]) < 0.6 * sqrt(dot3(n, n)) ? 0 : 1] = 1;
-    cross3(n, a0, e2);
-    cross3(e2, n, e1);
-    double l1 = sqrt(dot3(e1, e1)), l2 = sqrt(dot3(e2, e2));
-    int near = 0;
-    for (int i = 0; i < k; i++) {
-        double d[3];
-        sub3(P(s, r[i]), P(s, v), d);
-        q[i][0] = dot3(d, e1) / l1;
-        q[i][1] = dot3(d, e2) / l2;
-        scale2 = fmax(scale2, dot3(d, d));
-        if (q[i][0] * q[i][0] + q[i][1] * q[i][1] <
-            q[near][0] * q[near][0] + q[near][1] * q[near][1])
-            near = i;
-    }
-    int out[FAN_MAX][3];
-    if (!clip_ring(s, q, r, tri, k, scale2, out)) return 0;
-    /* the k triangles become the k - 2 */
-    for (int i = 0; i < k; i++)
-        for (int j = 0; j < 3; j++)
-            unlink_corner(s, s->t[3 * tri[i] + j], 3 * tri[i] + j);
-    for (int i = 0; i < k; i++) {
-        int32_t *tv = s->t + 3 * tri[i];
-        s->exact[tri[i]] = i < k - 2;
-        for (int j = 0; j < 3; j++) {
-            tv[j] = i < k - 2 ? r[out[i][j]] : -1;
-            if (i < k - 2) link_corner(s, tv[j], 3 * tri[i] + j);
-        }
-    }
-    for (int i = 0; i < 10; i++)
-        s->q[r[near]].a[i] += s->q[v].a[i];
-    s->w[r[near]] += s->w[v];
-    s->head[v] = -1;
-    s->val[v] = 0;
-    for (int i = 0; i < k; i++)
-        s->stamp[r[i]]++;
-    return 1;
-}
-
-/* Every vertex of region q->region inside a plane face taken out
- * (drop_flat), in sweeps over vertices no two of which are neighbours (a
- * face shrinks evenly, not into fans about the first ones), each next
- * sweep over those that waited for a neighbour or could not go yet, until
- * one takes none out; only vertices whose triangles are the region's own
- * (owned), so the regions run side by side.  The collapses then have the
- * faces' borders left: one a vertex, they were three quarters of the
- * simplification's time on a box (cube(10) at the default grid: 97,000 of
- * its 101,372 vertices). */
-static void drop_flat_vertices(queue *qu)
-{
-    simp *s = qu->s;
-    uint32_t *busy = calloc((size_t)s->nv + 1, sizeof *busy);
-    int32_t *work = malloc(((size_t)s->nv + 1) * sizeof *work);
-    int nw = 0;
-    if (!busy || !work) {
-        qu->oom = 1;
-        goto done;
-    }
-    for (int32_t v = 0; v < s->nv; v++)
-        if (s->region[v] == qu->region && s->head[v] >= 0 && !s->crease[v]) work[nw++] = v;
-    for (uint32_t sweep = 1; nw > 0; sweep++) {
-        int left = 0, dropped = 0;
-        for (int i = 0; i < nw; i++) {
-            int32_t v = work[i], r[FAN_MAX];
-            int nr;
-            if (busy[v] == sweep) {
-                work[left++] = v;
-                continue;
-            }
-            if (s->nregions > 1 && !owned(s, qu->region, v)) continue;
-            int rc = drop_flat(s, v, r, &nr);
-            if (rc == 0) work[left++] = v; /* (its neighbours may change) */
-            if (rc <= 0) continue;
-            dropped++;
-            qu->live--;
-            for (int j = 0; j < nr; j++)
-                busy[r[j]] = sweep;
-        }
-        nw = left;
-        if (!dropped) break;
-    }
-done:
-    free(busy);
-    free(work);
-}
-
 /* Whether e's ends are there and unchanged since it was pushed. */
 static int current(const simp *s, const entry *e)
 {
@@ -1151,8 +919,6 @@ static int current(const simp *s, const entry *e)
 static void run_queue(queue *q)
 {
     simp *s = q->s;
-    drop_flat_vertices(q);
-    if (q->oom) return;
     for (int pass = 0; pass < 4; pass++) {
         int collapsed = 0;
         for (int i = 0; i < q->ntris; i++) {
