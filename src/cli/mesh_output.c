@@ -268,8 +268,9 @@ int cli_mesh_output(const cli_options *o, const rayscad_scene *scene, cli_output
     rayscad_mesh_options_default(&mo);
     mo.h = o->mesh_size;
     mo.tolerance = mesh_tolerance(o, scene);
-    /* unasked, a contour of millions of triangles is written as it is:
-     * simplifying it would take several times as long as the rest */
+    /* unasked, a contour of millions of triangles is written as it is
+     * (simplifying it would take several times as long as the rest),
+     * unless few of its vertices are corners (see DEFAULT_SIMPLIFY_MAX) */
     if (o->mesh_tolerance < 0) {
         mo.simplify_max_triangles = DEFAULT_SIMPLIFY_MAX;
         mo.simplify_max_triangles_smooth = DEFAULT_SIMPLIFY_MAX_SMOOTH;

@@ -927,6 +927,13 @@ static int line_eval(void *ctx, sample *sm)
     return 0;
 }
 
+/* The index of the history's line at v exactly, or -1. */
+static int line_at(const pass *P, double v)
+{
+    int i = line_index(P, v);
+    return i < P->nlines && P->lines[i].v == v ? i : -1;
+}
+
 /* The line at s->x again, hinted first by the pieces of the line at
  * guide->x: a piece that the line missed while its nearest lines did too
  * (the tip of a primitive, narrower than the first samples, that a later
@@ -934,19 +941,12 @@ static int line_eval(void *ctx, sample *sm)
 static int line_again(void *ctx, sample *s, const sample *guide)
 {
     pass *P = ctx;
-    int lo = line_index(P, guide->x);
-    if (lo == P->nlines || P->lines[lo].v != guide->x) return 0;
+    int lo = line_at(P, guide->x);
+    if (lo < 0) return 0;
     P->guide = &P->lines[lo]; /* (read for hints before line_eval moves the lines) */
     int rc = line_eval(P, s);
     P->guide = NULL;
     return rc;
-}
-
-/* The history's line at v exactly, or NULL. */
-static const line *line_at(const pass *P, double v)
-{
-    int i = line_index(P, v);
-    return i < P->nlines && P->lines[i].v == v ? &P->lines[i] : NULL;
 }
 
 /* The root of the polynomial through (w, y) (n of them, 2 or 3, w[0] = 0)
@@ -1020,9 +1020,9 @@ static double narrowing(const line *next2, const line *next, const line *near, c
 static double line_guess(void *ctx, double a, double b, int kind)
 {
     const pass *P = ctx;
-    int ia = line_index(P, a), ib = line_index(P, b);
-    const line *A = line_at(P, a), *B = line_at(P, b);
-    if (!A || !B) return NAN;
+    int ia = line_at(P, a), ib = line_at(P, b);
+    if (ia < 0 || ib < 0) return NAN;
+    const line *A = &P->lines[ia], *B = &P->lines[ib];
     double ga =
         ia > 0 ? narrowing(ia > 1 ? &P->lines[ia - 2] : NULL, &P->lines[ia - 1], A, B, kind) : NAN;
     double gb = ib + 1 < P->nlines ? narrowing(ib + 2 < P->nlines ? &P->lines[ib + 2] : NULL,

@@ -334,15 +334,22 @@ static int back_to_back(const double *n1, const double *n2)
     return dot3(n1, n2) < -COS_FOLD * sqrt(dot3(n1, n1) * dot3(n2, n2));
 }
 
+/* Whether normals a and b point the same way (to about 1e-6 rad). */
+static int same_way(const double a[3], const double b[3])
+{
+    double c[3];
+    cross3(a, b, c);
+    return dot3(a, b) > 0 && dot3(c, c) <= 1e-12 * dot3(a, a) * dot3(b, b);
+}
+
 /* Whether triangle t, whose normal would be `now`, keeps its plane's
  * direction (only a corner in its plane moved). */
 static int keeps_plane(const simp *s, int32_t t, const double *now)
 {
     const int32_t *tv = s->t + 3 * t;
-    double n0[3], c[3];
+    double n0[3];
     tri_normal3(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), n0);
-    cross3(n0, now, c);
-    return dot3(n0, now) > 0 && dot3(c, c) <= 1e-12 * dot3(n0, n0) * dot3(now, now);
+    return same_way(n0, now);
 }
 
 /* Whether collapsing v into u leaves the surface folded: a moved triangle
@@ -540,11 +547,10 @@ static int flat_stays_near(queue *qu, int32_t v, const int32_t *moved, double nt
     double ref[3] = {0, 0, 0};
     for (int32_t k = s->head[v]; k >= 0 && drop; k = s->next[k]) {
         const int32_t *tv = s->t + 3 * (k / 3);
-        double n[3], c[3];
+        double n[3];
         tri_normal3(P(s, tv[0]), P(s, tv[1]), P(s, tv[2]), n);
         if (k == s->head[v]) memcpy(ref, n, sizeof n);
-        cross3(ref, n, c);
-        drop = dot3(ref, n) > 0 && dot3(c, c) <= 1e-12 * dot3(ref, ref) * dot3(n, n);
+        drop = same_way(ref, n);
     }
     qu->drop = drop;
     if (drop) return 1;

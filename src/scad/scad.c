@@ -34,11 +34,10 @@ enum { DEFAULT_MAX_RECURSION = 10000 };
 
 /* ---- geometry → csg ------------------------------------------------------------ */
 
-/* The csg tree of g (NULL for the empty set).  Out of memory, *oom is set
- * to the node that could not be made or take a child (its location goes
- * into the error). */
-/* g as a csg tree; with marked, only the leaves a '#' still marks (one
- * inside an extrusion is lost: extrude.c's extrusion_colour). */
+/* The csg tree of g (NULL for the empty set); with marked, of the leaves
+ * a '#' still marks alone (one inside an extrusion is lost: extrude.c's
+ * extrusion_colour).  Out of memory, *oom is set to the node that could
+ * not be made or take a child (its location goes into the error). */
 static csg_node *to_csg(const scad_geom *g, int marked, const scad_geom **oom)
 {
     if (!g || *oom || scad_geom_is_empty(g) || (marked && g->is_leaf && !g->mat.highlight))
