@@ -217,9 +217,15 @@ int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes, const
 /* Tell polytope s which faces border which: tri[i] is the triangle of the
  * hull that plane i is the plane of, as indices into its vertices (in
  * order, counter-clockwise from outside).  Lines then walk from face to
- * face instead of clipping against every plane (polytope.c).  0; or -1
- * when the triangles do not close up (nothing changes) or out of memory. */
+ * face instead of clipping against every plane (polytope.c), and the
+ * triangles are kept (iv_polytope_triangles).  0; or -1 when the
+ * triangles do not close up (every edge once each way) or out of memory
+ */
 int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3]);
+/* The triangles iv_polytope_set_faces kept, one per plane (*n of them), or
+ * NULL (other kinds, or none given).  For meshes written as the polytope's
+ * own faces. */
+const int32_t (*iv_polytope_triangles(const iv_shape *s, int *n))[3];
 /* The vertices of a polytope (borrowed), or NULL for other kinds. */
 const double (*iv_polytope_vertices(const iv_shape *s, int *n))[3];
 /* The planes of a polytope (borrowed): {nx, ny, nz, d} with unit n, inside

@@ -55,6 +55,7 @@ struct iv_polytope {
     int32_t start[6 * BINS * BINS]; /* per direction bin: the plane facing against it most */
     double eps;                     /* how far beyond an edge a crossing may lie */
     uint16_t *part;                 /* per plane: the first plane alike, its part */
+    int32_t (*tri)[3];              /* per plane, its triangle of the hull; NULL: unknown */
 };
 
 void iv_polytope_retain(iv_polytope *p)
@@ -67,6 +68,7 @@ void iv_polytope_release(iv_polytope *p)
     if (atomic_fetch_sub(&p->refs, 1) != 1) return;
     free(p->nb);
     free(p->edge);
+    free(p->tri);
     free(p->part);
     free(p->pl);
     free(p->v);
@@ -215,16 +217,16 @@ int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3])
 {
     if (s->kind != IV_SHAPE_POLYTOPE) return -1;
     iv_polytope *p = s->u.polytope.p;
-    if (p->n < WALK_MIN) return 0;
     size_t cap = 16;
     while (cap < 6 * (size_t)p->n)
         cap *= 2;
     uint64_t *key = calloc(cap, sizeof *key);
     int32_t *val = malloc(cap * sizeof *val);
-    int32_t(*nb)[3] = malloc((size_t)p->n * sizeof *nb);
-    double(*edge)[3][4] = malloc((size_t)p->n * sizeof *edge);
+    int32_t(*nb)[3] = malloc((size_t)p->n * sizeof *nb),
+    (*own)[3] = malloc((size_t)p->n * sizeof *own);
+    double(*edge)[3][4] = NULL;
     int rc = -1;
-    if (!key || !val || !nb || !edge) goto done;
+    if (!key || !val || !nb || !own) goto done;
     /* an edge a→b of one triangle is b→a of its neighbour */
     for (int f = 0; f < p->n; f++)
         for (int k = 0; k < 3; k++) {
@@ -240,7 +242,14 @@ int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3])
             size_t h = edge_slot(key, cap, tri[f][(k + 1) % 3], tri[f][k]);
             if (!key[h]) goto done; /* an open edge */
             nb[f][k] = val[h];
+            own[f][k] = tri[f][k];
         }
+    p->tri = own;
+    own = NULL;
+    rc = 0;
+    if (p->n < WALK_MIN) goto done; /* clipping is quicker: no walks */
+    rc = -1;
+    if (!(edge = malloc((size_t)p->n * sizeof *edge))) goto done;
     /* Edge k of triangle f, a–b, as the plane through it square to the
      * face, facing away from the third corner: a crossing of f's plane
      * lies on the triangle when no edge plane has it in front.  (Not the
@@ -289,8 +298,16 @@ done:
     free(key);
     free(val);
     free(nb);
+    free(own);
     free(edge);
     return rc;
+}
+
+const int32_t (*iv_polytope_triangles(const iv_shape *s, int *n))[3]
+{
+    if (s->kind != IV_SHAPE_POLYTOPE || !s->u.polytope.p->tri) return NULL;
+    *n = s->u.polytope.p->n;
+    return (const int32_t(*)[3])s->u.polytope.p->tri;
 }
 
 /* Clip the line o + t·d against every plane: 1 with the entry t0 (plane

@@ -1310,11 +1310,16 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
     }
     /* The grids cover disjoint boxes: their meshes are disjoint too.  They
      * sample one root, so they share its palette. */
-    for (; d; d = d->next)
-        if (contour_grid(d, o, m, err, errlen) != 0) {
+    for (const mesh_dexels *g = d; g; g = g->next)
+        if (g->exact < 0 && contour_grid(g, o, m, err, errlen) != 0) {
             mesh_free(m);
             return -1;
         }
+    if (mesh_exact_append(d, m) != 0) {
+        mesh_free(m);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     *out = m;
     return 0;
 }

@@ -65,6 +65,7 @@ void mesh_options_default(mesh_options *o)
     o->tolerance = 0;
     o->simplify_max_triangles = 0;
     o->simplify_max_triangles_smooth = 0;
+    o->contour_all = 0;
     o->progress = NULL;
     o->progress_ud = NULL;
 }
@@ -455,6 +456,7 @@ int mesh_dexels_cast(const csg_scene *s, const mesh_options *o, double h, const 
     d->h = h;
     d->scene = s;
     d->root = o->root;
+    d->exact = -1;
     size_t rays = 1;
     double cells[3], total = 1;
     for (int a = 0; a < 3; a++) {

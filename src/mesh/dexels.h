@@ -58,14 +58,20 @@ struct mesh_dexels {
      * exact points on sharp edges (snap.c). */
     const csg_scene *scene;
     int root;
+    /* A primitive alone on this grid whose own faces are its mesh
+     * (exact_faces.c), or -1: the grid is contoured. */
+    int32_t exact;
     /* The next grid, over a part of the model far from this one's
      * (mesh_dexels_new samples such parts each on its own grid). */
     struct mesh_dexels *next;
 };
 
-/* A box of the model sampled on a grid of its own (pieces.c). */
+/* A box of the model sampled on a grid of its own (pieces.c): one
+ * operand of the top-level unions alone (a leaf: its primitive, prim) or
+ * several (prim -1). */
 typedef struct mesh_piece {
     double lo[3], hi[3];
+    int32_t prim;
 } mesh_piece;
 
 /* The far-apart parts of root: boxes no two of whose grids (spacing h, or
@@ -74,6 +80,27 @@ typedef struct mesh_piece {
 int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **out);
 /* The longest side of a piece's box. */
 double mesh_piece_longest(const mesh_piece *p);
+
+/* Whether primitive prim can be meshed as its own faces (exact_faces.c):
+ * a polytope that knows its triangles, or a box, whose corners stay apart
+ * and triangles keep their area as floats. */
+int mesh_exact_faces(const csg_scene *s, int32_t prim);
+/* The faces of the grids of d whose primitive is meshed so (their exact),
+ * appended to m and counted in its exact_nv and exact_nt; 0 or -1 when out
+ * of memory. */
+int mesh_exact_append(const mesh_dexels *d, mesh *m);
+/* A mesh's exact faces set aside while the rest is simplified: detach
+ * takes them out of m into *x (0, or -1 when out of memory: m unchanged),
+ * attach puts them back at its end and frees x (0 or -1). */
+typedef struct mesh_exact_tail {
+    float *v;
+    int32_t *t; /* indices into v */
+    uint16_t *tc;
+    int nv, nt;
+} mesh_exact_tail;
+int mesh_exact_detach(mesh *m, mesh_exact_tail *x);
+int mesh_exact_attach(mesh *m, mesh_exact_tail *x);
+void mesh_exact_tail_free(mesh_exact_tail *x);
 
 /* Cast the three families on one grid of spacing h around [lo, hi] (the
  * caller's options for threads, root and limits) into a new sampling *out;
@@ -169,6 +196,9 @@ struct mesh {
     int captc;
     float (*pal)[4];
     int npal;
+    /* The last exact_nv vertices and exact_nt triangles are primitives' own
+     * faces (mesh_exact_append): exact, and left as they are. */
+    int exact_nv, exact_nt;
 };
 
 /* Vertex i of m, in doubles. */
@@ -278,6 +308,11 @@ int mesh_unfold(mesh *m, int t0, double h);
  * no sliver and a new edge whose middle lies nearer the exact surface (sn)
  * than the old one's (unfold.c); 0 or -1 when out of memory. */
 int mesh_unsliver(mesh *m, mesh_snapper *sn, double h);
+/* Flip each edge of m (grid spacing h) whose two triangles, one of them
+ * beside a sharp edge (20°), stray farther than tol from the exact surface
+ * (sn) — a chamfer cut across a crease — where the flipped two stray less
+ * than half as far (unfold.c); 0 or -1 when out of memory. */
+int mesh_unchamfer(mesh *m, mesh_snapper *sn, double h, double tol);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and

@@ -101,6 +101,10 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
     if (!(h > 0) || !isfinite(h)) return 0; /* a point: nothing to sample */
     mesh_dexels *d;
     int rc = mesh_dexels_cast(s, o, h, p->lo, p->hi, &d, err, errlen);
+    if (rc == 0 && !o->contour_all && p->prim >= 0 && mesh_exact_faces(s, p->prim)) {
+        d->exact = p->prim; /* meshed as its own faces: no finer grid needed */
+        refine = 0;
+    }
     for (int round = 0, k = 1; rc == 0 && refine && round < MESH_REFINE_ROUNDS; round++) {
         int f = refine_factor(d, h, budget);
         if (f <= k) break;
@@ -217,7 +221,7 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
         mesh_dexels_free(head);
         return rc;
     }
-    if (!head) head = calloc(1, sizeof *head); /* empty: n = 0, no rays */
+    if (!head && (head = calloc(1, sizeof *head)) != NULL) head->exact = -1; /* empty: no rays */
     if (!head) {
         snprintf(err, errlen, "out of memory");
         return -1;

@@ -50,6 +50,7 @@ static void collect(gather *g, int32_t i)
     if (g->over) return;
     memcpy(g->p[g->n].lo, f.lo, sizeof f.lo);
     memcpy(g->p[g->n].hi, f.hi, sizeof f.hi);
+    g->p[g->n].prim = f.is_leaf ? f.prim : -1;
     g->n++;
 }
 
@@ -87,6 +88,7 @@ int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **
     if (g.over || g.n == 0) {
         g.n = 1;
         csg_scene_bounds(s, root, g.p[0].lo, g.p[0].hi);
+        g.p[0].prim = -1;
     }
     /* Merge any two pieces whose grids meet, until none do. */
     for (int merged = 1; merged;) {
@@ -99,6 +101,7 @@ int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **
                     g.p[i].lo[a] = fmin(g.p[i].lo[a], g.p[j].lo[a]);
                     g.p[i].hi[a] = fmax(g.p[i].hi[a], g.p[j].hi[a]);
                 }
+                g.p[i].prim = -1;
                 g.p[j--] = g.p[--g.n];
                 merged = 1;
             }

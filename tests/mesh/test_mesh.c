@@ -114,12 +114,15 @@ static double sd_csg_example(const double p[3])
     return d;
 }
 
+/* The contour's options (a box alone would be written as its own faces:
+ * mesh_own_faces tests those). */
 static mesh_options opts_h(double h)
 {
     mesh_options o;
     mesh_options_default(&o);
     o.h = h;
     o.threads = 2;
+    o.contour_all = 1;
     return o;
 }
 
@@ -663,6 +666,7 @@ Test(mesh_contour, stress_manifold)
             mesh_options_default(&o);
             o.cells_per_side = cells;
             o.threads = 2;
+            o.contour_all = 1;
             mesh *m = NULL;
             mesh_measure mm;
             char err[256] = "";
@@ -699,6 +703,7 @@ Test(mesh_contour, same_mesh_on_any_thread_count)
         mesh_options_default(&o);
         o.cells_per_side = 40;
         o.threads = q + 1;
+        o.contour_all = 1;
         char err[256] = "";
         cr_assert(mesh_from_scene(s, &o, &m[q], NULL, err, sizeof err) == 0, "%s", err);
     }

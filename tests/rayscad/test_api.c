@@ -565,6 +565,7 @@ static int mesh_triangles_of2(const char *src, double tol, long long max, long l
     mo.tolerance = tol;
     mo.simplify_max_triangles = max;
     mo.simplify_max_triangles_smooth = smooth;
+    mo.contour_all = 1; /* a box's contour, not its own faces */
     rayscad_sampling *d;
     char err[256];
     cr_assert_eq(rayscad_sampling_new(scene, &mo, &d, err, sizeof err), RAYSCAD_OK, "%s", err);

@@ -1,0 +1,186 @@
+/*
+ * exact_faces.c — a part of a model that is one polyhedral primitive alone
+ * (far from every other part: pieces.c) written as its own faces rather
+ * than contoured from its samples.
+ *
+ * A hull(), an OpenSCAD-faceted sphere or cylinder, a minkowski of
+ * polytopes: the ray queries answer them exactly, but a contour meets
+ * their many small facets only as closely as its grid allows, and the
+ * simplifier then bends them within the tolerance (hull_revolve.scad's
+ * hull of a 64 × 32 torus came out 1.44 tolerances off in places, at
+ * 10,452 triangles).  Its own triangles are exact and fewer: the hull's,
+ * as the hull made them (closed, wound outward: iv_polytope_set_faces
+ * checks that every edge is used once each way), and a box's twelve.
+ * Only where the part is alone — no other operand of the top-level unions
+ * near it — is it the model's surface there; anything near, and the part
+ * is contoured with the rest.
+ */
+#include "../intervals/vec3.h"
+#include "dexels.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A box's corners (bit k of i: the high side along axis k) and its twelve
+ * triangles, wound outward. */
+static const int BOX_TRI[12][3] = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5},  /* -x, +x */
+                                   {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},  /* -y, +y */
+                                   {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}}; /* -z, +z */
+
+/* The determinant of the linear part of m. */
+static double det3(const csg_affine m)
+{
+    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+           m[2] * (m[4] * m[9] - m[5] * m[8]);
+}
+
+/* The corners and triangles of prim's shape (object space) into *v, *nv,
+ * *t, *nt (borrowed, or BOX_TRI and the box's corners in box[8]); 0 when
+ * it has no such faces. */
+static int faces_of(const iv_shape *sh, double box[8][3], const double (**v)[3], int *nv,
+                    const int32_t (**t)[3], int *nt)
+{
+    if (sh->kind == IV_SHAPE_BOX) {
+        for (int i = 0; i < 8; i++)
+            for (int k = 0; k < 3; k++)
+                box[i][k] = i >> k & 1 ? sh->u.box.hi[k] : sh->u.box.lo[k];
+        *v = (const double(*)[3])box;
+        *nv = 8;
+        *t = (const int32_t(*)[3])BOX_TRI;
+        *nt = 12;
+        return 1;
+    }
+    *t = iv_polytope_triangles(sh, nt);
+    *v = iv_polytope_vertices(sh, nv);
+    return *t && *v;
+}
+
+static int cmp_point(const void *a, const void *b)
+{
+    const double *p = a, *q = b;
+    for (int k = 0; k < 3; k++)
+        if (p[k] != q[k]) return p[k] < q[k] ? -1 : 1;
+    return 0;
+}
+
+int mesh_exact_faces(const csg_scene *s, int32_t prim)
+{
+    double box[8][3];
+    const double(*v)[3];
+    const int32_t(*t)[3];
+    int nv, nt;
+    csg_affine w;
+    if (!faces_of(csg_scene_prim_shape(s, prim), box, &v, &nv, &t, &nt)) return 0;
+    csg_scene_prim_transform(s, prim, w);
+    double d = det3(w);
+    if (!isfinite(d) || d == 0) return 0;
+    /* as the mesh will hold them (floats): no two corners at one place, no
+     * triangle without area */
+    double(*p)[3] = malloc((size_t)nv * sizeof *p), (*q)[3] = malloc((size_t)nv * sizeof *q);
+    int ok = p && q;
+    for (int i = 0; ok && i < nv; i++) {
+        csg_affine_point(w, v[i], p[i]);
+        mesh_round_to_float(p[i]);
+        ok = isfinite(p[i][0]) && isfinite(p[i][1]) && isfinite(p[i][2]);
+    }
+    for (int i = 0; ok && i < nt; i++) {
+        double n[3];
+        tri_normal3(p[t[i][0]], p[t[i][1]], p[t[i][2]], n);
+        ok = dot3(n, n) > 0;
+    }
+    if (ok) {
+        memcpy(q, p, (size_t)nv * sizeof *q);
+        qsort(q, (size_t)nv, sizeof *q, cmp_point);
+        for (int i = 1; ok && i < nv; i++)
+            ok = cmp_point(q[i - 1], q[i]) != 0;
+    }
+    free(p);
+    free(q);
+    return ok;
+}
+
+/* Append the faces of grid d's primitive to m; 0 or -1 when out of memory. */
+static int append(const mesh_dexels *d, mesh *m)
+{
+    double box[8][3];
+    const double(*v)[3];
+    const int32_t(*t)[3];
+    int nv, nt;
+    csg_affine w;
+    if (!faces_of(csg_scene_prim_shape(d->scene, d->exact), box, &v, &nv, &t, &nt)) return 0;
+    csg_scene_prim_transform(d->scene, d->exact, w);
+    int turn = det3(w) < 0; /* a mirror winds them the other way */
+    uint16_t color = mesh_palette_of(&d->pal, d->exact);
+    int32_t base = m->nv;
+    for (int i = 0; i < nv; i++) {
+        double p[3];
+        csg_affine_point(w, v[i], p);
+        if (mesh_push_vertex(m, p[0], p[1], p[2]) < 0) return -1;
+    }
+    for (int i = 0; i < nt; i++)
+        if (mesh_push_triangle(m, base + t[i][0], base + t[i][turn ? 2 : 1],
+                               base + t[i][turn ? 1 : 2], color) < 0)
+            return -1;
+    return 0;
+}
+
+int mesh_exact_append(const mesh_dexels *d, mesh *m)
+{
+    int32_t nv = m->nv, nt = m->nt;
+    for (; d; d = d->next)
+        if (d->exact >= 0 && append(d, m) != 0) return -1;
+    m->exact_nv += m->nv - nv;
+    m->exact_nt += m->nt - nt;
+    return 0;
+}
+
+int mesh_exact_detach(mesh *m, mesh_exact_tail *x)
+{
+    memset(x, 0, sizeof *x);
+    if (!m->exact_nt) return 0;
+    int32_t v0 = m->nv - m->exact_nv, t0 = m->nt - m->exact_nt;
+    x->v = malloc(3 * (size_t)m->exact_nv * sizeof *x->v);
+    x->t = malloc(3 * (size_t)m->exact_nt * sizeof *x->t);
+    x->tc = m->npal ? malloc((size_t)m->exact_nt * sizeof *x->tc) : NULL;
+    if (!x->v || !x->t || (m->npal && !x->tc)) {
+        mesh_exact_tail_free(x);
+        return -1;
+    }
+    memcpy(x->v, m->v + 3 * (size_t)v0, 3 * (size_t)m->exact_nv * sizeof *x->v);
+    for (size_t i = 0; i < 3 * (size_t)m->exact_nt; i++)
+        x->t[i] = m->t[3 * (size_t)t0 + i] - v0;
+    if (x->tc) memcpy(x->tc, m->tc + t0, (size_t)m->exact_nt * sizeof *x->tc);
+    x->nv = m->exact_nv;
+    x->nt = m->exact_nt;
+    m->nv = v0;
+    m->nt = t0;
+    m->exact_nv = m->exact_nt = 0;
+    return 0;
+}
+
+int mesh_exact_attach(mesh *m, mesh_exact_tail *x)
+{
+    int32_t base = m->nv, rc = 0;
+    for (int i = 0; i < x->nv && rc == 0; i++)
+        rc = mesh_push_vertex(m, x->v[3 * i], x->v[3 * i + 1], x->v[3 * i + 2]) < 0 ? -1 : 0;
+    for (int i = 0; i < x->nt && rc == 0; i++)
+        rc = mesh_push_triangle(m, base + x->t[3 * i], base + x->t[3 * i + 1],
+                                base + x->t[3 * i + 2], x->tc ? x->tc[i] : 0) < 0
+                 ? -1
+                 : 0;
+    if (rc == 0) {
+        m->exact_nv += x->nv;
+        m->exact_nt += x->nt;
+    }
+    mesh_exact_tail_free(x);
+    return rc;
+}
+
+void mesh_exact_tail_free(mesh_exact_tail *x)
+{
+    free(x->v);
+    free(x->t);
+    free(x->tc);
+    memset(x, 0, sizeof *x);
+}

@@ -1,0 +1,174 @@
+/*
+ * test_own_faces.c — a part that is one polyhedral primitive alone is
+ * meshed as its own faces (src/mesh/exact_faces.c): against closed forms
+ * (corners, volumes, the Euler count of a closed triangulated sphere) and
+ * against the contour where the part is not alone.
+ */
+#include <criterion/criterion.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../include/rayscad.h"
+#include "scene_of.h"
+
+#define PI 3.14159265358979323846
+
+/* The mesh of src at the default options, simplified to 0.01 (contour_all
+ * as given: 2 for the contour unsimplified). */
+static rayscad_mesh *mesh_of(const char *src, int contour_all)
+{
+    rayscad_scene *scene = scene_of(src, NULL);
+    rayscad_mesh_options mo;
+    rayscad_mesh_options_default(&mo);
+    mo.tolerance = contour_all == 2 ? 0 : 0.01;
+    mo.contour_all = contour_all != 0;
+    rayscad_sampling *d;
+    char err[256];
+    cr_assert_eq(rayscad_sampling_new(scene, &mo, &d, err, sizeof err), RAYSCAD_OK, "%s", err);
+    rayscad_mesh *m;
+    cr_assert_eq(rayscad_sampling_mesh(d, &mo, &m, err, sizeof err), RAYSCAD_OK, "%s", err);
+    rayscad_sampling_free(d);
+    rayscad_scene_free(scene);
+    return m;
+}
+
+static int cmp_edge(const void *a, const void *b)
+{
+    const int64_t *x = a, *y = b;
+    return (*x > *y) - (*x < *y);
+}
+
+/* Whether every directed edge is used once and its reverse once (closed,
+ * 2-manifold at the edges, consistently wound), with no vertex repeated. */
+static int closed(const rayscad_mesh *m)
+{
+    int nt = rayscad_mesh_triangle_count(m), nv = rayscad_mesh_vertex_count(m);
+    const int32_t *t = rayscad_mesh_triangles(m);
+    int64_t *e = malloc(3 * (size_t)nt * sizeof *e);
+    cr_assert(e);
+    for (int i = 0; i < nt; i++)
+        for (int k = 0; k < 3; k++)
+            e[3 * i + k] = (int64_t)t[3 * i + k] * nv + t[3 * i + (k + 1) % 3];
+    qsort(e, 3 * (size_t)nt, sizeof *e, cmp_edge);
+    int ok = 1;
+    for (size_t i = 0; ok && i < 3 * (size_t)nt; i++) {
+        int64_t a = e[i] / nv, b = e[i] % nv, rev = b * nv + a;
+        ok = a != b && (i == 0 || e[i] != e[i - 1]) &&
+             bsearch(&rev, e, 3 * (size_t)nt, sizeof *e, cmp_edge) != NULL;
+    }
+    free(e);
+    return ok;
+}
+
+/* Whether the vertex at p (within eps) is in m. */
+static int has_vertex(const rayscad_mesh *m, const double p[3], double eps)
+{
+    const float *v = rayscad_mesh_vertices(m);
+    for (int i = 0; i < rayscad_mesh_vertex_count(m); i++)
+        if (fabs(v[3 * i] - p[0]) < eps && fabs(v[3 * i + 1] - p[1]) < eps &&
+            fabs(v[3 * i + 2] - p[2]) < eps)
+            return 1;
+    return 0;
+}
+
+/* A turned box: its eight corners where the rotation puts them, twelve
+ * triangles, 6000 to float rounding. */
+Test(own_faces, turned_box_is_its_corners)
+{
+    rayscad_mesh *m = mesh_of("rotate([20, 30, 40]) cube([10, 20, 30]);", 0);
+    cr_expect_eq(rayscad_mesh_triangle_count(m), 12);
+    cr_expect_eq(rayscad_mesh_vertex_count(m), 8);
+    cr_expect(closed(m));
+    cr_expect_float_eq(rayscad_mesh_volume(m), 6000, 6000 * 1e-6);
+    /* OpenSCAD's rotate([a, b, c]): about x, then y, then z */
+    double a = 20 * PI / 180, b = 30 * PI / 180, c = 40 * PI / 180;
+    for (int i = 0; i < 8; i++) {
+        double p[3] = {i & 1 ? 10 : 0, i & 2 ? 20 : 0, i & 4 ? 30 : 0}, q[3], r[3], s[3];
+        q[0] = p[0], q[1] = cos(a) * p[1] - sin(a) * p[2], q[2] = sin(a) * p[1] + cos(a) * p[2];
+        r[0] = cos(b) * q[0] + sin(b) * q[2], r[1] = q[1], r[2] = -sin(b) * q[0] + cos(b) * q[2];
+        s[0] = cos(c) * r[0] - sin(c) * r[1], s[1] = sin(c) * r[0] + cos(c) * r[1], s[2] = r[2];
+        cr_expect(has_vertex(m, s, 1e-5), "corner %d (%g, %g, %g) missing", i, s[0], s[1], s[2]);
+    }
+    rayscad_mesh_free(m);
+}
+
+/* hull() of two cubes is the box spanning them (3000); of an octahedron's
+ * six tips its eight faces ((4/3)·a³); mirrored, still wound outward. */
+Test(own_faces, hulls_are_their_faces)
+{
+    rayscad_mesh *m = mesh_of("hull() { cube(10); translate([20, 0, 0]) cube(10); }", 0);
+    cr_expect_eq(rayscad_mesh_triangle_count(m), 12);
+    cr_expect(closed(m));
+    cr_expect_float_eq(rayscad_mesh_volume(m), 3000, 3000 * 1e-6);
+    rayscad_mesh_free(m);
+
+    const char *octa = "mirror([1, 0, 0]) translate([5, 0, 0]) hull() polyhedron("
+                       "[[3, 0, 0], [-3, 0, 0], [0, 3, 0], [0, -3, 0], [0, 0, 3], [0, 0, -3]],"
+                       " [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4],"
+                       "  [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]]);";
+    m = mesh_of(octa, 0);
+    cr_expect(closed(m));
+    cr_expect_eq(rayscad_mesh_triangle_count(m), 8);
+    cr_expect_float_eq(rayscad_mesh_volume(m), 36, 36 * 1e-6); /* 4/3 · 3³ */
+    cr_expect(has_vertex(m, (double[3]){-8, 0, 0}, 1e-6) &&
+                  has_vertex(m, (double[3]){-2, 0, 0}, 1e-6),
+              "the mirrored tip");
+    rayscad_mesh_free(m);
+}
+
+/* A faceted sphere alone: a closed triangulated sphere (2V - 4
+ * triangles), its vertices on the sphere, a volume below the ball's by the
+ * facets' share; its colour kept on every triangle. */
+Test(own_faces, faceted_sphere_keeps_its_colour)
+{
+    rayscad_mesh *m = mesh_of("color(\"red\") sphere(5, $fn = 10);", 0);
+    int nv = rayscad_mesh_vertex_count(m), nt = rayscad_mesh_triangle_count(m);
+    cr_expect_eq(nv, 10 * 5); /* OpenSCAD's rings: (10 + 1) / 2 of 10 */
+    cr_expect_eq(nt, 2 * nv - 4);
+    cr_expect(closed(m));
+    const float *v = rayscad_mesh_vertices(m);
+    for (int i = 0; i < nv; i++) {
+        double r =
+            sqrt(v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
+        cr_expect_float_eq(r, 5, 1e-5, "vertex %d at radius %g", i, r);
+    }
+    double vol = rayscad_mesh_volume(m), ball = 4.0 / 3 * PI * 125;
+    cr_expect(vol < ball && vol > 0.8 * ball, "volume %g", vol);
+    cr_assert_eq(rayscad_mesh_color_count(m), 1);
+    const float *rgba = rayscad_mesh_colors(m);
+    cr_expect(rgba[0] == 1 && rgba[1] == 0 && rgba[2] == 0);
+    const uint16_t *tc = rayscad_mesh_triangle_colors(m);
+    for (int i = 0; i < nt; i++)
+        cr_expect_eq(tc[i], 1);
+    rayscad_mesh_free(m);
+}
+
+/* Near another operand the part is contoured with it (its faces alone
+ * would pass through the other's); far from it, it keeps its faces while
+ * the other is contoured; contour_all contours it too. */
+Test(own_faces, only_alone)
+{
+    const char *near = "cube(10); translate([10, 10, 10]) sphere(3);";
+    rayscad_mesh *m = mesh_of(near, 0);
+    cr_expect(closed(m));
+    cr_expect_gt(rayscad_mesh_triangle_count(m), 12 + 100);
+    /* 1000 + the sphere's seven eighths outside the cube, within the
+     * simplification's few thousandths */
+    double want = 1000 + 4.0 / 3 * PI * 27 * (1 - 1.0 / 8);
+    cr_expect_float_eq(rayscad_mesh_volume(m), want, want * 3e-3);
+    rayscad_mesh_free(m);
+
+    m = mesh_of("cube(10); translate([100, 0, 0]) sphere(3);", 0);
+    cr_expect(closed(m));
+    cr_expect(has_vertex(m, (double[3]){10, 10, 10}, 1e-6));
+    want = 1000 + 4.0 / 3 * PI * 27;
+    cr_expect_float_eq(rayscad_mesh_volume(m), want, want * 3e-3);
+    rayscad_mesh_free(m);
+
+    m = mesh_of("sphere(5, $fn = 10);", 2);
+    cr_expect(closed(m));
+    cr_expect_neq(rayscad_mesh_vertex_count(m), 50, "the facets' own corners");
+    rayscad_mesh_free(m);
+}
