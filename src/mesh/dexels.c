@@ -648,5 +648,5 @@ void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
     memset(out, 0, sizeof *out);
     out->min_wall = out->min_gap = INFINITY;
     for (; d; d = d->next)
-        thin_grid(d, thickness, out);
+        if (d->exact < 0) thin_grid(d, thickness, out); /* its own faces lose nothing */
 }

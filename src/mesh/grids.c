@@ -101,7 +101,8 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
     if (!(h > 0) || !isfinite(h)) return 0; /* a point: nothing to sample */
     mesh_dexels *d;
     int rc = mesh_dexels_cast(s, o, h, p->lo, p->hi, &d, err, errlen);
-    if (rc == 0 && !o->contour_all && p->prim >= 0 && mesh_exact_faces(s, p->prim)) {
+    if (rc == 0 && o->tolerance > 0 && !o->contour_all && p->prim >= 0 &&
+        mesh_exact_faces(s, p->prim)) {
         d->exact = p->prim; /* meshed as its own faces: no finer grid needed */
         refine = 0;
     }

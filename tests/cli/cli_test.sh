@@ -130,7 +130,8 @@ check "echo output matches openscad's" cmp -s e.echo ref.echo
 # ---- meshes and --measure ----
 printf 'cube([10, 20, 30]);\n' >box.scad
 printf 'sphere(r = 10, $fn = 100);\n' >ball.scad
-printf 'cube([10, 10, 0.2]);\n' >plate.scad
+printf 'cube([10, 10, 0.2]);\n' >lone_plate.scad
+printf 'difference() { cube([10, 10, 0.2]); translate([5, 5, -1]) cylinder(r = 1, h = 3); }\n' >plate.scad
 printf 'cube(1);\ncube(2, center = true);\n' >two.scad
 printf 'echo("nothing");\n' >empty.scad
 
@@ -270,6 +271,10 @@ run plate.scad -o plate.stl --mesh-size 0.3
 check "a plate thinner than h warns on any grid" grep -q "walls thinner than the grid spacing 0.3" err.txt
 run plate.scad -o plate.stl
 check "a plate 2.5 cells thick does not warn" sh -c "test $rc -eq 0 && test ! -s err.txt"
+# A box alone is written as its own faces, however thin.
+run lone_plate.scad -o plate.stl --mesh-size 0.5
+check "a lone plate is its twelve triangles" \
+    sh -c "test $rc -eq 0 && test ! -s err.txt && test \$(grep -c 'facet normal' plate.stl) -eq 12"
 
 # Failed mesh outputs never leave a file behind.
 echo "precious" >keep.stl
