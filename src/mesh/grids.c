@@ -167,6 +167,7 @@ static int default_spacings(const csg_scene *s, const mesh_options *o, mesh_piec
         total += pred[i];
     if (total > MESH_PARTS_CROSSINGS) { /* too many parts: one grid */
         *np = 1;
+        p[0].prim = -1;
         for (int a = 0; a < 3; a++) {
             p[0].lo[a] = lo[a];
             p[0].hi[a] = hi[a];
