@@ -136,11 +136,8 @@ done:
  * again, to AGAIN times those bounds: the faces' vertices go, and the
  * error does not add up (at the full bounds, hull_revolve.scad's 64 x 32
  * facets came out with 0.16 % of the surface's samples beyond the
- * tolerance, 0.015 % before).  Chamfers across creases are flipped
- * (mesh_unchamfer) before mesh_tighten, which then splits fewer triangles
- * there (bored_cone.scad 16,870 -> 16,624), and after it, where its splits
- * left an edge uncut between two points on a crease.  Primitives' own
- * faces (mesh_exact_append) are set aside meanwhile: they are exact. */
+ * tolerance, 0.015 % before).  Primitives' own faces
+ * (mesh_exact_append) are set aside meanwhile: they are exact. */
 #define SMOOTH 1.6
 #define EDGE 0.9
 #define AGAIN 0.25
@@ -169,9 +166,7 @@ int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_o
         rc = mesh_simplify(m, AGAIN * SMOOTH * tol, AGAIN * EDGE * tol, &sn, mesh_thread_count(o),
                            err, errlen);
     if (rc == 0 && (mesh_balance(m, &sn, SMOOTH * tol) != 0 || mesh_unsliver(m, &sn, d->h) != 0 ||
-                    mesh_unchamfer(m, &sn, d->h, tol) != 0 ||
-                    mesh_tighten(m, &sn, tol, mesh_thread_count(o)) != 0 ||
-                    mesh_unchamfer(m, &sn, d->h, tol) != 0)) {
+                    mesh_tighten(m, &sn, tol, mesh_thread_count(o)) != 0)) {
         snprintf(err, errlen, "out of memory simplifying the mesh");
         rc = -1;
     }

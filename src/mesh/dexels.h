@@ -308,11 +308,6 @@ int mesh_unfold(mesh *m, int t0, double h);
  * no sliver and a new edge whose middle lies nearer the exact surface (sn)
  * than the old one's (unfold.c); 0 or -1 when out of memory. */
 int mesh_unsliver(mesh *m, mesh_snapper *sn, double h);
-/* Flip each edge of m (grid spacing h) whose two triangles, one of them
- * beside a sharp edge (20°), stray farther than tol from the exact surface
- * (sn) — a chamfer cut across a crease — where the flipped two stray less
- * than half as far (unfold.c); 0 or -1 when out of memory. */
-int mesh_unchamfer(mesh *m, mesh_snapper *sn, double h, double tol);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and

@@ -1,8 +1,7 @@
 /*
  * unfold.c — the contour's folds (two triangles back to back across an
  * edge) taken away by flipping that edge (see dexels.h, mesh_unfold), and
- * a simplified mesh's slivers and chamfers likewise (mesh_unsliver,
- * mesh_unchamfer).
+ * a simplified mesh's slivers likewise (mesh_unsliver).
  *
  * Every vertex of the contour lies on the surface, but where a crease or a
  * surface passes close to a grid node, the loops of neighbouring cells can
@@ -28,19 +27,6 @@
  * other, the flip leaves two that do likewise and are no slivers, and cd's
  * middle lies nearer the surface than ab's (on a surface bent one way
  * only, a sliver along the straight way is the best shape: a torus's top).
- *
- * Where a crease (the rim of a hole, a cylinder leaving a box's face) was
- * split by mesh_tighten at points of the edge under two triangles' sides,
- * the edge between those points can stay uncut: two vertices c and d on
- * the crease, and the edge ab between them joining a vertex on one side to
- * one on the other, which cuts the corner off (bored_cone.scad's cross
- * hole: 0.012 from the surface, 15 tolerances; tighten measures only
- * triangles on smooth parts).  Flipped to cd when one of the two triangles
- * bends 20° or more against a neighbour, their centroids or sides'
- * middles lie farther than the tolerance from the surface, and the flipped
- * two lie less than half as far, turned less than 90° from the two they
- * were: rotated_box_pin.scad 8 -> 2.1 tolerances at most, hull_extrusions
- * 5.2 -> 2.7 (before its hulls were written as their own faces).
  */
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -69,9 +55,7 @@ struct fold_mesh {
     double (*n)[3]; /* each triangle's unit normal, when has */
     uint8_t *has;
     flip_rule wanted;
-    mesh_snapper *sn; /* the surface (sliver_wanted, chamfer_wanted) */
-    double tol;       /* chamfer_wanted */
-    float *stray;     /* chamfer_wanted: each triangle's stray, when measured; NAN */
+    mesh_snapper *sn; /* the surface (sliver_wanted) */
 };
 
 static int32_t *corners(const fold_mesh *f, int32_t t)
@@ -260,93 +244,6 @@ static int sliver_wanted(const fold_mesh *f, const quad *q, double n3[3], double
     return sag(f, q->c, q->d, n34) < sag(f, q->a, q->b, n12);
 }
 
-/* How far x lies from the surface, at most: the nearest crossing on lines
- * through it along unit n and on rings 30° and 60° off it; reach when
- * none is nearer. */
-static double distance(const fold_mesh *f, const double x[3], const double n[3], double reach,
-                       double enough)
-{
-    double e[3] = {1, 0, 0}, g[3], best = reach;
-    if (fabs(n[0]) > 0.6) e[0] = 0, e[1] = 1;
-    cross3(n, e, g);
-    double gl = sqrt(dot3(g, g));
-    for (int k = 0; k < 3; k++)
-        g[k] /= gl;
-    cross3(n, g, e);
-    static const double tilts[3] = {0, 0.5235987755982988, 1.0471975511965976};
-    for (int ring = 0; ring < 3 && best > enough; ring++)
-        for (int i = 0; i < (ring ? 8 : 1) && best > enough; i++) {
-            double tilt = tilts[ring], az = i * 3.14159265358979323846 / 4;
-            double dir[3], hit[3], hn[3], d[3];
-            for (int k = 0; k < 3; k++)
-                dir[k] = cos(tilt) * n[k] + sin(tilt) * (cos(az) * e[k] + sin(az) * g[k]);
-            if (!mesh_snap_probe(f->sn, x, dir, best, -1, hit, hn)) continue;
-            sub3(hit, x, d);
-            best = fmin(best, sqrt(dot3(d, d)));
-        }
-    return best;
-}
-
-/* How far the triangle a, b, c (unit normal n) strays from the surface:
- * the largest distance of its centroid and its sides' middles, or some
- * value at most `enough` when they all lie within that. */
-static double stray(const fold_mesh *f, int32_t a, int32_t b, int32_t c, const double n[3],
-                    double enough)
-{
-    double p[3][3], x[3], worst = 0;
-    mesh_vertex_at(f->m, a, p[0]);
-    mesh_vertex_at(f->m, b, p[1]);
-    mesh_vertex_at(f->m, c, p[2]);
-    for (int i = 0; i < 4; i++) {
-        for (int k = 0; k < 3; k++)
-            x[k] = i ? 0.5 * (p[i - 1][k] + p[i % 3][k]) : (p[0][k] + p[1][k] + p[2][k]) / 3;
-        worst = fmax(worst, distance(f, x, n, 8 * f->tol, enough));
-    }
-    return worst;
-}
-
-/* Whether triangle t bends by 20° or more against a neighbour. */
-static int by_sharp_edge(const fold_mesh *f, int32_t t)
-{
-    for (int k = 0; k < 3; k++) {
-        int32_t o = f->opp[3 * t + k];
-        if (o >= 0 && f->has[o / 3] && dot3(f->n[t], f->n[o / 3]) < COS_SMOOTH) return 1;
-    }
-    return 0;
-}
-
-/* Triangle t's stray (measured once until it changes). */
-static double stray_of(const fold_mesh *f, int32_t t)
-{
-    if (isnan(f->stray[t])) {
-        const int32_t *tv = corners(f, t);
-        f->stray[t] = (float)stray(f, tv[0], tv[1], tv[2], f->n[t], f->tol);
-    }
-    return f->stray[t];
-}
-
-/* Whether the quad's edge ab cuts across a crease (a chamfer beside a
- * sharp edge: a point of its triangles farther than the tolerance from
- * the surface) where cd follows it: the flipped triangles stray less than
- * half as far, and turn less than 90° from the quad's mean normal. */
-static int chamfer_wanted(const fold_mesh *f, const quad *q, double n3[3], double n4[3])
-{
-    if (!f->has[q->t] || !f->has[q->u] || !(by_sharp_edge(f, q->t) || by_sharp_edge(f, q->u)))
-        return 0;
-    double before = fmax(stray_of(f, q->t), stray_of(f, q->u));
-    if (!(before > f->tol) || !flip_normals(f, q, n3, n4)) return 0;
-    const double *n1 = f->n[q->t], *n2 = f->n[q->u];
-    double n12[3];
-    for (int k = 0; k < 3; k++)
-        n12[k] = n1[k] + n2[k];
-    if (!(dot3(n3, n12) > 0 && dot3(n4, n12) > 0)) return 0;
-    double s3 = stray(f, q->c, q->a, q->d, n3, 0.49 * before);
-    if (!(s3 < 0.5 * before)) return 0;
-    double s4 = stray(f, q->d, q->b, q->c, n4, 0.49 * before);
-    if (!(s4 < 0.5 * before)) return 0;
-    return 1;
-}
-
 /* Flip the edge of half-edge x when f->wanted says so and the new edge is
  * not there already; 1 when flipped. */
 static int try_flip(fold_mesh *f, int32_t x)
@@ -366,13 +263,12 @@ static int try_flip(fold_mesh *f, int32_t x)
     link(f, 3 * q.t + 2, 3 * q.u + 2);
     note_normal(f, q.t);
     note_normal(f, q.u);
-    f->stray[q.t] = f->stray[q.u] = NAN;
     return 1;
 }
 
 /* Flip edges of triangles [t0, m->nt) of m while wanted says so, in up to
  * PASSES passes; 0 or -1 when out of memory. */
-static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *sn, double tol)
+static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *sn)
 {
     if (m->nt <= t0) return 0;
     size_t nt = (size_t)(m->nt - t0);
@@ -384,20 +280,15 @@ static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *s
                    malloc(nt * sizeof *f.n),
                    malloc(nt),
                    wanted,
-                   sn,
-                   tol,
-                   malloc(nt * sizeof *f.stray)};
-    if (!f.opp || !f.n || !f.has || !f.stray || mesh_half_twins(m, t0, f.opp) != 0) {
+                   sn};
+    if (!f.opp || !f.n || !f.has || mesh_half_twins(m, t0, f.opp) != 0) {
         free(f.opp);
         free(f.n);
         free(f.has);
-        free(f.stray);
         return -1;
     }
-    for (size_t t = 0; t < nt; t++) {
+    for (size_t t = 0; t < nt; t++)
         note_normal(&f, (int32_t)t);
-        f.stray[t] = NAN;
-    }
     for (int pass = 0; pass < PASSES; pass++) {
         int flipped = 0;
         for (size_t x = 0; x < 3 * nt; x++)
@@ -407,21 +298,15 @@ static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *s
     free(f.opp);
     free(f.n);
     free(f.has);
-    free(f.stray);
     return 0;
 }
 
 int mesh_unfold(mesh *m, int t0, double h)
 {
-    return flip_all(m, t0, h, fold_wanted, NULL, 0);
+    return flip_all(m, t0, h, fold_wanted, NULL);
 }
 
 int mesh_unsliver(mesh *m, mesh_snapper *sn, double h)
 {
-    return flip_all(m, 0, h, sliver_wanted, sn, 0);
-}
-
-int mesh_unchamfer(mesh *m, mesh_snapper *sn, double h, double tol)
-{
-    return flip_all(m, 0, h, chamfer_wanted, sn, tol);
+    return flip_all(m, 0, h, sliver_wanted, sn);
 }
