@@ -219,8 +219,7 @@ int iv_shape_polytope(iv_shape *s, const double (*planes)[4], int nplanes, const
  * order, counter-clockwise from outside).  Lines then walk from face to
  * face instead of clipping against every plane (polytope.c), and the
  * triangles are kept (iv_polytope_triangles).  0; or -1 when the
- * triangles do not close up (every edge once each way) or out of memory
- */
+ * triangles do not close up (every edge once each way) or out of memory. */
 int iv_polytope_set_faces(iv_shape *s, const int (*tri)[3]);
 /* The triangles iv_polytope_set_faces kept, one per plane (*n of them), or
  * NULL (other kinds, or none given).  For meshes written as the polytope's
