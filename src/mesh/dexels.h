@@ -82,8 +82,9 @@ int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **
 double mesh_piece_longest(const mesh_piece *p);
 
 /* Whether primitive prim can be meshed as its own faces (exact_faces.c):
- * a polytope that knows its triangles, or a box, whose corners stay apart
- * and triangles keep their area as floats. */
+ * a polytope that knows its triangles, a box, or a polyhedron (written or
+ * imported) whose triangles bound its solid (geom_mesh_is_boundary), whose
+ * corners stay apart and triangles keep their area as floats. */
 int mesh_exact_faces(const csg_scene *s, int32_t prim);
 /* The faces of the grids of d whose primitive is meshed so (their exact),
  * appended to m and counted in its exact_nv and exact_nt; 0 or -1 when out

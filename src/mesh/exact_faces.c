@@ -10,11 +10,16 @@
  * hull of a 64 × 32 torus came out 1.44 tolerances off in places, at
  * 10,452 triangles).  Its own triangles are exact and fewer: the hull's,
  * as the hull made them (closed, wound outward: iv_polytope_set_faces
- * checks that every edge is used once each way), and a box's twelve.
+ * checks that every edge is used once each way), a box's twelve, and a
+ * polyhedron's or an imported mesh's as written (turned where OpenSCAD
+ * turns them) where they are the boundary of the solid the rays see — no
+ * two crossing, no shell inside another wound alike (geom_mesh_is_boundary;
+ * a file of overlapping shells is contoured: its union).
  * Only where the part is alone — no other operand of the top-level unions
  * near it — is it the model's surface there; anything near, and the part
  * is contoured with the rest.
  */
+#include "../geom/mesh_boundary.h"
 #include "../intervals/vec3.h"
 #include "dexels.h"
 
@@ -36,11 +41,18 @@ static double det3(const csg_affine m)
 }
 
 /* The corners and triangles of prim's shape (object space) into *v, *nv,
- * *t, *nt (borrowed, or BOX_TRI and the box's corners in box[8]); 0 when
- * it has no such faces. */
+ * *t, *nt (borrowed, or BOX_TRI and the box's corners in box[8]), and *cw
+ * 1 where they wind clockwise seen from outside (a mesh's, as OpenSCAD
+ * winds them); 0 when it has no such faces. */
 static int faces_of(const iv_shape *sh, double box[8][3], const double (**v)[3], int *nv,
-                    const int32_t (**t)[3], int *nt)
+                    const int32_t (**t)[3], int *nt, int *cw)
 {
+    *cw = sh->kind == IV_SHAPE_MESH;
+    if (*cw) {
+        *t = (const int32_t(*)[3])iv_mesh_triangles(sh, nt);
+        *v = iv_mesh_vertices(sh, nv);
+        return *t && *v;
+    }
     if (sh->kind == IV_SHAPE_BOX) {
         for (int i = 0; i < 8; i++)
             for (int k = 0; k < 3; k++)
@@ -64,17 +76,35 @@ static int cmp_point(const void *a, const void *b)
     return 0;
 }
 
+/* Whether a mesh's triangles (clockwise from outside) bound the solid the
+ * rays see: geom_mesh_is_boundary on them wound the other way. */
+static int mesh_is_boundary(const double (*v)[3], int nv, const int32_t (*t)[3], int nt)
+{
+    int(*ccw)[3] = malloc((size_t)nt * sizeof *ccw);
+    if (!ccw) return 0;
+    for (int i = 0; i < nt; i++) {
+        ccw[i][0] = t[i][0];
+        ccw[i][1] = t[i][2];
+        ccw[i][2] = t[i][1];
+    }
+    int ok = geom_mesh_is_boundary(v, nv, (const int(*)[3])ccw, nt) == 1;
+    free(ccw);
+    return ok;
+}
+
 int mesh_exact_faces(const csg_scene *s, int32_t prim)
 {
     double box[8][3];
     const double(*v)[3];
     const int32_t(*t)[3];
-    int nv, nt;
+    int nv, nt, cw;
     csg_affine w;
-    if (!faces_of(csg_scene_prim_shape(s, prim), box, &v, &nv, &t, &nt)) return 0;
+    const iv_shape *sh = csg_scene_prim_shape(s, prim);
+    if (!faces_of(sh, box, &v, &nv, &t, &nt, &cw)) return 0;
     csg_scene_prim_transform(s, prim, w);
     double d = det3(w);
     if (!isfinite(d) || d == 0) return 0;
+    if (sh->kind == IV_SHAPE_MESH && !mesh_is_boundary(v, nv, t, nt)) return 0;
     /* as the mesh will hold them (floats): no two corners at one place, no
      * triangle without area */
     double(*p)[3] = malloc((size_t)nv * sizeof *p), (*q)[3] = malloc((size_t)nv * sizeof *q);
@@ -106,11 +136,11 @@ static int append(const mesh_dexels *d, mesh *m)
     double box[8][3];
     const double(*v)[3];
     const int32_t(*t)[3];
-    int nv, nt;
+    int nv, nt, cw;
     csg_affine w;
-    if (!faces_of(csg_scene_prim_shape(d->scene, d->exact), box, &v, &nv, &t, &nt)) return 0;
+    if (!faces_of(csg_scene_prim_shape(d->scene, d->exact), box, &v, &nv, &t, &nt, &cw)) return 0;
     csg_scene_prim_transform(d->scene, d->exact, w);
-    int turn = det3(w) < 0; /* a mirror winds them the other way */
+    int turn = (det3(w) < 0) != cw; /* a mirror winds them the other way */
     uint16_t color = mesh_palette_of(&d->pal, d->exact);
     int32_t base = m->nv;
     for (int i = 0; i < nv; i++) {

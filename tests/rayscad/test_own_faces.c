@@ -7,6 +7,7 @@
 #include <criterion/criterion.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -171,4 +172,49 @@ Test(own_faces, only_alone)
     cr_expect(closed(m));
     cr_expect_neq(rayscad_mesh_vertex_count(m), 50, "the facets' own corners");
     rayscad_mesh_free(m);
+}
+
+/* A polyhedron alone is its own triangles where they bound its solid: an
+ * L-shaped prism (its two hexagons in four triangles each, six quads in
+ * two: 20), a cube with a cube-shaped void (24, 1000 - 64).  Where they do
+ * not, it is contoured: two overlapping cubes written as one polyhedron
+ * (their union, 1875, not the 2000 their triangles enclose twice over),
+ * two nested cubes wound alike (the outer, 1000, not 1064). */
+Test(own_faces, polyhedra_that_bound_their_solid)
+{
+    const char *lib =
+        "function cpts(c, s) = [for (z = [0, 1], y = [0, 1], x = [0, 1]) c + s * [x, y, z]];"
+        "function cfaces(o, inward = false) = let(f = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1],"
+        "  [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]])"
+        "  [for (q = f) let(g = [for (i = q) i + o]) inward ? [g[3], g[2], g[1], g[0]] : g];";
+    static const struct {
+        const char *body;
+        int triangles; /* 0: contoured, any number */
+        double volume, rel;
+    } cases[] = {
+        {"polyhedron([[0,0,0],[20,0,0],[20,5,0],[5,5,0],[5,15,0],[0,15,0],"
+         "[0,0,8],[20,0,8],[20,5,8],[5,5,8],[5,15,8],[0,15,8]],"
+         "[[5,4,3,2,1,0],[6,7,8,9,10,11],[0,1,7,6],[1,2,8,7],[2,3,9,8],[3,4,10,9],"
+         "[4,5,11,10],[5,0,6,11]]);",
+         20, 1200, 1e-6},
+        {"polyhedron(concat(cpts([0,0,0],10), cpts([3,3,3],4)), concat(cfaces(0), cfaces(8, "
+         "true)));",
+         24, 936, 1e-6},
+        {"polyhedron(concat(cpts([0,0,0],10), cpts([5,5,5],10)), concat(cfaces(0), cfaces(8)));", 0,
+         1875, 3e-3},
+        {"polyhedron(concat(cpts([0,0,0],10), cpts([3,3,3],4)), concat(cfaces(0), cfaces(8)));", 0,
+         1000, 3e-3},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        char src[1024];
+        snprintf(src, sizeof src, "%s %s", lib, cases[i].body);
+        rayscad_mesh *m = mesh_of(src, 0);
+        cr_expect(closed(m), "case %zu", i);
+        if (cases[i].triangles)
+            cr_expect_eq(rayscad_mesh_triangle_count(m), cases[i].triangles, "case %zu", i);
+        double want = cases[i].volume;
+        cr_expect_float_eq(rayscad_mesh_volume(m), want, want * cases[i].rel, "case %zu: %g", i,
+                           rayscad_mesh_volume(m));
+        rayscad_mesh_free(m);
+    }
 }
