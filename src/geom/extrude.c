@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "earcut.h"
 #include "fragments.h"
 
 static double archimedes_length(double a, double theta)
@@ -227,6 +228,98 @@ static void cap_face(mesh_build *m, const int *f, int k, int alone)
     }
 }
 
+/* The caps of outer path o and the holes right inside it (one deeper, in
+ * it): cut into triangles (earcut.h) where it has holes or turns both ways,
+ * the same triangles turned to the top (its layer is the bottom's turned
+ * and scaled: an affine map, which keeps them apart), so that they meet
+ * only at their edges and the mesh bounds its solid; where the cut fails,
+ * each path its own face, as before (the holes' faces then cancel the
+ * outer's under the nonzero rule).  0, or -1 when out of memory. */
+static int caps(mesh_build *m, const double (*P)[2], const int *ps, int np, int o, const int *base,
+                const int *depth, int S, int top)
+{
+    int nr = 1, n = ps[o + 1] - ps[o];
+    int *rings = malloc((size_t)(np + 1) * sizeof *rings);
+    if (!rings) return -1;
+    rings[0] = o;
+    for (int q = 0; q < np; q++) {
+        const double *x = P[ps[q]];
+        if (depth[q] == depth[o] + 1 && in_path(P + ps[o], ps[o + 1] - ps[o], x[0], x[1])) {
+            rings[nr++] = q;
+            n += ps[q + 1] - ps[q];
+        }
+    }
+    int convex = nr == 1, pos = 0, neg = 0, k0 = ps[o + 1] - ps[o];
+    for (int i = 0; convex && i < k0; i++) {
+        const double *a = m->v[base[o] + i], *b = m->v[base[o] + (i + 1) % k0],
+                     *c = m->v[base[o] + (i + 2) % k0];
+        double t = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+        pos |= t > 0;
+        neg |= t < 0;
+    }
+    int(*tri)[3] = NULL, nt = -1;
+    if (!(convex && !(pos && neg))) {
+        int *idx = malloc((size_t)n * sizeof *idx),
+            *start = malloc((size_t)(nr + 1) * sizeof *start);
+        double(*xy)[2] = malloc((size_t)m->nv * sizeof *xy);
+        if (idx && start && xy) {
+            for (int i = 0; i < m->nv; i++) {
+                xy[i][0] = m->v[i][0];
+                xy[i][1] = m->v[i][1];
+            }
+            int at = 0;
+            for (int r = 0; r < nr; r++) {
+                start[r] = at;
+                for (int i = 0; i < ps[rings[r] + 1] - ps[rings[r]]; i++)
+                    idx[at++] = base[rings[r]] + i;
+            }
+            start[nr] = at;
+            nt = geom_earcut((const double(*)[2])xy, idx, start, nr, &tri);
+        }
+        free(idx);
+        free(start);
+        free(xy);
+    }
+    if (nt < 0) { /* each path its own face */
+        for (int r = 0; r < nr; r++) {
+            int p = rings[r], k = ps[p + 1] - ps[p], b = base[p];
+            int *f = malloc((size_t)k * sizeof *f);
+            if (!f) {
+                free(rings);
+                return -1;
+            }
+            for (int i = 0; i < k; i++)
+                f[i] = b + i;
+            cap_face(m, f, k, np == 1);
+            if (top) {
+                for (int i = 0; i < k; i++)
+                    f[i] = b + S * k + (k - 1 - i);
+                cap_face(m, f, k, np == 1);
+            }
+            free(f);
+        }
+        free(rings);
+        return 0;
+    }
+    for (int t = 0; t < nt; t++) {
+        mb_face(m, tri[t], 3);
+        if (!top) continue;
+        int up[3];
+        for (int j = 0; j < 3; j++) { /* the same corner S layers up */
+            int p = 0;
+            for (int r = 0; r < nr; r++)
+                if (tri[t][j] >= base[rings[r]] &&
+                    tri[t][j] < base[rings[r]] + ps[rings[r] + 1] - ps[rings[r]])
+                    p = rings[r];
+            up[2 - j] = tri[t][j] + S * (ps[p + 1] - ps[p]);
+        }
+        mb_face(m, up, 3);
+    }
+    free(tri);
+    free(rings);
+    return 0;
+}
+
 int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *out)
 {
     int n, np;
@@ -234,10 +327,12 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
     const int *ps = iv_region_paths(r, &np);
     int S = c->slices;
     mesh_build m = {0};
-    int *base = malloc((size_t)np * sizeof *base); /* first vertex of each path */
+    int *base = malloc((size_t)np * sizeof *base);              /* first vertex of each path */
+    int *depth = malloc((size_t)(np ? np : 1) * sizeof *depth); /* paths around it */
     signed char *outer = malloc((size_t)(np ? np : 1));
-    if (!base || !outer) {
+    if (!base || !depth || !outer) {
         free(base);
+        free(depth);
         free(outer);
         return -1;
     }
@@ -249,10 +344,10 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
         double area = 0;
         for (int i = 0, j = k - 1; i < k; j = i++)
             area += Q[j][0] * Q[i][1] - Q[i][0] * Q[j][1];
-        int depth = 0;
+        depth[p] = 0;
         for (int q = 0; q < np; q++)
-            if (q != p && in_path(P + ps[q], ps[q + 1] - ps[q], Q[0][0], Q[0][1])) depth++;
-        outer[p] = depth % 2 == 0;
+            if (q != p && in_path(P + ps[q], ps[q + 1] - ps[q], Q[0][0], Q[0][1])) depth[p]++;
+        outer[p] = depth[p] % 2 == 0;
         int reverse = outer[p] ? area < 0 : area > 0;
         base[p] = m.nv;
         for (int j = 0; j <= S; j++) {
@@ -296,33 +391,20 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
     /* caps: the bottom counter-clockwise seen from above (clockwise seen
      * from outside, below), the top clockwise; no top at a zero scale */
     int top = c->scale[0] > 0 && c->scale[1] > 0;
-    for (int p = 0; p < np; p++) {
-        int k = ps[p + 1] - ps[p], b = base[p];
-        int *f = malloc((size_t)k * sizeof *f);
-        if (!f) {
-            m.oom = 1;
-            break;
-        }
-        for (int i = 0; i < k; i++)
-            f[i] = b + i;
-        cap_face(&m, f, k, np == 1);
-        if (top) {
-            for (int i = 0; i < k; i++)
-                f[i] = b + S * k + (k - 1 - i);
-            cap_face(&m, f, k, np == 1);
-        }
-        free(f);
-    }
+    for (int p = 0; p < np && !m.oom; p++)
+        if (outer[p] && caps(&m, P, ps, np, p, base, depth, S, top) != 0) m.oom = 1;
     if (m.oom) goto fail;
     mb_weld(&m);
     if (m.oom || m.nf == 0) goto fail;
     int rc = iv_shape_mesh(out, (const double(*)[3])m.v, m.nv, m.idx, m.start, m.nf);
     free(base);
+    free(depth);
     free(outer);
     mb_free(&m);
     return rc < 0 ? -1 : 0;
 fail:
     free(base);
+    free(depth);
     free(outer);
     mb_free(&m);
     return -1;

@@ -218,3 +218,38 @@ Test(own_faces, polyhedra_that_bound_their_solid)
         rayscad_mesh_free(m);
     }
 }
+
+/* A twisted extrusion with a hole, or of an outline that turns both ways:
+ * its caps cut into triangles (src/geom/earcut.c) so that the mesh bounds
+ * its solid, and it is its own faces: the sides' 2 per quad per slice and
+ * n + 2h - 2 a cap, enclosing the volume the rays measure (to rounding:
+ * plane faces). */
+Test(own_faces, twisted_extrusions_with_holes)
+{
+    static const struct {
+        const char *src;
+        int triangles;
+    } cases[] = {
+        {"linear_extrude(height = 6, twist = 60, slices = 2) difference() {"
+         " square([12, 8], center = true); square([4, 4], center = true); }",
+         (4 + 4) * 2 * 2 + 2 * (8 + 2 - 2)},
+        {"linear_extrude(height = 5, twist = 30, slices = 3, scale = 0.5)"
+         " polygon([[0, 0], [10, 0], [10, 6], [6, 6], [6, 2], [4, 2], [4, 6], [0, 6]]);",
+         8 * 3 * 2 + 2 * (8 - 2)},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        rayscad_mesh *m = mesh_of(cases[i].src, 0);
+        cr_expect(closed(m), "case %zu", i);
+        cr_expect_eq(rayscad_mesh_triangle_count(m), cases[i].triangles, "case %zu", i);
+        rayscad_scene *scene = scene_of(cases[i].src, NULL);
+        rayscad_measure_options o;
+        rayscad_measure_options_default(&o);
+        rayscad_measurement x;
+        char err[256];
+        cr_assert_eq(rayscad_scene_measure(scene, &o, &x, err, sizeof err), RAYSCAD_OK, "%s", err);
+        cr_expect_float_eq(rayscad_mesh_volume(m), x.volume, 1e-6 * x.volume,
+                           "case %zu: mesh %.9g, rays %.9g", i, rayscad_mesh_volume(m), x.volume);
+        rayscad_scene_free(scene);
+        rayscad_mesh_free(m);
+    }
+}

@@ -1,0 +1,190 @@
+/*
+ * earcut.c — ear clipping of a polygon with holes (earcut.h).
+ *
+ * The rings are one circular doubly linked list of nodes.  Each hole, the
+ * rightmost first, is joined to the list by a bridge from its rightmost
+ * point M to a point P of the list that M sees: along the ray from M to +x
+ * the nearest edge crossed, and its right end, or (Eberly) of the points
+ * inside the triangle of M, the crossing and that end, the one nearest
+ * the ray's direction.  The bridge is walked both ways, M and P repeated.
+ * Then ears are cut: a corner turning left whose triangle holds no other
+ * point of the list (a point at one of its corners — a bridge's repeat —
+ * aside), until three are left.  Every triangle turns left, so none is
+ * without area; an outline that turns back on itself finds no ear and the
+ * cut fails.  O(n²) in the points.
+ */
+#include "earcut.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define MAX_POINTS 20000
+
+typedef struct node {
+    int i, prev, next;
+    double x, y;
+} node;
+
+/* > 0 where a -> b -> c turns left. */
+static double turn(const node *a, const node *b, const node *c)
+{
+    return (b->x - a->x) * (c->y - b->y) - (b->y - a->y) * (c->x - b->x);
+}
+
+static int same_place(const node *a, const node *b)
+{
+    return a->x == b->x && a->y == b->y;
+}
+
+/* Whether p is in triangle a b c (counter-clockwise), its edges included. */
+static int in_triangle(const node *a, const node *b, const node *c, const node *p)
+{
+    return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
+}
+
+/* Whether the segment from a to b starts into the polygon at a. */
+static int locally_inside(const node *N, int a, const node *b)
+{
+    const node *A = &N[a], *pa = &N[A->prev], *na = &N[A->next];
+    if (turn(pa, A, na) > 0) return turn(A, b, na) <= 0 && turn(A, pa, b) <= 0;
+    return turn(A, b, pa) > 0 || turn(A, na, b) > 0;
+}
+
+/* The point of the list through `start` that hole point m sees, or -1. */
+static int bridge_to(const node *N, int start, int m)
+{
+    double hx = N[m].x, hy = N[m].y, qx = INFINITY;
+    int best = -1, p = start;
+    do {
+        const node *a = &N[p], *b = &N[a->next];
+        if (a->y != b->y && ((a->y <= hy && b->y >= hy) || (a->y >= hy && b->y <= hy))) {
+            double x = a->x + (hy - a->y) * (b->x - a->x) / (b->y - a->y);
+            if (x >= hx && x < qx) {
+                qx = x;
+                best = a->x > b->x ? p : a->next;
+            }
+        }
+        p = a->next;
+    } while (p != start);
+    if (best < 0 || qx == hx) return best;
+    /* points inside the triangle (m, crossing, best) hide best: the one
+     * nearest the ray's direction instead */
+    node I = {0, 0, 0, qx, hy};
+    const node *M = &N[m], *B = &N[best];
+    double tan_min = INFINITY;
+    int pick = best;
+    p = start;
+    do {
+        const node *q = &N[p];
+        if (p != best && q->x > hx) {
+            int inside = hy < B->y ? in_triangle(M, &I, B, q) : in_triangle(M, B, &I, q);
+            double t = fabs(q->y - hy) / (q->x - hx);
+            if (inside && locally_inside(N, p, M) &&
+                (t < tan_min || (t == tan_min && q->x < N[pick].x))) {
+                tan_min = t;
+                pick = p;
+            }
+        }
+        p = q->next;
+    } while (p != start);
+    return pick;
+}
+
+static int is_ear(const node *N, int b, int count, int start)
+{
+    const node *A = &N[N[b].prev], *B = &N[b], *C = &N[N[b].next];
+    if (!(turn(A, B, C) > 0)) return 0;
+    int p = start;
+    for (int k = 0; k < count; k++, p = N[p].next) {
+        const node *q = &N[p];
+        if (q == A || q == B || q == C || same_place(q, A) || same_place(q, B) || same_place(q, C))
+            continue;
+        if (in_triangle(A, B, C, q)) return 0;
+    }
+    return 1;
+}
+
+static int by_right(const void *x, const void *y)
+{
+    const double *a = x, *b = y;
+    return (a[0] < b[0]) - (a[0] > b[0]); /* rightmost first */
+}
+
+int geom_earcut(const double (*P)[2], const int *ring, const int *start, int nrings, int (**tri)[3])
+{
+    *tri = NULL;
+    int n = start[nrings] - start[0];
+    if (nrings < 1 || n > MAX_POINTS) return -1;
+    for (int r = 0; r < nrings; r++)
+        if (start[r + 1] - start[r] < 3) return -1;
+    node *N = malloc((size_t)(n + 2 * nrings) * sizeof *N);
+    double(*hole)[2] = malloc((size_t)nrings * sizeof *hole); /* rightmost x, its node */
+    int(*out)[3] = malloc((size_t)(n + 2 * nrings) * sizeof *out);
+    int nn = 0, nt = 0, rc = -1;
+    if (!N || !hole || !out) goto done;
+    for (int r = 0; r < nrings; r++) {
+        int first = nn, k = start[r + 1] - start[r], right = first;
+        for (int j = 0; j < k; j++, nn++) {
+            int i = ring[start[r] + j];
+            N[nn] = (node){i, nn - 1, nn + 1, P[i][0], P[i][1]};
+            if (N[nn].x > N[right].x) right = nn;
+        }
+        N[first].prev = nn - 1;
+        N[nn - 1].next = first;
+        hole[r][0] = N[right].x;
+        hole[r][1] = right;
+    }
+    qsort(hole + 1, (size_t)(nrings - 1), sizeof *hole, by_right);
+    for (int h = 1; h < nrings; h++) {
+        int m = (int)hole[h][1], p = bridge_to(N, 0, m);
+        if (p < 0) goto done;
+        int p2 = nn++, m2 = nn++, pn = N[p].next, mp = N[m].prev;
+        N[p2] = N[p];
+        N[m2] = N[m];
+        N[p].next = m;
+        N[m].prev = p;
+        N[p2].next = pn;
+        N[pn].prev = p2;
+        N[m2].next = p2;
+        N[p2].prev = m2;
+        N[mp].next = m2;
+        N[m2].prev = mp;
+    }
+    int count = 0, p = 0;
+    do {
+        count++;
+        p = N[p].next;
+    } while (p != 0);
+    int head = 0, stop = 0;
+    p = 0;
+    while (count > 3) {
+        if (is_ear(N, p, count, head)) {
+            int a = N[p].prev, c = N[p].next;
+            out[nt][0] = N[a].i;
+            out[nt][1] = N[p].i;
+            out[nt][2] = N[c].i;
+            nt++;
+            N[a].next = c;
+            N[c].prev = a;
+            if (head == p) head = c;
+            count--;
+            p = stop = c;
+            continue;
+        }
+        p = N[p].next;
+        if (p == stop) goto done; /* no ear: the rings cross */
+    }
+    if (!(turn(&N[N[p].prev], &N[p], &N[N[p].next]) > 0)) goto done;
+    out[nt][0] = N[N[p].prev].i;
+    out[nt][1] = N[p].i;
+    out[nt][2] = N[N[p].next].i;
+    nt++;
+    rc = nt;
+    *tri = out;
+    out = NULL;
+done:
+    free(N);
+    free(hole);
+    free(out);
+    return rc;
+}
