@@ -188,3 +188,140 @@ done:
     free(out);
     return rc;
 }
+
+int geom_path_contains(const double (*P)[2], int n, double x, double y)
+{
+    int in = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++)
+        if ((P[i][1] > y) != (P[j][1] > y) &&
+            x < P[j][0] + (y - P[j][1]) * (P[i][0] - P[j][0]) / (P[i][1] - P[j][1]))
+            in = !in;
+    return in;
+}
+
+/* Twice the signed area of path P[0 .. n) (> 0: counter-clockwise). */
+static double path_area(const double (*P)[2], int n)
+{
+    double a = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++)
+        a += P[j][0] * P[i][1] - P[i][0] * P[j][1];
+    return a;
+}
+
+int geom_region_triangles(const double (*P)[2], const int *start, int npaths, int (**tri)[3])
+{
+    *tri = NULL;
+    int n = start[npaths], nt = 0, rc = -1;
+    int *depth = malloc((size_t)npaths * sizeof *depth), *ring = malloc((size_t)n * sizeof *ring);
+    int *rs = malloc((size_t)(npaths + 1) * sizeof *rs);
+    int(*all)[3] = malloc((size_t)(n + 2 * npaths) * sizeof *all);
+    if (!depth || !ring || !rs || !all) goto done;
+    for (int p = 0; p < npaths; p++) {
+        depth[p] = 0;
+        for (int q = 0; q < npaths; q++)
+            depth[p] += q != p && geom_path_contains(P + start[q], start[q + 1] - start[q],
+                                                     P[start[p]][0], P[start[p]][1]);
+    }
+    for (int o = 0; o < npaths; o++) {
+        if (depth[o] % 2) continue;
+        int nr = 0, at = 0;
+        rs[0] = 0;
+        for (int pass = 0; pass < 2; pass++) /* the outline, then its holes */
+            for (int q = 0; q < npaths; q++) {
+                int k = start[q + 1] - start[q];
+                if (pass == 0 ? q != o
+                              : q == o || depth[q] != depth[o] + 1 ||
+                                    !geom_path_contains(P + start[o], start[o + 1] - start[o],
+                                                        P[start[q]][0], P[start[q]][1]))
+                    continue;
+                /* the outline counter-clockwise, holes clockwise */
+                int turn = (pass == 0) != (path_area(P + start[q], k) > 0);
+                for (int i = 0; i < k; i++)
+                    ring[at++] = start[q] + (turn ? k - 1 - i : i);
+                rs[++nr] = at;
+            }
+        int(*t)[3];
+        int m = geom_earcut(P, ring, rs, nr, &t);
+        if (m < 0) goto done;
+        for (int i = 0; i < m; i++)
+            for (int c = 0; c < 3; c++)
+                all[nt + i][c] = t[i][c];
+        nt += m;
+        free(t);
+    }
+    rc = nt;
+    *tri = all;
+    all = NULL;
+done:
+    free(depth);
+    free(ring);
+    free(rs);
+    free(all);
+    return rc;
+}
+
+static int by_edge(const void *x, const void *y)
+{
+    const long long *a = x, *b = y;
+    return (*a > *b) - (*a < *b);
+}
+
+int geom_prism_mesh(const double (*P)[2], const int *start, int npaths, double z0, double z1,
+                    double (**v)[3], int (**tri)[3])
+{
+    *v = NULL;
+    *tri = NULL;
+    int n = start[npaths], (*cap)[3];
+    int nc = geom_region_triangles(P, start, npaths, &cap);
+    if (nc < 0) return -1;
+    int nt = 2 * nc + 2 * n, rc = -1;
+    double(*V)[3] = malloc((size_t)(2 * n) * sizeof *V);
+    int(*T)[3] = malloc((size_t)nt * sizeof *T);
+    long long *e = malloc((size_t)(3 * nc) * sizeof *e); /* the caps' edges, a * n + b */
+    if (!V || !T || !e) goto done;
+    for (int i = 0; i < n; i++) {
+        V[i][0] = V[n + i][0] = P[i][0];
+        V[i][1] = V[n + i][1] = P[i][1];
+        V[i][2] = z0;
+        V[n + i][2] = z1;
+    }
+    int t = 0;
+    for (int i = 0; i < nc; i++) {
+        for (int k = 0; k < 3; k++)
+            e[3 * i + k] = (long long)cap[i][k] * n + cap[i][(k + 1) % 3];
+        T[t][0] = cap[i][0], T[t][1] = cap[i][2], T[t][2] = cap[i][1]; /* seen from below */
+        t++;
+        T[t][0] = n + cap[i][0], T[t][1] = n + cap[i][1], T[t][2] = n + cap[i][2];
+        t++;
+    }
+    qsort(e, (size_t)(3 * nc), sizeof *e, by_edge);
+    /* a path's edge runs as a cap triangle's (the region on its left) or
+     * against it: the side faces outward, to its right */
+    for (int p = 0; p < npaths; p++)
+        for (int i = start[p]; i < start[p + 1]; i++) {
+            int j = i + 1 < start[p + 1] ? i + 1 : start[p];
+            long long ij = (long long)i * n + j, ji = (long long)j * n + i;
+            int a, b;
+            if (bsearch(&ij, e, (size_t)(3 * nc), sizeof *e, by_edge))
+                a = i, b = j;
+            else if (bsearch(&ji, e, (size_t)(3 * nc), sizeof *e, by_edge))
+                a = j, b = i;
+            else
+                goto done;
+            T[t][0] = a, T[t][1] = b, T[t][2] = n + b;
+            t++;
+            T[t][0] = a, T[t][1] = n + b, T[t][2] = n + a;
+            t++;
+        }
+    rc = t;
+    *v = V;
+    *tri = T;
+    V = NULL;
+    T = NULL;
+done:
+    free(cap);
+    free(V);
+    free(T);
+    free(e);
+    return rc;
+}

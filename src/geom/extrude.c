@@ -191,15 +191,14 @@ static void mb_weld(mesh_build *m)
     free(to);
 }
 
-/* Even-odd test of (x, y) against path P[0 .. n). */
-static int in_path(const double (*P)[2], int n, double x, double y)
+/* Whether the path of k vertices from vertex b turns left at every one. */
+static int convex_alone(const mesh_build *m, int b, int k)
 {
-    int in = 0;
-    for (int i = 0, j = n - 1; i < n; j = i++)
-        if ((P[i][1] > y) != (P[j][1] > y) &&
-            x < P[j][0] + (y - P[j][1]) * (P[i][0] - P[j][0]) / (P[i][1] - P[j][1]))
-            in = !in;
-    return in;
+    for (int i = 0; i < k; i++) {
+        const double *a = m->v[b + i], *p = m->v[b + (i + 1) % k], *c = m->v[b + (i + 2) % k];
+        if (!((p[0] - a[0]) * (c[1] - p[1]) - (p[1] - a[1]) * (c[0] - p[0]) > 0)) return 0;
+    }
+    return 1;
 }
 
 /* A flat cap face f of k vertices.  The mesh splits a polygon face into a
@@ -210,14 +209,7 @@ static int in_path(const double (*P)[2], int n, double x, double y)
  * same solid (they tile it without overlap). */
 static void cap_face(mesh_build *m, const int *f, int k, int alone)
 {
-    int pos = 0, neg = 0;
-    for (int i = 0; alone && k > 3 && i < k && !(pos && neg); i++) {
-        const double *a = m->v[f[i]], *b = m->v[f[(i + 1) % k]], *c = m->v[f[(i + 2) % k]];
-        double t = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
-        pos |= t > 0;
-        neg |= !(t > 0);
-    }
-    if (!alone || k <= 3 || (pos && neg) || !pos) {
+    if (!alone || k <= 3 || f[1] != f[0] + 1 || !convex_alone(m, f[0], k)) {
         mb_face(m, f, k);
         return;
     }
@@ -228,95 +220,58 @@ static void cap_face(mesh_build *m, const int *f, int k, int alone)
     }
 }
 
-/* The caps of outer path o and the holes right inside it (one deeper, in
- * it): cut into triangles (earcut.h) where it has holes or turns both ways,
- * the same triangles turned to the top (its layer is the bottom's turned
- * and scaled: an affine map, which keeps them apart), so that they meet
- * only at their edges and the mesh bounds its solid; where the cut fails,
- * each path its own face, as before (the holes' faces then cancel the
- * outer's under the nonzero rule).  0, or -1 when out of memory. */
-static int caps(mesh_build *m, const double (*P)[2], const int *ps, int np, int o, const int *base,
-                const int *depth, int S, int top)
+/* The caps: the region cut into triangles (geom_region_triangles: each
+ * outer path with the holes right inside it), the same triangles turned to
+ * the top (its layer is the bottom's turned and scaled: an affine map,
+ * which keeps them apart), so that they meet only at their edges and the
+ * mesh bounds its solid.  A lone strictly convex path, and a region the
+ * cut refuses (paths that touch), as each path its own face (cap_face:
+ * the holes' faces cancel the outer's under the nonzero rule).  Region
+ * point ps[p] + j is vertex at[p] + j, or at[p] + k - 1 - j where the walk
+ * turned path p (rev).  0, or -1 when out of memory. */
+static int caps(mesh_build *m, const double (*P)[2], const int *ps, int np, const int *base,
+                const signed char *rev, int S, int top)
 {
-    int nr = 1, n = ps[o + 1] - ps[o];
-    int *rings = malloc((size_t)(np + 1) * sizeof *rings);
-    if (!rings) return -1;
-    rings[0] = o;
-    for (int q = 0; q < np; q++) {
-        const double *x = P[ps[q]];
-        if (depth[q] == depth[o] + 1 && in_path(P + ps[o], ps[o + 1] - ps[o], x[0], x[1])) {
-            rings[nr++] = q;
-            n += ps[q + 1] - ps[q];
+    int(*tri)[3] = NULL, nt = -1, *vert = NULL;
+    if (np > 1 || !convex_alone(m, base[0], ps[1] - ps[0])) {
+        nt = geom_region_triangles(P, ps, np, &tri);
+        vert = malloc((size_t)ps[np] * sizeof *vert);
+        if (nt >= 0 && !vert) {
+            free(tri);
+            return -1;
         }
-    }
-    int convex = nr == 1, pos = 0, neg = 0, k0 = ps[o + 1] - ps[o];
-    for (int i = 0; convex && i < k0; i++) {
-        const double *a = m->v[base[o] + i], *b = m->v[base[o] + (i + 1) % k0],
-                     *c = m->v[base[o] + (i + 2) % k0];
-        double t = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
-        pos |= t > 0;
-        neg |= t < 0;
-    }
-    int(*tri)[3] = NULL, nt = -1;
-    if (!(convex && !(pos && neg))) {
-        int *idx = malloc((size_t)n * sizeof *idx),
-            *start = malloc((size_t)(nr + 1) * sizeof *start);
-        double(*xy)[2] = malloc((size_t)m->nv * sizeof *xy);
-        if (idx && start && xy) {
-            for (int i = 0; i < m->nv; i++) {
-                xy[i][0] = m->v[i][0];
-                xy[i][1] = m->v[i][1];
-            }
-            int at = 0;
-            for (int r = 0; r < nr; r++) {
-                start[r] = at;
-                for (int i = 0; i < ps[rings[r] + 1] - ps[rings[r]]; i++)
-                    idx[at++] = base[rings[r]] + i;
-            }
-            start[nr] = at;
-            nt = geom_earcut((const double(*)[2])xy, idx, start, nr, &tri);
-        }
-        free(idx);
-        free(start);
-        free(xy);
-    }
-    if (nt < 0) { /* each path its own face */
-        for (int r = 0; r < nr; r++) {
-            int p = rings[r], k = ps[p + 1] - ps[p], b = base[p];
-            int *f = malloc((size_t)k * sizeof *f);
-            if (!f) {
-                free(rings);
-                return -1;
-            }
-            for (int i = 0; i < k; i++)
-                f[i] = b + i;
-            cap_face(m, f, k, np == 1);
-            if (top) {
-                for (int i = 0; i < k; i++)
-                    f[i] = b + S * k + (k - 1 - i);
-                cap_face(m, f, k, np == 1);
-            }
-            free(f);
-        }
-        free(rings);
-        return 0;
+        for (int p = 0; vert && p < np; p++)
+            for (int j = 0, k = ps[p + 1] - ps[p]; j < k; j++)
+                vert[ps[p] + j] = base[p] + (rev[p] ? k - 1 - j : j);
     }
     for (int t = 0; t < nt; t++) {
-        mb_face(m, tri[t], 3);
-        if (!top) continue;
-        int up[3];
+        int lo[3], up[3];
         for (int j = 0; j < 3; j++) { /* the same corner S layers up */
-            int p = 0;
-            for (int r = 0; r < nr; r++)
-                if (tri[t][j] >= base[rings[r]] &&
-                    tri[t][j] < base[rings[r]] + ps[rings[r] + 1] - ps[rings[r]])
-                    p = rings[r];
-            up[2 - j] = tri[t][j] + S * (ps[p + 1] - ps[p]);
+            int x = tri[t][j], p = 0;
+            while (ps[p + 1] <= x)
+                p++;
+            lo[j] = vert[x];
+            up[2 - j] = vert[x] + S * (ps[p + 1] - ps[p]);
         }
-        mb_face(m, up, 3);
+        mb_face(m, lo, 3);
+        if (top) mb_face(m, up, 3);
     }
     free(tri);
-    free(rings);
+    free(vert);
+    for (int p = 0; nt < 0 && p < np; p++) { /* each path its own face */
+        int k = ps[p + 1] - ps[p], b = base[p];
+        int *f = malloc((size_t)k * sizeof *f);
+        if (!f) return -1;
+        for (int i = 0; i < k; i++)
+            f[i] = b + i;
+        cap_face(m, f, k, np == 1);
+        if (top) {
+            for (int i = 0; i < k; i++)
+                f[i] = b + S * k + (k - 1 - i);
+            cap_face(m, f, k, np == 1);
+        }
+        free(f);
+    }
     return 0;
 }
 
@@ -327,13 +282,12 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
     const int *ps = iv_region_paths(r, &np);
     int S = c->slices;
     mesh_build m = {0};
-    int *base = malloc((size_t)np * sizeof *base);              /* first vertex of each path */
-    int *depth = malloc((size_t)(np ? np : 1) * sizeof *depth); /* paths around it */
-    signed char *outer = malloc((size_t)(np ? np : 1));
-    if (!base || !depth || !outer) {
+    int *base = malloc((size_t)np * sizeof *base); /* first vertex of each path */
+    signed char *outer = malloc((size_t)(np ? np : 1)), *rev = malloc((size_t)(np ? np : 1));
+    if (!base || !outer || !rev) {
         free(base);
-        free(depth);
         free(outer);
+        free(rev);
         return -1;
     }
     /* outline order: outer paths (even nesting depth) counter-clockwise,
@@ -344,11 +298,12 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
         double area = 0;
         for (int i = 0, j = k - 1; i < k; j = i++)
             area += Q[j][0] * Q[i][1] - Q[i][0] * Q[j][1];
-        depth[p] = 0;
+        int depth = 0;
         for (int q = 0; q < np; q++)
-            if (q != p && in_path(P + ps[q], ps[q + 1] - ps[q], Q[0][0], Q[0][1])) depth[p]++;
-        outer[p] = depth[p] % 2 == 0;
-        int reverse = outer[p] ? area < 0 : area > 0;
+            if (q != p && geom_path_contains(P + ps[q], ps[q + 1] - ps[q], Q[0][0], Q[0][1]))
+                depth++;
+        outer[p] = depth % 2 == 0;
+        int reverse = rev[p] = outer[p] ? area < 0 : area > 0;
         base[p] = m.nv;
         for (int j = 0; j <= S; j++) {
             double rot = c->twist * j / S;
@@ -391,20 +346,19 @@ int geom_extrusion_mesh(const geom_extrusion *c, const iv_region *r, iv_shape *o
     /* caps: the bottom counter-clockwise seen from above (clockwise seen
      * from outside, below), the top clockwise; no top at a zero scale */
     int top = c->scale[0] > 0 && c->scale[1] > 0;
-    for (int p = 0; p < np && !m.oom; p++)
-        if (outer[p] && caps(&m, P, ps, np, p, base, depth, S, top) != 0) m.oom = 1;
+    if (!m.oom && caps(&m, P, ps, np, base, rev, S, top) != 0) m.oom = 1;
     if (m.oom) goto fail;
     mb_weld(&m);
     if (m.oom || m.nf == 0) goto fail;
     int rc = iv_shape_mesh(out, (const double(*)[3])m.v, m.nv, m.idx, m.start, m.nf);
     free(base);
-    free(depth);
+    free(rev);
     free(outer);
     mb_free(&m);
     return rc < 0 ? -1 : 0;
 fail:
     free(base);
-    free(depth);
+    free(rev);
     free(outer);
     mb_free(&m);
     return -1;

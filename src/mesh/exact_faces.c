@@ -19,6 +19,7 @@
  * near it — is it the model's surface there; anything near, and the part
  * is contoured with the rest.
  */
+#include "../geom/earcut.h"
 #include "../geom/mesh_boundary.h"
 #include "../intervals/vec3.h"
 #include "dexels.h"
@@ -40,32 +41,61 @@ static double det3(const csg_affine m)
            m[2] * (m[4] * m[9] - m[5] * m[8]);
 }
 
-/* The corners and triangles of prim's shape (object space) into *v, *nv,
- * *t, *nt (borrowed, or BOX_TRI and the box's corners in box[8]), and *cw
- * 1 where they wind clockwise seen from outside (a mesh's, as OpenSCAD
- * winds them); 0 when it has no such faces. */
-static int faces_of(const iv_shape *sh, double box[8][3], const double (**v)[3], int *nv,
-                    const int32_t (**t)[3], int *nt, int *cw)
+/* A primitive's corners and triangles, object space: borrowed from the
+ * shape, or the box's (BOX_TRI, corners in box), or made here (own_v,
+ * own_t: a prism's); cw where they wind clockwise seen from outside (a
+ * mesh's, as OpenSCAD winds them). */
+typedef struct faces {
+    const double (*v)[3];
+    const int32_t (*t)[3];
+    int nv, nt, cw;
+    double box[8][3];
+    double (*own_v)[3];
+    int (*own_t)[3];
+} faces;
+
+/* Fill f with sh's faces: 1, or 0 when it has none (or out of memory);
+ * faces_free either way. */
+static int faces_of(const iv_shape *sh, faces *f)
 {
-    *cw = sh->kind == IV_SHAPE_MESH;
-    if (*cw) {
-        *t = (const int32_t(*)[3])iv_mesh_triangles(sh, nt);
-        *v = iv_mesh_vertices(sh, nv);
-        return *t && *v;
-    }
-    if (sh->kind == IV_SHAPE_BOX) {
+    memset(f, 0, sizeof *f);
+    switch (sh->kind) {
+    case IV_SHAPE_MESH:
+        f->cw = 1;
+        f->t = (const int32_t(*)[3])iv_mesh_triangles(sh, &f->nt);
+        f->v = iv_mesh_vertices(sh, &f->nv);
+        break;
+    case IV_SHAPE_BOX:
         for (int i = 0; i < 8; i++)
             for (int k = 0; k < 3; k++)
-                box[i][k] = i >> k & 1 ? sh->u.box.hi[k] : sh->u.box.lo[k];
-        *v = (const double(*)[3])box;
-        *nv = 8;
-        *t = (const int32_t(*)[3])BOX_TRI;
-        *nt = 12;
-        return 1;
+                f->box[i][k] = i >> k & 1 ? sh->u.box.hi[k] : sh->u.box.lo[k];
+        f->v = (const double(*)[3])f->box;
+        f->nv = 8;
+        f->t = (const int32_t(*)[3])BOX_TRI;
+        f->nt = 12;
+        break;
+    case IV_SHAPE_PRISM: {
+        if (!sh->u.prism.g) return 0; /* a disc's: curved */
+        int n, np;
+        const double(*P)[2] = iv_region_points(sh->u.prism.g, &n);
+        const int *ps = iv_region_paths(sh->u.prism.g, &np);
+        f->nt = geom_prism_mesh(P, ps, np, sh->u.prism.z0, sh->u.prism.z1, &f->own_v, &f->own_t);
+        f->nv = 2 * ps[np];
+        f->v = (const double(*)[3])f->own_v;
+        f->t = (const int32_t(*)[3])f->own_t;
+        break;
     }
-    *t = iv_polytope_triangles(sh, nt);
-    *v = iv_polytope_vertices(sh, nv);
-    return *t && *v;
+    default:
+        f->t = iv_polytope_triangles(sh, &f->nt);
+        f->v = iv_polytope_vertices(sh, &f->nv);
+    }
+    return f->t && f->v && f->nt > 0;
+}
+
+static void faces_free(faces *f)
+{
+    free(f->own_v);
+    free(f->own_t);
 }
 
 static int cmp_point(const void *a, const void *b)
@@ -76,39 +106,41 @@ static int cmp_point(const void *a, const void *b)
     return 0;
 }
 
-/* Whether a mesh's triangles (clockwise from outside) bound the solid the
- * rays see: geom_mesh_is_boundary on them wound the other way. */
-static int mesh_is_boundary(const double (*v)[3], int nv, const int32_t (*t)[3], int nt)
+/* Whether f's triangles bound the solid the rays see
+ * (geom_mesh_is_boundary, on them counter-clockwise). */
+static int is_boundary(const faces *f)
 {
-    int(*ccw)[3] = malloc((size_t)nt * sizeof *ccw);
+    int(*ccw)[3] = malloc((size_t)f->nt * sizeof *ccw);
     if (!ccw) return 0;
-    for (int i = 0; i < nt; i++) {
-        ccw[i][0] = t[i][0];
-        ccw[i][1] = t[i][2];
-        ccw[i][2] = t[i][1];
+    for (int i = 0; i < f->nt; i++) {
+        ccw[i][0] = f->t[i][0];
+        ccw[i][1] = f->t[i][f->cw ? 2 : 1];
+        ccw[i][2] = f->t[i][f->cw ? 1 : 2];
     }
-    int ok = geom_mesh_is_boundary(v, nv, (const int(*)[3])ccw, nt) == 1;
+    int ok = geom_mesh_is_boundary(f->v, f->nv, (const int(*)[3])ccw, f->nt) == 1;
     free(ccw);
     return ok;
 }
 
 int mesh_exact_faces(const csg_scene *s, int32_t prim)
 {
-    double box[8][3];
-    const double(*v)[3];
-    const int32_t(*t)[3];
-    int nv, nt, cw;
+    faces f;
     csg_affine w;
     const iv_shape *sh = csg_scene_prim_shape(s, prim);
-    if (!faces_of(sh, box, &v, &nv, &t, &nt, &cw)) return 0;
+    int ok = faces_of(sh, &f);
     csg_scene_prim_transform(s, prim, w);
     double d = det3(w);
-    if (!isfinite(d) || d == 0) return 0;
-    if (sh->kind == IV_SHAPE_MESH && !mesh_is_boundary(v, nv, t, nt)) return 0;
+    ok = ok && isfinite(d) && d != 0;
+    /* a mesh as written, a prism as cut here: the boundary of their solid? */
+    if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = is_boundary(&f);
     /* as the mesh will hold them (floats): no two corners at one place, no
      * triangle without area */
-    double(*p)[3] = malloc((size_t)nv * sizeof *p), (*q)[3] = malloc((size_t)nv * sizeof *q);
-    int ok = p && q;
+    const double(*v)[3] = f.v;
+    const int32_t(*t)[3] = f.t;
+    int nv = f.nv, nt = f.nt;
+    double(*p)[3] = ok ? malloc((size_t)nv * sizeof *p) : NULL,
+    (*q)[3] = ok ? malloc((size_t)nv * sizeof *q) : NULL;
+    ok = ok && p && q;
     for (int i = 0; ok && i < nv; i++) {
         csg_affine_point(w, v[i], p[i]);
         mesh_round_to_float(p[i]);
@@ -127,32 +159,33 @@ int mesh_exact_faces(const csg_scene *s, int32_t prim)
     }
     free(p);
     free(q);
+    faces_free(&f);
     return ok;
 }
 
 /* Append the faces of grid d's primitive to m; 0 or -1 when out of memory. */
 static int append(const mesh_dexels *d, mesh *m)
 {
-    double box[8][3];
-    const double(*v)[3];
-    const int32_t(*t)[3];
-    int nv, nt, cw;
+    faces f;
     csg_affine w;
-    if (!faces_of(csg_scene_prim_shape(d->scene, d->exact), box, &v, &nv, &t, &nt, &cw)) return 0;
+    /* (mesh_exact_faces found faces: none now is out of memory) */
+    int rc = faces_of(csg_scene_prim_shape(d->scene, d->exact), &f) ? 0 : -1;
     csg_scene_prim_transform(d->scene, d->exact, w);
-    int turn = (det3(w) < 0) != cw; /* a mirror winds them the other way */
+    int turn = (det3(w) < 0) != f.cw; /* a mirror winds them the other way */
     uint16_t color = mesh_palette_of(&d->pal, d->exact);
     int32_t base = m->nv;
-    for (int i = 0; i < nv; i++) {
+    for (int i = 0; rc == 0 && i < f.nv; i++) {
         double p[3];
-        csg_affine_point(w, v[i], p);
-        if (mesh_push_vertex(m, p[0], p[1], p[2]) < 0) return -1;
+        csg_affine_point(w, f.v[i], p);
+        rc = mesh_push_vertex(m, p[0], p[1], p[2]) < 0 ? -1 : 0;
     }
-    for (int i = 0; i < nt; i++)
-        if (mesh_push_triangle(m, base + t[i][0], base + t[i][turn ? 2 : 1],
-                               base + t[i][turn ? 1 : 2], color) < 0)
-            return -1;
-    return 0;
+    for (int i = 0; rc == 0 && i < f.nt; i++)
+        rc = mesh_push_triangle(m, base + f.t[i][0], base + f.t[i][turn ? 2 : 1],
+                                base + f.t[i][turn ? 1 : 2], color) < 0
+                 ? -1
+                 : 0;
+    faces_free(&f);
+    return rc;
 }
 
 int mesh_exact_append(const mesh_dexels *d, mesh *m)

@@ -105,3 +105,51 @@ Test(earcut, crossing_refused)
     int(*t)[3];
     cr_expect_lt(geom_earcut(P, ring, start, 1, &t), 0);
 }
+
+/* A region whatever way its paths run: a square (clockwise), a hole in it
+ * (counter-clockwise) and an island in the hole: 400 - 100 + 16.  As a
+ * prism 3 high: volume 3 · 316 from its triangles (the divergence
+ * theorem), every edge once each way. */
+Test(earcut, region_and_prism)
+{
+    const double P[][2] = {{0, 0},   {0, 20}, {20, 20}, {20, 0}, {5, 5},   {15, 5},
+                           {15, 15}, {5, 15}, {8, 8},   {12, 8}, {12, 12}, {8, 12}};
+    const int start[] = {0, 4, 8, 12};
+    int(*t)[3];
+    int nt = geom_region_triangles(P, start, 3, &t);
+    cr_assert_geq(nt, 0);
+    double area = 0;
+    for (int i = 0; i < nt; i++) {
+        const double *a = P[t[i][0]], *b = P[t[i][1]], *c = P[t[i][2]];
+        double tw = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        cr_expect_gt(tw, 0);
+        area += tw / 2;
+    }
+    cr_expect_float_eq(area, 316, 1e-9);
+    cr_expect_eq(nt, (4 + 4 + 2 - 2) + (4 - 2)); /* the square with its hole; the island */
+    free(t);
+
+    double(*v)[3];
+    nt = geom_prism_mesh(P, start, 3, 1, 4, &v, &t);
+    cr_assert_eq(nt, 2 * 10 + 2 * 12);
+    double vol = 0;
+    for (int i = 0; i < nt; i++) {
+        const double *a = v[t[i][0]], *b = v[t[i][1]], *c = v[t[i][2]];
+        vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                a[2] * (b[0] * c[1] - b[1] * c[0])) /
+               6;
+    }
+    cr_expect_float_eq(vol, 3 * 316, 1e-9);
+    for (int i = 0; i < nt; i++)
+        for (int k = 0; k < 3; k++) {
+            int a = t[i][k], b = t[i][(k + 1) % 3], same = 0, back = 0;
+            for (int j = 0; j < nt; j++)
+                for (int l = 0; l < 3; l++) {
+                    same += t[j][l] == a && t[j][(l + 1) % 3] == b;
+                    back += t[j][l] == b && t[j][(l + 1) % 3] == a;
+                }
+            cr_expect(same == 1 && back == 1, "edge %d-%d: %d, %d back", a, b, same, back);
+        }
+    free(v);
+    free(t);
+}

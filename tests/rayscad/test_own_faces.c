@@ -253,3 +253,50 @@ Test(own_faces, twisted_extrusions_with_holes)
         rayscad_mesh_free(m);
     }
 }
+
+/* A linear_extrude of one polygon alone is a prism, written as its own
+ * faces: the caps cut by ear clipping, each edge a quad.  A concave
+ * pentagon (100 less the notch's 35, 4 high: 260; caps 3 triangles, sides
+ * 5 quads: 16), a square with a square hole given as paths (84 · 2.5; caps
+ * 8 + 2 - 2 each, sides 8 quads: 32); every vertex a corner of the
+ * outline at z = 0 or the height. */
+Test(own_faces, prisms_are_their_faces)
+{
+    static const struct {
+        const char *src;
+        int triangles;
+        double volume, height;
+        double corners[8][2];
+        int ncorners;
+    } cases[] = {
+        {"linear_extrude(4) polygon([[0, 0], [10, 0], [10, 10], [5, 3], [0, 10]]);",
+         16,
+         260,
+         4,
+         {{0, 0}, {10, 0}, {10, 10}, {5, 3}, {0, 10}},
+         5},
+        {"linear_extrude(2.5) polygon([[0, 0], [10, 0], [10, 10], [0, 10], [3, 3], [3, 7], [7, 7],"
+         " [7, 3]], [[0, 1, 2, 3], [4, 5, 6, 7]]);",
+         32,
+         84 * 2.5,
+         2.5,
+         {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {3, 3}, {3, 7}, {7, 7}, {7, 3}},
+         8},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        rayscad_mesh *m = mesh_of(cases[i].src, 0);
+        cr_expect(closed(m), "case %zu", i);
+        cr_expect_eq(rayscad_mesh_triangle_count(m), cases[i].triangles, "case %zu", i);
+        cr_expect_eq(rayscad_mesh_vertex_count(m), 2 * cases[i].ncorners, "case %zu", i);
+        cr_expect_float_eq(rayscad_mesh_volume(m), cases[i].volume, 1e-9 * cases[i].volume,
+                           "case %zu: %.12g", i, rayscad_mesh_volume(m));
+        for (int k = 0; k < cases[i].ncorners; k++)
+            for (int top = 0; top < 2; top++) {
+                double p[3] = {cases[i].corners[k][0], cases[i].corners[k][1],
+                               top ? cases[i].height : 0};
+                cr_expect(has_vertex(m, p, 1e-9), "case %zu: corner (%g, %g, %g)", i, p[0], p[1],
+                          p[2]);
+            }
+        rayscad_mesh_free(m);
+    }
+}
