@@ -1311,7 +1311,7 @@ int mesh_dexels_contour(const mesh_dexels *d, const mesh_options *o, mesh **out,
     /* The grids cover disjoint boxes: their meshes are disjoint too.  They
      * sample one root, so they share its palette. */
     for (const mesh_dexels *g = d; g; g = g->next)
-        if (g->exact < 0 && contour_grid(g, o, m, err, errlen) != 0) {
+        if (g->exact == -1 && contour_grid(g, o, m, err, errlen) != 0) {
             mesh_free(m);
             return -1;
         }

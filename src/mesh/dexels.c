@@ -79,6 +79,7 @@ void mesh_dexels_free(mesh_dexels *d)
             free(d->hit[a]);
         }
         mesh_palette_free(&d->pal);
+        mesh_polyhedron_free(&d->poly);
         free(d->patch_key);
         free(d->patch_curved);
         free(d);
@@ -648,5 +649,5 @@ void mesh_dexels_thin(const mesh_dexels *d, double thickness, mesh_thin *out)
     memset(out, 0, sizeof *out);
     out->min_wall = out->min_gap = INFINITY;
     for (; d; d = d->next)
-        if (d->exact < 0) thin_grid(d, thickness, out); /* its own faces lose nothing */
+        if (d->exact == -1) thin_grid(d, thickness, out); /* its own faces lose nothing */
 }

@@ -39,6 +39,16 @@ void mesh_palette_free(mesh_palette *p);
  * crossings are hit[a][off[a][r] .. off[a][r + 1]), sorted by t, alternating
  * enter / exit starting with an enter (they are the ends of disjoint
  * spans). */
+/* A closed triangle mesh, counter-clockwise from outside, of one colour. */
+typedef struct mesh_polyhedron {
+    double (*v)[3];
+    int (*t)[3];
+    int nv, nt;
+    uint16_t color;
+} mesh_polyhedron;
+void mesh_polyhedron_free(mesh_polyhedron *p);
+#define MESH_POLYHEDRAL (-2)
+
 struct mesh_dexels {
     double h;
     double org[3]; /* world position of node (0, 0, 0) */
@@ -59,8 +69,11 @@ struct mesh_dexels {
     const csg_scene *scene;
     int root;
     /* A primitive alone on this grid whose own faces are its mesh
-     * (exact_faces.c), or -1: the grid is contoured. */
+     * (exact_faces.c); MESH_POLYHEDRAL: the exact boundary of the grid's
+     * plane-faced part is (poly, polyhedral.c); or -1: the grid is
+     * contoured. */
     int32_t exact;
+    mesh_polyhedron poly;
     /* The next grid, over a part of the model far from this one's
      * (mesh_dexels_new samples such parts each on its own grid). */
     struct mesh_dexels *next;
@@ -80,6 +93,35 @@ typedef struct mesh_piece {
 int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **out);
 /* The longest side of a piece's box. */
 double mesh_piece_longest(const mesh_piece *p);
+
+/* A primitive's corners and triangles, object space: borrowed from the
+ * shape, or the box's (corners in box), or made for it (own_v, own_t: a
+ * prism's); cw where they wind clockwise seen from outside (a mesh's, as
+ * OpenSCAD winds them). */
+typedef struct mesh_faces {
+    const double (*v)[3];
+    const int32_t (*t)[3];
+    int nv, nt, cw;
+    double box[8][3];
+    double (*own_v)[3];
+    int (*own_t)[3];
+} mesh_faces;
+/* Fill f with the faces of a plane-faced shape (box, polytope that knows
+ * its triangles, mesh, prism of a region): 1, or 0 when it has none
+ * (curved) or out of memory; mesh_faces_free either way. */
+int mesh_faces_of(const iv_shape *sh, mesh_faces *f);
+void mesh_faces_free(mesh_faces *f);
+/* Whether f's triangles bound the solid the rays see (geom_mesh_is_boundary
+ * on them counter-clockwise): 1 or 0. */
+int mesh_faces_bound(const mesh_faces *f);
+
+/* The exact boundary of the part lo..hi of d's root (its operands of the
+ * top-level unions that meet the box) where every primitive of it is
+ * plane-faced and the booleans come out a closed mesh that bounds the
+ * solid (polyhedral.c): 1 with it in *out (mesh_polyhedron_free), 0 when
+ * not, -1 out of memory. */
+int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
+                    mesh_polyhedron *out);
 
 /* Whether primitive prim can be meshed as its own faces (exact_faces.c):
  * a polytope that knows its triangles, a box, or a polyhedron (written or

@@ -41,22 +41,7 @@ static double det3(const csg_affine m)
            m[2] * (m[4] * m[9] - m[5] * m[8]);
 }
 
-/* A primitive's corners and triangles, object space: borrowed from the
- * shape, or the box's (BOX_TRI, corners in box), or made here (own_v,
- * own_t: a prism's); cw where they wind clockwise seen from outside (a
- * mesh's, as OpenSCAD winds them). */
-typedef struct faces {
-    const double (*v)[3];
-    const int32_t (*t)[3];
-    int nv, nt, cw;
-    double box[8][3];
-    double (*own_v)[3];
-    int (*own_t)[3];
-} faces;
-
-/* Fill f with sh's faces: 1, or 0 when it has none (or out of memory);
- * faces_free either way. */
-static int faces_of(const iv_shape *sh, faces *f)
+int mesh_faces_of(const iv_shape *sh, mesh_faces *f)
 {
     memset(f, 0, sizeof *f);
     switch (sh->kind) {
@@ -92,7 +77,7 @@ static int faces_of(const iv_shape *sh, faces *f)
     return f->t && f->v && f->nt > 0;
 }
 
-static void faces_free(faces *f)
+void mesh_faces_free(mesh_faces *f)
 {
     free(f->own_v);
     free(f->own_t);
@@ -106,9 +91,7 @@ static int cmp_point(const void *a, const void *b)
     return 0;
 }
 
-/* Whether f's triangles bound the solid the rays see
- * (geom_mesh_is_boundary, on them counter-clockwise). */
-static int is_boundary(const faces *f)
+int mesh_faces_bound(const mesh_faces *f)
 {
     int(*ccw)[3] = malloc((size_t)f->nt * sizeof *ccw);
     if (!ccw) return 0;
@@ -124,15 +107,15 @@ static int is_boundary(const faces *f)
 
 int mesh_exact_faces(const csg_scene *s, int32_t prim)
 {
-    faces f;
+    mesh_faces f;
     csg_affine w;
     const iv_shape *sh = csg_scene_prim_shape(s, prim);
-    int ok = faces_of(sh, &f);
+    int ok = mesh_faces_of(sh, &f);
     csg_scene_prim_transform(s, prim, w);
     double d = det3(w);
     ok = ok && isfinite(d) && d != 0;
     /* a mesh as written, a prism as cut here: the boundary of their solid? */
-    if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = is_boundary(&f);
+    if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = mesh_faces_bound(&f);
     /* as the mesh will hold them (floats): no two corners at one place, no
      * triangle without area */
     const double(*v)[3] = f.v;
@@ -159,17 +142,17 @@ int mesh_exact_faces(const csg_scene *s, int32_t prim)
     }
     free(p);
     free(q);
-    faces_free(&f);
+    mesh_faces_free(&f);
     return ok;
 }
 
 /* Append the faces of grid d's primitive to m; 0 or -1 when out of memory. */
 static int append(const mesh_dexels *d, mesh *m)
 {
-    faces f;
+    mesh_faces f;
     csg_affine w;
     /* (mesh_exact_faces found faces: none now is out of memory) */
-    int rc = faces_of(csg_scene_prim_shape(d->scene, d->exact), &f) ? 0 : -1;
+    int rc = mesh_faces_of(csg_scene_prim_shape(d->scene, d->exact), &f) ? 0 : -1;
     csg_scene_prim_transform(d->scene, d->exact, w);
     int turn = (det3(w) < 0) != f.cw; /* a mirror winds them the other way */
     uint16_t color = mesh_palette_of(&d->pal, d->exact);
@@ -184,15 +167,26 @@ static int append(const mesh_dexels *d, mesh *m)
                                 base + f.t[i][turn ? 1 : 2], color) < 0
                  ? -1
                  : 0;
-    faces_free(&f);
+    mesh_faces_free(&f);
     return rc;
 }
 
 int mesh_exact_append(const mesh_dexels *d, mesh *m)
 {
     int32_t nv = m->nv, nt = m->nt;
-    for (; d; d = d->next)
+    for (; d; d = d->next) {
         if (d->exact >= 0 && append(d, m) != 0) return -1;
+        if (d->exact == MESH_POLYHEDRAL) {
+            int32_t base = m->nv;
+            for (int i = 0; i < d->poly.nv; i++)
+                if (mesh_push_vertex(m, d->poly.v[i][0], d->poly.v[i][1], d->poly.v[i][2]) < 0)
+                    return -1;
+            for (int i = 0; i < d->poly.nt; i++)
+                if (mesh_push_triangle(m, base + d->poly.t[i][0], base + d->poly.t[i][1],
+                                       base + d->poly.t[i][2], d->poly.color) < 0)
+                    return -1;
+        }
+    }
     m->exact_nv += m->nv - nv;
     m->exact_nt += m->nt - nt;
     return 0;

@@ -105,6 +105,15 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
         mesh_exact_faces(s, p->prim)) {
         d->exact = p->prim; /* meshed as its own faces: no finer grid needed */
         refine = 0;
+    } else if (rc == 0 && o->tolerance > 0 && !o->contour_all) {
+        int e = mesh_polyhedral(d, p->lo, p->hi, &d->poly);
+        if (e < 0) {
+            snprintf(err, errlen, "out of memory");
+            rc = RAYSCAD_ERROR;
+        } else if (e == 1) {
+            d->exact = MESH_POLYHEDRAL; /* the exact boundary of its booleans */
+            refine = 0;
+        }
     }
     for (int round = 0, k = 1; rc == 0 && refine && round < MESH_REFINE_ROUNDS; round++) {
         int f = refine_factor(d, h, budget);

@@ -300,3 +300,38 @@ Test(own_faces, prisms_are_their_faces)
         rayscad_mesh_free(m);
     }
 }
+
+/* A part whose every primitive is plane-faced is the exact boundary of its
+ * booleans (src/mesh/polyhedral.c), its flat faces cut from their
+ * outlines: a box with a square hole through it (16 corners, 32
+ * triangles, 1000 - 160), two overlapping cubes (1875, their corners and
+ * the six where their faces cross), a cube cut by a turned one (an
+ * octagonal prism: 16 corners, 28 triangles, 10 · 100 (2√2 - 2)). */
+Test(own_faces, plane_faced_booleans)
+{
+    static const struct {
+        const char *src;
+        int vertices, triangles;
+        double volume;
+    } cases[] = {
+        {"difference() { cube(10); translate([3, 3, -1]) cube([4, 4, 12]); }", 16, 32, 840},
+        {"cube(10); translate([5, 5, 5]) cube(10);", 20, 36, 1875},
+        {"intersection() { cube(10, center = true); rotate([0, 0, 45]) cube(10, center = true); }",
+         16, 28, 1000 * (2 * 1.41421356237309505 - 2)},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        rayscad_mesh *m = mesh_of(cases[i].src, 0);
+        cr_expect(closed(m), "case %zu", i);
+        cr_expect_eq(rayscad_mesh_vertex_count(m), cases[i].vertices, "case %zu", i);
+        cr_expect_eq(rayscad_mesh_triangle_count(m), cases[i].triangles, "case %zu", i);
+        cr_expect_float_eq(rayscad_mesh_volume(m), cases[i].volume, 1e-6 * cases[i].volume,
+                           "case %zu: %.12g", i, rayscad_mesh_volume(m));
+        rayscad_mesh_free(m);
+    }
+    /* the overlapping cubes' corners: each coordinate 0, 5, 10 or 15 */
+    rayscad_mesh *m = mesh_of(cases[1].src, 0);
+    const float *v = rayscad_mesh_vertices(m);
+    for (int i = 0; i < 3 * rayscad_mesh_vertex_count(m); i++)
+        cr_expect(v[i] == 0 || v[i] == 5 || v[i] == 10 || v[i] == 15, "coordinate %g", v[i]);
+    rayscad_mesh_free(m);
+}

@@ -1,0 +1,407 @@
+/*
+ * polyhedral.c — a part of a model whose every primitive is plane-faced
+ * (boxes, hulls and faceted primitives, polyhedra, imported meshes, prisms
+ * of polygons) meshed as the exact boundary of its booleans
+ * (mesh_polyhedral) rather than contoured from its samples.
+ *
+ * Each primitive's own faces (exact_faces.c), in world space, go through
+ * the part's unions, intersections and differences by BSP (geom/bsp.h),
+ * whose result covers the boundary with convex polygons, exact up to its
+ * plane tolerance (1e-9 of the size), but split along every plane that cut
+ * it, with vertices where one polygon's corner lies on another's edge (a
+ * T-junction).  Corners within WELD of one another become one vertex; each
+ * polygon's corners along a straight edge are dropped and the rest fanned;
+ * a triangle with a vertex on its edge is split there; then the triangles
+ * of each flat face are cut again from the face's outline (flat_faces.h):
+ * the BSP's cuts leave no trace.  The result stands only
+ * where it is a closed mesh that bounds its solid (geom_mesh_is_boundary:
+ * every edge once each way, no two triangles crossing) with its corners
+ * apart as floats; otherwise, or where a primitive is curved, the part is
+ * contoured as before.  A part of two colours is contoured too (the
+ * polygons do not say whose faces they are).
+ */
+#include "../geom/bsp.h"
+#include "../geom/flat_faces.h"
+#include "../geom/mesh_boundary.h"
+#include "../intervals/vec3.h"
+#include "dexels.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define WORK 20000000L /* BSP plane tests a part may take */
+#define WELD 1e-8      /* of the part's size: corners this close are one */
+#define MAX_CORNERS 400000
+#define MAX_TRIANGLES 20000 /* of the primitives' faces: more, and BSP takes seconds */
+
+typedef struct ctx {
+    const csg_scene *s;
+    mesh_palette const *pal;
+    const double *lo, *hi;
+    long work;
+    int color;      /* the part's colour; -1 none yet */
+    long triangles; /* the primitives' so far */
+    int no;         /* 1: not plane-faced, two colours, too much work */
+} ctx;
+
+/* The determinant of the linear part of m. */
+static double det3(const csg_affine m)
+{
+    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+           m[2] * (m[4] * m[9] - m[5] * m[8]);
+}
+
+/* Primitive prim's faces in world space, outward, into out: 0, or -1 when
+ * out of memory (c->no where it has no such faces). */
+static int leaf(ctx *c, int32_t prim, geom_polys *out)
+{
+    const iv_shape *sh = csg_scene_prim_shape(c->s, prim);
+    int color = mesh_palette_of(c->pal, prim);
+    if (c->color >= 0 && color != c->color) c->no = 1;
+    c->color = color;
+    mesh_faces f;
+    int ok = !c->no && mesh_faces_of(sh, &f);
+    c->triangles += ok ? f.nt : 0;
+    ok = ok && c->triangles <= MAX_TRIANGLES;
+    if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = mesh_faces_bound(&f);
+    csg_affine w;
+    csg_scene_prim_transform(c->s, prim, w);
+    double d = det3(w);
+    ok = ok && isfinite(d) && d != 0;
+    int turn = (d < 0) != f.cw, rc = 0;
+    for (int i = 0; ok && rc == 0 && i < f.nt; i++) {
+        double q[3][3];
+        for (int k = 0; k < 3; k++)
+            csg_affine_point(w, f.v[f.t[i][turn ? 2 - k : k]], q[k]);
+        rc = geom_polys_add(out, (const double(*)[3])q, 3);
+    }
+    if (!ok) c->no = 1;
+    mesh_faces_free(&f);
+    return rc;
+}
+
+static int box_meets(const csg_scene_node_info *f, const double *lo, const double *hi)
+{
+    for (int k = 0; k < 3; k++)
+        if (f->lo[k] > hi[k] || f->hi[k] < lo[k]) return 0;
+    return 1;
+}
+
+/* The boundary of node i's subtree into out (empty): 0, or -1 when out of
+ * memory (c->no where it cannot be had). */
+static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
+{
+    csg_scene_node_info f;
+    csg_scene_node_get(c->s, i, &f);
+    if (f.is_leaf) return leaf(c, f.prim, out);
+    csg_scene_node_info k;
+    int first = 1, rc = 0;
+    for (int32_t j = i + 1; j < f.end && rc == 0 && !c->no; j = k.end) {
+        csg_scene_node_get(c->s, j, &k);
+        /* the top-level unions' operands of other parts are not this one's */
+        if (top && f.op == CSG_OP_UNION && !box_meets(&k, c->lo, c->hi)) continue;
+        geom_polys g = {0}, r = {0};
+        rc = boundary(c, j, top && f.op == CSG_OP_UNION, first ? out : &g);
+        if (first || rc != 0 || c->no) {
+            first = 0;
+            geom_polys_free(&g);
+            continue;
+        }
+        if (out->n == 0 && f.op != CSG_OP_UNION) { /* nothing left to cut */
+            geom_polys_free(&g);
+            continue;
+        }
+        geom_bsp_op op = f.op == CSG_OP_UNION          ? GEOM_BSP_UNION
+                         : f.op == CSG_OP_INTERSECTION ? GEOM_BSP_INTERSECTION
+                                                       : GEOM_BSP_DIFFERENCE;
+        int b = geom_bsp_boolean(op, out, &g, &c->work, &r);
+        geom_polys_free(&g);
+        if (b == GEOM_BSP_TOO_MUCH) c->no = 1;
+        if (b == GEOM_BSP_NO_MEMORY) rc = -1;
+        if (b == 0) {
+            geom_polys_free(out);
+            *out = r;
+        } else {
+            geom_polys_free(&r);
+        }
+    }
+    return rc;
+}
+
+typedef struct corner {
+    double p[3];
+    int i; /* the polygon corner it was, then (mend) the vertex it became */
+} corner;
+
+static int by_x(const void *a, const void *b)
+{
+    double x = ((const corner *)a)->p[0], y = ((const corner *)b)->p[0];
+    return (x > y) - (x < y);
+}
+
+/* The polygons' welded vertices and the triangles being made of them. */
+typedef struct welded {
+    double (*V)[3];
+    int nv;
+    corner *c; /* every polygon corner, by x, c[].i its vertex */
+    int nc;
+    double tol;
+    int (*T)[3];
+    int nt, cap;
+    int failed;
+} welded;
+
+/* The corners of p welded within w->tol into w->V, map[corner] -> vertex.
+ * 0 or -1. */
+static int weld(const geom_polys *p, welded *w, int *map)
+{
+    int n = p->nv;
+    w->c = malloc((size_t)n * sizeof *w->c);
+    w->V = malloc((size_t)n * sizeof *w->V);
+    if (!w->c || !w->V) return -1;
+    corner *c = w->c;
+    for (int i = 0; i < n; i++) {
+        memcpy(c[i].p, p->v[i], sizeof c[i].p);
+        c[i].i = i;
+        map[i] = -1;
+    }
+    qsort(c, (size_t)n, sizeof *c, by_x);
+    for (int i = 0; i < n; i++) {
+        if (map[c[i].i] >= 0) continue;
+        int v = w->nv++;
+        memcpy(w->V[v], c[i].p, sizeof c[i].p);
+        for (int j = i; j < n && c[j].p[0] <= c[i].p[0] + w->tol; j++)
+            if (map[c[j].i] < 0 && fabs(c[j].p[1] - c[i].p[1]) <= w->tol &&
+                fabs(c[j].p[2] - c[i].p[2]) <= w->tol)
+                map[c[j].i] = v;
+    }
+    for (int i = 0; i < n; i++)
+        c[i].i = map[c[i].i];
+    w->nc = n;
+    return 0;
+}
+
+/* Distance of V[v] from the line through V[a] and V[b], squared, and
+ * where along a b it lies (0 at a, 1 at b). */
+static double off_line(const welded *w, int a, int b, int v, double *s)
+{
+    double ab[3], av[3], cr[3];
+    sub3(w->V[b], w->V[a], ab);
+    sub3(w->V[v], w->V[a], av);
+    double l2 = dot3(ab, ab);
+    *s = dot3(av, ab) / l2;
+    cross3(av, ab, cr);
+    return dot3(cr, cr) / l2;
+}
+
+/* The first vertex (along a b) inside edge a b, or -1: a corner of another
+ * polygon on this one's edge (a T-junction). */
+static int on_edge(const welded *w, int a, int b)
+{
+    const double *A = w->V[a], *B = w->V[b];
+    double xlo = fmin(A[0], B[0]) - w->tol, xhi = fmax(A[0], B[0]) + w->tol, best = 2;
+    int lo = 0, hi = w->nc, v = -1;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (w->c[mid].p[0] < xlo)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (int i = lo; i < w->nc && w->c[i].p[0] <= xhi; i++) {
+        int u = w->c[i].i;
+        double s;
+        if (u == a || u == b || u == v) continue;
+        if (off_line(w, a, b, u, &s) <= w->tol * w->tol && s > 0 && s < best &&
+            s * sqrt(dot3(A, A) + 1) >= 0) {
+            /* strictly inside: not within tol of either end */
+            double ab[3];
+            sub3(B, A, ab);
+            double len = sqrt(dot3(ab, ab));
+            if (s * len > w->tol && (1 - s) * len > w->tol) {
+                best = s;
+                v = u;
+            }
+        }
+    }
+    return v;
+}
+
+/* Triangle a b c, split from the opposite corner at every vertex that
+ * lies on one of its edges, into w->T. */
+static void split_tri(welded *w, int a, int b, int c, int depth)
+{
+    if (w->failed) return;
+    const int t[3] = {a, b, c};
+    for (int e = 0; e < 3; e++) {
+        int v = on_edge(w, t[e], t[(e + 1) % 3]);
+        if (v < 0) continue;
+        if (depth > 10000) {
+            w->failed = 1;
+            return;
+        }
+        split_tri(w, t[e], v, t[(e + 2) % 3], depth + 1);
+        split_tri(w, v, t[(e + 1) % 3], t[(e + 2) % 3], depth + 1);
+        return;
+    }
+    if (w->nt == w->cap) {
+        int c2 = w->cap ? 2 * w->cap : 256;
+        int(*g)[3] = realloc(w->T, (size_t)c2 * sizeof *g);
+        if (!g) {
+            w->failed = -1;
+            return;
+        }
+        w->T = g;
+        w->cap = c2;
+    }
+    w->T[w->nt][0] = a;
+    w->T[w->nt][1] = b;
+    w->T[w->nt][2] = c;
+    w->nt++;
+}
+
+/* Drop the vertices no triangle uses, renumbering the rest. */
+static void compact(welded *w)
+{
+    int *to = malloc((size_t)(w->nv ? w->nv : 1) * sizeof *to), k = 0;
+    if (!to) {
+        w->failed = -1;
+        return;
+    }
+    for (int v = 0; v < w->nv; v++)
+        to[v] = -1;
+    for (int t = 0; t < w->nt; t++)
+        for (int e = 0; e < 3; e++)
+            to[w->T[t][e]] = 0;
+    for (int v = 0; v < w->nv; v++)
+        if (to[v] == 0) {
+            memmove(w->V[k], w->V[v], sizeof w->V[k]);
+            to[v] = k++;
+        }
+    for (int t = 0; t < w->nt; t++)
+        for (int e = 0; e < 3; e++)
+            w->T[t][e] = to[w->T[t][e]];
+    w->nv = k;
+    free(to);
+}
+
+/* The polygons of p as a mesh: corners welded, each polygon's corners
+ * along a straight edge dropped, the rest fanned, and every triangle split
+ * where a vertex lies on its edge (the mesh's T-junctions mended).  1 with
+ * *V, *nv, *T, *nt; 0 when it does not come out closed and bounding; -1
+ * out of memory. */
+static int mend(const geom_polys *p, double size, double (**V)[3], int *nv, int (**T)[3], int *nt)
+{
+    *V = NULL;
+    *T = NULL;
+    *nv = *nt = 0;
+    if (p->nv > MAX_CORNERS || p->n == 0) return 0;
+    welded w = {.tol = WELD * size};
+    int *map = malloc((size_t)p->nv * sizeof *map), *ring = NULL, rc = -1;
+    if (!map || weld(p, &w, map) != 0) goto done;
+    ring = malloc((size_t)p->nv * sizeof *ring);
+    if (!ring) goto done;
+    for (int f = 0; f < p->n && !w.failed; f++) {
+        int k = 0;
+        for (int j = p->start[f]; j < p->start[f + 1]; j++)
+            if (k == 0 || map[j] != ring[k - 1]) ring[k++] = map[j];
+        while (k > 1 && ring[k - 1] == ring[0])
+            k--;
+        /* drop corners on a straight line between their neighbours */
+        for (int i = 0; k >= 3 && i < k;) {
+            double s;
+            int a = ring[(i + k - 1) % k], b = ring[(i + 1) % k];
+            if (off_line(&w, a, b, ring[i], &s) <= w.tol * w.tol) {
+                memmove(ring + i, ring + i + 1, (size_t)(k - i - 1) * sizeof *ring);
+                k--;
+                i = 0;
+            } else {
+                i++;
+            }
+        }
+        for (int i = 1; k >= 3 && i + 1 < k; i++)
+            split_tri(&w, ring[0], ring[i], ring[i + 1], 0);
+    }
+    if (w.failed < 0) goto done;
+    if (!w.failed && geom_merge_flat_faces((const double(*)[3])w.V, w.nv, &w.T, &w.nt, w.tol) != 0)
+        goto done;
+    if (!w.failed) compact(&w);
+    if (w.failed < 0) goto done;
+    rc = w.failed
+             ? 0
+             : geom_mesh_is_boundary((const double(*)[3])w.V, w.nv, (const int(*)[3])w.T, w.nt);
+done:
+    free(map);
+    free(ring);
+    free(w.c);
+    if (rc == 1) {
+        *V = w.V;
+        *nv = w.nv;
+        *T = w.T;
+        *nt = w.nt;
+    } else {
+        free(w.V);
+        free(w.T);
+    }
+    return rc;
+}
+
+static int by_point(const void *a, const void *b)
+{
+    const double *p = a, *q = b;
+    for (int k = 0; k < 3; k++)
+        if (p[k] != q[k]) return p[k] < q[k] ? -1 : 1;
+    return 0;
+}
+
+int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
+                    mesh_polyhedron *out)
+{
+    memset(out, 0, sizeof *out);
+    int32_t r = csg_scene_root_node(d->scene, d->root);
+    if (r < 0) return 0;
+    ctx c = {.s = d->scene, .pal = &d->pal, .lo = lo, .hi = hi, .work = WORK, .color = -1};
+    geom_polys p = {0};
+    int rc = boundary(&c, r, 1, &p);
+    double size = 0;
+    for (int k = 0; k < 3; k++)
+        size = fmax(size, hi[k] - lo[k]);
+    if (rc == 0 && !c.no) rc = mend(&p, size, &out->v, &out->nv, &out->t, &out->nt);
+    geom_polys_free(&p);
+    if (rc != 1) {
+        mesh_polyhedron_free(out);
+        return rc;
+    }
+    out->color = (uint16_t)(c.color < 0 ? 0 : c.color);
+    /* as the mesh will hold them (floats): no two corners at one place, no
+     * triangle without area */
+    double(*q)[3] = malloc((size_t)out->nv * sizeof *q);
+    if (!q) {
+        mesh_polyhedron_free(out);
+        return -1;
+    }
+    int ok = 1;
+    for (int i = 0; i < out->nv; i++) {
+        memcpy(q[i], out->v[i], sizeof q[i]);
+        mesh_round_to_float(q[i]);
+    }
+    for (int i = 0; ok && i < out->nt; i++) {
+        double n[3];
+        tri_normal3(q[out->t[i][0]], q[out->t[i][1]], q[out->t[i][2]], n);
+        ok = dot3(n, n) > 0;
+    }
+    qsort(q, (size_t)out->nv, sizeof *q, by_point);
+    for (int i = 1; ok && i < out->nv; i++)
+        ok = by_point(q[i - 1], q[i]) != 0;
+    free(q);
+    if (!ok) mesh_polyhedron_free(out);
+    return ok;
+}
+
+void mesh_polyhedron_free(mesh_polyhedron *p)
+{
+    free(p->v);
+    free(p->t);
+    memset(p, 0, sizeof *p);
+}
