@@ -3,15 +3,17 @@
  *
  * The rings are one circular doubly linked list of nodes.  Each hole, the
  * rightmost first, is joined to the list by a bridge from its rightmost
- * point M to a point P of the list that M sees: along the ray from M to +x
- * the nearest edge crossed, and its right end, or (Eberly) of the points
- * inside the triangle of M, the crossing and that end, the one nearest
- * the ray's direction.  The bridge is walked both ways, M and P repeated.
+ * point M to a point P of the list that M sees: of the list's points to
+ * M's right, the nearest whose segment to M crosses no edge of any ring,
+ * passes through no corner, and enters the polygon at P (aligned holes,
+ * as a grid of them has, put corners and edges exactly on the ray that
+ * Eberly's rule casts from M; this asks less of the coordinates).  The
+ * bridge is walked both ways, M and P repeated.
  * Then ears are cut: a corner turning left whose triangle holds no other
  * point of the list (a point at one of its corners — a bridge's repeat —
  * aside), until three are left.  Every triangle turns left, so none is
  * without area; an outline that turns back on itself finds no ear and the
- * cut fails.  O(n²) in the points.
+ * cut fails.  O(n²) in the points (a hole's bridge O(n) a candidate).
  */
 #include "earcut.h"
 
@@ -36,10 +38,24 @@ static int same_place(const node *a, const node *b)
     return a->x == b->x && a->y == b->y;
 }
 
-/* Whether p is in triangle a b c (counter-clockwise), its edges included. */
+/* A turn this small against the points' size is none: corners that
+ * rounding left a hair off a straight line (a boolean's cuts, 13 computed
+ * as 12.999999999999998) count as on it. */
+static double slack(const node *a, const node *b, const node *c, const node *p)
+{
+    double s = 0;
+    const node *q[4] = {a, b, c, p};
+    for (int i = 0; i < 4; i++)
+        s = fmax(s, fmax(fabs(q[i]->x), fabs(q[i]->y)));
+    return 1e-12 * s * s;
+}
+
+/* Whether p is in triangle a b c (counter-clockwise), its edges and a
+ * hair around them included. */
 static int in_triangle(const node *a, const node *b, const node *c, const node *p)
 {
-    return turn(a, b, p) >= 0 && turn(b, c, p) >= 0 && turn(c, a, p) >= 0;
+    double e = -slack(a, b, c, p);
+    return turn(a, b, p) >= e && turn(b, c, p) >= e && turn(c, a, p) >= e;
 }
 
 /* Whether the segment from a to b starts into the polygon at a. */
@@ -50,50 +66,77 @@ static int locally_inside(const node *N, int a, const node *b)
     return turn(A, b, pa) > 0 || turn(A, na, b) > 0;
 }
 
-/* The point of the list through `start` that hole point m sees, or -1. */
-static int bridge_to(const node *N, int start, int m)
+/* Whether segment m p (nodes) is clear of every edge of the nn nodes'
+ * rings: crosses none, passes through no corner. */
+static int clear(const node *N, int nn, int m, int p)
 {
-    double hx = N[m].x, hy = N[m].y, qx = INFINITY;
-    int best = -1, p = start;
+    const node *M = &N[m], *P = &N[p];
+    double lo[2] = {fmin(M->x, P->x), fmin(M->y, P->y)},
+           hi[2] = {fmax(M->x, P->x), fmax(M->y, P->y)};
+    for (int u = 0; u < nn; u++) {
+        const node *A = &N[u], *B = &N[A->next];
+        if (fmax(A->x, B->x) < lo[0] || fmin(A->x, B->x) > hi[0] || fmax(A->y, B->y) < lo[1] ||
+            fmin(A->y, B->y) > hi[1])
+            continue;
+        int am = same_place(A, M) || same_place(A, P), bm = same_place(B, M) || same_place(B, P);
+        double o1 = turn(M, P, A), o2 = turn(M, P, B), e = slack(M, P, A, B);
+        /* a corner on the segment (to a hair), inside it */
+        if (!am && fabs(o1) <= e && A->x >= lo[0] && A->x <= hi[0] && A->y >= lo[1] &&
+            A->y <= hi[1])
+            return 0;
+        if (am || bm) continue;
+        double o3 = turn(A, B, M), o4 = turn(A, B, P);
+        if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) &&
+            ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+            return 0;
+    }
+    return 1;
+}
+
+typedef struct near {
+    double d;
+    int p;
+} near;
+
+static int by_d(const void *a, const void *b)
+{
+    double x = ((const near *)a)->d, y = ((const near *)b)->d;
+    return (x > y) - (x < y);
+}
+
+/* The point of the list through `start` that hole point m (its rightmost)
+ * sees: the nearest to its right whose segment to m is clear of every
+ * ring (nn nodes) and enters the polygon at it; -1 when none (or out of
+ * memory). */
+static int bridge_to(const node *N, int nn, int start, int m)
+{
+    int n = 0, p = start, rc = -1;
     do {
-        const node *a = &N[p], *b = &N[a->next];
-        if (a->y != b->y && ((a->y <= hy && b->y >= hy) || (a->y >= hy && b->y <= hy))) {
-            double x = a->x + (hy - a->y) * (b->x - a->x) / (b->y - a->y);
-            if (x >= hx && x < qx) {
-                qx = x;
-                best = a->x > b->x ? p : a->next;
-            }
-        }
-        p = a->next;
+        n++;
+        p = N[p].next;
     } while (p != start);
-    if (best < 0 || qx == hx) return best;
-    /* points inside the triangle (m, crossing, best) hide best: the one
-     * nearest the ray's direction instead */
-    node I = {0, 0, 0, qx, hy};
-    const node *M = &N[m], *B = &N[best];
-    double tan_min = INFINITY;
-    int pick = best;
+    near *c = malloc((size_t)n * sizeof *c);
+    if (!c) return -1;
+    n = 0;
     p = start;
     do {
         const node *q = &N[p];
-        if (p != best && q->x > hx) {
-            int inside = hy < B->y ? in_triangle(M, &I, B, q) : in_triangle(M, B, &I, q);
-            double t = fabs(q->y - hy) / (q->x - hx);
-            if (inside && locally_inside(N, p, M) &&
-                (t < tan_min || (t == tan_min && q->x < N[pick].x))) {
-                tan_min = t;
-                pick = p;
-            }
-        }
+        if (q->x > N[m].x)
+            c[n++] =
+                (near){(q->x - N[m].x) * (q->x - N[m].x) + (q->y - N[m].y) * (q->y - N[m].y), p};
         p = q->next;
     } while (p != start);
-    return pick;
+    qsort(c, (size_t)n, sizeof *c, by_d);
+    for (int i = 0; i < n && rc < 0; i++)
+        if (locally_inside(N, c[i].p, &N[m]) && clear(N, nn, m, c[i].p)) rc = c[i].p;
+    free(c);
+    return rc;
 }
 
 static int is_ear(const node *N, int b, int count, int start)
 {
     const node *A = &N[N[b].prev], *B = &N[b], *C = &N[N[b].next];
-    if (!(turn(A, B, C) > 0)) return 0;
+    if (!(turn(A, B, C) > slack(A, B, C, C))) return 0; /* (a straight corner is no ear) */
     int p = start;
     for (int k = 0; k < count; k++, p = N[p].next) {
         const node *q = &N[p];
@@ -136,7 +179,7 @@ int geom_earcut(const double (*P)[2], const int *ring, const int *start, int nri
     }
     qsort(hole + 1, (size_t)(nrings - 1), sizeof *hole, by_right);
     for (int h = 1; h < nrings; h++) {
-        int m = (int)hole[h][1], p = bridge_to(N, 0, m);
+        int m = (int)hole[h][1], p = bridge_to(N, nn, 0, m);
         if (p < 0) goto done;
         int p2 = nn++, m2 = nn++, pn = N[p].next, mp = N[m].prev;
         N[p2] = N[p];

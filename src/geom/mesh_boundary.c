@@ -27,7 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define PAIRS_PER_TRIANGLE 64 /* pair tests allowed, per triangle */
+#define PAIRS_PER_TRIANGLE 512 /* pair tests allowed, per triangle */
 #define CELL_REFS 16          /* grid cells a triangle may fill, on average */
 #define WINDING_WORK 50000000 /* shells times triangles for the winding check */
 #define REL 1e-12             /* an orientation this small, relative, is 0 */

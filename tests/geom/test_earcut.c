@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../../src/geom/earcut.h"
 
@@ -152,4 +153,29 @@ Test(earcut, region_and_prism)
         }
     free(v);
     free(t);
+}
+
+/* A plate with a 10 × 10 grid of square holes: rows and columns of them
+ * share coordinates, so corners and edges lie exactly on the rays a
+ * bridge would be cast along.  10000 less 100 · 16; n + 2h - 2. */
+Test(earcut, grid_of_holes)
+{
+    static double P[4 + 400][2];
+    static int ring[4 + 400], start[102];
+    const double outer[4][2] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+    memcpy(P, outer, sizeof outer);
+    int k = 4, r = 1;
+    start[0] = 0;
+    for (int i = 0; i < 10; i++)
+        for (int j = 0; j < 10; j++) {
+            start[r++] = k;
+            const double x = 10 * i + 3, y = 10 * j + 3; /* clockwise */
+            const double q[4][2] = {{x, y}, {x, y + 4}, {x + 4, y + 4}, {x + 4, y}};
+            memcpy(P[k], q, sizeof q);
+            k += 4;
+        }
+    start[r] = k;
+    for (int i = 0; i < k; i++)
+        ring[i] = i;
+    cr_expect_eq(cut((const double(*)[2])P, ring, start, 101, 10000 - 100 * 16), 404 + 200 - 2);
 }

@@ -306,7 +306,8 @@ Test(own_faces, prisms_are_their_faces)
  * outlines: a box with a square hole through it (16 corners, 32
  * triangles, 1000 - 160), two overlapping cubes (1875, their corners and
  * the six where their faces cross), a cube cut by a turned one (an
- * octagonal prism: 16 corners, 28 triangles, 10 · 100 (2√2 - 2)). */
+ * octagonal prism: 16 corners, 28 triangles, 10 · 100 (2√2 - 2)), a plate
+ * with a hundred holes in rows and columns. */
 Test(own_faces, plane_faced_booleans)
 {
     static const struct {
@@ -318,6 +319,11 @@ Test(own_faces, plane_faced_booleans)
         {"cube(10); translate([5, 5, 5]) cube(10);", 20, 36, 1875},
         {"intersection() { cube(10, center = true); rotate([0, 0, 45]) cube(10, center = true); }",
          16, 28, 1000 * (2 * 1.41421356237309505 - 2)},
+        /* a plate with a 10 × 10 grid of square holes: 4 + 400 corners a
+         * side; each side 404 + 200 - 2 triangles, 404 walls two each */
+        {"difference() { cube([100, 100, 10]); for (i = [0:9], j = [0:9])"
+         " translate([i * 10 + 3, j * 10 + 3, -1]) cube([4, 4, 12]); }",
+         808, 2 * 602 + 2 * 404, 100000 - 100 * 160},
     };
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         rayscad_mesh *m = mesh_of(cases[i].src, 0);
