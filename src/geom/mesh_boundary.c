@@ -28,9 +28,9 @@
 #include <string.h>
 
 #define PAIRS_PER_TRIANGLE 512 /* pair tests allowed, per triangle */
-#define CELL_REFS 16          /* grid cells a triangle may fill, on average */
-#define WINDING_WORK 50000000 /* shells times triangles for the winding check */
-#define REL 1e-12             /* an orientation this small, relative, is 0 */
+#define CELL_REFS 16           /* grid cells a triangle may fill, on average */
+#define WINDING_WORK 50000000  /* shells times triangles for the winding check */
+#define REL 1e-12              /* an orientation this small, relative, is 0 */
 
 typedef struct edge {
     int a, b, t;
