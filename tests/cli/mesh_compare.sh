@@ -12,7 +12,8 @@
 # the bench part and a sphere at --mesh-size 0.25 --mesh-tolerance 0.008
 # must lie within the tolerance; three models' exact surfaces (surface_d:
 # their sharp rims and corners) within its default tolerance of their
-# meshes, seventeen models' meshes and surfaces (within_d: faceted_prisms's
+# meshes, eighteen models' meshes and surfaces (within_d: svg_import's
+# overlapping extrusions, exact as a plane-faced part; faceted_prisms's
 # plane facets at 12° to 45°, their edges and corners; rounded_cube's
 # rims; star_prism's tips; the bench part's bores where they meet the
 # cube's faces; pinched_cells' facet corners; notched_box's notches
@@ -70,7 +71,7 @@ tolerance_of() {
 # the models whose meshes are within their default tolerance both ways
 within_d="acute_tips cube_sphere_cylinders faceted_prisms hull_booleans import_amf_3mf minkowski_solids"
 within_d="$within_d knot_flips notched_box pinched_cells render_mode rounded_cube sphere star_prism"
-within_d="$within_d torus twist_ties hull_extrusions hull_revolve"
+within_d="$within_d torus twist_ties hull_extrusions hull_revolve svg_import"
 # the models that warn of walls thinner than the grid: their acute tips
 tips="acute_tips"
 # the models whose exact surface alone is within it (their meshes still
