@@ -421,3 +421,26 @@ int geom_bsp_boolean(geom_bsp_op op, const geom_polys *a, const geom_polys *b, l
     if (B.failed) geom_polys_free(out);
     return B.failed;
 }
+
+static void polys_box(const geom_polys *p, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (int i = 0; i < p->nv; i++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], p->v[i][k]);
+            hi[k] = fmax(hi[k], p->v[i][k]);
+        }
+}
+
+int geom_polys_meet(const geom_polys *a, const geom_polys *b)
+{
+    double alo[3], ahi[3], blo[3], bhi[3];
+    polys_box(a, alo, ahi);
+    polys_box(b, blo, bhi);
+    for (int k = 0; k < 3; k++)
+        if (ahi[k] < blo[k] || bhi[k] < alo[k]) return 0;
+    return 1;
+}

@@ -27,6 +27,10 @@ int geom_polys_add(geom_polys *p, const double (*v)[3], int k);
 /* Appends every polygon of q.  Returns 0, or -1 out of memory. */
 int geom_polys_append(geom_polys *p, const geom_polys *q);
 
+/* Whether the boxes of a's and b's points meet (touching counts): where
+ * they do not, no boolean of the two need cut anything. */
+int geom_polys_meet(const geom_polys *a, const geom_polys *b);
+
 typedef enum { GEOM_BSP_UNION, GEOM_BSP_INTERSECTION, GEOM_BSP_DIFFERENCE } geom_bsp_op;
 
 enum { GEOM_BSP_NO_MEMORY = -1, GEOM_BSP_TOO_MUCH = -2 };

@@ -15,36 +15,12 @@
 #include "flat_faces.h"
 
 #include "../intervals/vec3.h"
+#include "edges.h"
 #include "earcut.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct edge {
-    int a, b, t;
-} edge;
-
-static int by_ends(const void *x, const void *y)
-{
-    const edge *p = x, *q = y;
-    if (p->a != q->a) return p->a < q->a ? -1 : 1;
-    return (p->b > q->b) - (p->b < q->b);
-}
-
-static int twin(const edge *e, int ne, int a, int b)
-{
-    edge key = {a, b, 0};
-    const edge *f = bsearch(&key, e, (size_t)ne, sizeof *e, by_ends);
-    return f ? (int)(f - e) : -1;
-}
-
-static int find(int *up, int i)
-{
-    while (up[i] != i)
-        i = up[i] = up[up[i]];
-    return i;
-}
 
 /* A boundary edge (an edge whose twin lies in another face) of face g. */
 typedef struct bedge {
@@ -159,7 +135,7 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
 {
     int n = *nt, ne = 3 * n, rc = -1, nout = 0, capout = n + 16;
     const int(*tri)[3] = (const int(*)[3]) * T;
-    edge *e = malloc((size_t)ne * sizeof *e);
+    geom_edge *e = malloc((size_t)ne * sizeof *e);
     int *up = malloc((size_t)n * sizeof *up), *tw = malloc((size_t)ne * sizeof *tw);
     double(*pl)[4] = malloc((size_t)n * sizeof *pl);
     pair *vg = malloc((size_t)ne * sizeof *vg);
@@ -178,11 +154,11 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
             pl[t][k] = l > 0 ? pl[t][k] / l : 0;
         pl[t][3] = dot3(pl[t], V[tri[t][0]]);
         for (int k = 0; k < 3; k++)
-            e[3 * t + k] = (edge){tri[t][k], tri[t][(k + 1) % 3], t};
+            e[3 * t + k] = (geom_edge){tri[t][k], tri[t][(k + 1) % 3], t};
     }
-    qsort(e, (size_t)ne, sizeof *e, by_ends);
+    qsort(e, (size_t)ne, sizeof *e, geom_edge_cmp);
     for (int i = 0; i < ne; i++) {
-        tw[i] = twin(e, ne, e[i].b, e[i].a);
+        tw[i] = geom_edge_find(e, ne, e[i].b, e[i].a);
         if (tw[i] < 0) { /* not closed: leave it be */
             rc = 0;
             goto done;
@@ -191,10 +167,10 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
         if (dot3(pl[t], pl[u]) < 1 - 1e-12) continue;
         for (int k = 0; k < 3; k++)
             apart |= fabs(dot3(pl[t], V[tri[u][k]]) - pl[t][3]) > tol;
-        if (!apart) up[find(up, t)] = find(up, u);
+        if (!apart) up[geom_set_find(up, t)] = geom_set_find(up, u);
     }
     for (int t = 0; t < n; t++)
-        up[t] = find(up, t);
+        up[t] = geom_set_find(up, t);
     /* how many faces meet at each vertex; the faces' outlines */
     for (int i = 0; i < ne; i++) {
         vg[i] = (pair){e[i].a, up[e[i].t]};

@@ -22,6 +22,7 @@
 #include "mesh_boundary.h"
 
 #include "../intervals/vec3.h"
+#include "edges.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -31,25 +32,6 @@
 #define CELL_REFS 16           /* grid cells a triangle may fill, on average */
 #define WINDING_WORK 50000000  /* shells times triangles for the winding check */
 #define REL 1e-12              /* an orientation this small, relative, is 0 */
-
-typedef struct edge {
-    int a, b, t;
-} edge;
-
-static int by_ends(const void *x, const void *y)
-{
-    const edge *p = x, *q = y;
-    if (p->a != q->a) return p->a < q->a ? -1 : 1;
-    return (p->b > q->b) - (p->b < q->b);
-}
-
-/* The triangle owning directed edge a -> b, or -1. */
-static int owner(const edge *e, int ne, int a, int b)
-{
-    edge key = {a, b, 0};
-    const edge *f = bsearch(&key, e, (size_t)ne, sizeof *e, by_ends);
-    return f ? f->t : -1;
-}
 
 /* The sign of the orientation of d against the plane of a, b, c: 0 within
  * REL of the product of the three edges from a. */
@@ -294,18 +276,11 @@ static double winding(const double (*v)[3], const int (*tri)[3], int nt, const d
     return sum / (4 * 3.14159265358979323846);
 }
 
-static int find(int *up, int i)
-{
-    while (up[i] != i)
-        i = up[i] = up[up[i]];
-    return i;
-}
-
 int geom_mesh_is_boundary(const double (*v)[3], int nv, const int (*tri)[3], int nt)
 {
     if (nt < 4) return 0;
     int ne = 3 * nt, rc = 0;
-    edge *e = malloc((size_t)ne * sizeof *e);
+    geom_edge *e = malloc((size_t)ne * sizeof *e);
     int *first = malloc((size_t)nv * sizeof *first), *deg = calloc((size_t)nv, sizeof *deg);
     int *up = malloc((size_t)nt * sizeof *up);
     double(*nrm)[3] = malloc((size_t)nt * sizeof *nrm);
@@ -320,20 +295,21 @@ int geom_mesh_is_boundary(const double (*v)[3], int nv, const int (*tri)[3], int
         for (int k = 0; k < 3; k++) {
             int a = tri[t][k], b = tri[t][(k + 1) % 3];
             if (a < 0 || a >= nv || a == b) goto done;
-            e[3 * t + k] = (edge){a, b, t};
+            e[3 * t + k] = (geom_edge){a, b, t};
             deg[a]++;
             if (first[a] < 0) first[a] = t;
         }
         tri_normal3(v[tri[t][0]], v[tri[t][1]], v[tri[t][2]], nrm[t]);
         if (!(dot3(nrm[t], nrm[t]) > 0)) goto done; /* no area */
     }
-    qsort(e, (size_t)ne, sizeof *e, by_ends);
+    qsort(e, (size_t)ne, sizeof *e, geom_edge_cmp);
     /* every edge once each way; the triangles across it are one shell */
     for (int i = 0; i < ne; i++) {
-        if (i > 0 && by_ends(&e[i - 1], &e[i]) == 0) goto done;
-        int o = owner(e, ne, e[i].b, e[i].a);
+        if (i > 0 && geom_edge_cmp(&e[i - 1], &e[i]) == 0) goto done;
+        int o = geom_edge_find(e, ne, e[i].b, e[i].a);
+        o = o < 0 ? -1 : e[o].t;
         if (o < 0) goto done;
-        up[find(up, e[i].t)] = find(up, o);
+        up[geom_set_find(up, e[i].t)] = geom_set_find(up, o);
     }
     /* one fan about each vertex: from a triangle (a, b, c) the next about a
      * is the one across c -> a, which holds a -> c */
@@ -343,7 +319,8 @@ int geom_mesh_is_boundary(const double (*v)[3], int nv, const int (*tri)[3], int
         do {
             const int *T = tri[t];
             int k = T[0] == a ? 0 : T[1] == a ? 1 : 2;
-            t = owner(e, ne, a, T[(k + 2) % 3]);
+            t = geom_edge_find(e, ne, a, T[(k + 2) % 3]);
+            t = t < 0 ? -1 : e[t].t;
             n++;
         } while (t >= 0 && t != first[a] && n <= deg[a]);
         if (t != first[a] || n != deg[a]) goto done;
@@ -362,14 +339,14 @@ int geom_mesh_is_boundary(const double (*v)[3], int nv, const int (*tri)[3], int
     for (int t = 0; t < nt; t++)
         root_best[t] = -1;
     for (int t = 0; t < nt; t++) {
-        int r = find(up, t);
+        int r = geom_set_find(up, t);
         if (root_best[r] < 0) shells++;
         if (root_best[r] < 0 || dot3(nrm[t], nrm[t]) > dot3(nrm[root_best[r]], nrm[root_best[r]]))
             root_best[r] = t;
     }
     rc = (long long)shells * nt <= WINDING_WORK;
     for (int t = 0; t < nt && rc == 1; t++) {
-        if (root_best[t] < 0 || find(up, t) != t) continue;
+        if (root_best[t] < 0 || geom_set_find(up, t) != t) continue;
         int b = root_best[t];
         double len = sqrt(dot3(nrm[b], nrm[b])), c[3], x[2][3];
         for (int k = 0; k < 3; k++)

@@ -88,30 +88,6 @@ static int box_meets(const csg_scene_node_info *f, const double *lo, const doubl
     return 1;
 }
 
-static void polys_box(const geom_polys *p, double lo[3], double hi[3])
-{
-    for (int k = 0; k < 3; k++) {
-        lo[k] = INFINITY;
-        hi[k] = -INFINITY;
-    }
-    for (int i = 0; i < p->nv; i++)
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fmin(lo[k], p->v[i][k]);
-            hi[k] = fmax(hi[k], p->v[i][k]);
-        }
-}
-
-/* Whether the boxes of a and b meet (touching counts). */
-static int polys_meet(const geom_polys *a, const geom_polys *b)
-{
-    double alo[3], ahi[3], blo[3], bhi[3];
-    polys_box(a, alo, ahi);
-    polys_box(b, blo, bhi);
-    for (int k = 0; k < 3; k++)
-        if (ahi[k] < blo[k] || bhi[k] < alo[k]) return 0;
-    return 1;
-}
-
 /* The boundary of node i's subtree into out (empty): 0, or -1 when out of
  * memory (c->no where it cannot be had). */
 static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
@@ -136,7 +112,7 @@ static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
             geom_polys_free(&g);
             continue;
         }
-        if (!polys_meet(out, &g)) { /* apart: a union keeps both, a difference the first */
+        if (!geom_polys_meet(out, &g)) { /* apart: a union keeps both, a difference the first */
             if (f.op == CSG_OP_UNION) rc = geom_polys_append(out, &g);
             if (f.op == CSG_OP_INTERSECTION) geom_polys_free(out);
             geom_polys_free(&g);

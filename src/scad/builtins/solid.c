@@ -434,29 +434,6 @@ typedef struct solid {
     scad_facet_params f;
 } solid;
 
-static void polys_box(const geom_polys *p, double lo[3], double hi[3])
-{
-    for (int k = 0; k < 3; k++) {
-        lo[k] = INFINITY;
-        hi[k] = -INFINITY;
-    }
-    for (int i = 0; i < p->nv; i++)
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fmin(lo[k], p->v[i][k]);
-            hi[k] = fmax(hi[k], p->v[i][k]);
-        }
-}
-
-static int boxes_meet(const geom_polys *a, const geom_polys *b)
-{
-    double alo[3], ahi[3], blo[3], bhi[3];
-    polys_box(a, alo, ahi);
-    polys_box(b, blo, bhi);
-    for (int k = 0; k < 3; k++)
-        if (ahi[k] < blo[k] || bhi[k] < alo[k]) return 0;
-    return 1;
-}
-
 static int solid_of(solid *c, const scad_geom *g, geom_polys *out)
 {
     if (!g || c->ev->aborted) return -1;
@@ -473,7 +450,7 @@ static int solid_of(solid *c, const scad_geom *g, geom_polys *out)
             geom_polys_free(&k);
             return -1;
         }
-        int meet = out->n > 0 && k.n > 0 && boxes_meet(out, &k);
+        int meet = out->n > 0 && k.n > 0 && geom_polys_meet(out, &k);
         int rc = 0;
         if (g->op == CSG_OP_UNION) {
             if (meet) {
