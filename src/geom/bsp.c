@@ -78,6 +78,8 @@ typedef struct node {
     plist polys;
 } node;
 
+#define MAX_DEPTH 5000 /* of a tree (see build) */
+
 typedef struct block {
     struct block *next;
     size_t used, size;
@@ -266,9 +268,13 @@ static node *node_new(bsp *b)
     return n;
 }
 
-/* Adds the polygons of l to the tree at n (l is consumed). */
-static void build(bsp *b, node *n, plist *l)
+/* Adds the polygons of l to the tree at n, depth levels down (l is
+ * consumed).  A tree deeper than MAX_DEPTH (polygons that each fall to one
+ * side of every plane before them: a chain) fails as too much work: every
+ * walk of the tree recurses that deep, and the stack has its limits. */
+static void build(bsp *b, node *n, plist *l, int depth)
 {
+    if (depth > MAX_DEPTH && l->n && !b->failed) b->failed = GEOM_BSP_TOO_MUCH;
     if (!l->n || b->failed) {
         free(l->v);
         return;
@@ -284,11 +290,11 @@ static void build(bsp *b, node *n, plist *l)
     if (f.n && !n->front) n->front = node_new(b);
     if (bk.n && !n->back) n->back = node_new(b);
     if (f.n && n->front)
-        build(b, n->front, &f);
+        build(b, n->front, &f, depth + 1);
     else
         free(f.v);
     if (bk.n && n->back)
-        build(b, n->back, &bk);
+        build(b, n->back, &bk, depth + 1);
     else
         free(bk.v);
 }
@@ -365,7 +371,7 @@ static node *tree_of(bsp *b, const geom_polys *s)
         if (p) plist_push(b, &l, p);
     }
     if (n)
-        build(b, n, &l);
+        build(b, n, &l, 0);
     else
         free(l.v);
     return n;
@@ -404,7 +410,7 @@ int geom_bsp_boolean(geom_bsp_op op, const geom_polys *a, const geom_polys *b, l
         }
         plist rest = {0};
         all_polys(&B, N, &rest);
-        build(&B, A, &rest);
+        build(&B, A, &rest, 0);
         if (op != GEOM_BSP_UNION) invert(A);
         plist res = {0};
         all_polys(&B, A, &res);

@@ -60,7 +60,7 @@ static int leaf(ctx *c, int32_t prim, geom_polys *out)
     int color = mesh_palette_of(c->pal, prim);
     if (c->color >= 0 && color != c->color) c->no = 1;
     c->color = color;
-    mesh_faces f;
+    mesh_faces f = {0};
     int ok = !c->no && mesh_faces_of(sh, &f);
     c->triangles += ok ? f.nt : 0;
     ok = ok && c->triangles <= MAX_TRIANGLES;
