@@ -334,6 +334,14 @@ Test(own_faces, plane_faced_booleans)
                            "case %zu: %.12g", i, rayscad_mesh_volume(m));
         rayscad_mesh_free(m);
     }
+    /* two colours: the polygons cannot say whose they are, so contoured
+     * (closed, its volume within the simplification's thousandths) */
+    rayscad_mesh *two =
+        mesh_of("color(\"red\") cube(10); color(\"blue\") translate([5, 5, 5]) cube(10);", 0);
+    cr_expect(closed(two));
+    cr_expect_float_eq(rayscad_mesh_volume(two), 1875, 1875 * 3e-3);
+    cr_expect_eq(rayscad_mesh_color_count(two), 2);
+    rayscad_mesh_free(two);
     /* the overlapping cubes' corners: each coordinate 0, 5, 10 or 15 */
     rayscad_mesh *m = mesh_of(cases[1].src, 0);
     const float *v = rayscad_mesh_vertices(m);
