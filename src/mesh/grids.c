@@ -106,11 +106,9 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
         d->exact = p->prim; /* meshed as its own faces: no finer grid needed */
         refine = 0;
     } else if (rc == 0 && o->tolerance > 0 && !o->contour_all) {
-        int e = mesh_polyhedral(d, p->lo, p->hi, &d->poly);
-        if (e < 0) {
-            snprintf(err, errlen, "out of memory");
-            rc = RAYSCAD_ERROR;
-        } else if (e == 1) {
+        /* (out of memory there, the BSP's pools the likely cause: the
+         * contour, which needs less, is tried instead) */
+        if (mesh_polyhedral(d, p->lo, p->hi, &d->poly) == 1) {
             d->exact = MESH_POLYHEDRAL; /* the exact boundary of its booleans */
             refine = 0;
         }
