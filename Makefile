@@ -306,12 +306,14 @@ cli: all
 viewer: all
 	tests/viewer_test.sh $(BUILD)
 
-# Against the real openscad: rendered masks (tests/cli/compare_openscad.sh), and
+# Against the real openscad: rendered masks (tests/cli/compare_openscad.sh),
 # --measure on random faceted CSG against the volume and area of openscad's STL
-# (tests/cli/measure_openscad.py).
+# (tests/cli/measure_openscad.py), and the same scenes' meshes, closed and
+# nine in ten the exact boundary of their booleans (tests/cli/mesh_exact_openscad.py).
 compare: all
 	tests/cli/compare_openscad.sh $(BUILD)
 	tests/cli/measure_openscad.py $(BUILD)
+	tests/cli/mesh_exact_openscad.py $(BUILD)
 
 # Hostile inputs and OpenSCAD's examples: no signal, no hang, no sanitizer report,
 # no output left behind by a failure (tests/cli/hostile.sh).
