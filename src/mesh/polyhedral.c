@@ -380,6 +380,19 @@ int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3]
         return rc;
     }
     out->color = (uint16_t)(c.color < 0 ? 0 : c.color);
+    /* A check on the BSP from the rays: the grid's volume, exact along each
+     * ray and a midpoint rule across, is off by a fraction of a cell's
+     * depth over the surface; a piece the booleans kept or lost wrongly is
+     * more (a closed mesh of the wrong solid passes every other test). */
+    mesh_measure g;
+    mesh_dexels_measure(d, &g);
+    double vol = 0;
+    for (int i = 0; i < out->nt; i++)
+        vol += triple3(out->v[out->t[i][0]], out->v[out->t[i][1]], out->v[out->t[i][2]]) / 6;
+    if (!(fabs(vol - g.volume) <= 0.02 * fabs(g.volume) + g.area * d->h)) {
+        mesh_polyhedron_free(out);
+        return 0;
+    }
     /* as the mesh will hold them (floats): no two corners at one place, no
      * triangle without area */
     double(*q)[3] = malloc((size_t)out->nv * sizeof *q);
