@@ -557,11 +557,13 @@ typedef struct rayscad_mesh_options {
     long long simplify_max_triangles_smooth;
     /* 0 (default): where the mesh is simplified (tolerance > 0), a part of
      * the model that is one polyhedral primitive alone — a hull, a box, an
-     * OpenSCAD-faceted sphere or cylinder, with no other operand of the
-     * top-level unions near it — is written as its own faces, exactly (the
-     * hull's triangles, a box's twelve), and its walls, however thin, are
-     * not reported (rayscad_sampling_thin).  1: it is contoured and
-     * simplified like the rest.  Set both before rayscad_sampling_new. */
+     * OpenSCAD-faceted sphere or cylinder, a polyhedron, a prism of
+     * polygons, with no other operand of the top-level unions near it — is
+     * written as its own faces, exactly (the hull's triangles, a box's
+     * twelve), and a part whose every primitive is plane-faced as the exact
+     * boundary of its booleans; their walls, however thin, are not reported
+     * (rayscad_sampling_thin).  1: they are contoured and simplified like
+     * the rest.  Set both before rayscad_sampling_new. */
     int contour_all;
     /* May be NULL: told, on the calling thread, how far a phase has come
      * ("sampling": each grid's rays, again for a refined one; "contouring"),

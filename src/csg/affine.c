@@ -83,3 +83,9 @@ void csg_affine_vector(const csg_affine m, const double v[3], double out[3])
     out[1] = r[1];
     out[2] = r[2];
 }
+
+double csg_affine_det(const csg_affine m)
+{
+    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+           m[2] * (m[4] * m[9] - m[5] * m[8]);
+}

@@ -133,6 +133,8 @@ void csg_affine_mul(const csg_affine a, const csg_affine b, csg_affine out);
 int csg_affine_invert(const csg_affine m, csg_affine out);
 void csg_affine_point(const csg_affine m, const double p[3], double out[3]);
 void csg_affine_vector(const csg_affine m, const double v[3], double out[3]);
+/* The determinant of m's linear part (< 0: m mirrors). */
+double csg_affine_det(const csg_affine m);
 
 /* ---- reading a committed scene (src/csg/inspect.c) -----------------------
  * For exporters: the flattened, simplified tree as the tracer sees it.  Node

@@ -227,31 +227,31 @@ static void cap_face(mesh_build *m, const int *f, int k, int alone)
  * mesh bounds its solid.  A lone strictly convex path, and a region the
  * cut refuses (paths that touch), as each path its own face (cap_face:
  * the holes' faces cancel the outer's under the nonzero rule).  Region
- * point ps[p] + j is vertex at[p] + j, or at[p] + k - 1 - j where the walk
- * turned path p (rev).  0, or -1 when out of memory. */
+ * point x = ps[p] + j of path p (k points) is vertex vert[x] = base[p] + j,
+ * or base[p] + k - 1 - j where the walk turned path p (rev), and S layers
+ * up vert[n + x] = vert[x] + S k.  0, or -1 when out of memory. */
 static int caps(mesh_build *m, const double (*P)[2], const int *ps, int np, const int *base,
                 const signed char *rev, int S, int top)
 {
-    int(*tri)[3] = NULL, nt = -1, *vert = NULL;
+    int(*tri)[3] = NULL, nt = -1, *vert = NULL, n = ps[np];
     if (np > 1 || !convex_alone(m, base[0], ps[1] - ps[0])) {
         nt = geom_region_triangles(P, ps, np, &tri);
-        vert = malloc((size_t)ps[np] * sizeof *vert);
+        vert = malloc(2 * (size_t)n * sizeof *vert);
         if (nt >= 0 && !vert) {
             free(tri);
             return -1;
         }
         for (int p = 0; vert && p < np; p++)
-            for (int j = 0, k = ps[p + 1] - ps[p]; j < k; j++)
+            for (int j = 0, k = ps[p + 1] - ps[p]; j < k; j++) {
                 vert[ps[p] + j] = base[p] + (rev[p] ? k - 1 - j : j);
+                vert[n + ps[p] + j] = vert[ps[p] + j] + S * k;
+            }
     }
     for (int t = 0; t < nt; t++) {
         int lo[3], up[3];
-        for (int j = 0; j < 3; j++) { /* the same corner S layers up */
-            int x = tri[t][j], p = 0;
-            while (ps[p + 1] <= x)
-                p++;
-            lo[j] = vert[x];
-            up[2 - j] = vert[x] + S * (ps[p + 1] - ps[p]);
+        for (int j = 0; j < 3; j++) {
+            lo[j] = vert[tri[t][j]];
+            up[2 - j] = vert[n + tri[t][j]];
         }
         mb_face(m, lo, 3);
         if (top) mb_face(m, up, 3);

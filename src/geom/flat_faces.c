@@ -141,7 +141,7 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
     pair *vg = malloc((size_t)ne * sizeof *vg);
     unsigned char *drop = calloc((size_t)(nv ? nv : 1), 1);
     int *faces = calloc((size_t)(nv ? nv : 1), sizeof *faces);
-    pair *order = malloc((size_t)n * sizeof *order); /* (triangle, face) by face */
+    pair *order = malloc((size_t)n * sizeof *order); /* .v its face, .g a triangle: by face */
     bedge *B = malloc((size_t)ne * sizeof *B);
     int(*out)[3] = malloc((size_t)capout * sizeof *out);
     int nb = 0;

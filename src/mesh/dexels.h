@@ -34,11 +34,6 @@ int mesh_palette_build(const csg_scene *s, int root, mesh_palette *p);
 uint16_t mesh_palette_of(const mesh_palette *p, int32_t prim);
 void mesh_palette_free(mesh_palette *p);
 
-/* Family a holds the rays along axis a.  Its rays are indexed by the other
- * two axes u < v: ray (iu, iv) is number iu + (n[u] + 1) * iv, and its
- * crossings are hit[a][off[a][r] .. off[a][r + 1]), sorted by t, alternating
- * enter / exit starting with an enter (they are the ends of disjoint
- * spans). */
 /* A closed triangle mesh, counter-clockwise from outside, of one colour. */
 typedef struct mesh_polyhedron {
     double (*v)[3];
@@ -49,6 +44,11 @@ typedef struct mesh_polyhedron {
 void mesh_polyhedron_free(mesh_polyhedron *p);
 #define MESH_POLYHEDRAL (-2)
 
+/* Family a holds the rays along axis a.  Its rays are indexed by the other
+ * two axes u < v: ray (iu, iv) is number iu + (n[u] + 1) * iv, and its
+ * crossings are hit[a][off[a][r] .. off[a][r + 1]), sorted by t, alternating
+ * enter / exit starting with an enter (they are the ends of disjoint
+ * spans). */
 struct mesh_dexels {
     double h;
     double org[3]; /* world position of node (0, 0, 0) */
@@ -122,6 +122,11 @@ int mesh_faces_bound(const mesh_faces *f);
  * not, -1 out of memory. */
 int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
                     mesh_polyhedron *out);
+
+/* Whether the corners v[0 .. nv) and triangles t[0 .. nt), as a mesh
+ * holds them (floats), stay apart and keep their areas: 1 or 0 (also when
+ * a corner is not finite, or out of memory). */
+int mesh_floats_apart(const double (*v)[3], int nv, const int32_t (*t)[3], int nt);
 
 /* Whether primitive prim can be meshed as its own faces (exact_faces.c):
  * a polytope that knows its triangles, a box, or a polyhedron (written or

@@ -34,13 +34,6 @@ static const int BOX_TRI[12][3] = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5},  
                                    {0, 1, 5}, {0, 5, 4}, {2, 6, 7}, {2, 7, 3},  /* -y, +y */
                                    {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}}; /* -z, +z */
 
-/* The determinant of the linear part of m. */
-static double det3(const csg_affine m)
-{
-    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-           m[2] * (m[4] * m[9] - m[5] * m[8]);
-}
-
 int mesh_faces_of(const iv_shape *sh, mesh_faces *f)
 {
     memset(f, 0, sizeof *f);
@@ -105,6 +98,27 @@ int mesh_faces_bound(const mesh_faces *f)
     return ok;
 }
 
+int mesh_floats_apart(const double (*v)[3], int nv, const int32_t (*t)[3], int nt)
+{
+    double(*q)[3] = malloc((size_t)(nv ? nv : 1) * sizeof *q);
+    int ok = q != NULL;
+    for (int i = 0; ok && i < nv; i++) {
+        memcpy(q[i], v[i], sizeof q[i]);
+        mesh_round_to_float(q[i]);
+        ok = isfinite(q[i][0]) && isfinite(q[i][1]) && isfinite(q[i][2]);
+    }
+    for (int i = 0; ok && i < nt; i++) {
+        double n[3];
+        tri_normal3(q[t[i][0]], q[t[i][1]], q[t[i][2]], n);
+        ok = dot3(n, n) > 0;
+    }
+    if (ok) qsort(q, (size_t)nv, sizeof *q, cmp_point);
+    for (int i = 1; ok && i < nv; i++)
+        ok = cmp_point(q[i - 1], q[i]) != 0;
+    free(q);
+    return ok;
+}
+
 int mesh_exact_faces(const csg_scene *s, int32_t prim)
 {
     mesh_faces f;
@@ -112,36 +126,17 @@ int mesh_exact_faces(const csg_scene *s, int32_t prim)
     const iv_shape *sh = csg_scene_prim_shape(s, prim);
     int ok = mesh_faces_of(sh, &f);
     csg_scene_prim_transform(s, prim, w);
-    double d = det3(w);
+    double d = csg_affine_det(w);
     ok = ok && isfinite(d) && d != 0;
     /* a mesh as written, a prism as cut here: the boundary of their solid? */
     if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = mesh_faces_bound(&f);
-    /* as the mesh will hold them (floats): no two corners at one place, no
-     * triangle without area */
-    const double(*v)[3] = f.v;
-    const int32_t(*t)[3] = f.t;
-    int nv = f.nv, nt = f.nt;
-    double(*p)[3] = ok ? malloc((size_t)nv * sizeof *p) : NULL,
-    (*q)[3] = ok ? malloc((size_t)nv * sizeof *q) : NULL;
-    ok = ok && p && q;
-    for (int i = 0; ok && i < nv; i++) {
-        csg_affine_point(w, v[i], p[i]);
-        mesh_round_to_float(p[i]);
-        ok = isfinite(p[i][0]) && isfinite(p[i][1]) && isfinite(p[i][2]);
-    }
-    for (int i = 0; ok && i < nt; i++) {
-        double n[3];
-        tri_normal3(p[t[i][0]], p[t[i][1]], p[t[i][2]], n);
-        ok = dot3(n, n) > 0;
-    }
-    if (ok) {
-        memcpy(q, p, (size_t)nv * sizeof *q);
-        qsort(q, (size_t)nv, sizeof *q, cmp_point);
-        for (int i = 1; ok && i < nv; i++)
-            ok = cmp_point(q[i - 1], q[i]) != 0;
-    }
+    /* the corners where the mesh will hold them */
+    double(*p)[3] = ok ? malloc((size_t)f.nv * sizeof *p) : NULL;
+    ok = ok && p;
+    for (int i = 0; ok && i < f.nv; i++)
+        csg_affine_point(w, f.v[i], p[i]);
+    ok = ok && mesh_floats_apart((const double(*)[3])p, f.nv, f.t, f.nt);
     free(p);
-    free(q);
     mesh_faces_free(&f);
     return ok;
 }
@@ -154,7 +149,7 @@ static int append(const mesh_dexels *d, mesh *m)
     /* (mesh_exact_faces found faces: none now is out of memory) */
     int rc = mesh_faces_of(csg_scene_prim_shape(d->scene, d->exact), &f) ? 0 : -1;
     csg_scene_prim_transform(d->scene, d->exact, w);
-    int turn = (det3(w) < 0) != f.cw; /* a mirror winds them the other way */
+    int turn = (csg_affine_det(w) < 0) != f.cw; /* a mirror winds them the other way */
     uint16_t color = mesh_palette_of(&d->pal, d->exact);
     int32_t base = m->nv;
     for (int i = 0; rc == 0 && i < f.nv; i++) {

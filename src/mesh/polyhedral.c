@@ -45,13 +45,6 @@ typedef struct ctx {
     int no;         /* 1: not plane-faced, two colours, too much work */
 } ctx;
 
-/* The determinant of the linear part of m. */
-static double det3(const csg_affine m)
-{
-    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-           m[2] * (m[4] * m[9] - m[5] * m[8]);
-}
-
 /* Primitive prim's faces in world space, outward, into out: 0, or -1 when
  * out of memory (c->no where it has no such faces). */
 static int leaf(ctx *c, int32_t prim, geom_polys *out)
@@ -67,7 +60,7 @@ static int leaf(ctx *c, int32_t prim, geom_polys *out)
     if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = mesh_faces_bound(&f);
     csg_affine w;
     csg_scene_prim_transform(c->s, prim, w);
-    double d = det3(w);
+    double d = csg_affine_det(w);
     ok = ok && isfinite(d) && d != 0;
     int turn = (d < 0) != f.cw, rc = 0;
     for (int i = 0; ok && rc == 0 && i < f.nt; i++) {
@@ -201,12 +194,16 @@ static double off_line(const welded *w, int a, int b, int v, double *s)
     return dot3(cr, cr) / l2;
 }
 
-/* The first vertex (along a b) inside edge a b, or -1: a corner of another
- * polygon on this one's edge (a T-junction). */
+/* The first vertex (along a b) inside edge a b, more than tol from either
+ * end, or -1: a corner of another polygon on this one's edge (a
+ * T-junction). */
 static int on_edge(const welded *w, int a, int b)
 {
     const double *A = w->V[a], *B = w->V[b];
-    double xlo = fmin(A[0], B[0]) - w->tol, xhi = fmax(A[0], B[0]) + w->tol, best = 2;
+    double ab[3];
+    sub3(B, A, ab);
+    double xlo = fmin(A[0], B[0]) - w->tol, xhi = fmax(A[0], B[0]) + w->tol, best = 2,
+           inner = w->tol / sqrt(dot3(ab, ab)); /* tol, along a b */
     int lo = 0, hi = w->nc, v = -1;
     while (lo < hi) {
         int mid = (lo + hi) / 2;
@@ -219,16 +216,9 @@ static int on_edge(const welded *w, int a, int b)
         int u = w->c[i].i;
         double s;
         if (u == a || u == b || u == v) continue;
-        if (off_line(w, a, b, u, &s) <= w->tol * w->tol && s > 0 && s < best &&
-            s * sqrt(dot3(A, A) + 1) >= 0) {
-            /* strictly inside: not within tol of either end */
-            double ab[3];
-            sub3(B, A, ab);
-            double len = sqrt(dot3(ab, ab));
-            if (s * len > w->tol && (1 - s) * len > w->tol) {
-                best = s;
-                v = u;
-            }
+        if (off_line(w, a, b, u, &s) <= w->tol * w->tol && s > inner && s < 1 - inner && s < best) {
+            best = s;
+            v = u;
         }
     }
     return v;
@@ -353,14 +343,6 @@ done:
     return rc;
 }
 
-static int by_point(const void *a, const void *b)
-{
-    const double *p = a, *q = b;
-    for (int k = 0; k < 3; k++)
-        if (p[k] != q[k]) return p[k] < q[k] ? -1 : 1;
-    return 0;
-}
-
 int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
                     mesh_polyhedron *out)
 {
@@ -393,27 +375,8 @@ int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3]
         mesh_polyhedron_free(out);
         return 0;
     }
-    /* as the mesh will hold them (floats): no two corners at one place, no
-     * triangle without area */
-    double(*q)[3] = malloc((size_t)out->nv * sizeof *q);
-    if (!q) {
-        mesh_polyhedron_free(out);
-        return -1;
-    }
-    int ok = 1;
-    for (int i = 0; i < out->nv; i++) {
-        memcpy(q[i], out->v[i], sizeof q[i]);
-        mesh_round_to_float(q[i]);
-    }
-    for (int i = 0; ok && i < out->nt; i++) {
-        double n[3];
-        tri_normal3(q[out->t[i][0]], q[out->t[i][1]], q[out->t[i][2]], n);
-        ok = dot3(n, n) > 0;
-    }
-    qsort(q, (size_t)out->nv, sizeof *q, by_point);
-    for (int i = 1; ok && i < out->nv; i++)
-        ok = by_point(q[i - 1], q[i]) != 0;
-    free(q);
+    int ok = mesh_floats_apart((const double(*)[3])out->v, out->nv, (const int32_t(*)[3])out->t,
+                               out->nt);
     if (!ok) mesh_polyhedron_free(out);
     return ok;
 }

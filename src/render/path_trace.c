@@ -586,9 +586,7 @@ static int setup(pt_job *J)
                 L->inv[3 * i + j] = inv[4 * i + j];
             }
         }
-        const double *a = L->lin;
-        L->det = fabs(a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-                      a[2] * (a[3] * a[7] - a[4] * a[6]));
+        L->det = fabs(csg_affine_det(xf));
         if (L->kind == PT_SPHERE) {
             L->r = sh->u.sphere.r;
             L->area = 4 * PI * L->r * L->r;

@@ -69,6 +69,22 @@ def stl_measure(path):
     return vol, area
 
 
+def openscad_stl(out, name, src):
+    """Scene src as out/name.scad and openscad's STL of it, out/name.stl
+    (kept while the scene is unchanged; absent where openscad writes
+    none): their paths."""
+    scad = os.path.join(out, name + ".scad")
+    stl = os.path.join(out, name + ".stl")
+    old = open(scad).read() if os.path.exists(scad) else None
+    if old != src or not os.path.exists(stl):
+        with open(scad, "w") as f:
+            f.write(src)
+        if os.path.exists(stl):
+            os.remove(stl)
+        subprocess.run(["openscad", "-o", stl, scad], capture_output=True, timeout=300)
+    return scad, stl
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("build", nargs="?", default="build")
@@ -80,16 +96,7 @@ def main():
     passed = failed = 0
     for i in range(a.count):
         name = "m%03d" % i
-        scad = os.path.join(out, name + ".scad")
-        src = scene(rng)
-        stl = os.path.join(out, name + ".stl")
-        old = open(scad).read() if os.path.exists(scad) else None
-        if old != src or not os.path.exists(stl):
-            with open(scad, "w") as f:
-                f.write(src)
-            if os.path.exists(stl):
-                os.remove(stl)
-            subprocess.run(["openscad", "-o", stl, scad], capture_output=True, timeout=300)
+        scad, stl = openscad_stl(out, name, scene(rng))
         ref = stl_measure(stl) if os.path.exists(stl) else (0.0, 0.0)
         p = subprocess.run([os.path.join(a.build, "rayscad"), scad, "--measure", "--json"],
                            capture_output=True, text=True, timeout=300)

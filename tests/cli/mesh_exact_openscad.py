@@ -17,7 +17,6 @@ usage: tests/cli/mesh_exact_openscad.py [BUILD] [--count N]
 """
 import argparse
 import importlib.util
-import json
 import os
 import subprocess
 import sys
@@ -73,22 +72,13 @@ def main():
     failed = exact = solids = 0
     for i in range(a.count):
         name = "m%03d" % i
-        src = m.scene(rng)
-        scad = os.path.join(ref_dir, name + ".scad")
-        stl = os.path.join(ref_dir, name + ".stl")
-        old = open(scad).read() if os.path.exists(scad) else None
-        if old != src or not os.path.exists(stl):
-            with open(scad, "w") as f:
-                f.write(src)
-            if os.path.exists(stl):
-                os.remove(stl)
-            subprocess.run(["openscad", "-o", stl, scad], capture_output=True, timeout=300)
+        scad, stl = m.openscad_stl(ref_dir, name, m.scene(rng))
         ref = m.stl_measure(stl)[0] if os.path.exists(stl) else 0.0
         ours = os.path.join(out, name + ".stl")
         if os.path.exists(ours):
             os.remove(ours)
-        p = subprocess.run([os.path.join(a.build, "rayscad"), scad, "--facets=openscad", "-o", ours,
-                            "--json"], capture_output=True, text=True, timeout=300)
+        p = subprocess.run([os.path.join(a.build, "rayscad"), scad, "--facets=openscad", "-o", ours],
+                           capture_output=True, text=True, timeout=300)
         if ref <= 0:
             ok = p.returncode != 0 or not os.path.exists(ours)
             print("%s %s: openscad empty, ours %s" % ("ok  " if ok else "FAIL", name,
