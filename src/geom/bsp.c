@@ -20,10 +20,16 @@ void geom_polys_free(geom_polys *p)
 {
     free(p->v);
     free(p->start);
+    free(p->tag);
     memset(p, 0, sizeof *p);
 }
 
 int geom_polys_add(geom_polys *p, const double (*v)[3], int k)
+{
+    return geom_polys_add_tagged(p, v, k, 0);
+}
+
+int geom_polys_add_tagged(geom_polys *p, const double (*v)[3], int k, int tag)
 {
     if (k < 3) return 0;
     if (p->nv + k > p->capv) {
@@ -38,13 +44,16 @@ int geom_polys_add(geom_polys *p, const double (*v)[3], int k)
     if (p->n + 2 > p->capn) {
         int cap = p->capn ? 2 * p->capn : 64;
         int *ns = realloc(p->start, (size_t)cap * sizeof *ns);
-        if (!ns) return -1;
-        p->start = ns;
+        if (ns) p->start = ns;
+        int *nt = ns ? realloc(p->tag, (size_t)cap * sizeof *nt) : NULL;
+        if (!nt) return -1;
+        p->tag = nt;
         p->capn = cap;
     }
     if (p->n == 0) p->start[0] = 0;
     memcpy(p->v + p->nv, v, (size_t)k * sizeof *v);
     p->nv += k;
+    p->tag[p->n] = tag;
     p->start[++p->n] = p->nv;
     return 0;
 }
@@ -52,8 +61,8 @@ int geom_polys_add(geom_polys *p, const double (*v)[3], int k)
 int geom_polys_append(geom_polys *p, const geom_polys *q)
 {
     for (int i = 0; i < q->n; i++)
-        if (geom_polys_add(p, (const double(*)[3])q->v + q->start[i],
-                           q->start[i + 1] - q->start[i]) != 0)
+        if (geom_polys_add_tagged(p, (const double(*)[3])q->v + q->start[i],
+                                  q->start[i + 1] - q->start[i], q->tag[i]) != 0)
             return -1;
     return 0;
 }
@@ -61,7 +70,7 @@ int geom_polys_append(geom_polys *p, const geom_polys *q)
 /* ---- the pool --------------------------------------------------------------- */
 
 typedef struct poly {
-    int n;
+    int n, tag;
     double plane[4]; /* unit normal (outward) and offset: n·x = w on the polygon */
     double (*v)[3];
 } poly;
@@ -138,9 +147,9 @@ static void plist_push(bsp *b, plist *l, poly *p)
     l->v[l->n++] = p;
 }
 
-/* A polygon of the n points v (copied), its plane by Newell's method;
- * NULL when degenerate (no area) or out of memory. */
-static poly *poly_new(bsp *b, const double (*v)[3], int n)
+/* A polygon of the n points v (copied) with `tag`, its plane by Newell's
+ * method; NULL when degenerate (no area) or out of memory. */
+static poly *poly_new(bsp *b, const double (*v)[3], int n, int tag)
 {
     double nx = 0, ny = 0, nz = 0, c[3] = {0, 0, 0};
     for (int i = 0; i < n; i++) {
@@ -157,6 +166,7 @@ static poly *poly_new(bsp *b, const double (*v)[3], int n)
     double(*pv)[3] = pool_alloc(b, (size_t)n * sizeof *pv);
     if (!p || !pv) return NULL;
     p->n = n;
+    p->tag = tag;
     p->v = pv;
     memcpy(pv, v, (size_t)n * sizeof *pv);
     p->plane[0] = nx / len;
@@ -243,12 +253,12 @@ static void split(bsp *b, const double pl[4], poly *p, plist *cf, plist *cb, pli
             double(*vb)[3] = pb ? pool_alloc(b, (size_t)nb * sizeof *vb) : NULL;
             if (pf && vf) {
                 memcpy(vf, fv, (size_t)nf * sizeof *vf);
-                *pf = (poly){nf, {p->plane[0], p->plane[1], p->plane[2], p->plane[3]}, vf};
+                *pf = (poly){nf, p->tag, {p->plane[0], p->plane[1], p->plane[2], p->plane[3]}, vf};
                 plist_push(b, f, pf);
             }
             if (pb && vb) {
                 memcpy(vb, bv, (size_t)nb * sizeof *vb);
-                *pb = (poly){nb, {p->plane[0], p->plane[1], p->plane[2], p->plane[3]}, vb};
+                *pb = (poly){nb, p->tag, {p->plane[0], p->plane[1], p->plane[2], p->plane[3]}, vb};
                 plist_push(b, bk, pb);
             }
         }
@@ -366,8 +376,8 @@ static node *tree_of(bsp *b, const geom_polys *s)
     node *n = node_new(b);
     plist l = {0};
     for (int i = 0; n && i < s->n && !b->failed; i++) {
-        poly *p =
-            poly_new(b, (const double(*)[3])s->v + s->start[i], s->start[i + 1] - s->start[i]);
+        poly *p = poly_new(b, (const double(*)[3])s->v + s->start[i], s->start[i + 1] - s->start[i],
+                           s->tag[i]);
         if (p) plist_push(b, &l, p);
     }
     if (n)
@@ -415,7 +425,8 @@ int geom_bsp_boolean(geom_bsp_op op, const geom_polys *a, const geom_polys *b, l
         plist res = {0};
         all_polys(&B, A, &res);
         for (int i = 0; i < res.n && !B.failed; i++)
-            if (geom_polys_add(out, (const double(*)[3])res.v[i]->v, res.v[i]->n) != 0)
+            if (geom_polys_add_tagged(out, (const double(*)[3])res.v[i]->v, res.v[i]->n,
+                                      res.v[i]->tag) != 0)
                 B.failed = GEOM_BSP_NO_MEMORY;
         free(res.v);
     } else if (!B.failed) {

@@ -14,16 +14,20 @@
 #define RAYSCAD_GEOM_BSP_H
 
 /* Convex planar polygons, each counter-clockwise seen from outside the
- * solid they bound: polygon i is v[start[i] .. start[i + 1]). */
+ * solid they bound: polygon i is v[start[i] .. start[i + 1]), and carries
+ * tag[i] (whose face it is: the booleans keep it on every piece). */
 typedef struct geom_polys {
     double (*v)[3];
     int *start; /* n + 1 entries once a polygon is added */
+    int *tag;   /* n entries */
     int n, nv, capv, capn;
 } geom_polys;
 
 void geom_polys_free(geom_polys *p);
-/* Appends polygon v[0 .. k) (k >= 3).  Returns 0, or -1 out of memory. */
+/* Appends polygon v[0 .. k) (k >= 3) with tag 0 / with `tag`.  Returns 0,
+ * or -1 out of memory. */
 int geom_polys_add(geom_polys *p, const double (*v)[3], int k);
+int geom_polys_add_tagged(geom_polys *p, const double (*v)[3], int k, int tag);
 /* Appends every polygon of q.  Returns 0, or -1 out of memory. */
 int geom_polys_append(geom_polys *p, const geom_polys *q);
 

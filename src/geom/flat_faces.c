@@ -2,8 +2,8 @@
  * flat_faces.c — flat faces of a closed triangle mesh re-cut from their
  * outlines (geom_merge_flat_faces).
  *
- * Triangles that share an edge and a plane are one face (union-find over
- * the edges).  A face's outline is its edges whose twin lies in another
+ * Triangles that share an edge, a plane and a tag are one face (union-find
+ * over the edges).  A face's outline is its edges whose twin lies in another
  * face; walked from vertex to vertex it makes closed loops, one outer and
  * one per hole, unless a vertex has two ways on (the face touches itself
  * there), and then the face is left as it is.  A vertex is dropped from the
@@ -131,7 +131,8 @@ static int by_pair(const void *x, const void *y)
     return (p->g > q->g) - (p->g < q->g);
 }
 
-int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, double tol)
+int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int **tag, int *nt,
+                          double tol)
 {
     int n = *nt, ne = 3 * n, rc = -1, nout = 0, capout = n + 16;
     const int(*tri)[3] = (const int(*)[3]) * T;
@@ -144,8 +145,11 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
     pair *order = malloc((size_t)n * sizeof *order); /* .v its face, .g a triangle: by face */
     bedge *B = malloc((size_t)ne * sizeof *B);
     int(*out)[3] = malloc((size_t)capout * sizeof *out);
+    int *otag = tag ? malloc((size_t)capout * sizeof *otag) : NULL;
+    const int *in_tag = tag ? *tag : NULL;
     int nb = 0;
-    if (!e || !up || !tw || !pl || !vg || !drop || !faces || !order || !B || !out) goto done;
+    if (!e || !up || !tw || !pl || !vg || !drop || !faces || !order || !B || !out || (tag && !otag))
+        goto done;
     for (int t = 0; t < n; t++) {
         up[t] = t;
         tri_normal3(V[tri[t][0]], V[tri[t][1]], V[tri[t][2]], pl[t]);
@@ -164,7 +168,7 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
             goto done;
         }
         int t = e[i].t, u = e[tw[i]].t, apart = 0;
-        if (dot3(pl[t], pl[u]) < 1 - 1e-12) continue;
+        if (dot3(pl[t], pl[u]) < 1 - 1e-12 || (in_tag && in_tag[t] != in_tag[u])) continue;
         for (int k = 0; k < 3; k++)
             apart |= fabs(dot3(pl[t], V[tri[u][k]]) - pl[t][3]) > tol;
         if (!apart) up[geom_set_find(up, t)] = geom_set_find(up, u);
@@ -221,15 +225,19 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
             if (nout + add > capout) {
                 int c2 = 2 * (nout + add);
                 int(*g2)[3] = realloc(out, (size_t)c2 * sizeof *g2);
-                if (!g2) {
+                if (g2) out = g2;
+                int *t2 = g2 && tag ? realloc(otag, (size_t)c2 * sizeof *t2) : NULL;
+                if (t2) otag = t2;
+                if (!g2 || (tag && !t2)) {
                     free(cut);
                     goto done;
                 }
-                out = g2;
                 capout = c2;
             }
-            for (int u = 0; u < add; u++)
+            for (int u = 0; u < add; u++) {
+                if (tag) otag[nout] = in_tag[order[i].g]; /* one face, one tag */
                 memcpy(out[nout++], m >= 0 ? cut[u] : tri[order[i + u].g], sizeof *out);
+            }
             free(cut);
             i += members;
         }
@@ -242,6 +250,11 @@ int geom_merge_flat_faces(const double (*V)[3], int nv, int (**T)[3], int *nt, d
     *T = out;
     *nt = nout;
     out = NULL;
+    if (tag) {
+        free(*tag);
+        *tag = otag;
+        otag = NULL;
+    }
     rc = 0;
 done:
     free(e);
@@ -254,5 +267,6 @@ done:
     free(order);
     free(B);
     free(out);
+    free(otag);
     return rc;
 }

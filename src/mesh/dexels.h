@@ -34,12 +34,13 @@ int mesh_palette_build(const csg_scene *s, int root, mesh_palette *p);
 uint16_t mesh_palette_of(const mesh_palette *p, int32_t prim);
 void mesh_palette_free(mesh_palette *p);
 
-/* A closed triangle mesh, counter-clockwise from outside, of one colour. */
+/* A closed triangle mesh, counter-clockwise from outside, triangle i of
+ * colour color[i] (in the grid's palette). */
 typedef struct mesh_polyhedron {
     double (*v)[3];
     int (*t)[3];
+    uint16_t *color;
     int nv, nt;
-    uint16_t color;
 } mesh_polyhedron;
 void mesh_polyhedron_free(mesh_polyhedron *p);
 #define MESH_POLYHEDRAL (-2)

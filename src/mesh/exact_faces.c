@@ -178,7 +178,7 @@ int mesh_exact_append(const mesh_dexels *d, mesh *m)
                     return -1;
             for (int i = 0; i < d->poly.nt; i++)
                 if (mesh_push_triangle(m, base + d->poly.t[i][0], base + d->poly.t[i][1],
-                                       base + d->poly.t[i][2], d->poly.color) < 0)
+                                       base + d->poly.t[i][2], d->poly.color[i]) < 0)
                     return -1;
         }
     }

@@ -17,12 +17,14 @@
  * where it is a closed mesh that bounds its solid (geom_mesh_is_boundary:
  * every edge once each way, no two triangles crossing) with its corners
  * apart as floats; otherwise, or where a primitive is curved, the part is
- * contoured as before.  A part of two colours is contoured too (the
- * polygons do not say whose faces they are).
+ * contoured as before.  Each polygon carries its primitive's colour through
+ * the booleans (a difference's cut faces take the colour of what cut them,
+ * as the rays see it), and faces of two colours are not merged.
  */
 #include "../geom/bsp.h"
 #include "../geom/flat_faces.h"
 #include "../geom/mesh_boundary.h"
+#include "../geom/pinch.h"
 #include "../intervals/vec3.h"
 #include "dexels.h"
 
@@ -34,15 +36,18 @@
 #define WELD 1e-8     /* of the part's size: corners this close are one */
 #define MAX_CORNERS 400000
 #define MAX_TRIANGLES 20000 /* of the primitives' faces: more, and BSP takes seconds */
+/* Solids that touch at an edge or a corner are kept this far apart, of the
+ * part's size: a hair, but not so fine that geom_mesh_is_boundary reads
+ * the sheets' near-coplanar orientations (the gap squared) as touching. */
+#define PINCH_GAP 1e-5
 
 typedef struct ctx {
     const csg_scene *s;
     mesh_palette const *pal;
     const double *lo, *hi;
     long work;
-    int color;      /* the part's colour; -1 none yet */
     long triangles; /* the primitives' so far */
-    int no;         /* 1: not plane-faced, two colours, too much work */
+    int no;         /* 1: not plane-faced, too much work */
 } ctx;
 
 /* Primitive prim's faces in world space, outward, into out: 0, or -1 when
@@ -51,8 +56,6 @@ static int leaf(ctx *c, int32_t prim, geom_polys *out)
 {
     const iv_shape *sh = csg_scene_prim_shape(c->s, prim);
     int color = mesh_palette_of(c->pal, prim);
-    if (c->color >= 0 && color != c->color) c->no = 1;
-    c->color = color;
     mesh_faces f = {0};
     int ok = !c->no && mesh_faces_of(sh, &f);
     c->triangles += ok ? f.nt : 0;
@@ -67,7 +70,7 @@ static int leaf(ctx *c, int32_t prim, geom_polys *out)
         double q[3][3];
         for (int k = 0; k < 3; k++)
             csg_affine_point(w, f.v[f.t[i][turn ? 2 - k : k]], q[k]);
-        rc = geom_polys_add(out, (const double(*)[3])q, 3);
+        rc = geom_polys_add_tagged(out, (const double(*)[3])q, 3, color);
     }
     if (!ok) c->no = 1;
     mesh_faces_free(&f);
@@ -147,6 +150,7 @@ typedef struct welded {
     int nc;
     double tol;
     int (*T)[3];
+    int *tag; /* each triangle's colour */
     int nt, cap;
     int failed;
 } welded;
@@ -224,9 +228,9 @@ static int on_edge(const welded *w, int a, int b)
     return v;
 }
 
-/* Triangle a b c, split from the opposite corner at every vertex that
- * lies on one of its edges, into w->T. */
-static void split_tri(welded *w, int a, int b, int c, int depth)
+/* Triangle a b c of colour tag, split from the opposite corner at every
+ * vertex that lies on one of its edges, into w->T. */
+static void split_tri(welded *w, int a, int b, int c, int tag, int depth)
 {
     if (w->failed) return;
     const int t[3] = {a, b, c};
@@ -237,20 +241,23 @@ static void split_tri(welded *w, int a, int b, int c, int depth)
             w->failed = 1;
             return;
         }
-        split_tri(w, t[e], v, t[(e + 2) % 3], depth + 1);
-        split_tri(w, v, t[(e + 1) % 3], t[(e + 2) % 3], depth + 1);
+        split_tri(w, t[e], v, t[(e + 2) % 3], tag, depth + 1);
+        split_tri(w, v, t[(e + 1) % 3], t[(e + 2) % 3], tag, depth + 1);
         return;
     }
     if (w->nt == w->cap) {
         int c2 = w->cap ? 2 * w->cap : 256;
         int(*g)[3] = realloc(w->T, (size_t)c2 * sizeof *g);
-        if (!g) {
+        if (g) w->T = g;
+        int *gt = g ? realloc(w->tag, (size_t)c2 * sizeof *gt) : NULL;
+        if (!gt) {
             w->failed = -1;
             return;
         }
-        w->T = g;
+        w->tag = gt;
         w->cap = c2;
     }
+    w->tag[w->nt] = tag;
     w->T[w->nt][0] = a;
     w->T[w->nt][1] = b;
     w->T[w->nt][2] = c;
@@ -284,14 +291,11 @@ static void compact(welded *w)
 
 /* The polygons of p as a mesh: corners welded, each polygon's corners
  * along a straight edge dropped, the rest fanned, and every triangle split
- * where a vertex lies on its edge (the mesh's T-junctions mended).  1 with
- * *V, *nv, *T, *nt; 0 when it does not come out closed and bounding; -1
- * out of memory. */
-static int mend(const geom_polys *p, double size, double (**V)[3], int *nv, int (**T)[3], int *nt)
+ * where a vertex lies on its edge (the mesh's T-junctions mended), each
+ * triangle of its polygon's colour.  1 with *out; 0 when it does not come
+ * out closed and bounding; -1 out of memory. */
+static int mend(const geom_polys *p, double size, mesh_polyhedron *out)
 {
-    *V = NULL;
-    *T = NULL;
-    *nv = *nt = 0;
     if (p->nv > MAX_CORNERS || p->n == 0) return 0;
     welded w = {.tol = WELD * size};
     int *map = malloc((size_t)p->nv * sizeof *map), *ring = NULL, rc = -1;
@@ -317,13 +321,32 @@ static int mend(const geom_polys *p, double size, double (**V)[3], int *nv, int 
             }
         }
         for (int i = 1; k >= 3 && i + 1 < k; i++)
-            split_tri(&w, ring[0], ring[i], ring[i + 1], 0);
+            split_tri(&w, ring[0], ring[i], ring[i + 1], p->tag[f], 0);
+    }
+    /* solids that touch along an edge or at a corner: kept apart */
+    int pinched = 0;
+    if (!w.failed) {
+        pinched = geom_unpinch(&w.V, &w.nv, w.T, w.nt);
+        if (pinched == GEOM_PINCH_NO_MEMORY) goto done;
+        if (pinched < 0) w.failed = 1;
     }
     if (w.failed < 0) goto done;
-    if (!w.failed && geom_merge_flat_faces((const double(*)[3])w.V, w.nv, &w.T, &w.nt, w.tol) != 0)
+    if (!w.failed &&
+        geom_merge_flat_faces((const double(*)[3])w.V, w.nv, &w.T, &w.tag, &w.nt, w.tol) != 0)
         goto done;
     if (!w.failed) compact(&w);
     if (w.failed < 0) goto done;
+    if (!w.failed && pinched > 0) {
+        double far = 0;
+        for (int v = 0; v < w.nv; v++)
+            for (int k = 0; k < 3; k++)
+                far = fmax(far, fabs(w.V[v][k]));
+        /* PINCH_GAP, and at least 128 steps of a float there */
+        int m = geom_move_apart(w.V, w.nv, (const int(*)[3])w.T, w.nt,
+                                fmax(PINCH_GAP * size, ldexp(far, -16)));
+        if (m == GEOM_PINCH_NO_MEMORY) goto done;
+        if (m < 0) w.failed = 1;
+    }
     rc = w.failed
              ? 0
              : geom_mesh_is_boundary((const double(*)[3])w.V, w.nv, (const int(*)[3])w.T, w.nt);
@@ -332,14 +355,19 @@ done:
     free(ring);
     free(w.c);
     if (rc == 1) {
-        *V = w.V;
-        *nv = w.nv;
-        *T = w.T;
-        *nt = w.nt;
+        *out = (mesh_polyhedron){.v = w.V, .t = w.T, .nv = w.nv, .nt = w.nt};
+        out->color = malloc((size_t)(w.nt ? w.nt : 1) * sizeof *out->color);
+        for (int i = 0; out->color && i < w.nt; i++)
+            out->color[i] = (uint16_t)w.tag[i];
+        if (!out->color) {
+            mesh_polyhedron_free(out);
+            rc = -1;
+        }
     } else {
         free(w.V);
         free(w.T);
     }
+    free(w.tag);
     return rc;
 }
 
@@ -349,19 +377,18 @@ int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3]
     memset(out, 0, sizeof *out);
     int32_t r = csg_scene_root_node(d->scene, d->root);
     if (r < 0) return 0;
-    ctx c = {.s = d->scene, .pal = &d->pal, .lo = lo, .hi = hi, .work = WORK, .color = -1};
+    ctx c = {.s = d->scene, .pal = &d->pal, .lo = lo, .hi = hi, .work = WORK};
     geom_polys p = {0};
     int rc = boundary(&c, r, 1, &p);
     double size = 0;
     for (int k = 0; k < 3; k++)
         size = fmax(size, hi[k] - lo[k]);
-    if (rc == 0 && !c.no) rc = mend(&p, size, &out->v, &out->nv, &out->t, &out->nt);
+    if (rc == 0 && !c.no) rc = mend(&p, size, out);
     geom_polys_free(&p);
     if (rc != 1) {
         mesh_polyhedron_free(out);
         return rc;
     }
-    out->color = (uint16_t)(c.color < 0 ? 0 : c.color);
     /* A check on the BSP from the rays: the grid's volume, exact along each
      * ray and a midpoint rule across, is off by a fraction of a cell's
      * depth over the surface; a piece the booleans kept or lost wrongly is
@@ -385,5 +412,6 @@ void mesh_polyhedron_free(mesh_polyhedron *p)
 {
     free(p->v);
     free(p->t);
+    free(p->color);
     memset(p, 0, sizeof *p);
 }

@@ -88,7 +88,7 @@ Test(flat_faces, cube_of_many_triangles)
     cr_assert_eq(nt, 6 * 32);
     cr_assert(closed(T, nt));
     cr_assert_float_eq(volume(T, nt), 1000, 1e-9);
-    cr_assert_eq(geom_merge_flat_faces((const double(*)[3])V, nv, &T, &nt, 1e-9), 0);
+    cr_assert_eq(geom_merge_flat_faces((const double(*)[3])V, nv, &T, NULL, &nt, 1e-9), 0);
     cr_expect_eq(nt, 12);
     cr_expect(closed(T, nt));
     cr_expect_float_eq(volume(T, nt), 1000, 1e-9);
@@ -135,7 +135,7 @@ Test(flat_faces, box_with_a_square_hole)
     quad(T, &nt, id[1][1][0], id[1][2][0], id[1][2][1], id[1][1][1]); /* x = 3 */
     cr_assert(closed(T, nt));
     cr_assert_float_eq(volume(T, nt), 1000 - 160, 1e-9);
-    cr_assert_eq(geom_merge_flat_faces((const double(*)[3])V, nv, &T, &nt, 1e-9), 0);
+    cr_assert_eq(geom_merge_flat_faces((const double(*)[3])V, nv, &T, NULL, &nt, 1e-9), 0);
     cr_expect_eq(nt, 32);
     cr_expect_float_eq(volume(T, nt), 840, 1e-9);
     cr_expect(closed(T, nt), "open after merging");
