@@ -43,6 +43,11 @@ typedef struct mesh_polyhedron {
     int nv, nt;
 } mesh_polyhedron;
 void mesh_polyhedron_free(mesh_polyhedron *p);
+/* Solids that touch at an edge or a corner are kept this far apart in a
+ * polyhedral part's mesh, of its size (geom_move_apart): a hair, but not so
+ * fine that geom_mesh_is_boundary reads the sheets' near-coplanar
+ * orientations (the gap squared) as touching. */
+#define MESH_PINCH_GAP 1e-5
 #define MESH_POLYHEDRAL (-2)
 
 /* Family a holds the rays along axis a.  Its rays are indexed by the other
@@ -123,6 +128,24 @@ int mesh_faces_bound(const mesh_faces *f);
  * not, -1 out of memory. */
 int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
                     mesh_polyhedron *out);
+/* The same for the top-level operands only[0 .. nonly) (nodes) of the part
+ * (all: only NULL), without the check against the grid: 1, 0 or -1. */
+int mesh_polyhedral_of(const mesh_dexels *d, const double lo[3], const double hi[3],
+                       const int32_t *only, int nonly, mesh_polyhedron *out);
+/* The check on the booleans from the rays: p's volume within 2 % and its
+ * area times h of the grid's `volume` of the same solid (the grid is exact
+ * along each ray and a midpoint rule across: a fraction of a cell's depth
+ * over the surface; a piece the booleans kept or lost wrongly is more),
+ * and its corners and triangles apart as floats.  1, or 0 with p freed. */
+int mesh_polyhedral_agrees(mesh_polyhedron *p, double volume, double h);
+/* Where the part lo..hi of grid d is not plane-faced as a whole, its
+ * top-level operands in clusters (boxes within MESH_CLUSTER_PAD cells of
+ * one another): the clusters that are plane-faced meshed exactly
+ * (clusters.c).  1 when some are: d then holds their crossings alone,
+ * exact = MESH_POLYHEDRAL and their boundary in poly, and a new grid after
+ * it (d->next) the rest's crossings, contoured; 0 when none (d as it
+ * was); -1 out of memory. */
+int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi[3]);
 
 /* Whether the corners v[0 .. nv) and triangles t[0 .. nt), as a mesh
  * holds them (floats), stay apart and keep their areas: 1 or 0 (also when

@@ -100,6 +100,7 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
     *out = NULL;
     if (!(h > 0) || !isfinite(h)) return 0; /* a point: nothing to sample */
     mesh_dexels *d;
+    int split = 0;
     int rc = mesh_dexels_cast(s, o, h, p->lo, p->hi, &d, err, errlen);
     if (rc == 0 && o->tolerance > 0 && !o->contour_all && p->prim >= 0 &&
         mesh_exact_faces(s, p->prim)) {
@@ -111,6 +112,9 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
         if (mesh_polyhedral(d, p->lo, p->hi, &d->poly) == 1) {
             d->exact = MESH_POLYHEDRAL; /* the exact boundary of its booleans */
             refine = 0;
+        } else if (p->prim < 0) {
+            /* its plane-faced clusters exact, the rest contoured */
+            split = mesh_polyhedral_clusters(d, p->lo, p->hi) == 1;
         }
     }
     for (int round = 0, k = 1; rc == 0 && refine && round < MESH_REFINE_ROUNDS; round++) {
@@ -123,6 +127,10 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
             break;
         }
         if (rc != 0) break;
+        if (split && mesh_polyhedral_clusters(finer, p->lo, p->hi) != 1) {
+            mesh_dexels_free(finer); /* (out of memory: the clusters no longer split) */
+            break;
+        }
         mesh_dexels_free(d);
         d = finer;
         k = f;
@@ -222,7 +230,8 @@ int mesh_dexels_new(const csg_scene *s, const mesh_options *opt, mesh_dexels **o
     for (int i = 0; i < np && rc == 0; i++) {
         double budget = MESH_REFINE_CROSSINGS * (pred[i] / total);
         rc = cast_part(s, o, &p[i], h[i], dflt && o->resolve_thin, budget, tail, err, errlen);
-        if (*tail) tail = &(*tail)->next;
+        while (*tail) /* (a part split into clusters is two grids) */
+            tail = &(*tail)->next;
     }
     free(p);
     free(h);

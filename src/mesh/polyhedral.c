@@ -36,19 +36,50 @@
 #define WELD 1e-8     /* of the part's size: corners this close are one */
 #define MAX_CORNERS 400000
 #define MAX_TRIANGLES 20000 /* of the primitives' faces: more, and BSP takes seconds */
-/* Solids that touch at an edge or a corner are kept this far apart, of the
- * part's size: a hair, but not so fine that geom_mesh_is_boundary reads
- * the sheets' near-coplanar orientations (the gap squared) as touching. */
-#define PINCH_GAP 1e-5
 
 typedef struct ctx {
     const csg_scene *s;
     mesh_palette const *pal;
     const double *lo, *hi;
+    const int32_t *only; /* the top-level operands to take (nonly nodes); NULL: all */
+    int nonly;
     long work;
     long triangles; /* the primitives' so far */
     int no;         /* 1: not plane-faced, too much work */
 } ctx;
+
+static int mend(const geom_polys *p, double size, mesh_polyhedron *out);
+
+/* Whether f's triangles (a mesh's or a prism's, which need not bound their
+ * solid as given) do once mended as a part's boundary is (mend: corners
+ * welded, T-junctions split, solids that touch kept apart): an extrusion
+ * scaled to nothing has walls that end on one line from both sides, with
+ * corners of one wall along the other's edge.  The booleans take the
+ * triangles as they are; the part's own mend checks the result. */
+static int mends(const mesh_faces *f)
+{
+    geom_polys p = {0};
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY},
+           size = 0;
+    int rc = 0;
+    for (int i = 0; i < f->nv; i++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], f->v[i][k]);
+            hi[k] = fmax(hi[k], f->v[i][k]);
+            size = fmax(size, hi[k] - lo[k]);
+        }
+    for (int i = 0; rc == 0 && i < f->nt; i++) {
+        double q[3][3];
+        for (int k = 0; k < 3; k++)
+            memcpy(q[k], f->v[f->t[i][f->cw ? 2 - k : k]], sizeof q[k]);
+        rc = geom_polys_add(&p, (const double(*)[3])q, 3);
+    }
+    mesh_polyhedron m = {0};
+    if (rc == 0) rc = mend(&p, size, &m);
+    mesh_polyhedron_free(&m);
+    geom_polys_free(&p);
+    return rc == 1;
+}
 
 /* Primitive prim's faces in world space, outward, into out: 0, or -1 when
  * out of memory (c->no where it has no such faces). */
@@ -60,7 +91,8 @@ static int leaf(ctx *c, int32_t prim, geom_polys *out)
     int ok = !c->no && mesh_faces_of(sh, &f);
     c->triangles += ok ? f.nt : 0;
     ok = ok && c->triangles <= MAX_TRIANGLES;
-    if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM)) ok = mesh_faces_bound(&f);
+    if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM))
+        ok = mesh_faces_bound(&f) || mends(&f);
     csg_affine w;
     csg_scene_prim_transform(c->s, prim, w);
     double d = csg_affine_det(w);
@@ -84,6 +116,17 @@ static int box_meets(const csg_scene_node_info *f, const double *lo, const doubl
     return 1;
 }
 
+/* Whether top-level operand j (node k) is this part's: its box meets the
+ * part's, and it is one of c->only (a union among them is looked into). */
+static int wanted(const ctx *c, int32_t j, const csg_scene_node_info *k)
+{
+    if (!box_meets(k, c->lo, c->hi)) return 0;
+    if (!c->only || (!k->is_leaf && k->op == CSG_OP_UNION)) return 1;
+    for (int i = 0; i < c->nonly; i++)
+        if (c->only[i] == j) return 1;
+    return 0;
+}
+
 /* The boundary of node i's subtree into out (empty): 0, or -1 when out of
  * memory (c->no where it cannot be had). */
 static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
@@ -96,7 +139,7 @@ static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
     for (int32_t j = i + 1; j < f.end && rc == 0 && !c->no; j = k.end) {
         csg_scene_node_get(c->s, j, &k);
         /* the top-level unions' operands of other parts are not this one's */
-        if (top && f.op == CSG_OP_UNION && !box_meets(&k, c->lo, c->hi)) continue;
+        if (top && f.op == CSG_OP_UNION && !wanted(c, j, &k)) continue;
         geom_polys g = {0}, r = {0};
         rc = boundary(c, j, top && f.op == CSG_OP_UNION, first ? out : &g);
         if (first || rc != 0 || c->no) {
@@ -341,9 +384,9 @@ static int mend(const geom_polys *p, double size, mesh_polyhedron *out)
         for (int v = 0; v < w.nv; v++)
             for (int k = 0; k < 3; k++)
                 far = fmax(far, fabs(w.V[v][k]));
-        /* PINCH_GAP, and at least 128 steps of a float there */
+        /* MESH_PINCH_GAP, and at least 128 steps of a float there */
         int m = geom_move_apart(w.V, w.nv, (const int(*)[3])w.T, w.nt,
-                                fmax(PINCH_GAP * size, ldexp(far, -16)));
+                                fmax(MESH_PINCH_GAP * size, ldexp(far, -16)));
         if (m == GEOM_PINCH_NO_MEMORY) goto done;
         if (m < 0) w.failed = 1;
     }
@@ -371,13 +414,19 @@ done:
     return rc;
 }
 
-int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
-                    mesh_polyhedron *out)
+int mesh_polyhedral_of(const mesh_dexels *d, const double lo[3], const double hi[3],
+                       const int32_t *only, int nonly, mesh_polyhedron *out)
 {
     memset(out, 0, sizeof *out);
     int32_t r = csg_scene_root_node(d->scene, d->root);
     if (r < 0) return 0;
-    ctx c = {.s = d->scene, .pal = &d->pal, .lo = lo, .hi = hi, .work = WORK};
+    ctx c = {.s = d->scene,
+             .pal = &d->pal,
+             .lo = lo,
+             .hi = hi,
+             .only = only,
+             .nonly = nonly,
+             .work = WORK};
     geom_polys p = {0};
     int rc = boundary(&c, r, 1, &p);
     double size = 0;
@@ -385,27 +434,34 @@ int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3]
         size = fmax(size, hi[k] - lo[k]);
     if (rc == 0 && !c.no) rc = mend(&p, size, out);
     geom_polys_free(&p);
-    if (rc != 1) {
-        mesh_polyhedron_free(out);
-        return rc;
+    if (rc != 1) mesh_polyhedron_free(out);
+    return rc;
+}
+
+int mesh_polyhedral_agrees(mesh_polyhedron *p, double volume, double h)
+{
+    double vol = 0, area = 0;
+    for (int i = 0; i < p->nt; i++) {
+        const double *a = p->v[p->t[i][0]], *b = p->v[p->t[i][1]], *c = p->v[p->t[i][2]];
+        double n[3];
+        tri_normal3(a, b, c, n);
+        vol += triple3(a, b, c) / 6;
+        area += sqrt(dot3(n, n)) / 2;
     }
-    /* A check on the BSP from the rays: the grid's volume, exact along each
-     * ray and a midpoint rule across, is off by a fraction of a cell's
-     * depth over the surface; a piece the booleans kept or lost wrongly is
-     * more (a closed mesh of the wrong solid passes every other test). */
+    int ok = fabs(vol - volume) <= 0.02 * fabs(volume) + area * h &&
+             mesh_floats_apart((const double(*)[3])p->v, p->nv, (const int32_t(*)[3])p->t, p->nt);
+    if (!ok) mesh_polyhedron_free(p);
+    return ok;
+}
+
+int mesh_polyhedral(const mesh_dexels *d, const double lo[3], const double hi[3],
+                    mesh_polyhedron *out)
+{
+    int rc = mesh_polyhedral_of(d, lo, hi, NULL, 0, out);
+    if (rc != 1) return rc;
     mesh_measure g;
     mesh_dexels_measure(d, &g);
-    double vol = 0;
-    for (int i = 0; i < out->nt; i++)
-        vol += triple3(out->v[out->t[i][0]], out->v[out->t[i][1]], out->v[out->t[i][2]]) / 6;
-    if (!(fabs(vol - g.volume) <= 0.02 * fabs(g.volume) + g.area * d->h)) {
-        mesh_polyhedron_free(out);
-        return 0;
-    }
-    int ok = mesh_floats_apart((const double(*)[3])out->v, out->nv, (const int32_t(*)[3])out->t,
-                               out->nt);
-    if (!ok) mesh_polyhedron_free(out);
-    return ok;
+    return mesh_polyhedral_agrees(out, g.volume, d->h);
 }
 
 void mesh_polyhedron_free(mesh_polyhedron *p)

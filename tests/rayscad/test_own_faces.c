@@ -457,3 +457,38 @@ Test(own_faces, touching_solids_kept_apart)
         rayscad_mesh_free(m);
     }
 }
+
+/* Where the parts are too many for grids of their own (thirty faceted
+ * balls and a sphere: one grid), the plane-faced clusters of operands are
+ * still exact (src/mesh/clusters.c): each ball's corners and triangles are
+ * those of the ball meshed alone (its own faces, exact_faces.c), which a
+ * contour does not give, and the sphere alone is contoured; the volume
+ * within the sphere's simplification. */
+Test(own_faces, plane_faced_clusters_beside_a_curved_one)
+{
+    rayscad_mesh *ball = mesh_of("sphere(1, $fn = 8);", 0);
+    int bv = rayscad_mesh_vertex_count(ball), bt = rayscad_mesh_triangle_count(ball);
+    double bvol = rayscad_mesh_volume(ball);
+    rayscad_mesh *m =
+        mesh_of("sphere(5); for (i = [0:29])"
+                " translate([8 + (i % 6) * 4, floor(i / 6) * 4, 0]) sphere(1, $fn = 8);",
+                0);
+    cr_expect(closed(m));
+    const float *b = rayscad_mesh_vertices(ball);
+    for (int i = 0; i < 30; i++)
+        for (int c = 0; c < bv; c++) {
+            double p[3] = {8 + (i % 6) * 4 + b[3 * c], (i / 6) * 4 + b[3 * c + 1], b[3 * c + 2]};
+            cr_expect(has_vertex(m, p, 1e-6), "ball %d corner (%g, %g, %g)", i, p[0], p[1], p[2]);
+        }
+    /* the balls' triangles: those whose corners all lie in x >= 6 */
+    const float *v = rayscad_mesh_vertices(m);
+    const int32_t *t = rayscad_mesh_triangles(m);
+    int balls = 0;
+    for (int i = 0; i < rayscad_mesh_triangle_count(m); i++)
+        balls += v[3 * t[3 * i]] >= 6 && v[3 * t[3 * i + 1]] >= 6 && v[3 * t[3 * i + 2]] >= 6;
+    cr_expect_eq(balls, 30 * bt);
+    double exact = 30 * bvol + 4.0 / 3 * PI * 125;
+    cr_expect_float_eq(rayscad_mesh_volume(m), exact, 3e-3 * exact, "%.9g", rayscad_mesh_volume(m));
+    rayscad_mesh_free(m);
+    rayscad_mesh_free(ball);
+}
