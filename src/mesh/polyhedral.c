@@ -25,6 +25,7 @@
 #include "../geom/flat_faces.h"
 #include "../geom/mesh_boundary.h"
 #include "../geom/pinch.h"
+#include "../geom/point_grid.h"
 #include "../intervals/vec3.h"
 #include "dexels.h"
 
@@ -34,8 +35,8 @@
 
 #define WORK 3000000L /* BSP plane tests a part may take (about 0.3 s) */
 #define WELD 1e-8     /* of the part's size: corners this close are one */
-#define MAX_CORNERS 400000
-#define MAX_TRIANGLES 20000 /* of the primitives' faces: more, and BSP takes seconds */
+#define MAX_CORNERS 4000000
+#define MAX_TRIANGLES 20000 /* of the primitives' faces, where booleans join them */
 
 typedef struct ctx {
     const csg_scene *s;
@@ -44,6 +45,7 @@ typedef struct ctx {
     const int32_t *only; /* the top-level operands to take (nonly nodes); NULL: all */
     int nonly;
     long work;
+    int leaves;     /* the part's primitives, counted to 2 */
     long triangles; /* the primitives' so far */
     int no;         /* 1: not plane-faced, too much work */
 } ctx;
@@ -55,7 +57,8 @@ static int mend(const geom_polys *p, double size, mesh_polyhedron *out);
  * welded, T-junctions split, solids that touch kept apart): an extrusion
  * scaled to nothing has walls that end on one line from both sides, with
  * corners of one wall along the other's edge.  The booleans take the
- * triangles as they are; the part's own mend checks the result. */
+ * triangles as they are; the part's own mend checks the result (and alone
+ * in its part, with no booleans, a primitive is checked by that alone). */
 static int mends(const mesh_faces *f)
 {
     geom_polys p = {0};
@@ -90,9 +93,8 @@ static int leaf(ctx *c, int32_t prim, geom_polys *out)
     mesh_faces f = {0};
     int ok = !c->no && mesh_faces_of(sh, &f);
     c->triangles += ok ? f.nt : 0;
-    ok = ok && c->triangles <= MAX_TRIANGLES;
     if (ok && (sh->kind == IV_SHAPE_MESH || sh->kind == IV_SHAPE_PRISM))
-        ok = mesh_faces_bound(&f) || mends(&f);
+        ok = c->leaves < 2 || mesh_faces_bound(&f) || mends(&f);
     csg_affine w;
     csg_scene_prim_transform(c->s, prim, w);
     double d = csg_affine_det(w);
@@ -127,6 +129,21 @@ static int wanted(const ctx *c, int32_t j, const csg_scene_node_info *k)
     return 0;
 }
 
+/* The primitives of node i's subtree that boundary takes, up to 2. */
+static int count_leaves(const ctx *c, int32_t i, int top)
+{
+    csg_scene_node_info f, k;
+    csg_scene_node_get(c->s, i, &f);
+    if (f.is_leaf) return 1;
+    int n = 0;
+    for (int32_t j = i + 1; j < f.end && n < 2; j = k.end) {
+        csg_scene_node_get(c->s, j, &k);
+        if (top && f.op == CSG_OP_UNION && !wanted(c, j, &k)) continue;
+        n += count_leaves(c, j, top && f.op == CSG_OP_UNION);
+    }
+    return n;
+}
+
 /* The boundary of node i's subtree into out (empty): 0, or -1 when out of
  * memory (c->no where it cannot be had). */
 static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
@@ -157,6 +174,11 @@ static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
             geom_polys_free(&g);
             continue;
         }
+        if (c->triangles > MAX_TRIANGLES) { /* a boolean of so many takes seconds */
+            c->no = 1;
+            geom_polys_free(&g);
+            continue;
+        }
         geom_bsp_op op = f.op == CSG_OP_UNION          ? GEOM_BSP_UNION
                          : f.op == CSG_OP_INTERSECTION ? GEOM_BSP_INTERSECTION
                                                        : GEOM_BSP_DIFFERENCE;
@@ -174,23 +196,11 @@ static int boundary(ctx *c, int32_t i, int top, geom_polys *out)
     return rc;
 }
 
-typedef struct corner {
-    double p[3];
-    int i; /* the polygon corner it was, then (mend) the vertex it became */
-} corner;
-
-static int by_x(const void *a, const void *b)
-{
-    double x = ((const corner *)a)->p[0], y = ((const corner *)b)->p[0];
-    return (x > y) - (x < y);
-}
-
 /* The polygons' welded vertices and the triangles being made of them. */
 typedef struct welded {
     double (*V)[3];
     int nv;
-    corner *c; /* every polygon corner, by x, c[].i its vertex */
-    int nc;
+    geom_point_grid grid; /* of V, for on_edge */
     double tol;
     int (*T)[3];
     int *tag; /* each triangle's colour */
@@ -198,34 +208,49 @@ typedef struct welded {
     int failed;
 } welded;
 
-/* The corners of p welded within w->tol into w->V, map[corner] -> vertex.
+typedef struct near_query {
+    const double (*p)[3];
+    const double *at;
+    double tol;
+    int *map, v;
+} near_query;
+
+static int claim(void *ud, int j)
+{
+    near_query *q = ud;
+    if (q->map[j] < 0 && fabs(q->p[j][0] - q->at[0]) <= q->tol &&
+        fabs(q->p[j][1] - q->at[1]) <= q->tol && fabs(q->p[j][2] - q->at[2]) <= q->tol)
+        q->map[j] = q->v;
+    return 0;
+}
+
+/* The corners of p welded within w->tol into w->V, map[corner] -> vertex
+ * (each corner not yet taken takes those within tol of it); then w->grid.
  * 0 or -1. */
-static int weld(const geom_polys *p, welded *w, int *map)
+static int weld(const geom_polys *p, welded *w, int *map, double size)
 {
     int n = p->nv;
-    w->c = malloc((size_t)n * sizeof *w->c);
+    geom_point_grid g;
     w->V = malloc((size_t)n * sizeof *w->V);
-    if (!w->c || !w->V) return -1;
-    corner *c = w->c;
-    for (int i = 0; i < n; i++) {
-        memcpy(c[i].p, p->v[i], sizeof c[i].p);
-        c[i].i = i;
-        map[i] = -1;
-    }
-    qsort(c, (size_t)n, sizeof *c, by_x);
-    for (int i = 0; i < n; i++) {
-        if (map[c[i].i] >= 0) continue;
-        int v = w->nv++;
-        memcpy(w->V[v], c[i].p, sizeof c[i].p);
-        for (int j = i; j < n && c[j].p[0] <= c[i].p[0] + w->tol; j++)
-            if (map[c[j].i] < 0 && fabs(c[j].p[1] - c[i].p[1]) <= w->tol &&
-                fabs(c[j].p[2] - c[i].p[2]) <= w->tol)
-                map[c[j].i] = v;
-    }
+    if (!w->V || geom_point_grid_build(&g, (const double(*)[3])p->v, n, fmax(4 * w->tol, 1e-300)))
+        return -1;
     for (int i = 0; i < n; i++)
-        c[i].i = map[c[i].i];
-    w->nc = n;
-    return 0;
+        map[i] = -1;
+    for (int i = 0; i < n; i++) {
+        if (map[i] >= 0) continue;
+        near_query q = {(const double(*)[3])p->v, p->v[i], w->tol, map, w->nv};
+        memcpy(w->V[w->nv++], p->v[i], sizeof *w->V);
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; k++) {
+            lo[k] = p->v[i][k] - w->tol;
+            hi[k] = p->v[i][k] + w->tol;
+        }
+        geom_point_grid_each(&g, lo, hi, 64, claim, &q);
+    }
+    geom_point_grid_free(&g);
+    /* cells about as far apart as the vertices are across the surface */
+    double cell = fmax(size / sqrt((double)w->nv + 1), 4 * w->tol);
+    return geom_point_grid_build(&w->grid, (const double(*)[3])w->V, w->nv, fmax(cell, 1e-300));
 }
 
 /* Distance of V[v] from the line through V[a] and V[b], squared, and
@@ -241,34 +266,40 @@ static double off_line(const welded *w, int a, int b, int v, double *s)
     return dot3(cr, cr) / l2;
 }
 
+typedef struct edge_query {
+    const welded *w;
+    int a, b, v;
+    double best, inner;
+} edge_query;
+
+static int nearer_on_edge(void *ud, int u)
+{
+    edge_query *q = ud;
+    double s;
+    if (u != q->a && u != q->b && u != q->v &&
+        off_line(q->w, q->a, q->b, u, &s) <= q->w->tol * q->w->tol && s > q->inner &&
+        s < 1 - q->inner && s < q->best) {
+        q->best = s;
+        q->v = u;
+    }
+    return 0;
+}
+
 /* The first vertex (along a b) inside edge a b, more than tol from either
  * end, or -1: a corner of another polygon on this one's edge (a
  * T-junction). */
 static int on_edge(const welded *w, int a, int b)
 {
     const double *A = w->V[a], *B = w->V[b];
-    double ab[3];
+    double ab[3], lo[3], hi[3];
     sub3(B, A, ab);
-    double xlo = fmin(A[0], B[0]) - w->tol, xhi = fmax(A[0], B[0]) + w->tol, best = 2,
-           inner = w->tol / sqrt(dot3(ab, ab)); /* tol, along a b */
-    int lo = 0, hi = w->nc, v = -1;
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        if (w->c[mid].p[0] < xlo)
-            lo = mid + 1;
-        else
-            hi = mid;
+    for (int k = 0; k < 3; k++) {
+        lo[k] = fmin(A[k], B[k]) - w->tol;
+        hi[k] = fmax(A[k], B[k]) + w->tol;
     }
-    for (int i = lo; i < w->nc && w->c[i].p[0] <= xhi; i++) {
-        int u = w->c[i].i;
-        double s;
-        if (u == a || u == b || u == v) continue;
-        if (off_line(w, a, b, u, &s) <= w->tol * w->tol && s > inner && s < 1 - inner && s < best) {
-            best = s;
-            v = u;
-        }
-    }
-    return v;
+    edge_query q = {w, a, b, -1, 2, w->tol / sqrt(dot3(ab, ab))}; /* inner: tol, along a b */
+    geom_point_grid_each(&w->grid, lo, hi, 64 + w->nv / 16, nearer_on_edge, &q);
+    return q.v;
 }
 
 /* Triangle a b c of colour tag, split from the opposite corner at every
@@ -342,7 +373,7 @@ static int mend(const geom_polys *p, double size, mesh_polyhedron *out)
     if (p->nv > MAX_CORNERS || p->n == 0) return 0;
     welded w = {.tol = WELD * size};
     int *map = malloc((size_t)p->nv * sizeof *map), *ring = NULL, rc = -1;
-    if (!map || weld(p, &w, map) != 0) goto done;
+    if (!map || weld(p, &w, map, size) != 0) goto done;
     ring = malloc((size_t)p->nv * sizeof *ring);
     if (!ring) goto done;
     for (int f = 0; f < p->n && !w.failed; f++) {
@@ -396,7 +427,7 @@ static int mend(const geom_polys *p, double size, mesh_polyhedron *out)
 done:
     free(map);
     free(ring);
-    free(w.c);
+    geom_point_grid_free(&w.grid);
     if (rc == 1) {
         *out = (mesh_polyhedron){.v = w.V, .t = w.T, .nv = w.nv, .nt = w.nt};
         out->color = malloc((size_t)(w.nt ? w.nt : 1) * sizeof *out->color);
@@ -428,6 +459,7 @@ int mesh_polyhedral_of(const mesh_dexels *d, const double lo[3], const double hi
              .nonly = nonly,
              .work = WORK};
     geom_polys p = {0};
+    c.leaves = count_leaves(&c, r, 1);
     int rc = boundary(&c, r, 1, &p);
     double size = 0;
     for (int k = 0; k < 3; k++)

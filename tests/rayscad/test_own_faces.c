@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../../include/rayscad.h"
 #include "scene_of.h"
@@ -491,4 +492,63 @@ Test(own_faces, plane_faced_clusters_beside_a_curved_one)
     cr_expect_float_eq(rayscad_mesh_volume(m), exact, 3e-3 * exact, "%.9g", rayscad_mesh_volume(m));
     rayscad_mesh_free(m);
     rayscad_mesh_free(ball);
+}
+
+/* surface() of a 7 × 6 heightmap, alone: its triangles (each cell four to
+ * its centre at the corners' mean height, a bottom of many corners along
+ * straight edges that the ray queries cut by halving, some without area)
+ * mended as a plane-faced part's: closed, and its volume the closed form,
+ * each cell's mean corner height over the base (0 here), to rounding. */
+Test(own_faces, heightmap_alone_is_exact)
+{
+    enum { W = 7, H = 6 };
+    double z[H][W], volume = 0;
+    char path[] = "/tmp/rayscad_heightmap_XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    cr_assert(f);
+    for (int i = 0; i < H; i++) {
+        for (int j = 0; j < W; j++) {
+            z[i][j] = 1 + 0.5 * ((i * 7 + j * 3) % 5);
+            fprintf(f, "%g ", z[i][j]);
+        }
+        fprintf(f, "\n");
+    }
+    fclose(f);
+    for (int i = 1; i < H; i++)
+        for (int j = 1; j < W; j++)
+            volume += (z[i - 1][j - 1] + z[i - 1][j] + z[i][j - 1] + z[i][j]) / 4;
+    char src[128];
+    snprintf(src, sizeof src, "surface(\"%s\");", path);
+    rayscad_mesh *m = mesh_of(src, 0);
+    remove(path);
+    cr_expect(closed(m));
+    cr_expect_float_eq(rayscad_mesh_volume(m), volume, 1e-9 * volume, "%.12g of %.12g",
+                       rayscad_mesh_volume(m), volume);
+    rayscad_mesh_free(m);
+}
+
+/* A polyhedron whose faces have corners along straight edges (as surface()
+ * writes its bottom): its triangles, cut from each face by halving (the
+ * ray queries' own), include some without area, so it is no boundary as
+ * given; alone in its part it is mended (corners along straight edges
+ * where two faces meet dropped, faces re-cut): a 3 × 3 × 3 box, 12
+ * triangles on its 8 corners, 27 to rounding. */
+Test(own_faces, polyhedron_with_corners_along_edges)
+{
+    rayscad_mesh *m = mesh_of("polyhedron(points = [[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0],"
+                              " [3, 3, 0], [0, 3, 0], [0, 0, 3], [3, 0, 3], [3, 3, 3], [0, 3, 3]],"
+                              " faces = [[0, 5, 4, 3, 2, 1], [6, 7, 8, 9], [0, 1, 2, 3, 7, 6],"
+                              " [3, 4, 8, 7], [4, 5, 9, 8], [5, 0, 6, 9]]);",
+                              0);
+    cr_expect(closed(m));
+    cr_expect_eq(rayscad_mesh_triangle_count(m), 12);
+    cr_expect_eq(rayscad_mesh_vertex_count(m), 8);
+    cr_expect_float_eq(rayscad_mesh_volume(m), 27, 27e-12, "%.15g", rayscad_mesh_volume(m));
+    for (int c = 0; c < 8; c++) {
+        double p[3] = {3.0 * (c & 1), 1.5 * (c & 2), 0.75 * (c & 4)};
+        cr_expect(has_vertex(m, p, 1e-12), "corner (%g, %g, %g)", p[0], p[1], p[2]);
+    }
+    rayscad_mesh_free(m);
 }
