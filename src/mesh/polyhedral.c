@@ -11,15 +11,20 @@
  * it, with vertices where one polygon's corner lies on another's edge (a
  * T-junction).  Corners within WELD of one another become one vertex; each
  * polygon's corners along a straight edge are dropped and the rest fanned;
- * a triangle with a vertex on its edge is split there; then the triangles
- * of each flat face are cut again from the face's outline (flat_faces.h):
- * the BSP's cuts leave no trace.  The result stands only
+ * a triangle with a vertex on its edge is split there (both found through
+ * a grid of points); where solids touch along an edge or at a corner, the
+ * faces are paired solid wedge by solid wedge and each solid's corners
+ * moved a hair into it (geom/pinch.h); then the triangles of each flat
+ * face are cut again from the face's outline (flat_faces.h): the BSP's
+ * cuts leave no trace.  The result stands only
  * where it is a closed mesh that bounds its solid (geom_mesh_is_boundary:
  * every edge once each way, no two triangles crossing) with its corners
  * apart as floats; otherwise, or where a primitive is curved, the part is
  * contoured as before.  Each polygon carries its primitive's colour through
  * the booleans (a difference's cut faces take the colour of what cut them,
- * as the rays see it), and faces of two colours are not merged.
+ * as the rays see it), and faces of two colours are not merged.  A
+ * primitive alone in its part needs no booleans and no limit on its size;
+ * where primitives are joined, MAX_TRIANGLES and WORK bound the BSP.
  */
 #include "../geom/bsp.h"
 #include "../geom/flat_faces.h"
