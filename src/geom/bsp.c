@@ -11,6 +11,7 @@
 #include "bsp.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -371,6 +372,25 @@ static void free_lists(node *n)
     free_lists(n->back);
 }
 
+/* The polygons of l in an order fixed by their number alone: a tree built
+ * from a mesh's polygons in their own order takes each splitting plane from
+ * a neighbour of the last, and a curved shape's then cut one another into
+ * many pieces (two tori differenced, 1,800 and 1,560 polygons: 2.9 million
+ * tests and 27,717 pieces in order; shuffled, 1.1 million and 11,116). */
+static void shuffle(plist *l)
+{
+    uint32_t x = 2463534242u;
+    for (int i = l->n - 1; i > 0; i--) {
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        int j = (int)(x % (uint32_t)(i + 1));
+        poly *t = l->v[i];
+        l->v[i] = l->v[j];
+        l->v[j] = t;
+    }
+}
+
 static node *tree_of(bsp *b, const geom_polys *s)
 {
     node *n = node_new(b);
@@ -380,6 +400,7 @@ static node *tree_of(bsp *b, const geom_polys *s)
                            s->tag[i]);
         if (p) plist_push(b, &l, p);
     }
+    shuffle(&l);
     if (n)
         build(b, n, &l, 0);
     else

@@ -16,6 +16,7 @@
  * boxes hold its entry.  The check against the grid (2 % of the volume) is
  * made per cluster, from its intervals alone.
  */
+#include "../geom/edges.h"
 #include "dexels.h"
 
 #include <math.h>
@@ -32,41 +33,25 @@ typedef struct operand {
 } operand;
 
 typedef struct gather {
-    const csg_scene *s;
     const double *lo, *hi;
     operand *op;
     int n, over;
 } gather;
 
-static void collect(gather *g, int32_t i)
+static int collect(void *ud, int32_t i, const csg_scene_node_info *f)
 {
-    csg_scene_node_info f;
-    csg_scene_node_get(g->s, i, &f);
-    if (!f.is_leaf && f.op == CSG_OP_UNION) {
-        csg_scene_node_info c;
-        for (int32_t k = i + 1; k < f.end && !g->over; k = c.end) {
-            csg_scene_node_get(g->s, k, &c);
-            collect(g, k);
-        }
-        return;
-    }
+    gather *g = ud;
     for (int a = 0; a < 3; a++) {
-        if (!isfinite(f.lo[a]) || !isfinite(f.hi[a])) g->over = 1;
-        if (f.lo[a] > g->hi[a] || f.hi[a] < g->lo[a]) return; /* another part's */
+        if (!isfinite(f->lo[a]) || !isfinite(f->hi[a])) g->over = 1;
+        if (f->lo[a] > g->hi[a] || f->hi[a] < g->lo[a]) return g->over; /* another part's */
     }
     if (g->n == MAX_OPERANDS) g->over = 1;
-    if (g->over) return;
+    if (g->over) return 1;
     operand *o = &g->op[g->n++];
     o->node = i;
-    memcpy(o->lo, f.lo, sizeof o->lo);
-    memcpy(o->hi, f.hi, sizeof o->hi);
-}
-
-static int find(int *up, int i)
-{
-    while (up[i] != i)
-        i = up[i] = up[up[i]];
-    return i;
+    memcpy(o->lo, f->lo, sizeof o->lo);
+    memcpy(o->hi, f->hi, sizeof o->hi);
+    return 0;
 }
 
 /* The operands' clusters (op[].cluster, 0 .. count - 1): boxes within pad
@@ -81,12 +66,12 @@ static int cluster(operand *op, int n, double pad)
             int apart = 0;
             for (int a = 0; a < 3; a++)
                 apart |= op[i].lo[a] > op[j].hi[a] + pad || op[j].lo[a] > op[i].hi[a] + pad;
-            if (!apart) up[find(up, i)] = find(up, j);
+            if (!apart) up[geom_set_find(up, i)] = geom_set_find(up, j);
         }
     for (int i = 0; i < n; i++)
         id[i] = -1;
     for (int i = 0; i < n; i++) {
-        int r = find(up, i);
+        int r = geom_set_find(up, i);
         if (id[r] < 0) id[r] = count++;
         op[i].cluster = id[r];
     }
@@ -270,8 +255,8 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
     int32_t root = csg_scene_root_node(d->scene, d->root);
     if (root < 0 || !d->off[0]) return 0;
     operand op[MAX_OPERANDS];
-    gather g = {.s = d->scene, .lo = lo, .hi = hi, .op = op};
-    collect(&g, root);
+    gather g = {.lo = lo, .hi = hi, .op = op};
+    mesh_top_operands(d->scene, root, collect, &g);
     if (g.over || g.n < 2) return 0;
     int n = g.n, nc = cluster(op, n, MESH_CLUSTER_PAD * d->h), rc = 0, any = 0;
     if (nc < 2) return 0;

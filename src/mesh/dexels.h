@@ -93,6 +93,11 @@ typedef struct mesh_piece {
     int32_t prim;
 } mesh_piece;
 
+/* Call fn(ud, node, its info) for each operand of node i's top-level
+ * unions (nested unions flattened; i itself when it is no union), in
+ * order, until fn returns nonzero: that value, or 0 (pieces.c). */
+typedef int (*mesh_operand_fn)(void *ud, int32_t node, const csg_scene_node_info *f);
+int mesh_top_operands(const csg_scene *s, int32_t i, mesh_operand_fn fn, void *ud);
 /* The far-apart parts of root: boxes no two of whose grids (spacing h, or
  * the box's longest side / cells when h <= 0) meet.  Their number (0 for an
  * empty root) and the boxes in *out (free), or -1 when out of memory. */

@@ -26,32 +26,38 @@
 #define PIECES_PAD 3.0
 
 typedef struct gather {
-    const csg_scene *s;
     mesh_piece *p;
     int n;
     int over; /* more than PIECES_MAX, or an unbounded operand */
 } gather;
 
-static void collect(gather *g, int32_t i)
+int mesh_top_operands(const csg_scene *s, int32_t i, mesh_operand_fn fn, void *ud)
 {
     csg_scene_node_info f;
-    csg_scene_node_get(g->s, i, &f);
-    if (!f.is_leaf && f.op == CSG_OP_UNION) {
-        csg_scene_node_info c;
-        for (int32_t k = i + 1; k < f.end && !g->over; k = c.end) {
-            csg_scene_node_get(g->s, k, &c);
-            collect(g, k);
-        }
-        return;
+    csg_scene_node_get(s, i, &f);
+    if (f.is_leaf || f.op != CSG_OP_UNION) return fn(ud, i, &f);
+    csg_scene_node_info c;
+    for (int32_t k = i + 1; k < f.end; k = c.end) {
+        csg_scene_node_get(s, k, &c);
+        int rc = mesh_top_operands(s, k, fn, ud);
+        if (rc) return rc;
     }
+    return 0;
+}
+
+static int collect(void *ud, int32_t i, const csg_scene_node_info *f)
+{
+    gather *g = ud;
+    (void)i;
     for (int a = 0; a < 3; a++)
-        if (!isfinite(f.lo[a]) || !isfinite(f.hi[a])) g->over = 1;
+        if (!isfinite(f->lo[a]) || !isfinite(f->hi[a])) g->over = 1;
     if (g->n == PIECES_MAX) g->over = 1;
-    if (g->over) return;
-    memcpy(g->p[g->n].lo, f.lo, sizeof f.lo);
-    memcpy(g->p[g->n].hi, f.hi, sizeof f.hi);
-    g->p[g->n].prim = f.is_leaf ? f.prim : -1;
+    if (g->over) return 1;
+    memcpy(g->p[g->n].lo, f->lo, sizeof f->lo);
+    memcpy(g->p[g->n].hi, f->hi, sizeof f->hi);
+    g->p[g->n].prim = f->is_leaf ? f->prim : -1;
     g->n++;
+    return 0;
 }
 
 double mesh_piece_longest(const mesh_piece *p)
@@ -82,9 +88,9 @@ int mesh_pieces(const csg_scene *s, int root, double h, int cells, mesh_piece **
     *out = NULL;
     int32_t r = csg_scene_root_node(s, root);
     if (r < 0) return 0;
-    gather g = {.s = s, .p = malloc(PIECES_MAX * sizeof *g.p)};
+    gather g = {.p = malloc(PIECES_MAX * sizeof *g.p)};
     if (!g.p) return -1;
-    collect(&g, r);
+    mesh_top_operands(s, r, collect, &g);
     if (g.over || g.n == 0) {
         g.n = 1;
         csg_scene_bounds(s, root, g.p[0].lo, g.p[0].hi);

@@ -38,7 +38,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define WORK 3000000L /* BSP plane tests a part may take (about 0.3 s) */
+#define WORK 6000000L /* BSP plane tests a part may take (about 0.6 s) */
 #define WELD 1e-8     /* of the part's size: corners this close are one */
 #define MAX_CORNERS 4000000
 #define MAX_TRIANGLES 20000 /* of the primitives' faces, where booleans join them */

@@ -302,6 +302,18 @@ Test(own_faces, prisms_are_their_faces)
     }
 }
 
+/* The centre of triangle i of m, in doubles. */
+static void centroid(const rayscad_mesh *m, int i, double c[3])
+{
+    const float *v = rayscad_mesh_vertices(m);
+    const int32_t *t = rayscad_mesh_triangles(m);
+    for (int a = 0; a < 3; a++)
+        c[a] = 0;
+    for (int k = 0; k < 3; k++)
+        for (int a = 0; a < 3; a++)
+            c[a] += (double)v[3 * t[3 * i + k] + a] / 3;
+}
+
 /* A part whose every primitive is plane-faced is the exact boundary of its
  * booleans (src/mesh/polyhedral.c), its flat faces cut from their
  * outlines: a box with a square hole through it (16 corners, 32
@@ -345,14 +357,11 @@ Test(own_faces, plane_faced_booleans)
     cr_expect_float_eq(rayscad_mesh_volume(two), 1875, 1875 * 1e-9);
     cr_assert_eq(rayscad_mesh_color_count(two), 2);
     cr_expect_eq(rayscad_mesh_triangle_count(two), 36);
-    const float *pal = rayscad_mesh_colors(two), *tv = rayscad_mesh_vertices(two);
+    const float *pal = rayscad_mesh_colors(two);
     const uint16_t *tc = rayscad_mesh_triangle_colors(two);
-    const int32_t *tt = rayscad_mesh_triangles(two);
     for (int i = 0; i < rayscad_mesh_triangle_count(two); i++) {
-        double c[3] = {0, 0, 0};
-        for (int k = 0; k < 3; k++)
-            for (int a = 0; a < 3; a++)
-                c[a] += (double)tv[3 * tt[3 * i + k] + a] / 3;
+        double c[3];
+        centroid(two, i, c);
         int on_red = 1, face = 0;
         for (int a = 0; a < 3; a++) {
             on_red &= c[a] >= -1e-9 && c[a] <= 10 + 1e-9;
@@ -372,14 +381,10 @@ Test(own_faces, plane_faced_booleans)
     cr_assert_eq(rayscad_mesh_color_count(cut), 2);
     cr_expect_eq(rayscad_mesh_triangle_count(cut), 32);
     pal = rayscad_mesh_colors(cut);
-    tv = rayscad_mesh_vertices(cut);
     tc = rayscad_mesh_triangle_colors(cut);
-    tt = rayscad_mesh_triangles(cut);
     for (int i = 0; i < rayscad_mesh_triangle_count(cut); i++) {
-        double c[3] = {0, 0, 0};
-        for (int k = 0; k < 3; k++)
-            for (int a = 0; a < 3; a++)
-                c[a] += (double)tv[3 * tt[3 * i + k] + a] / 3;
+        double c[3];
+        centroid(cut, i, c);
         int wall = 0;
         for (int a = 0; a < 2; a++)
             wall |=
