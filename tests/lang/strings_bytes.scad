@@ -7,3 +7,5 @@ echo(len(s), [for (c = s) ord(c)], s[1] == "ÄÖ");
 for (a = [0:0:0]) echo(zero = a);
 for (a = [1:0:1]) echo(one = a);
 echo([for (a = [2:0:2]) a]);
+s2 = "abcdefghijklémnopqrstuvwxyz0123456789";
+echo(len(s2), [for (c = s2) ord(c)][13]);

@@ -7,3 +7,5 @@ echo(str(s, s), len(str(s, s)));
 echo(search("€", s), search("é", s, 0));
 echo(ord("€"), ord(""), ord("ab"), ord(5));
 echo(concat("ab", "cd"), concat(["x"], "yz"));
+t = str("abcdefghijk", "é", "lmnopqrstuvwxyz€0123456789😀", "ABCDEFGHIJKLMNOP");
+echo(len(t), t[11], t[12], t[27], t[38], t[39], t[54]);
