@@ -263,28 +263,32 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
     double *volume = calloc((size_t)nc, sizeof *volume);
     uint8_t *exact = calloc((size_t)nc, 1);
     int32_t *nodes = malloc((size_t)n * sizeof *nodes);
-    mesh_polyhedron all = {0};
+    mesh_polyhedron all = {0}, *shell = calloc((size_t)nc, sizeof *shell);
     tally t = {.d = d, .volume = volume};
-    if (!volume || !exact || !nodes) {
-        rc = -1;
-    } else if (each_interval(d, op, n, add_volume, &t) != 0) {
-        rc = 0; /* an interval the clusters do not tell: leave the part whole */
-    } else {
-        for (int cl = 0; cl < nc && rc >= 0; cl++) {
-            int m = 0;
-            for (int i = 0; i < n; i++)
-                if (op[i].cluster == cl) nodes[m++] = op[i].node;
-            mesh_polyhedron shell;
-            int r = mesh_polyhedral_of(d, lo, hi, nodes, m, &shell);
-            if (r < 0) rc = -1;
-            if (r != 1 || !mesh_polyhedral_agrees(&shell, volume[cl] * d->h * d->h / 3, d->h))
-                continue;
-            if (join(&all, &shell) != 0) rc = -1;
-            mesh_polyhedron_free(&shell);
-            exact[cl] = 1;
-            any = 1;
-        }
+    if (!volume || !exact || !nodes || !shell) rc = -1;
+    /* the clusters' booleans first (a curved one fails at once), then
+     * their volumes on the grid, where one came out */
+    for (int cl = 0; cl < nc && rc == 0; cl++) {
+        int m = 0;
+        for (int i = 0; i < n; i++)
+            if (op[i].cluster == cl) nodes[m++] = op[i].node;
+        int r = mesh_polyhedral_of(d, lo, hi, nodes, m, &shell[cl]);
+        if (r < 0) rc = -1;
+        exact[cl] = r == 1;
+        any |= r == 1;
     }
+    if (rc == 0 && any && each_interval(d, op, n, add_volume, &t) != 0) {
+        any = 0; /* an interval the clusters do not tell: leave the part whole */
+        memset(exact, 0, (size_t)nc);
+    }
+    for (int cl = 0; cl < nc && rc == 0 && any; cl++) {
+        if (!exact[cl]) continue;
+        exact[cl] = mesh_polyhedral_agrees(&shell[cl], volume[cl] * d->h * d->h / 3, d->h);
+        if (exact[cl] && join(&all, &shell[cl]) != 0) rc = -1;
+    }
+    any = 0;
+    for (int cl = 0; cl < nc && rc == 0; cl++)
+        any |= exact[cl];
     mesh_dexels *rest = NULL;
     if (rc == 0 && any && part_hits(d, op, n, exact, &rest) != 0) rc = -1;
     if (rc == 0 && any) {
@@ -297,6 +301,9 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
     } else {
         mesh_polyhedron_free(&all);
     }
+    for (int cl = 0; shell && cl < nc; cl++)
+        mesh_polyhedron_free(&shell[cl]);
+    free(shell);
     free(volume);
     free(exact);
     free(nodes);
