@@ -90,60 +90,38 @@ static int cluster_at(const operand *op, int n, const double p[3], double slack)
     return -1;
 }
 
-/* Call fn for each interval of d's rays (family a, ray r, hits k and k + 1)
- * with the cluster of its entry; stops at the first nonzero return. */
-typedef int (*interval_fn)(void *ud, int a, size_t r, size_t k, int cl);
-static int each_interval(const mesh_dexels *d, const operand *op, int n, interval_fn fn, void *ud)
+/* The rays of family a of d. */
+static size_t rays_of(const mesh_dexels *d, int a)
+{
+    int u, v;
+    mesh_axes_other(a, &u, &v);
+    return ((size_t)d->n[u] + 1) * ((size_t)d->n[v] + 1);
+}
+
+/* Each interval of d's rays (family a, hits k and k + 1) labelled with the
+ * cluster of its entry, which[a][k / 2], and each cluster's Σ lengths over
+ * the three families in volume[]: 0, 1 where an entry lies in no cluster's
+ * boxes, or -1 out of memory. */
+static int label(const mesh_dexels *d, const operand *op, int n, int16_t *which[3], double *volume)
 {
     for (int a = 0; a < 3; a++) {
+        which[a] = malloc((d->nhit[a] / 2 + 1) * sizeof *which[a]);
+        if (!which[a]) return -1;
         int u, v;
         mesh_axes_other(a, &u, &v);
-        size_t rowlen = (size_t)d->n[u] + 1, rays = rowlen * ((size_t)d->n[v] + 1);
+        size_t rowlen = (size_t)d->n[u] + 1, rays = rays_of(d, a);
         for (size_t r = 0; r < rays; r++)
             for (size_t k = d->off[a][r]; k + 1 < d->off[a][r + 1]; k += 2) {
                 double p[3];
                 p[a] = d->org[a] + d->hit[a][k].t;
                 p[u] = d->org[u] + (double)(r % rowlen) * d->h;
                 p[v] = d->org[v] + (double)(r / rowlen) * d->h;
-                int rc = fn(ud, a, r, k, cluster_at(op, n, p, d->h));
-                if (rc) return rc;
+                int cl = cluster_at(op, n, p, d->h);
+                if (cl < 0) return 1;
+                which[a][k / 2] = (int16_t)cl;
+                volume[cl] += d->hit[a][k + 1].t - d->hit[a][k].t;
             }
     }
-    return 0;
-}
-
-typedef struct tally {
-    const mesh_dexels *d;
-    double *volume;       /* per cluster: Σ lengths over the three families */
-    const uint8_t *exact; /* per cluster (moving) */
-    size_t *count[2][3];  /* per ray: hits kept, moved */
-    mesh_hit *hit[2][3];
-    size_t *at[2][3];
-} tally;
-
-static int add_volume(void *ud, int a, size_t r, size_t k, int cl)
-{
-    tally *t = ud;
-    (void)r;
-    if (cl < 0) return 1; /* an entry in no cluster's box: do not split */
-    t->volume[cl] += t->d->hit[a][k + 1].t - t->d->hit[a][k].t;
-    return 0;
-}
-
-static int count_hits(void *ud, int a, size_t r, size_t k, int cl)
-{
-    tally *t = ud;
-    (void)k;
-    t->count[t->exact[cl]][a][r + 1] += 2;
-    return 0;
-}
-
-static int move_hits(void *ud, int a, size_t r, size_t k, int cl)
-{
-    tally *t = ud;
-    int side = t->exact[cl];
-    memcpy(&t->hit[side][a][t->at[side][a][r]], &t->d->hit[a][k], 2 * sizeof(mesh_hit));
-    t->at[side][a][r] += 2;
     return 0;
 }
 
@@ -166,60 +144,53 @@ static int twin_grid(const mesh_dexels *d, mesh_dexels *r)
     return mesh_palette_build(d->scene, d->root, &r->pal);
 }
 
-/* d's crossings parted: those of exact clusters stay in d, the rest go to
- * the new grid *rest.  0 or -1 (d unchanged). */
-static int part_hits(mesh_dexels *d, const operand *op, int n, const uint8_t *exact,
+/* d's crossings parted by their intervals' labels: those of exact clusters
+ * stay in d, the rest go to the new grid *rest.  0 or -1 (d unchanged). */
+static int part_hits(mesh_dexels *d, int16_t *const which[3], const uint8_t *exact,
                      mesh_dexels **rest)
 {
     mesh_dexels *r = malloc(sizeof *r);
-    tally t = {.d = d, .exact = exact};
+    size_t *off[2][3] = {{NULL}};
+    mesh_hit *hit[2][3] = {{NULL}};
     int rc = r ? twin_grid(d, r) : -1;
     for (int a = 0; a < 3 && rc == 0; a++) {
-        int u, v;
-        mesh_axes_other(a, &u, &v);
-        size_t rays = ((size_t)d->n[u] + 1) * ((size_t)d->n[v] + 1);
+        size_t rays = rays_of(d, a);
+        for (int side = 0; side < 2 && rc == 0; side++)
+            if (!(off[side][a] = calloc(rays + 1, sizeof(size_t)))) rc = -1;
+        for (size_t ray = 0; rc == 0 && ray < rays; ray++)
+            for (size_t k = d->off[a][ray]; k + 1 < d->off[a][ray + 1]; k += 2)
+                off[exact[which[a][k / 2]]][a][ray + 1] += 2;
         for (int side = 0; side < 2 && rc == 0; side++) {
-            t.count[side][a] = calloc(rays + 1, sizeof(size_t));
-            t.at[side][a] = malloc((rays + 1) * sizeof(size_t));
-            if (!t.count[side][a] || !t.at[side][a]) rc = -1;
-        }
-    }
-    if (rc == 0) each_interval(d, op, n, count_hits, &t);
-    for (int a = 0; a < 3 && rc == 0; a++) {
-        int u, v;
-        mesh_axes_other(a, &u, &v);
-        size_t rays = ((size_t)d->n[u] + 1) * ((size_t)d->n[v] + 1);
-        for (int side = 0; side < 2 && rc == 0; side++) {
-            size_t *c = t.count[side][a];
+            size_t *c = off[side][a];
             for (size_t i = 0; i < rays; i++)
                 c[i + 1] += c[i];
-            memcpy(t.at[side][a], c, (rays + 1) * sizeof *c);
-            t.hit[side][a] = malloc((c[rays] ? c[rays] : 1) * sizeof(mesh_hit));
-            if (!t.hit[side][a]) rc = -1;
+            if (!(hit[side][a] = malloc((c[rays] ? c[rays] : 1) * sizeof(mesh_hit)))) rc = -1;
         }
+        size_t n[2] = {0, 0}; /* each side's next free place: rays in order */
+        for (size_t ray = 0; rc == 0 && ray < rays; ray++)
+            for (size_t k = d->off[a][ray]; k + 1 < d->off[a][ray + 1]; k += 2) {
+                int side = exact[which[a][k / 2]];
+                memcpy(&hit[side][a][n[side]], &d->hit[a][k], 2 * sizeof(mesh_hit));
+                n[side] += 2;
+            }
     }
-    if (rc == 0) each_interval(d, op, n, move_hits, &t);
     for (int a = 0; a < 3; a++) {
-        int u, v;
-        mesh_axes_other(a, &u, &v);
-        size_t rays = ((size_t)d->n[u] + 1) * ((size_t)d->n[v] + 1);
         if (rc == 0) {
+            size_t rays = rays_of(d, a);
             free(d->off[a]);
             free(d->hit[a]);
-            d->off[a] = t.count[1][a];
-            d->hit[a] = t.hit[1][a];
-            d->nhit[a] = t.count[1][a][rays];
-            r->off[a] = t.count[0][a];
-            r->hit[a] = t.hit[0][a];
-            r->nhit[a] = t.count[0][a][rays];
+            d->off[a] = off[1][a];
+            d->hit[a] = hit[1][a];
+            d->nhit[a] = off[1][a][rays];
+            r->off[a] = off[0][a];
+            r->hit[a] = hit[0][a];
+            r->nhit[a] = off[0][a][rays];
         } else {
             for (int side = 0; side < 2; side++) {
-                free(t.count[side][a]);
-                free(t.hit[side][a]);
+                free(off[side][a]);
+                free(hit[side][a]);
             }
         }
-        for (int side = 0; side < 2; side++)
-            free(t.at[side][a]);
     }
     if (rc != 0) {
         mesh_dexels_free(r);
@@ -264,7 +235,7 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
     uint8_t *exact = calloc((size_t)nc, 1);
     int32_t *nodes = malloc((size_t)n * sizeof *nodes);
     mesh_polyhedron all = {0}, *shell = calloc((size_t)nc, sizeof *shell);
-    tally t = {.d = d, .volume = volume};
+    int16_t *which[3] = {NULL, NULL, NULL};
     if (!volume || !exact || !nodes || !shell) rc = -1;
     /* the clusters' booleans first (a curved one fails at once), then
      * their volumes on the grid, where one came out */
@@ -277,10 +248,10 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
         exact[cl] = r == 1;
         any |= r == 1;
     }
-    if (rc == 0 && any && each_interval(d, op, n, add_volume, &t) != 0) {
-        any = 0; /* an interval the clusters do not tell: leave the part whole */
+    int labelled = rc == 0 && any ? label(d, op, n, which, volume) : 0;
+    if (labelled < 0) rc = -1;
+    if (labelled != 0) /* (1: an interval the clusters do not tell: leave the part whole) */
         memset(exact, 0, (size_t)nc);
-    }
     for (int cl = 0; cl < nc && rc == 0 && any; cl++) {
         if (!exact[cl]) continue;
         exact[cl] = mesh_polyhedral_agrees(&shell[cl], volume[cl] * d->h * d->h / 3, d->h);
@@ -290,7 +261,7 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
     for (int cl = 0; cl < nc && rc == 0; cl++)
         any |= exact[cl];
     mesh_dexels *rest = NULL;
-    if (rc == 0 && any && part_hits(d, op, n, exact, &rest) != 0) rc = -1;
+    if (rc == 0 && any && part_hits(d, which, exact, &rest) != 0) rc = -1;
     if (rc == 0 && any) {
         mesh_polyhedron_free(&d->poly);
         d->poly = all;
@@ -304,6 +275,8 @@ int mesh_polyhedral_clusters(mesh_dexels *d, const double lo[3], const double hi
     for (int cl = 0; shell && cl < nc; cl++)
         mesh_polyhedron_free(&shell[cl]);
     free(shell);
+    for (int a = 0; a < 3; a++)
+        free(which[a]);
     free(volume);
     free(exact);
     free(nodes);

@@ -128,7 +128,7 @@ static int cast_part(const csg_scene *s, const mesh_options *o, const mesh_piece
         }
         if (rc != 0) break;
         if (split && mesh_polyhedral_clusters(finer, p->lo, p->hi) != 1) {
-            mesh_dexels_free(finer); /* (out of memory: the clusters no longer split) */
+            mesh_dexels_free(finer); /* its clusters did not split: the coarser one stays */
             break;
         }
         mesh_dexels_free(d);
