@@ -121,6 +121,14 @@ int csg_trace_first(const csg_scene *s, int r, const double o[3], const double d
 void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],
                       double n[3]);
 
+/* The world-space surface through boundary b of a list traced along
+ * o + t·d, as a quadric whose gradient at the boundary points along
+ * csg_scene_normal's normal (a plane: A = 0, b that normal): where the
+ * boundary goes as the ray moves, while it stays on that part.  0, or -1
+ * for a clip or an infinite t. */
+int csg_scene_quadric(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],
+                      iv_quadric *q);
+
 /* The material of primitive prim (borrowed from the scene). */
 const csg_material *csg_scene_material(const csg_scene *s, int32_t prim);
 

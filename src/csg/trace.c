@@ -636,3 +636,63 @@ void csg_scene_normal(const csg_scene *s, const iv_bound *b, const double o[3], 
         n[2] = 1;
     }
 }
+
+int csg_scene_quadric(const csg_scene *s, const iv_bound *b, const double o[3], const double d[3],
+                      iv_quadric *q)
+{
+    if (b->prim < 0 || b->prim >= s->nprims || !isfinite(b->t)) return -1;
+    const csg_prim *p = &s->prims[b->prim];
+    double pw[3], po[3], n[3];
+    for (int k = 0; k < 3; k++)
+        pw[k] = o[k] + b->t * d[k];
+    csg_affine_point(p->object_from_world, pw, po);
+    csg_scene_normal(s, b, o, d, n);
+    iv_quadric qo;
+    if (!iv_shape_quadric(&p->shape, po, b->part, &qo)) {
+        memset(q, 0, sizeof *q);
+        for (int k = 0; k < 3; k++)
+            q->b[k] = n[k];
+        q->c = -(n[0] * pw[0] + n[1] * pw[1] + n[2] * pw[2]);
+        return 0;
+    }
+    /* y = M x + m: yᵀAy + b·y + c = xᵀ(MᵀAM)x + (2MᵀAm + Mᵀb)·x + (mᵀAm + b·m + c) */
+    const double *F = p->object_from_world;
+    double M[3][3], m[3], AM[3][3], Am[3];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            M[i][j] = F[4 * i + j];
+        m[i] = F[4 * i + 3];
+    }
+    for (int i = 0; i < 3; i++) {
+        Am[i] = 0;
+        for (int j = 0; j < 3; j++) {
+            AM[i][j] = 0;
+            for (int k = 0; k < 3; k++)
+                AM[i][j] += qo.A[i][k] * M[k][j];
+            Am[i] += qo.A[i][j] * m[j];
+        }
+    }
+    q->c = qo.c;
+    for (int i = 0; i < 3; i++) {
+        q->c += m[i] * Am[i] + qo.b[i] * m[i];
+        q->b[i] = 0;
+        for (int j = 0; j < 3; j++) {
+            q->A[i][j] = 0;
+            for (int k = 0; k < 3; k++)
+                q->A[i][j] += M[k][i] * AM[k][j];
+            q->b[i] += M[j][i] * (2 * Am[j] + qo.b[j]);
+        }
+    }
+    double g = 0; /* the gradient 2Ax + b along the normal */
+    for (int i = 0; i < 3; i++)
+        g += n[i] * (2 * (q->A[i][0] * pw[0] + q->A[i][1] * pw[1] + q->A[i][2] * pw[2]) + q->b[i]);
+    if (g < 0) {
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++)
+                q->A[i][j] = -q->A[i][j];
+            q->b[i] = -q->b[i];
+        }
+        q->c = -q->c;
+    }
+    return 0;
+}

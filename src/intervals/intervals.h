@@ -305,6 +305,16 @@ int iv_shape_intersect(const iv_shape *s, const double o[3], const double d[3], 
 /* The outward unit normal of s at object-space point p on the given part. */
 void iv_shape_normal(const iv_shape *s, const double p[3], int part, double n[3]);
 
+/* An implicit quadric surface xᵀAx + b·x + c = 0 (A symmetric). */
+typedef struct iv_quadric {
+    double A[3][3], b[3], c;
+} iv_quadric;
+
+/* The surface that part of s through object-space point p lies on, when it
+ * is curved: 1 with *q set (its sign unchosen: the caller orients it by the
+ * normal); 0 when that part is flat (its plane: the normal through p). */
+int iv_shape_quadric(const iv_shape *s, const double p[3], int part, iv_quadric *q);
+
 /* Object-space bounds; infinite components are ±INFINITY.  Returns 0, or -1
  * when the shape is empty (e.g. r <= 0). */
 int iv_shape_bounds(const iv_shape *s, double lo[3], double hi[3]);

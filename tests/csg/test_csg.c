@@ -1106,3 +1106,88 @@ Test(csg_trace, culling_keeps_grazing_hits)
     cr_assert_eq(kept, 20000);
     csg_scene_free(s);
 }
+
+/* q(x) over |∇q(x)|: x's distance from the surface, to first order. */
+static double quadric_distance(const iv_quadric *q, const double x[3], double g[3])
+{
+    double v = q->c;
+    for (int i = 0; i < 3; i++) {
+        g[i] = q->b[i];
+        for (int j = 0; j < 3; j++)
+            g[i] += 2 * q->A[i][j] * x[j];
+        v += x[i] * (q->b[i] + q->A[i][0] * x[0] + q->A[i][1] * x[1] + q->A[i][2] * x[2]);
+    }
+    return v / sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+}
+
+Test(csg_trace, boundary_quadrics_follow_the_surface)
+{
+    /* Each kind of curved part, and flat ones, under a sheared, scaled,
+     * rotated and moved transform, subtracted from a box so that half the
+     * boundaries are flipped.  The quadric of a boundary must hold its hit,
+     * have the normal as its gradient's direction, and hold the hits of the
+     * same part on a ray moved by 0.01: a tangent plane would miss those by
+     * about 1e-4 times the curvature. */
+    iv_region *ring = iv_region_new((const double[][2]){{1, 0}, {3, 0}, {1, 2}}, (int[]){0, 3}, 1);
+    cr_assert_not_null(ring);
+    iv_shape shapes[6] = {sphere(1.5),
+                          cone(0.5, 1.5, 2),
+                          cone(1, 1, 2),
+                          {.kind = IV_SHAPE_PRISM},
+                          box(-1, -1, -1, 1, 1, 1)};
+    shapes[3].u.prism.r = 1.2;
+    shapes[3].u.prism.z0 = -1;
+    shapes[3].u.prism.z1 = 1;
+    iv_shape_revolve(&shapes[5], ring, 270);
+    const csg_affine m = {0.9, 0.3, -0.2, 0.1, -0.25, 1.1, 0.4, -0.3, 0.35, -0.1, 0.7, 0.2};
+    rng_seed(0x51ab);
+    for (int k = 0; k < 6; k++) {
+        csg_scene *s = commit1(
+            op2(CSG_OP_DIFFERENCE, leaf(box(-5, -5, -5, 5, 5, 5), m, 1), leaf(shapes[k], m, 2)));
+        int checked = 0, moved = 0;
+        for (int it = 0; it < 400; it++) {
+            iv_arena_reset(arena);
+            double o[3], d[3], e[3], l2[3];
+            for (int c = 0; c < 3; c++) {
+                o[c] = rng_uniform(-1.5, 1.5) - 8 * (c == it % 3);
+                d[c] = rng_uniform(-0.3, 0.3) + (c == it % 3);
+                e[c] = rng_uniform(-1, 1);
+            }
+            iv_list l;
+            cr_assert_eq(csg_trace(s, 0, o, d, -INFINITY, INFINITY, arena, &l), 0);
+            double o2[3] = {o[0] + 0.01 * e[0], o[1] + 0.01 * e[1], o[2] + 0.01 * e[2]};
+            iv_list l2l;
+            cr_assert_eq(csg_trace(s, 0, o2, d, -INFINITY, INFINITY, arena, &l2l), 0);
+            for (int i = 0; i < l.n; i++)
+                for (int end = 0; end < 2; end++) {
+                    const iv_bound *b = end ? &l.v[i].exit : &l.v[i].enter;
+                    if (b->prim != 1) continue;
+                    iv_quadric q;
+                    cr_assert_eq(csg_scene_quadric(s, b, o, d, &q), 0);
+                    double x[3], g[3], n[3];
+                    for (int c = 0; c < 3; c++)
+                        x[c] = o[c] + b->t * d[c];
+                    cr_expect_lt(fabs(quadric_distance(&q, x, g)), 1e-12, "shape %d", k);
+                    csg_scene_normal(s, b, o, d, n);
+                    double gl = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+                    cr_expect_gt((g[0] * n[0] + g[1] * n[1] + g[2] * n[2]) / gl, 1 - 1e-12,
+                                 "shape %d: the gradient against the normal", k);
+                    checked++;
+                    for (int j = 0; j < l2l.n; j++)
+                        for (int end2 = 0; end2 < 2; end2++) {
+                            const iv_bound *b2 = end2 ? &l2l.v[j].exit : &l2l.v[j].enter;
+                            if (b2->prim != 1 || b2->part != b->part || end2 != end) continue;
+                            for (int c = 0; c < 3; c++)
+                                l2[c] = o2[c] + b2->t * d[c];
+                            cr_expect_lt(fabs(quadric_distance(&q, l2, g)), 1e-12,
+                                         "shape %d part %d: the moved ray's hit", k, b->part);
+                            moved++;
+                        }
+                }
+        }
+        cr_expect_gt(checked, 100, "shape %d: %d boundaries", k, checked);
+        cr_expect_gt(moved, 80, "shape %d: %d moved", k, moved);
+        csg_scene_free(s);
+    }
+    iv_region_release(ring);
+}
