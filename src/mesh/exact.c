@@ -106,6 +106,7 @@
 typedef struct piece {
     uint64_t sig, set;
     double x0, x1;
+    int fo, nf; /* along a line: the boundaries of one of its rays (see sample) */
 } piece;
 
 /* The integrand at x: its values, the slope of the first (NAN: unknown),
@@ -178,10 +179,10 @@ static uint64_t mix(uint64_t h, uint64_t k)
     return h ^ (h >> 29);
 }
 
-/* Record that [x0, x1] has signature sig. */
-static void add_piece(level *L, uint64_t sig, uint64_t set, double x0, double x1)
+/* Record that [x0, x1] has sample s's signature. */
+static void add_piece(level *L, const sample *s, double x0, double x1)
 {
-    if (L->npieces && L->pieces[L->npieces - 1].sig == sig) {
+    if (L->npieces && L->pieces[L->npieces - 1].sig == s->sig) {
         L->pieces[L->npieces - 1].x1 = x1;
         return;
     }
@@ -195,7 +196,7 @@ static void add_piece(level *L, uint64_t sig, uint64_t set, double x0, double x1
         L->pieces = p;
         L->cap = cap;
     }
-    L->pieces[L->npieces++] = (piece){sig, set, x0, x1};
+    L->pieces[L->npieces++] = (piece){s->sig, s->set, x0, x1, s->fo, s->nf};
 }
 
 /* The error of the Kronrod sum k of a panel of width w, from its Gauss
@@ -267,7 +268,7 @@ static int cubic_piece(level *L, const sample *l, const sample *r, int depth, in
     }
     for (int c = 0; c < NF; c++)
         L->sum[c] += s2[c];
-    add_piece(L, l->sig, l->set, l->x, r->x);
+    add_piece(L, l, l->x, r->x);
     *done = 1;
     return 0;
 }
@@ -294,7 +295,7 @@ static int panel(level *L, const sample *l, const sample *r, int depth)
     if (L->quick) {
         for (int c = 0; c < NF; c++)
             L->sum[c] += 0.5 * (r->x - l->x) * (l->f[c] + r->f[c]);
-        add_piece(L, l->sig, l->set, l->x, r->x);
+        add_piece(L, l, l->x, r->x);
         return 0;
     }
     int done = 0;
@@ -328,7 +329,7 @@ static int panel(level *L, const sample *l, const sample *r, int depth)
     }
     for (int c = 0; c < NF; c++)
         L->sum[c] += k[c];
-    add_piece(L, l->sig, l->set, l->x, r->x);
+    add_piece(L, l, l->x, r->x);
     return 0;
 }
 
@@ -551,8 +552,8 @@ static int stretch(level *L, const sample *s, int n, int depth)
             if (!(k >= a->x && k <= b->x)) k = 0.5 * (a->x + b->x);
             for (int c = 0; c < NF; c++)
                 L->sum[c] += (k - a->x) * a->f[c] + (b->x - k) * b->f[c];
-            add_piece(L, a->sig, a->set, a->x, k);
-            add_piece(L, b->sig, b->set, k, b->x);
+            add_piece(L, a, a->x, k);
+            add_piece(L, b, k, b->x);
             start = *b;
         }
     }
@@ -607,6 +608,8 @@ typedef struct line {
     uint64_t seq;
     int np;
     piece *p;
+    iv_bound *b;      /* its pieces' boundaries (piece.fo, nf) */
+    double (*org)[3]; /* and the origins of their rays */
 } line;
 
 /* A primitive's box seen along a pass's direction. */
@@ -641,7 +644,7 @@ typedef struct pass {
     /* The boundaries of its rays (sample.fo, nf), followed (forms) once
      * asked to (state: 0 not yet, 1 done, 2 not on a quadric). */
     iv_bound *bounds;
-    double *at; /* the u of each one's ray */
+    double (*org)[3]; /* the origin of each one's ray */
     mesh_form *forms;
     unsigned char *state;
     int nforms, capforms;
@@ -710,9 +713,9 @@ static int grow_forms(pass *P, int n)
     size_t cap = 2 * ((size_t)P->nforms + (size_t)n);
     iv_bound *b = realloc(P->bounds, cap * sizeof *b);
     if (b) P->bounds = b;
-    double *at = b ? realloc(P->at, cap * sizeof *at) : NULL;
-    if (at) P->at = at;
-    mesh_form *f = at ? realloc(P->forms, cap * sizeof *f) : NULL;
+    double(*org)[3] = b ? realloc(P->org, cap * sizeof *org) : NULL;
+    if (org) P->org = org;
+    mesh_form *f = org ? realloc(P->forms, cap * sizeof *f) : NULL;
     if (f) P->forms = f;
     unsigned char *st = f ? realloc(P->state, cap) : NULL;
     if (!st) return -1;
@@ -729,15 +732,13 @@ static int forms_of(pass *P, const sample *s)
     for (int i = s->fo; i < s->fo + s->nf; i++) {
         if (P->state[i] == 0) {
             const iv_bound *b = &P->bounds[i];
-            double o[3];
-            for (int k = 0; k < 3; k++)
-                o[k] = P->frame.p0[k] + P->at[i] * P->frame.e1[k];
+            const double *o = P->org[i];
+            double x[3] = {o[0] + b->t * P->d[0], o[1] + b->t * P->d[1], o[2] + b->t * P->d[2]};
             iv_quadric q;
             uint64_t face = (uint64_t)(uint32_t)b->prim << 32 | (uint64_t)b->part << 1 | b->flip;
             P->state[i] = csg_scene_quadric(P->s, b, o, P->d, &q) == 0 ? 1 : 2;
             if (P->state[i] == 1)
-                mesh_form_init(&P->forms[i], &q, &P->frame, P->at[i], b->t,
-                               (i - s->fo) & 1 ? 1 : -1, face);
+                mesh_form_init(&P->forms[i], &q, &P->frame, x, (i - s->fo) & 1 ? 1 : -1, face);
         }
         if (P->state[i] == 2) return -1;
     }
@@ -772,7 +773,8 @@ static int ray_eval(void *ctx, sample *sm)
             P->bounds[P->nforms] = l.v[i].enter;
             P->bounds[P->nforms + 1] = l.v[i].exit;
             P->state[P->nforms] = P->state[P->nforms + 1] = 0;
-            P->at[P->nforms] = P->at[P->nforms + 1] = u;
+            memcpy(P->org[P->nforms], o, sizeof o);
+            memcpy(P->org[P->nforms + 1], o, sizeof o);
             P->nforms += 2;
         }
         sm->nf = 2 * l.n;
@@ -903,6 +905,32 @@ static double event_like(const event_at *le, int ln, const event_at *e)
 
 #define LINE_EVENTS 256
 
+/* Where the event between pieces k and k + 1 of line l lies on the
+ * current line (P->frame), foreseen from their boundaries: the foreseen
+ * place nearest guess within window of it; NAN where none. */
+static double exact_event(pass *P, const line *l, int k, double guess, double window)
+{
+    const piece *q[2] = {&l->p[k], &l->p[k + 1]};
+    if (q[0]->nf < 0 || q[1]->nf < 0 || grow_forms(P, q[0]->nf + q[1]->nf) != 0) return NAN;
+    sample s[2];
+    for (int j = 0; j < 2; j++) {
+        s[j].fo = P->nforms;
+        s[j].nf = q[j]->nf;
+        for (int i = 0; i < q[j]->nf; i++) {
+            P->bounds[P->nforms] = l->b[q[j]->fo + i];
+            memcpy(P->org[P->nforms], l->org[q[j]->fo + i], sizeof *P->org);
+            P->state[P->nforms++] = 0;
+        }
+    }
+    if (forms_of(P, &s[0]) != 0 || forms_of(P, &s[1]) != 0) return NAN;
+    double x[FORESEEN], best = NAN;
+    int n = mesh_forms_events(P->forms + s[0].fo, s[0].nf, P->forms + s[1].fo, s[1].nf,
+                              guess - window, guess + window, x, FORESEEN);
+    for (int i = 0; i < n; i++)
+        if (!(fabs(best - guess) <= fabs(x[i] - guess))) best = x[i];
+    return best;
+}
+
 /* Hints for the line at v from the events of the lines about it (ls[0..3]:
  * two below v and two above, nearest in the middle; NULL where none): each
  * event of the nearest line below (ls[1]) that the nearest above has too,
@@ -913,8 +941,8 @@ static double event_like(const event_at *le, int ln, const event_at *e)
  * passes another) share their other events: matched one by one, those are
  * foreseen too (a quick line bracketing an event across the lines had
  * none, and its every event started from the first samples). */
-static void event_hints(const line *const ls[4], double v, double pair, double span, double *h,
-                        int *n, int cap)
+static void event_hints(pass *P, const line *const ls[4], double v, double pair, double span,
+                        double *h, int *n, int cap)
 {
     static _Thread_local event_at ev[4][LINE_EVENTS];
     int ne[4] = {0, 0, 0, 0};
@@ -942,9 +970,15 @@ static void event_hints(const line *const ls[4], double v, double pair, double s
             if (d == m - 1 && m > 2) err = fabs(xs[0] - xs[1]);
         }
         double w = fmax(pair, 3 * err);
-        if (!(w < 1e-3 * span)) continue; /* foreseen too roughly to pair */
-        h[(*n)++] = xs[0] - w;
-        h[(*n)++] = xs[0] + w;
+        double x = exact_event(P, ls[1], k, xs[0], fmax(4 * fabs(xs[0] - ev[1][k].x), 16 * w));
+        if (!isnan(x)) {
+            w = 0.4 * P->inner.try_eps; /* a bracket no wider than eps */
+        } else {
+            x = xs[0];
+            if (!(w < 1e-3 * span)) continue; /* foreseen too roughly to pair */
+        }
+        h[(*n)++] = x - w;
+        h[(*n)++] = x + w;
     }
     /* A piece of one nearest line that the other lacks (one of its ends
      * not there) narrows to nothing between them: its ends carried on to v
@@ -981,11 +1015,41 @@ static int line_index(const pass *P, double v)
     return lo;
 }
 
+static void free_line(line *l)
+{
+    free(l->p);
+    free(l->b);
+    free(l->org);
+}
+
+/* Line l's pieces' boundaries copied from the pass's (l->b, l->org; left
+ * NULL, and the pieces without, where there is no room). */
+static void keep_bounds(const pass *P, line *l)
+{
+    int n = 0;
+    for (int k = 0; k < l->np; k++)
+        n += l->p[k].nf > 0 ? l->p[k].nf : 0;
+    l->b = n ? malloc((size_t)n * sizeof *l->b) : NULL;
+    l->org = n ? malloc((size_t)n * sizeof *l->org) : NULL;
+    int m = 0;
+    for (int k = 0; k < l->np; k++) {
+        piece *q = &l->p[k];
+        if (!l->b || !l->org || q->nf < 0) {
+            q->nf = -1;
+            continue;
+        }
+        memcpy(l->b + m, P->bounds + q->fo, (size_t)q->nf * sizeof *l->b);
+        memcpy(l->org + m, P->org + q->fo, (size_t)q->nf * sizeof *l->org);
+        q->fo = m;
+        m += q->nf;
+    }
+}
+
 /* Put line l into the history at index at, replacing one at the same v. */
 static int keep_line(pass *P, int at, line l)
 {
     if (at < P->nlines && P->lines[at].v == l.v) {
-        free(P->lines[at].p);
+        free_line(&P->lines[at]);
         P->lines[at] = l;
         return 0;
     }
@@ -1012,12 +1076,21 @@ static int line_eval(void *ctx, sample *sm)
     double v = sm->x, *f = sm->f;
     uint64_t *sig = &sm->sig;
     sm->slope = NAN; /* set below: d(area of the line's section)/dv */
+    sm->fo = 0;
+    sm->nf = -1; /* (no boundaries across the lines) */
     double ua, ub;
     if (!box_span(&P->box, v, PAD * 2 * P->reach, &ua, &ub)) {
         memset(f, 0, NF * sizeof *f);
         *sig = 0;
         return 0;
     }
+    for (int k = 0; k < 3; k++) {
+        P->frame.p0[k] = P->c[k] + v * P->e2[k] - P->reach * P->d[k];
+        P->frame.e1[k] = P->e1[k];
+        P->frame.e2[k] = P->e2[k];
+        P->frame.d[k] = P->d[k];
+    }
+    P->nforms = 0;
     int lo = line_index(P, v);
     int up = lo < P->nlines && P->lines[lo].v == v ? lo + 1 : lo; /* past itself */
     const line *L0 = lo >= 2 ? &P->lines[lo - 2] : NULL, *L1 = lo >= 1 ? &P->lines[lo - 1] : NULL,
@@ -1032,16 +1105,9 @@ static int line_eval(void *ctx, sample *sm)
     if (L2 && !alike) hints_from(L2, L3, v, P->hints, &n, MAX_HINTS);
     if (L1 && L2) hints_from(L1, L2, v, P->hints, &n, MAX_HINTS);
     const line *ls[4] = {L0, L1, L2, L3};
-    event_hints(ls, v, PAIR * 2 * P->reach, 2 * P->reach, P->hints, &n, MAX_HINTS);
+    event_hints(P, ls, v, PAIR * 2 * P->reach, 2 * P->reach, P->hints, &n, MAX_HINTS);
     seed_hints(P, v, (ub - ua) / SAMPLES, P->hints, &n, MAX_HINTS);
     P->v = v;
-    for (int k = 0; k < 3; k++) {
-        P->frame.p0[k] = P->c[k] + v * P->e2[k] - P->reach * P->d[k];
-        P->frame.e1[k] = P->e1[k];
-        P->frame.e2[k] = P->e2[k];
-        P->frame.d[k] = P->d[k];
-    }
-    P->nforms = 0;
     P->inner.quick = P->outer.bisecting;
     P->inner.hints = P->hints;
     P->inner.nhints = n;
@@ -1068,11 +1134,13 @@ static int line_eval(void *ctx, sample *sm)
         any = 1;
     }
     *sig = changes;
-    line l = {v, seq, P->inner.npieces, malloc((size_t)P->inner.npieces * sizeof(piece))};
+    line l = {v,    seq, P->inner.npieces, malloc((size_t)P->inner.npieces * sizeof(piece)),
+              NULL, NULL};
     if (!l.p) return -1;
     memcpy(l.p, P->inner.pieces, (size_t)l.np * sizeof *l.p);
+    keep_bounds(P, &l);
     if (keep_line(P, lo, l) != 0) {
-        free(l.p);
+        free_line(&l);
         return -1;
     }
     return 0;
@@ -1294,7 +1362,7 @@ static int passes_disagree(const pass *P, double tol)
 static void forget_lines(pass *P)
 {
     for (int i = 0; i < P->nlines; i++)
-        free(P->lines[i].p);
+        free_line(&P->lines[i]);
     P->nlines = 0;
 }
 
@@ -1315,7 +1383,7 @@ static void pass_free(pass *P)
     free(P->seeds);
     free(P->bounds);
     free(P->forms);
-    free(P->at);
+    free(P->org);
     free(P->state);
     if (P->arena) iv_arena_free(P->arena);
 }

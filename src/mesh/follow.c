@@ -17,10 +17,10 @@ static void mat_vec(const double A[3][3], const double x[3], double y[3])
         y[i] = A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];
 }
 
-void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F, double u, double t,
+void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F, const double x[3],
                     double w, uint64_t face)
 {
-    double Ad[3], Ae[3], Ap[3], x[3], g[3];
+    double Ad[3], Ae[3], Ap[3], g[3];
     mat_vec(q->A, F->d, Ad);
     mat_vec(q->A, F->e1, Ae);
     mat_vec(q->A, F->p0, Ap);
@@ -28,7 +28,6 @@ void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F,
         for (int j = 0; j < 3; j++)
             f->A[i][j] = q->A[i][j];
         f->b[i] = q->b[i];
-        x[i] = F->p0[i] + u * F->e1[i] + t * F->d[i];
     }
     f->al = dot3(F->d, Ad);
     f->bu = 2 * dot3(F->e1, Ad);
@@ -122,9 +121,33 @@ static int gap(const mesh_form *f, const mesh_form *g, double u, double *h)
 /* Where f and g meet in (lo, hi): each sign change of their difference
  * over SCAN steps, closed in on by the Illinois rule; into x, their number
  * (at most SCAN). */
+/* Whether f is a plane: its t linear in u. */
+static int flat(const mesh_form *f)
+{
+    return f->al == 0 && f->bu == 0 && f->cu2 == 0 && f->bt != 0;
+}
+
+/* Where plane p meets quadric g in (lo, hi): p's t = αu + β put into g's
+ * quadratic, a quadratic in u; its roots where g's root is the one followed
+ * (∂q/∂t of g's sign there).  Into x, their number. */
+static int plane_meets(const mesh_form *p, const mesh_form *g, double lo, double hi, double *x)
+{
+    double al = -p->cu1 / p->bt, be = -p->c0 / p->bt, r[2];
+    int n = quadratic_in(g->al * al * al + g->bu * al + g->cu2,
+                         2 * g->al * al * be + g->bu * be + g->bt * al + g->cu1,
+                         g->al * be * be + g->bt * be + g->c0, lo, hi, r),
+        m = 0;
+    for (int i = 0; i < n; i++) {
+        double t = al * r[i] + be, dq = 2 * g->al * t + g->bu * r[i] + g->bt;
+        if ((dq < 0) == (g->s < 0)) x[m++] = r[i];
+    }
+    return m;
+}
+
 static int meetings(const mesh_form *f, const mesh_form *g, double lo, double hi, double *x)
 {
     int n = 0;
+    if (flat(f) != flat(g)) return flat(f) ? plane_meets(f, g, lo, hi, x) : plane_meets(g, f, lo, hi, x);
     if (f->al == 0 && g->al == 0 && f->bu == 0 && g->bu == 0) {
         /* two planes: their difference is linear in u */
         double hl, hh;

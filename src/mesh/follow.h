@@ -32,9 +32,11 @@ typedef struct mesh_form {
     uint64_t face;                   /* which surface (prim, part, flip) */
 } mesh_form;
 
-/* The boundary at t on the ray u of line F, on surface q (its gradient
- * pointing out of the solid), leaving (w = 1) or entering (w = −1). */
-void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F, double u, double t,
+/* The boundary through world point x on surface q (its gradient pointing
+ * out of the solid), the rays of line F leaving (w = 1) or entering
+ * (w = −1) there, followed along F's rays: the root of x's side.  x may be
+ * on another line's ray. */
+void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F, const double x[3],
                     double w, uint64_t face);
 
 /* Its t on the ray u: 0, or -1 past its silhouette. */

@@ -49,7 +49,8 @@ static int trace_forms(const csg_scene *s, const mesh_line_frame *F, double u, i
         iv_quadric q;
         cr_assert_eq(csg_scene_quadric(s, b, o, F->d, &q), 0);
         uint64_t face = (uint64_t)(uint32_t)b->prim << 32 | (uint64_t)b->part << 1 | b->flip;
-        mesh_form_init(&f[i], &q, F, u, b->t, i & 1 ? 1 : -1, face);
+        double x[3] = {o[0] + b->t * F->d[0], o[1] + b->t * F->d[1], o[2] + b->t * F->d[2]};
+        mesh_form_init(&f[i], &q, F, x, i & 1 ? 1 : -1, face);
     }
     return 2 * l->n;
 }
