@@ -329,7 +329,7 @@ static int panel(level *L, const sample *l, const sample *r, int depth)
     }
     if (err_norm(L, k, g, fv, wj, w) > L->tol * w && depth < MAX_DEPTH && w > L->eps) {
         sample m[3] = {*l, {.x = 0.5 * (l->x + r->x)}, *r};
-        if (L->eval(L->ctx, &m[1]) != 0) return -1;
+        if (eval_like(L, &m[1], l) != 0) return -1;
         if (m[1].sig != l->sig) return stretch(L, m, 3, depth + 1);
         if (panel(L, l, &m[1], depth + 1) != 0) return -1;
         return panel(L, &m[1], r, depth + 1);

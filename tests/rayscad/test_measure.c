@@ -213,6 +213,27 @@ Test(measure, cube_less_sphere_converges)
     }
 }
 
+/* Curved surfaces that meet each other (quadric with quadric, where the
+ * integration follows both and solves for their meetings): the Steinmetz
+ * solids of two and three perpendicular cylinders. */
+Test(measure, crossed_cylinders)
+{
+    const double r = 5, r3 = r * r * r;
+    rayscad_measurement m = measure("intersection() { cylinder(r = 5, h = 20, center = true);"
+                                    " rotate([90, 0, 0]) cylinder(r = 5, h = 20, center = true); }",
+                                    0);
+    near(m.volume, 16 * r3 / 3, 1e-6, "bicylinder volume");
+    near(m.area, 16 * r * r, 1e-6, "bicylinder area");
+    m = measure("intersection() { cylinder(r = 5, h = 20, center = true);"
+                " rotate([90, 0, 0]) cylinder(r = 5, h = 20, center = true);"
+                " rotate([0, 90, 0]) cylinder(r = 5, h = 20, center = true); }",
+                0);
+    near(m.volume, 8 * (2 - sqrt(2)) * r3, 1e-6, "tricylinder volume");
+    near(m.area, 24 * (2 - sqrt(2)) * r * r, 1e-6, "tricylinder area");
+    for (int k = 0; k < 3; k++)
+        near_abs(m.centroid[k], 0, 1e-6 * r, "tricylinder centroid");
+}
+
 Test(measure, bench_part_volume)
 {
     rayscad_measurement m = measure("difference() { cube(20, center = true); sphere(11);"
