@@ -930,11 +930,21 @@ static double exact_event(pass *P, const line *l, int k, double guess, double wi
         }
     }
     if (forms_of(P, &s[0]) != 0 || forms_of(P, &s[1]) != 0) return NAN;
-    double x[FORESEEN], best = NAN;
+    double x[FORESEEN], best = NAN, w = 0.4 * P->inner.try_eps, span = 2 * P->reach;
     int n = mesh_forms_events(P->forms + s[0].fo, s[0].nf, P->forms + s[1].fo, s[1].nf,
                               guess - window, guess + window, x, FORESEEN);
-    for (int i = 0; i < n; i++)
-        if (!(fabs(best - guess) <= fabs(x[i] - guess))) best = x[i];
+    for (int i = 0; i < n; i++) {
+        if (fabs(best - guess) <= fabs(x[i] - guess)) continue;
+        /* the length of solid is continuous at an event (no face lies
+         * along the rays): the two pieces' just either side of it alike,
+         * where at the silhouette of a face that neither side's
+         * boundaries meet there they are not */
+        mesh_follow_sums lo, hi;
+        if (mesh_forms_sums(P->forms + s[0].fo, s[0].nf, &P->frame, x[i] - w, &lo) == 0 &&
+            mesh_forms_sums(P->forms + s[1].fo, s[1].nf, &P->frame, x[i] + w, &hi) == 0 &&
+            fabs(lo.len - hi.len) <= 1e-5 * span)
+            best = x[i];
+    }
     return best;
 }
 
