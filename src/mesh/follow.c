@@ -147,7 +147,8 @@ static int plane_meets(const mesh_form *p, const mesh_form *g, double lo, double
 static int meetings(const mesh_form *f, const mesh_form *g, double lo, double hi, double *x)
 {
     int n = 0;
-    if (flat(f) != flat(g)) return flat(f) ? plane_meets(f, g, lo, hi, x) : plane_meets(g, f, lo, hi, x);
+    if (flat(f) != flat(g))
+        return flat(f) ? plane_meets(f, g, lo, hi, x) : plane_meets(g, f, lo, hi, x);
     if (f->al == 0 && g->al == 0 && f->bu == 0 && g->bu == 0) {
         /* two planes: their difference is linear in u */
         double hl, hh;
