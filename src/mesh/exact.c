@@ -106,6 +106,7 @@
 /* Boundaries kept per line to follow (40 bytes each, 200 once followed);
  * the rays past that are not followed. */
 #define MAX_FORMS (1 << 16)
+#define FOLLOWS_PER_RAY 8 /* followed samples that count as a ray against the budget */
 
 /* A stretch of one signature along a line, and its set of faces. */
 typedef struct piece {
@@ -632,7 +633,8 @@ typedef struct pass {
     seed box; /* the model's box seen along d */
     iv_arena *arena;
     long long count;
-    double v; /* the current line's v */
+    long long followed; /* samples followed (see follow_eval) */
+    double v;           /* the current line's v */
     level inner, outer;
     line *lines; /* the lines integrated, by v */
     int nlines, caplines;
@@ -719,6 +721,23 @@ static uint64_t face_of(const iv_bound *b)
     return (uint64_t)(uint32_t)b->prim << 32 | (uint64_t)b->part << 1 | b->flip;
 }
 
+/* Whether the pass may not go on: its budget spent (P->over) or its
+ * limits' hook says stop (P->cancelled), asked every 4096th time
+ * (n counts the times). */
+static int out_of_budget(pass *P, long long n)
+{
+    if (P->budget >= 0 && P->spent >= P->budget) {
+        P->over = 1;
+        return 1;
+    }
+    if ((n & 4095) == 0 && P->limits->cancelled &&
+        (P->cancelled || P->limits->cancelled(P->limits->cancel_ud))) {
+        P->cancelled = 1;
+        return 1;
+    }
+    return 0;
+}
+
 /* Room for n more boundaries; 0 or -1. */
 static int grow_forms(pass *P, int n)
 {
@@ -767,16 +786,7 @@ static int ray_eval(void *ctx, sample *sm)
         o[k] = P->c[k] + u * P->e1[k] + P->v * P->e2[k] - P->reach * P->d[k];
     iv_arena_reset(P->arena);
     iv_list l;
-    if (P->budget >= 0 && P->spent >= P->budget) {
-        P->over = 1;
-        return -1;
-    }
-    if ((P->count & 4095) == 0 && P->limits->cancelled &&
-        (P->cancelled || P->limits->cancelled(P->limits->cancel_ud))) {
-        P->cancelled = 1;
-        return -1;
-    }
-    P->count++;
+    if (out_of_budget(P, P->count++)) return -1;
     if (csg_trace(P->s, P->root, o, P->d, 0, 2 * P->reach, P->arena, &l) != 0) return -1;
     P->spent += 1 + l.n / RAY_INTERVALS;
     sm->fo = P->nforms;
@@ -837,6 +847,11 @@ static int ray_eval(void *ctx, sample *sm)
 static int follow_eval(void *ctx, sample *s, const sample *like)
 {
     pass *P = ctx;
+    /* Following costs no ray, but it is not free: every FOLLOWS_PER_RAY
+     * count one against the budget, so that no integrand a panel cannot
+     * settle runs on unbounded. */
+    if (out_of_budget(P, P->followed)) return -1;
+    if (++P->followed % FOLLOWS_PER_RAY == 0) P->spent++;
     mesh_follow_sums m;
     if (forms_of(P, like) != 0 ||
         mesh_forms_sums(P->forms + like->fo, like->nf, &P->frame, s->x, &m) != 0)
