@@ -118,9 +118,6 @@ static int gap(const mesh_form *f, const mesh_form *g, double u, double *h)
     return 0;
 }
 
-/* Where f and g meet in (lo, hi): each sign change of their difference
- * over SCAN steps, closed in on by the Illinois rule; into x, their number
- * (at most SCAN). */
 /* Whether f is a plane: its t linear in u. */
 static int flat(const mesh_form *f)
 {
@@ -144,6 +141,10 @@ static int plane_meets(const mesh_form *p, const mesh_form *g, double lo, double
     return m;
 }
 
+/* Where f and g meet in (lo, hi), into x; their number (at most SCAN + 1).
+ * Two planes: where their difference, linear in u, is zero; a plane and a
+ * quadric: plane_meets; two quadrics: each sign change of their difference
+ * over SCAN steps, closed in on by the Illinois rule. */
 static int meetings(const mesh_form *f, const mesh_form *g, double lo, double hi, double *x)
 {
     int n = 0;
