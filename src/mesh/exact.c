@@ -511,8 +511,13 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
                 L->misled = 1;
                 return 0;
             }
+            /* (an end that had not moved is its own line again: no width
+             * between the two, and nothing to bracket; its signature may
+             * differ once more, and bracketing that recursed to MAX_DEPTH
+             * on one line: the tricylinder's ten thousand brackets) */
             for (int i = 0; i < 3; i++)
-                if (s[i].sig != s[i + 1].sig && bracket(L, &s[i], &s[i + 1], depth + 1, E) != 0)
+                if (s[i].sig != s[i + 1].sig && s[i + 1].x > s[i].x &&
+                    bracket(L, &s[i], &s[i + 1], depth + 1, E) != 0)
                     return -1;
             return 0;
         }
