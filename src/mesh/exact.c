@@ -782,13 +782,38 @@ static int forms_of(pass *P, const sample *s)
     return 0;
 }
 
+/* The origin of the current line's ray u. */
+static void ray_origin(const pass *P, double u, double o[3])
+{
+    for (int k = 0; k < 3; k++)
+        o[k] = P->c[k] + u * P->e1[k] + P->v * P->e2[k] - P->reach * P->d[k];
+}
+
+/* s's values from what its ray (from o) crosses: the moments about c, as
+ * p − c = (o − c) + t d. */
+static void put_sums(const pass *P, sample *s, const double o[3], const mesh_follow_sums *m)
+{
+    s->f[0] = m->len;
+    for (int k = 0; k < 3; k++)
+        s->f[1 + k] = (o[k] - P->c[k]) * m->len + P->d[k] * m->tt;
+    s->f[4] = m->area;
+    s->f[5] = m->across;
+    s->slope = m->slope;
+}
+
+/* Boundary b of the ray from o onto the pass's list (room made). */
+static void push_bound(pass *P, const iv_bound *b, const double o[3])
+{
+    P->bounds[P->nforms] = *b;
+    memcpy(P->org[P->nforms], o, sizeof *P->org);
+    P->state[P->nforms++] = 0;
+}
+
 static int ray_eval(void *ctx, sample *sm)
 {
     pass *P = ctx;
-    double u = sm->x, *f = sm->f;
-    double o[3];
-    for (int k = 0; k < 3; k++)
-        o[k] = P->c[k] + u * P->e1[k] + P->v * P->e2[k] - P->reach * P->d[k];
+    double u = sm->x, o[3];
+    ray_origin(P, u, o);
     iv_arena_reset(P->arena);
     iv_list l;
     if (out_of_budget(P, P->count++)) return -1;
@@ -798,26 +823,22 @@ static int ray_eval(void *ctx, sample *sm)
     sm->nf = -1;
     if (P->nforms + 2 * l.n <= MAX_FORMS && grow_forms(P, 2 * l.n) == 0) {
         for (int i = 0; i < l.n; i++) {
-            P->bounds[P->nforms] = l.v[i].enter;
-            P->bounds[P->nforms + 1] = l.v[i].exit;
-            P->state[P->nforms] = P->state[P->nforms + 1] = 0;
-            memcpy(P->org[P->nforms], o, sizeof o);
-            memcpy(P->org[P->nforms + 1], o, sizeof o);
-            P->nforms += 2;
+            push_bound(P, &l.v[i].enter, o);
+            push_bound(P, &l.v[i].exit, o);
         }
         sm->nf = 2 * l.n;
     }
-    double len = 0, tt = 0, area = 0, slope = 0, across = 0;
+    mesh_follow_sums m = {0, 0, 0, 0, 0};
     uint64_t h = 0x2545f4914f6cdd1dULL, set = 0;
     for (int i = 0; i < l.n; i++)
         for (int e = 0; e < 2; e++) {
             const iv_bound *b = e ? &l.v[i].exit : &l.v[i].enter;
             double n[3];
             csg_scene_normal(P->s, b, o, P->d, n);
-            area += fabs(dot3(n, P->d));
+            m.area += fabs(dot3(n, P->d));
             /* t on the plane of b as u moves: dt/du = −(n·e1)/(n·d) */
-            slope += (e ? -1 : 1) * dot3(n, P->e1) / dot3(n, P->d);
-            across += (e ? -1 : 1) * dot3(n, P->e2) / dot3(n, P->d);
+            m.slope += (e ? -1 : 1) * dot3(n, P->e1) / dot3(n, P->d);
+            m.across += (e ? -1 : 1) * dot3(n, P->e2) / dot3(n, P->d);
             uint64_t face = face_of(b);
             h = mix(h, face);
             set += mix(0, face);
@@ -832,17 +853,11 @@ static int ray_eval(void *ctx, sample *sm)
             }
             if (e) {
                 double t0 = l.v[i].enter.t, t1 = b->t;
-                len += t1 - t0;
-                tt += 0.5 * (t1 * t1 - t0 * t0);
+                m.len += t1 - t0;
+                m.tt += 0.5 * (t1 * t1 - t0 * t0);
             }
         }
-    /* moments about c: p − c = (o − c) + t d */
-    f[0] = len;
-    for (int k = 0; k < 3; k++)
-        f[1 + k] = (o[k] - P->c[k]) * len + P->d[k] * tt;
-    f[4] = area;
-    f[5] = across;
-    sm->slope = slope;
+    put_sums(P, sm, o, &m);
     sm->sig = h;
     sm->set = set;
     return 0;
@@ -861,14 +876,9 @@ static int follow_eval(void *ctx, sample *s, const sample *like)
     if (forms_of(P, like) != 0 ||
         mesh_forms_sums(P->forms + like->fo, like->nf, &P->frame, s->x, &m) != 0)
         return 1;
-    s->f[0] = m.len;
-    for (int k = 0; k < 3; k++) {
-        double oc = s->x * P->e1[k] + P->v * P->e2[k] - P->reach * P->d[k]; /* o − c */
-        s->f[1 + k] = oc * m.len + P->d[k] * m.tt;
-    }
-    s->f[4] = m.area;
-    s->f[5] = m.across;
-    s->slope = m.slope;
+    double o[3];
+    ray_origin(P, s->x, o);
+    put_sums(P, s, o, &m);
     s->sig = like->sig;
     s->set = like->set;
     s->fo = like->fo;
@@ -938,24 +948,34 @@ static double event_like(const event_at *le, int ln, const event_at *e)
 
 #define LINE_EVENTS 256
 
+/* The boundaries of piece k of line l followed on the current line
+ * (P->frame) into s (its fo, nf); 0, or -1 where they cannot be. */
+static int piece_forms(pass *P, const line *l, int k, sample *s)
+{
+    const piece *q = &l->p[k];
+    if (q->nf < 0 || grow_forms(P, q->nf) != 0) return -1;
+    s->fo = P->nforms;
+    s->nf = q->nf;
+    for (int i = 0; i < q->nf; i++)
+        push_bound(P, &l->b[q->fo + i], l->org[q->fo + i]);
+    return forms_of(P, s);
+}
+
 /* Where the event between pieces k and k + 1 of line l lies on the
  * current line (P->frame), foreseen from their boundaries: the foreseen
- * place nearest guess within window of it; NAN where none. */
-static double exact_event(pass *P, const line *l, int k, double guess, double window)
+ * place nearest guess within window of it; NAN where none.  *last holds
+ * the boundaries of piece *lastk (-1: none), followed by the call before:
+ * piece k's where the events go in order, and piece k + 1's after. */
+static double exact_event(pass *P, const line *l, int k, double guess, double window, sample *last,
+                          int *lastk)
 {
-    const piece *q[2] = {&l->p[k], &l->p[k + 1]};
-    if (q[0]->nf < 0 || q[1]->nf < 0 || grow_forms(P, q[0]->nf + q[1]->nf) != 0) return NAN;
     sample s[2];
-    for (int j = 0; j < 2; j++) {
-        s[j].fo = P->nforms;
-        s[j].nf = q[j]->nf;
-        for (int i = 0; i < q[j]->nf; i++) {
-            P->bounds[P->nforms] = l->b[q[j]->fo + i];
-            memcpy(P->org[P->nforms], l->org[q[j]->fo + i], sizeof *P->org);
-            P->state[P->nforms++] = 0;
-        }
-    }
-    if (forms_of(P, &s[0]) != 0 || forms_of(P, &s[1]) != 0) return NAN;
+    int left = *lastk == k ? 0 : piece_forms(P, l, k, &s[0]);
+    if (*lastk == k) s[0] = *last;
+    *lastk = -1;
+    if (left != 0 || piece_forms(P, l, k + 1, &s[1]) != 0) return NAN;
+    *last = s[1];
+    *lastk = k + 1;
     double x[FORESEEN], best = NAN, w = 0.4 * P->inner.try_eps, span = 2 * P->reach;
     int n = mesh_forms_events(P->forms + s[0].fo, s[0].nf, P->forms + s[1].fo, s[1].nf,
                               guess - window, guess + window, x, FORESEEN);
@@ -992,6 +1012,8 @@ static void event_hints(pass *P, const line *const ls[4], double v, double pair,
     if (!ls[1] || !ls[2]) return;
     for (int i = 0; i < 4; i++)
         if (ls[i]) ne[i] = line_events(ls[i], ev[i], LINE_EVENTS);
+    sample last; /* the boundaries of piece lastk of ls[1] (see exact_event) */
+    int lastk = -1;
     for (int k = 0; k < ne[1] && *n + 2 <= cap; k++) {
         double vs[4], xs[4];
         int m = 0, both = 1; /* the nearest either side both have it */
@@ -1013,7 +1035,8 @@ static void event_hints(pass *P, const line *const ls[4], double v, double pair,
             if (d == m - 1 && m > 2) err = fabs(xs[0] - xs[1]);
         }
         double w = fmax(pair, 3 * err);
-        double x = exact_event(P, ls[1], k, xs[0], fmax(4 * fabs(xs[0] - ev[1][k].x), 16 * w));
+        double x = exact_event(P, ls[1], k, xs[0], fmax(4 * fabs(xs[0] - ev[1][k].x), 16 * w),
+                               &last, &lastk);
         if (!isnan(x)) {
             w = 0.4 * P->inner.try_eps; /* a bracket no wider than eps */
         } else {

@@ -17,6 +17,14 @@ static void mat_vec(const double A[3][3], const double x[3], double y[3])
         y[i] = A[i][0] * x[0] + A[i][1] * x[1] + A[i][2] * x[2];
 }
 
+/* The gradient 2Ax + b of the surface xᵀAx + b·x + c at x. */
+static void gradient(const double A[3][3], const double b[3], const double x[3], double g[3])
+{
+    mat_vec(A, x, g);
+    for (int i = 0; i < 3; i++)
+        g[i] = 2 * g[i] + b[i];
+}
+
 void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F, const double x[3],
                     double w, uint64_t face)
 {
@@ -35,9 +43,7 @@ void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F,
     f->cu2 = dot3(F->e1, Ae);
     f->cu1 = 2 * dot3(F->p0, Ae) + dot3(q->b, F->e1);
     f->c0 = dot3(F->p0, Ap) + dot3(q->b, F->p0) + q->c;
-    mat_vec(q->A, x, g);
-    for (int i = 0; i < 3; i++)
-        g[i] = 2 * g[i] + q->b[i];
+    gradient(q->A, q->b, x, g);
     f->s = dot3(g, F->d) < 0 ? -1 : 1;
     f->w = w;
     f->face = face;
@@ -74,9 +80,7 @@ int mesh_forms_sums(const mesh_form *f, int n, const mesh_line_frame *F, double 
         last = t;
         for (int k = 0; k < 3; k++)
             x[k] = F->p0[k] + u * F->e1[k] + t * F->d[k];
-        mat_vec(f[i].A, x, g);
-        for (int k = 0; k < 3; k++)
-            g[k] = 2 * g[k] + f[i].b[k];
+        gradient(f[i].A, f[i].b, x, g);
         double gd = dot3(g, F->d), gl = sqrt(dot3(g, g));
         if (!(fabs(gd) > 0) || !((gd < 0) == (f[i].s < 0))) return 1;
         out->len += f[i].w * t;
@@ -150,7 +154,7 @@ static int meetings(const mesh_form *f, const mesh_form *g, double lo, double hi
     int n = 0;
     if (flat(f) != flat(g))
         return flat(f) ? plane_meets(f, g, lo, hi, x) : plane_meets(g, f, lo, hi, x);
-    if (f->al == 0 && g->al == 0 && f->bu == 0 && g->bu == 0) {
+    if (flat(f)) {
         /* two planes: their difference is linear in u */
         double hl, hh;
         if (gap(f, g, lo, &hl) != 0 || gap(f, g, hi, &hh) != 0 || hl == hh) return 0;
