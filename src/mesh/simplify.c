@@ -215,16 +215,29 @@ static const double *P(const simp *s, int32_t v)
     return s->p + 3 * (size_t)v;
 }
 
+/* The costs of collapsing a into b (*ab, at b) and b into a (*ba, at a):
+ * the merged quadric over the merged weight, INFINITY past the
+ * tolerance. */
+static void costs(const simp *s, int32_t a, int32_t b, double *ab, double *ba)
+{
+    quad q = s->q[a];
+    for (int k = 0; k < 10; k++)
+        q.a[k] += s->q[b].a[k];
+    double w = s->w[a] + s->w[b], bound = s->curved[a] && s->curved[b] ? s->tol2 : s->crease_tol2;
+    const double *at[2] = {P(s, b), P(s, a)};
+    double *out[2] = {ab, ba};
+    for (int i = 0; i < 2; i++) {
+        double e = quad_at(&q, at[i]) / (w > 0 ? w : 1);
+        *out[i] = e < 0 ? 0 : e <= bound ? e : INFINITY;
+    }
+}
+
 /* The cost of collapsing v into u, INFINITY past the tolerance. */
 static double cost(const simp *s, int32_t v, int32_t u)
 {
-    quad q = s->q[u];
-    for (int k = 0; k < 10; k++)
-        q.a[k] += s->q[v].a[k];
-    double w = s->w[u] + s->w[v];
-    double e = quad_at(&q, P(s, u)) / (w > 0 ? w : 1);
-    if (e < 0) e = 0;
-    return e <= (s->curved[v] && s->curved[u] ? s->tol2 : s->crease_tol2) ? e : INFINITY;
+    double vu, uv;
+    costs(s, v, u, &vu, &uv);
+    return vu;
 }
 
 /* A number in [0, 1) fixed by edge a–b: the order of edges that cost the
@@ -245,7 +258,8 @@ static double jitter(int32_t a, int32_t b)
 static int push_edge(queue *qu, int32_t a, int32_t b)
 {
     const simp *s = qu->s;
-    double ab = cost(s, a, b), ba = cost(s, b, a);
+    double ab, ba;
+    costs(s, a, b, &ab, &ba);
     if (ab == INFINITY && ba == INFINITY) return 0;
     double l2 = 0;
     for (int k = 0; k < 3; k++)
