@@ -129,6 +129,7 @@ typedef struct simp {
     uint32_t *stamp;
     uint32_t *mark;  /* link-condition marks, of each region's own vertices */
     uint8_t *region; /* each vertex's region: only its queue collapses it */
+    uint8_t *own;    /* while there are regions: owned(v) */
     /* the points taken away: a list per triangle, through pnext */
     int32_t *phead, *ptail, *pnext;
     int32_t *best;   /* scratch: a point's nearest new triangle */
@@ -450,14 +451,17 @@ static int sharp_chord_strays(const simp *s, int32_t v, int32_t u, const int32_t
     return 0;
 }
 
-/* Whether every triangle around v is region r's alone: a collapse there
+/* Whether every triangle around v is its region's alone: a collapse there
  * changes nothing another region's queue reads (its triangles, their
- * vertices' corner lists and points) or writes. */
-static int owned(const simp *s, int r, int32_t v)
+ * vertices' corner lists and points) or writes.  It stays so while the
+ * regions run (a collapse in r gives u only neighbours in r, and a vertex
+ * beside another region's is never collapsed by that one), so it is
+ * worked out once (run_regions, into s->own). */
+static int owned(const simp *s, int32_t v)
 {
     for (int32_t k = s->head[v]; k >= 0; k = s->next[k])
         for (int i = 0; i < 3; i++)
-            if (s->region[s->t[3 * (k / 3) + i]] != r) return 0;
+            if (s->region[s->t[3 * (k / 3) + i]] != s->region[v]) return 0;
     return 1;
 }
 
@@ -468,7 +472,9 @@ static int can_collapse(queue *qu, int32_t v, int32_t u, double c)
 {
     simp *s = qu->s;
     if (s->val[v] + s->val[u] - 4 > FAN_MAX) return 0;
-    if (s->nregions > 1 && !(owned(s, qu->region, v) && owned(s, qu->region, u))) return 0;
+    if (s->nregions > 1 &&
+        !(s->own[v] && s->own[u] && s->region[v] == qu->region && s->region[u] == qu->region))
+        return 0;
     /* the link condition: v and u share exactly the two opposite vertices */
     uint32_t mk = ++qu->mark_now;
     for (int32_t k = s->head[u]; k >= 0; k = s->next[k])
@@ -1053,8 +1059,11 @@ static int run_regions(simp *s, int threads)
         free(tris);
         return -1;
     }
+    if (n > 1 && !(s->own = malloc((size_t)s->nv))) n = 1;
     if (n > 1) {
         s->nregions = n;
+        for (int v = 0; v < s->nv; v++)
+            s->own[v] = (uint8_t)owned(s, v);
         for (int t = 0; t < s->nt; t++) { /* counted, then filled */
             int r = own_region(s, t);
             if (r >= 0) q[r].ntris++;
@@ -1088,6 +1097,8 @@ static int run_regions(simp *s, int threads)
             free(q[r].heap);
         }
         memset(q, 0, sizeof *q);
+        free(s->own);
+        s->own = NULL;
         memset(s->region, 0, (size_t)s->nv);
         memset(s->mark, 0, (size_t)s->nv * sizeof *s->mark);
         s->nregions = 1;
