@@ -1269,7 +1269,7 @@ static int contour_grid(const mesh_dexels *d, const mesh_options *o, mesh *m, ch
         }
     }
     if (o && o->progress && !s.oom) o->progress(o->progress_ud, "contouring", 1);
-    if (s.oom ||
+    if (s.oom || mesh_unbend(m, first_tri, d->h, &s.vn) != 0 ||
         mesh_refine_edges(m, first_tri, o ? o->tolerance : 0, &s.snap, &s.vn, &s.pos) != 0 ||
         mesh_unfold(m, first_tri, d->h) != 0) {
         snprintf(err, errlen, "out of memory contouring (or more than 2^31 vertices)");

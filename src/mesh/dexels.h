@@ -342,6 +342,11 @@ int mesh_snap_probe(mesh_snapper *sn, const double x[3], const double n[3], doub
 int mesh_snap_probe_patch(mesh_snapper *sn, const double x[3], const double n[3], double reach,
                           double min_cos, uint32_t patch, double p[3], double pn[3],
                           uint32_t *found);
+/* mesh_snap_probe (any normal), with the crossing's patch (unflagged)
+ * into *found and the surface it lies on as a quadric into q
+ * (csg_scene_quadric); 0 when there is none. */
+int mesh_snap_probe_quadric(mesh_snapper *sn, const double x[3], const double n[3], double reach,
+                            double p[3], double pn[3], uint32_t *found, iv_quadric *q);
 /* Whether x lies inside the solid (a short ray along axis a through it):
  * 1 or 0; -1 when the sampling has no scene or the ray fails. */
 int mesh_snap_inside(mesh_snapper *sn, const double x[3], int a);
@@ -379,6 +384,12 @@ int mesh_split_creases(mesh *m, mesh_snapper *sn, int *splits);
  * triangles lie back to back, where that leaves fewer such edges
  * (unfold.c); 0 or -1 when out of memory. */
 int mesh_unfold(mesh *m, int t0, double h);
+/* Flip the edges of triangles [t0, m->nt) of m (grid spacing h; vn its
+ * vertices' exact normals and sharp-edge flags) about which two triangles
+ * bend by 30° more than the exact normals of their corners part, where
+ * the flip bends by 30° less and turns neither new triangle away from its
+ * corners' normals (unfold.c); 0 or -1 when out of memory. */
+int mesh_unbend(mesh *m, int t0, double h, const mesh_vnormals *vn);
 /* Flip the long edge of each sliver of m (grid spacing h) whose corner lies
  * within a tenth of that edge's length of its middle, where the surface
  * about it is smooth (no neighbour turned 20° or more) and the flip leaves
@@ -404,7 +415,8 @@ int mesh_simplify(mesh *m, double tol, double edge_tol, mesh_snapper *sn, int th
 int mesh_balance(mesh *m, mesh_snapper *sn, double bound);
 /* Split the triangles of m's smooth parts that stray from the exact
  * surface by more than tol, measured by rays at seven points each (on up
- * to `threads` threads), on their longest edges, for a few rounds
+ * to `threads` threads), on their longest edges, and the sides elsewhere
+ * that cut across a sharp edge by more than tol on it, for a few rounds
  * (tighten.c); 0 or -1 when out of memory. */
 int mesh_tighten(mesh *m, mesh_snapper *sn, double tol, int threads);
 /* Move x (a vertex placed from the ns samples sp, with normals nrm and

@@ -1,7 +1,8 @@
 /*
  * unfold.c — the contour's folds (two triangles back to back across an
- * edge) taken away by flipping that edge (see dexels.h, mesh_unfold), and
- * a simplified mesh's slivers likewise (mesh_unsliver).
+ * edge) taken away by flipping that edge (see dexels.h, mesh_unfold),
+ * edges cut across sharp edges (mesh_unbend) and a simplified mesh's
+ * slivers likewise (mesh_unsliver).
  *
  * Every vertex of the contour lies on the surface, but where a crease or a
  * surface passes close to a grid node, the loops of neighbouring cells can
@@ -15,6 +16,20 @@
  * an edge of four triangles).  Since every flip lowers the count of folded
  * edges, passes end; they stop when one flips nothing, or after PASSES.
  * The mesh's boundary, its vertices and their places do not change.
+ *
+ * Before refine.c splits the contour's edges, an edge cut across a sharp
+ * edge the wrong way is flipped (mesh_unbend): where a rim passes close to
+ * a grid edge, a cell's loop can join a vertex on one surface to one on the
+ * other past two vertices on the rim itself, and the two triangles bend by
+ * 130° to 150° — less than a fold, more than the rim's surfaces part.  An
+ * edge whose two triangles bend by 30° more than the exact normals of the
+ * quad's corners part (those that have one: ray crossings, not points on
+ * the sharp edge) is flipped where the new pair bends by 30° less and
+ * neither new triangle turns 90° or more from a normal of its corners
+ * (refine's splits of such an edge had knotted the rim beyond repair:
+ * bored_cone.scad's mesh 249 samples 4 tolerances or more off the surface
+ * -> 145, its cross hole's side on the cone no longer among them).  Only
+ * triangles with a corner on a sharp edge start it.
  *
  * A sliver the simplifier left on a smooth part (a corner c within a tenth
  * of its longest side ab, above the side's middle) joins c to a vertex that
@@ -33,11 +48,14 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define COS_FOLD (-0.866) /* normals more than 150° apart: folded */
 #define COS_SMOOTH 0.94   /* cos 20° */
 #define SLIVER 0.1        /* a corner this near its opposite side, of its length */
 #define COS_FACING 0.5    /* the surface under a side turned no more than 60° from it */
+#define BENT 0.5236       /* 30°, in radians */
+#define COS_BENT 0.866    /* its cosine */
 #define PASSES 8
 #define AROUND 1024 /* the most edges looked at around a vertex */
 
@@ -55,7 +73,9 @@ struct fold_mesh {
     double (*n)[3]; /* each triangle's unit normal, when has */
     uint8_t *has;
     flip_rule wanted;
-    mesh_snapper *sn; /* the surface (sliver_wanted) */
+    mesh_snapper *sn;        /* the surface (sliver_wanted) */
+    const mesh_vnormals *vn; /* the contour's vertices (bent_wanted) */
+    uint8_t *again;          /* triangles a flip changed or bordered: the next pass's */
 };
 
 static int32_t *corners(const fold_mesh *f, int32_t t)
@@ -244,6 +264,64 @@ static int sliver_wanted(const fold_mesh *f, const quad *q, double n3[3], double
     return sag(f, q->c, q->d, n34) < sag(f, q->a, q->b, n12);
 }
 
+/* Vertex v's exact normal into n (a ray crossing's); 0 when it has none
+ * or lies on a sharp edge. */
+static int crossing_normal(const fold_mesh *f, int32_t v, double n[3])
+{
+    const mesh_vnormals *vn = f->vn;
+    if ((size_t)v >= vn->cap || vn->edge[v]) return 0;
+    for (int k = 0; k < 3; k++)
+        n[k] = vn->n[v][k];
+    return dot3(n, n) > 0.25;
+}
+
+/* Whether vertex v lies on a sharp edge (mesh_snap put it there). */
+static int edge_vertex(const fold_mesh *f, int32_t v)
+{
+    return (size_t)v < f->vn->cap && f->vn->edge[v];
+}
+
+/* The cosine of the widest angle between the exact normals of the quad's
+ * corners that have one (1 when fewer than two have); 0 when a new
+ * triangle, of normal n3 (c, a, d) or n4 (d, b, c), turns 90° or more from
+ * a normal of its corners. */
+static int corner_spread(const fold_mesh *f, const quad *q, const double n3[3], const double n4[3],
+                         double *spread)
+{
+    const int32_t v[4] = {q->a, q->b, q->c, q->d};
+    double n[4][3];
+    int has[4];
+    *spread = 1;
+    for (int i = 0; i < 4; i++) {
+        has[i] = crossing_normal(f, v[i], n[i]);
+        if (!has[i]) continue;
+        double l = sqrt(dot3(n[i], n[i]));
+        for (int k = 0; k < 3; k++)
+            n[i][k] /= l;
+        if (i != 1 && dot3(n3, n[i]) <= 0) return 0; /* c, a, d */
+        if (i != 0 && dot3(n4, n[i]) <= 0) return 0; /* d, b, c */
+        for (int j = 0; j < i; j++)
+            if (has[j]) *spread = fmin(*spread, dot3(n[i], n[j]));
+    }
+    return 1;
+}
+
+/* Whether the quad's triangles bend against each other by BENT more than
+ * the exact normals of their corners part (an edge cut across a sharp
+ * edge the wrong way: a groove or fin about it), and the flip, to normals
+ * n3 and n4, bends by BENT less and turns neither new triangle away from
+ * its corners' normals. */
+static int bent_wanted(const fold_mesh *f, const quad *q, double n3[3], double n4[3])
+{
+    double spread;
+    if (!f->has[q->t] || !f->has[q->u] || dot3(f->n[q->t], f->n[q->u]) > COS_BENT ||
+        !flip_normals(f, q, n3, n4) || !corner_spread(f, q, n3, n4, &spread))
+        return 0;
+    double before = acos(fmax(-1, fmin(1, dot3(f->n[q->t], f->n[q->u]))));
+    double after = acos(fmax(-1, fmin(1, dot3(n3, n4))));
+    return before > acos(spread) + BENT && after < before - BENT;
+}
+
 /* Flip the edge of half-edge x when f->wanted says so and the new edge is
  * not there already; 1 when flipped. */
 static int try_flip(fold_mesh *f, int32_t x)
@@ -263,12 +341,19 @@ static int try_flip(fold_mesh *f, int32_t x)
     link(f, 3 * q.t + 2, 3 * q.u + 2);
     note_normal(f, q.t);
     note_normal(f, q.u);
+    /* the next pass looks at the two and the triangles across them */
+    const int32_t near[6] = {3 * q.t, 3 * q.u, oca, oad, odb, obc};
+    for (int i = 0; i < 6; i++)
+        if (near[i] >= 0) f->again[near[i] / 3] = 1;
     return 1;
 }
 
 /* Flip edges of triangles [t0, m->nt) of m while wanted says so, in up to
- * PASSES passes; 0 or -1 when out of memory. */
-static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *sn)
+ * PASSES passes (the first over the triangles with a corner on a sharp
+ * edge when vn is given, else all; each next one over those a flip
+ * changed or bordered); 0 or -1 when out of memory. */
+static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *sn,
+                    const mesh_vnormals *vn)
 {
     if (m->nt <= t0) return 0;
     size_t nt = (size_t)(m->nt - t0);
@@ -280,33 +365,53 @@ static int flip_all(mesh *m, int t0, double h, flip_rule wanted, mesh_snapper *s
                    malloc(nt * sizeof *f.n),
                    malloc(nt),
                    wanted,
-                   sn};
-    if (!f.opp || !f.n || !f.has || mesh_half_twins(m, t0, f.opp) != 0) {
-        free(f.opp);
-        free(f.n);
-        free(f.has);
-        return -1;
-    }
-    for (size_t t = 0; t < nt; t++)
+                   sn,
+                   vn,
+                   calloc(nt, 1)};
+    uint8_t *look = malloc(nt);
+    int rc = -1;
+    if (!f.opp || !f.n || !f.has || !f.again || !look || mesh_half_twins(m, t0, f.opp) != 0)
+        goto done;
+    for (size_t t = 0; t < nt; t++) {
         note_normal(&f, (int32_t)t);
+        look[t] = 1;
+        if (!vn) continue;
+        /* the contour's folds across sharp edges: a corner on one */
+        const int32_t *tv = corners(&f, (int32_t)t);
+        look[t] = edge_vertex(&f, tv[0]) || edge_vertex(&f, tv[1]) || edge_vertex(&f, tv[2]);
+    }
     for (int pass = 0; pass < PASSES; pass++) {
         int flipped = 0;
-        for (size_t x = 0; x < 3 * nt; x++)
-            flipped += try_flip(&f, (int32_t)x);
+        for (size_t t = 0; t < nt; t++)
+            for (int k = 0; k < 3 && look[t]; k++)
+                flipped += try_flip(&f, (int32_t)(3 * t + (size_t)k));
         if (!flipped) break;
+        uint8_t *swap = look;
+        look = f.again;
+        f.again = swap;
+        memset(f.again, 0, nt);
     }
+    rc = 0;
+done:
     free(f.opp);
     free(f.n);
     free(f.has);
-    return 0;
+    free(f.again);
+    free(look);
+    return rc;
 }
 
 int mesh_unfold(mesh *m, int t0, double h)
 {
-    return flip_all(m, t0, h, fold_wanted, NULL);
+    return flip_all(m, t0, h, fold_wanted, NULL, NULL);
+}
+
+int mesh_unbend(mesh *m, int t0, double h, const mesh_vnormals *vn)
+{
+    return flip_all(m, t0, h, bent_wanted, NULL, vn);
 }
 
 int mesh_unsliver(mesh *m, mesh_snapper *sn, double h)
 {
-    return flip_all(m, 0, h, sliver_wanted, sn);
+    return flip_all(m, 0, h, sliver_wanted, sn, NULL);
 }

@@ -12,7 +12,8 @@
 # the bench part and a sphere at --mesh-size 0.25 --mesh-tolerance 0.008
 # must lie within the tolerance; two models' exact surfaces (surface_d:
 # their sharp rims and corners) within its default tolerance of their
-# meshes, nineteen models' meshes and surfaces (within_d: revolve_faceted's
+# meshes, and their meshes' samples beyond it a stated share
+# (surface_share), nineteen models' meshes and surfaces (within_d: revolve_faceted's
 # two faceted revolves that touch at a point, exact as a plane-faced part
 # once src/geom/pinch.c kept them apart; svg_import's
 # overlapping extrusions, exact as a plane-faced part; faceted_prisms's
@@ -79,6 +80,8 @@ tips="acute_tips"
 # the models whose exact surface alone is within it (their meshes still
 # stray beyond it at folds about rims and corners)
 surface_d="bored_cone rotated_box_pin"
+# and the most of their meshes' samples beyond it, in percent
+declare -A surface_share=([bored_cone]=0.25 [rotated_box_pin]=0.12)
 printf '%-24s %10s %10s %8s %7s %6s %8s %8s %8s %8s\n' model "vol ours" "vol oscad" "dvol" \
     hausdf "/h" "tri ours" "tri osc" "t ours" "t oscad"
 for f in "$models"/*.scad; do
@@ -121,6 +124,13 @@ for f in "$models"/*.scad; do
         d1=$(tolerance_of "$tmp/$name.json")
         "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --surface-only \
             --name "$name surface, D" || failed=$((failed + 1))
+        # and the mesh's samples beyond it a small share, both ways (bored_cone:
+        # 0.33 % before the contour's edges cut across its rims were flipped
+        # along them, mesh_unbend, and mesh_tighten split the sides still
+        # cutting across them on the sharp edge, 0.20 % after)
+        share=${surface_share[$name]}
+        "$meshdev" "$f" "$tmp/$name.stl" --tolerance "$d1" --share "$share" \
+            --name "$name, D, at most $share %" || failed=$((failed + 1))
         ;;
     esac
     case " $within_d " in *" $name "*)
