@@ -71,44 +71,89 @@ int mesh_vertex_fans(const mesh *m, int32_t t0, int32_t **start, int32_t **fan)
     return 0;
 }
 
+/* The half-edges between a vertex a and its neighbours of higher index, one
+ * entry each: the neighbour, the half-edge, whether it runs from a (2: a
+ * side from a to a, of a triangle with a corner twice). */
+typedef struct side {
+    int32_t other, x;
+    int out;
+} side;
+
 int mesh_half_twins(const mesh *m, int32_t t0, int32_t *opp)
 {
-    /* Half-edge x (a → b) pairs with the last earlier b → a that found
-     * no twin when it came, if that is still unpaired: the twins of a
-     * manifold mesh, and a fixed choice where more than two triangles share
-     * an edge.  The candidates are among the triangles about a (its fan,
-     * in the order the triangles were made: a map of the edges visited its
-     * slots at random, most of the time this took). */
+    /* Half-edge x (a → b) pairs with the last earlier b → a that found no
+     * twin when it came, if that is still unpaired: the twins of a manifold
+     * mesh, and a fixed choice where more than two triangles share an edge.
+     * Each edge's half-edges are gathered once, at its lower end, from that
+     * vertex's fan (in the order the triangles were made), and taken in
+     * their order there. */
     size_t nt = (size_t)(m->nt > t0 ? m->nt - t0 : 0);
     int32_t *start, *fan;
-    uint8_t *waits = calloc(3 * nt + 1, 1); /* found no twin when it came */
+    uint8_t *waits = calloc(3 * nt + 1, 1);
+    side *s = NULL;
+    size_t cap = 0;
     if (!waits || mesh_vertex_fans(m, t0, &start, &fan) != 0) {
         free(waits);
         return -1;
     }
-    for (size_t x = 0; x < 3 * nt; x++) {
-        const int32_t *tx = &m->t[3 * ((size_t)t0 + x / 3)];
-        int32_t a = tx[x % 3], b = tx[(x % 3 + 1) % 3], best = -1;
+    int rc = 0;
+    for (size_t x = 0; x < 3 * nt; x++)
+        opp[x] = -1;
+    for (int32_t a = 0; a < m->nv && rc == 0; a++) {
+        size_t n = 0, need = 2 * (size_t)(start[a + 1] - start[a]);
+        if (need > cap) {
+            side *g = realloc(s, need * sizeof *g);
+            if (!g) {
+                rc = -1;
+                break;
+            }
+            s = g;
+            cap = need;
+        }
         for (int32_t f = start[a]; f < start[a + 1]; f++) {
-            const int32_t *ty = &m->t[3 * (size_t)fan[f]];
+            if (f > start[a] && fan[f] == fan[f - 1]) continue; /* a corner twice */
+            const int32_t *tv = &m->t[3 * (size_t)fan[f]];
             for (int k = 0; k < 3; k++) {
-                int32_t y = 3 * (fan[f] - t0) + k;
-                if (ty[k] == b && ty[(k + 1) % 3] == a && (size_t)y < x && waits[y] && y > best)
-                    best = y;
+                int32_t p = tv[k], q = tv[(k + 1) % 3], x = 3 * (fan[f] - t0) + k;
+                if (p == a && q == a)
+                    s[n++] = (side){a, x, 2}; /* a degenerate side: its own twin's kind */
+                else if (p == a && q > a)
+                    s[n++] = (side){q, x, 1};
+                else if (q == a && p > a)
+                    s[n++] = (side){p, x, 0};
             }
         }
-        opp[x] = -1;
-        if (best >= 0 && opp[best] < 0) {
-            opp[x] = best;
-            opp[best] = (int32_t)x;
-        } else {
-            waits[x] = 1;
+        /* by neighbour, then half-edge (insertion: a fan is a few) */
+        for (size_t i = 1; i < n; i++) {
+            side e = s[i];
+            size_t j = i;
+            for (; j > 0 &&
+                   (s[j - 1].other > e.other || (s[j - 1].other == e.other && s[j - 1].x > e.x));
+                 j--)
+                s[j] = s[j - 1];
+            s[j] = e;
+        }
+        for (size_t i = 0; i < n; i++) {
+            int32_t best = -1;
+            for (size_t j = i; j-- > 0 && s[j].other == s[i].other;)
+                if ((s[j].out != s[i].out || s[i].out == 2) && waits[s[j].x]) {
+                    best = s[j].x;
+                    break;
+                }
+            int32_t x = s[i].x;
+            if (best >= 0 && opp[best] < 0) {
+                opp[x] = best;
+                opp[best] = x;
+            } else {
+                waits[x] = 1;
+            }
         }
     }
+    free(s);
     free(start);
     free(fan);
     free(waits);
-    return 0;
+    return rc;
 }
 
 void mesh_triangle_normal(const mesh *m, int32_t t, double n[3])

@@ -1283,3 +1283,69 @@ Test(mesh_simplify, colour_borders_keep_their_course)
     mesh_free(m);
     csg_scene_free(s);
 }
+
+static uint32_t xorshift(uint32_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 17;
+    *s ^= *s << 5;
+    return *s;
+}
+
+/* The twins rule, read off all earlier half-edges (quadratic): x = a → b
+ * pairs with the last earlier b → a that found no twin when it came, if
+ * that one is still unpaired. */
+static void twins_by_rule(const int32_t *t, int nt, int t0, int32_t *opp)
+{
+    int n = 3 * (nt - t0);
+    uint8_t waits[3 * 24] = {0};
+    for (int x = 0; x < n; x++) {
+        const int32_t *tx = t + 3 * t0 + x / 3 * 3;
+        int32_t a = tx[x % 3], b = tx[(x % 3 + 1) % 3], best = -1;
+        for (int y = 0; y < x; y++) {
+            const int32_t *ty = t + 3 * t0 + y / 3 * 3;
+            if (ty[y % 3] == b && ty[(y % 3 + 1) % 3] == a && waits[y]) best = y;
+        }
+        opp[x] = -1;
+        if (best >= 0 && opp[best] < 0) {
+            opp[x] = best;
+            opp[best] = x;
+        } else {
+            waits[x] = 1;
+        }
+    }
+}
+
+Test(mesh_topology, half_twins_follow_their_rule)
+{
+    /* random triangles over a few vertices: edges of one, two, three and
+     * more triangles either way, triangles with a corner twice, and a
+     * first triangle t0 past the start */
+    uint32_t r = 12345;
+    for (int trial = 0; trial < 5000; trial++) {
+        int32_t t[3 * 24], want[3 * 24], got[3 * 24];
+        float v[3 * 10] = {0};
+        int nv = 3 + (int)(xorshift(&r) % 8), nt = 1 + (int)(xorshift(&r) % 24);
+        for (int i = 0; i < nt; i++) {
+            /* one in eight with a corner twice (a reader's degenerate facet) */
+            int twice = xorshift(&r) % 8 == 0;
+            int32_t a = (int32_t)(xorshift(&r) % (uint32_t)nv), b, c;
+            do
+                b = (int32_t)(xorshift(&r) % (uint32_t)nv);
+            while (b == a && !twice);
+            do
+                c = (int32_t)(xorshift(&r) % (uint32_t)nv);
+            while ((c == a || c == b) && !twice);
+            t[3 * i] = a, t[3 * i + 1] = b, t[3 * i + 2] = c;
+        }
+        int t0 = (int)(xorshift(&r) % (uint32_t)nt);
+        mesh *m = mesh_new_from_arrays(v, nv, t, nt);
+        cr_assert_not_null(m);
+        cr_assert_eq(mesh_half_twins(m, t0, got), 0);
+        twins_by_rule(t, nt, t0, want);
+        for (int x = 0; x < 3 * (nt - t0); x++)
+            cr_assert_eq(got[x], want[x], "trial %d, half-edge %d: %d, not %d", trial, x, got[x],
+                         want[x]);
+        mesh_free(m);
+    }
+}
