@@ -216,29 +216,37 @@ static const double *P(const simp *s, int32_t v)
     return s->p + 3 * (size_t)v;
 }
 
-/* The costs of collapsing a into b (*ab, at b) and b into a (*ba, at a):
- * the merged quadric over the merged weight, INFINITY past the
- * tolerance. */
-static void costs(const simp *s, int32_t a, int32_t b, double *ab, double *ba)
+/* The quadric of a and b merged into *q, over their merged weight, and
+ * the bound its cost must keep: what a collapse of either into the other
+ * costs, evaluated at the one kept (cost_at). */
+typedef struct merged {
+    quad q;
+    double w, bound;
+} merged;
+
+static void merge(const simp *s, int32_t a, int32_t b, merged *m)
 {
-    quad q = s->q[a];
+    m->q = s->q[a];
     for (int k = 0; k < 10; k++)
-        q.a[k] += s->q[b].a[k];
-    double w = s->w[a] + s->w[b], bound = s->curved[a] && s->curved[b] ? s->tol2 : s->crease_tol2;
-    const double *at[2] = {P(s, b), P(s, a)};
-    double *out[2] = {ab, ba};
-    for (int i = 0; i < 2; i++) {
-        double e = quad_at(&q, at[i]) / (w > 0 ? w : 1);
-        *out[i] = e < 0 ? 0 : e <= bound ? e : INFINITY;
-    }
+        m->q.a[k] += s->q[b].a[k];
+    m->w = s->w[a] + s->w[b];
+    m->bound = s->curved[a] && s->curved[b] ? s->tol2 : s->crease_tol2;
+}
+
+/* The cost of a collapse into the vertex at p, INFINITY past the
+ * tolerance. */
+static double cost_at(const merged *m, const double *p)
+{
+    double e = quad_at(&m->q, p) / (m->w > 0 ? m->w : 1);
+    return e < 0 ? 0 : e <= m->bound ? e : INFINITY;
 }
 
 /* The cost of collapsing v into u, INFINITY past the tolerance. */
 static double cost(const simp *s, int32_t v, int32_t u)
 {
-    double vu, uv;
-    costs(s, v, u, &vu, &uv);
-    return vu;
+    merged m;
+    merge(s, v, u, &m);
+    return cost_at(&m, P(s, u));
 }
 
 /* A number in [0, 1) fixed by edge a–b: the order of edges that cost the
@@ -259,8 +267,9 @@ static double jitter(int32_t a, int32_t b)
 static int push_edge(queue *qu, int32_t a, int32_t b)
 {
     const simp *s = qu->s;
-    double ab, ba;
-    costs(s, a, b, &ab, &ba);
+    merged m;
+    merge(s, a, b, &m);
+    double ab = cost_at(&m, P(s, b)), ba = cost_at(&m, P(s, a));
     if (ab == INFINITY && ba == INFINITY) return 0;
     double l2 = 0;
     for (int k = 0; k < 3; k++)

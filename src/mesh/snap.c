@@ -48,22 +48,24 @@ void mesh_snapper_free(mesh_snapper *sn)
 
 /* The crossing of the line x + t·n (|t| <= reach, n a unit vector) with
  * the surface nearest x whose normal is within acos(min_cos) of n, on
- * patch `patch` (0: any): its index in *l (traced from o, x - reach·n,
- * in sn's arena), e (0: enter, 1: exit) into *e; -1 when there is none. */
-static int probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
-                 double min_cos, uint32_t patch, double o[3], iv_list *l, int *end)
+ * patch `patch` (0: any): its place into p, its normal into pn, and its
+ * boundary (in sn's arena, traced from o = x - reach·n) returned; NULL
+ * when there is none. */
+static const iv_bound *probe(mesh_snapper *sn, const double x[3], const double n[3], double reach,
+                             double min_cos, uint32_t patch, double o[3], double p[3], double pn[3])
 {
     const mesh_dexels *d = sn->d;
-    if (!sn->arena) return -1;
+    if (!sn->arena) return NULL;
     for (int c = 0; c < 3; c++)
         o[c] = x[c] - reach * n[c];
     iv_arena_reset(sn->arena);
-    if (csg_trace(d->scene, d->root, o, n, 0, 2 * reach, sn->arena, l) != 0) return -1;
+    iv_list l;
+    if (csg_trace(d->scene, d->root, o, n, 0, 2 * reach, sn->arena, &l) != 0) return NULL;
     double best = INFINITY;
-    int at = -1;
-    for (int k = 0; k < l->n; k++)
+    const iv_bound *at = NULL;
+    for (int k = 0; k < l.n; k++)
         for (int e = 0; e < 2; e++) {
-            const iv_bound *b = e == 0 ? &l->v[k].enter : &l->v[k].exit;
+            const iv_bound *b = e == 0 ? &l.v[k].enter : &l.v[k].exit;
             if (b->prim == IV_PRIM_NONE || !(fabs(b->t - reach) < best)) continue;
             uint32_t bp = mesh_patch_of(b->prim, b->part);
             if (patch && bp != (patch & ~MESH_PATCH_PLANAR)) continue;
@@ -71,8 +73,11 @@ static int probe(mesh_snapper *sn, const double x[3], const double n[3], double 
             csg_scene_normal(d->scene, b, o, n, bn);
             if (dot3(bn, n) < min_cos) continue;
             best = fabs(b->t - reach);
-            at = k;
-            *end = e;
+            at = b;
+            for (int c = 0; c < 3; c++) {
+                p[c] = o[c] + b->t * n[c];
+                pn[c] = bn[c];
+            }
         }
     return at;
 }
@@ -82,30 +87,18 @@ int mesh_snap_probe_patch(mesh_snapper *sn, const double x[3], const double n[3]
                           uint32_t *found)
 {
     double o[3];
-    iv_list l;
-    int e, k = probe(sn, x, n, reach, min_cos, patch, o, &l, &e);
-    if (k < 0) return 0;
-    const iv_bound *b = e == 0 ? &l.v[k].enter : &l.v[k].exit;
-    csg_scene_normal(sn->d->scene, b, o, n, pn);
-    if (found) *found = mesh_patch_flagged(sn->d, mesh_patch_of(b->prim, b->part));
-    for (int c = 0; c < 3; c++)
-        p[c] = o[c] + b->t * n[c];
-    return 1;
+    const iv_bound *b = probe(sn, x, n, reach, min_cos, patch, o, p, pn);
+    if (b && found) *found = mesh_patch_flagged(sn->d, mesh_patch_of(b->prim, b->part));
+    return b != NULL;
 }
 
 int mesh_snap_probe_quadric(mesh_snapper *sn, const double x[3], const double n[3], double reach,
                             double p[3], double pn[3], uint32_t *found, iv_quadric *q)
 {
     double o[3];
-    iv_list l;
-    int e, k = probe(sn, x, n, reach, -1, 0, o, &l, &e);
-    if (k < 0) return 0;
-    const iv_bound *b = e == 0 ? &l.v[k].enter : &l.v[k].exit;
-    if (csg_scene_quadric(sn->d->scene, b, o, n, q) != 0) return 0;
-    csg_scene_normal(sn->d->scene, b, o, n, pn);
+    const iv_bound *b = probe(sn, x, n, reach, -1, 0, o, p, pn);
+    if (!b || csg_scene_quadric(sn->d->scene, b, o, n, q) != 0) return 0;
     *found = mesh_patch_of(b->prim, b->part);
-    for (int c = 0; c < 3; c++)
-        p[c] = o[c] + b->t * n[c];
     return 1;
 }
 

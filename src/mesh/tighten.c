@@ -389,7 +389,8 @@ typedef struct measure_job {
     const mesh *m;
     const round_view *rv;
     const uint8_t *look;
-    uint8_t *bad; /* out: smooth and straying; else 2 + the side that cuts a crease */
+    uint8_t *bad;     /* out: smooth and straying; else 2 + the side that cuts a crease */
+    double (*cut)[3]; /* out: where that side cuts it */
     const mesh_snapper *proto;
     double tol;
     int n, w, failed;
@@ -410,21 +411,21 @@ static void *measure(void *arg)
             j->bad[t] = (uint8_t)strays(j->m, &sn, t, AIM * j->tol);
             continue;
         }
-        double n[3], x[3], l = sqrt(dot3(j->rv->tn[t], j->rv->tn[t]));
+        double n[3], l = sqrt(dot3(j->rv->tn[t], j->rv->tn[t]));
         if (!(l > 0)) continue;
         for (int i = 0; i < 3; i++)
             n[i] = j->rv->tn[t][i] / l;
-        int k = side_cutting(j->m, &sn, t, n, AIM * j->tol, x);
+        int k = side_cutting(j->m, &sn, t, n, AIM * j->tol, j->cut[t]);
         if (k >= 0) j->bad[t] = (uint8_t)(2 + k);
     }
     mesh_snapper_free(&sn);
     return NULL;
 }
 
-/* bad[t] for the triangles of m flagged in look, on up to `threads`
- * threads; 0 or -1. */
+/* bad[t] (and cut[t]) for the triangles of m flagged in look, on up to
+ * `threads` threads; 0 or -1. */
 static int measure_all(const mesh *m, const round_view *rv, const uint8_t *look, uint8_t *bad,
-                       const mesh_snapper *sn, double tol, int threads)
+                       double (*cut)[3], const mesh_snapper *sn, double tol, int threads)
 {
     enum { MAX_THREADS = 64 };
     int n = threads < 1 ? 1 : threads > MAX_THREADS ? MAX_THREADS : threads;
@@ -432,7 +433,7 @@ static int measure_all(const mesh *m, const round_view *rv, const uint8_t *look,
     pthread_t th[MAX_THREADS];
     int started[MAX_THREADS] = {0}, failed = 0;
     for (int w = 0; w < n; w++) {
-        job[w] = (measure_job){m, rv, look, bad, sn, tol, n, w, 0};
+        job[w] = (measure_job){m, rv, look, bad, cut, sn, tol, n, w, 0};
         if (w > 0) started[w] = pthread_create(&th[w], NULL, measure, &job[w]) == 0;
     }
     measure(&job[0]);
@@ -557,51 +558,42 @@ static int round_once(mesh *m, mesh_snapper *sn, double tol, int threads, mesh_f
     round_view rv = {malloc(3 * (size_t)nt * sizeof *rv.opp), malloc((size_t)nt * sizeof *rv.tn)};
     uint8_t *used = calloc((size_t)nt, 1), *nx = calloc(3 * (size_t)nt, 1),
             *bad = malloc((size_t)nt);
+    double(*cut)[3] = malloc((size_t)nt * sizeof *cut);
     int rc = -1;
-    if (!rv.opp || !rv.tn || !used || !nx || !bad || mesh_half_twins(m, 0, rv.opp) != 0) goto done;
+    if (!rv.opp || !rv.tn || !used || !nx || !bad || !cut || mesh_half_twins(m, 0, rv.opp) != 0)
+        goto done;
     for (int32_t t = 0; t < nt; t++) {
         double p[3][3];
         for (int k = 0; k < 3; k++)
             corner(m, t, k, p[k]);
         tri_normal3(p[0], p[1], p[2], rv.tn[t]);
     }
-    if (measure_all(m, &rv, look, bad, sn, tol, threads) != 0) goto done;
+    if (measure_all(m, &rv, look, bad, cut, sn, tol, threads) != 0) goto done;
     for (int32_t t = 0; t < nt; t++) {
         if (!bad[t] || used[t]) continue;
-        if (bad[t] >= 2) { /* a side cut across a sharp edge: split on it */
-            int k = bad[t] - 2;
-            int32_t across = rv.opp[3 * t + k];
-            double n[3], x[3], l = sqrt(dot3(rv.tn[t], rv.tn[t]));
-            if (across >= 0 && used[across / 3]) {
-                nx[t] = 1;
-                continue;
-            }
+        /* a side cut across a sharp edge: that side, split on the edge;
+         * else the longest edge only (a shorter one where the longest may
+         * not be split took bored_cone.scad from 16,646 to 19,702
+         * triangles about its sharp rims, for a torus 1.30 -> 1.13
+         * tolerances) */
+        int k = bad[t] - 2;
+        if (bad[t] == 1) {
+            double p[3][3], best = -1;
             for (int i = 0; i < 3; i++)
-                n[i] = rv.tn[t][i] / l;
-            if (side_cutting(m, sn, t, n, AIM * tol, x) != k) continue;
-            int r = split_at(m, &rv, pos, t, k, x, tol, used, nx);
-            if (r < 0) goto done;
-            *split += r;
-            continue;
-        }
-        /* the longest edge only (a shorter one where the longest may not
-         * be split took bored_cone.scad from 16,646 to 19,702 triangles
-         * about its sharp rims, for a torus 1.30 -> 1.13 tolerances) */
-        double p[3][3], best = -1;
-        int k = 0;
-        for (int i = 0; i < 3; i++)
-            corner(m, t, i, p[i]);
-        for (int i = 0; i < 3; i++) {
-            double d[3];
-            sub3(p[(i + 1) % 3], p[i], d);
-            if (dot3(d, d) > best) best = dot3(d, d), k = i;
+                corner(m, t, i, p[i]);
+            for (int i = 0; i < 3; i++) {
+                double d[3];
+                sub3(p[(i + 1) % 3], p[i], d);
+                if (dot3(d, d) > best) best = dot3(d, d), k = i;
+            }
         }
         int32_t across = rv.opp[3 * t + k];
         if (across >= 0 && used[across / 3]) {
             nx[t] = 1; /* the triangle across was split this round: the next */
             continue;
         }
-        int r = split_edge(m, sn, &rv, pos, t, k, tol, used, nx);
+        int r = bad[t] == 1 ? split_edge(m, sn, &rv, pos, t, k, tol, used, nx)
+                            : split_at(m, &rv, pos, t, k, cut[t], tol, used, nx);
         if (r < 0) goto done;
         *split += r;
     }
@@ -611,6 +603,7 @@ done:
     free(rv.tn);
     free(used);
     free(bad);
+    free(cut);
     *next = nx;
     return rc;
 }
