@@ -258,7 +258,8 @@ static int cubic_piece(level *L, const sample *l, const sample *r, int depth, in
         if (L->eval(L->ctx, &m[i]) != 0) return -1;
         if (m[i].sig != l->sig && w > L->min_panel && depth < MAX_DEPTH) {
             *done = 1;
-            return stretch(L, m, 5, depth + 1);
+            m[i + 1] = m[4]; /* (the samples past m[i] were not evaluated) */
+            return stretch(L, m, i + 2, depth + 1);
         }
     }
     double s2[NF];
