@@ -414,7 +414,8 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
     int tries = 0;
     double step = 0; /* > 0: the last try moved a only, by step; < 0: b only */
     double fx[FORESEEN];
-    int nfx = L->foresee ? L->foresee(L->ctx, l, r, fx, FORESEEN) : 0, fi = 0;
+    int nfx = 0, fi = 0;
+    if (L->foresee && b.x - a.x > L->eps) nfx = L->foresee(L->ctx, l, r, fx, FORESEEN);
     while (b.x - a.x > L->eps) {
         /* where to try: where the sides' lines meet (kink) or, with the
          * level's guesses (level.guess), each guess in turn; a try at
@@ -609,6 +610,10 @@ typedef struct line {
     piece *p;
     iv_bound *b;      /* its pieces' boundaries (piece.fo, nf) */
     double (*org)[3]; /* and the origins of their rays */
+    /* and their surfaces, once asked for (qs: 0 not yet, 1 q, 2 not on a
+     * quadric): the same on every line they are followed to */
+    iv_quadric *q;
+    unsigned char *qs;
 } line;
 
 /* A primitive's box seen along a pass's direction. */
@@ -880,11 +885,24 @@ static int foresee(void *ctx, const sample *a, const sample *b, double *x, int c
     return mesh_forms_events(P->forms + a->fo, a->nf, P->forms + b->fo, b->nf, a->x, b->x, x, cap);
 }
 
+/* Whether one of x[0 .. n-1] lies within tol of y. */
+static int near_one(const double *x, int n, double y, double tol)
+{
+    for (int i = 0; i < n; i++)
+        if (fabs(x[i] - y) <= tol) return 1;
+    return 0;
+}
+
 /* Hints for the line at v from lines a and b of the history (a pair of
  * the same make-up: each piece's ends carried to v along the straight line
  * through theirs, which is where they are on plane faces; else the middles
- * of a's pieces) appended to h[*n], up to cap: the pieces' middles. */
-static void hints_from(const line *a, const line *b, double v, double *h, int *n, int cap)
+ * of a's pieces) appended to h[*n], up to cap: the pieces' middles, but
+ * for a piece whose ends both lie within a tenth of its width of events
+ * found exactly on this line (paired[0 .. npaired-1], each sampled either
+ * side: event_hints) or are the line's ends (sampled too): those samples
+ * fall inside it (a sixth of the bench part's rays). */
+static void hints_from(const line *a, const line *b, double v, const double *paired, int npaired,
+                       double *h, int *n, int cap)
 {
     int same = b && b->seq == a->seq && b->np == a->np && b->v != a->v;
     for (int k = 0; k < a->np && *n < cap; k++) {
@@ -894,6 +912,10 @@ static void hints_from(const line *a, const line *b, double v, double *h, int *n
             x0 += s * (b->p[k].x0 - x0);
             x1 += s * (b->p[k].x1 - x1);
         }
+        double t = 0.1 * (x1 - x0);
+        if ((k == 0 || near_one(paired, npaired, x0, t)) &&
+            (k == a->np - 1 || near_one(paired, npaired, x1, t)))
+            continue;
         if (x1 > x0) h[(*n)++] = 0.5 * (x0 + x1);
     }
 }
@@ -942,9 +964,19 @@ static int piece_forms(pass *P, const line *l, int k, sample *s)
     if (q->nf < 0 || grow_forms(P, q->nf) != 0) return -1;
     s->fo = P->nforms;
     s->nf = q->nf;
-    for (int i = 0; i < q->nf; i++)
-        push_bound(P, &l->b[q->fo + i], l->org[q->fo + i]);
-    return forms_of(P, s);
+    for (int i = 0; i < q->nf; i++) {
+        int j = q->fo + i;
+        const iv_bound *b = &l->b[j];
+        const double *o = l->org[j];
+        if (l->qs[j] == 0) l->qs[j] = csg_scene_quadric(P->s, b, o, P->d, &l->q[j]) == 0 ? 1 : 2;
+        if (l->qs[j] == 2) return -1;
+        double x[3] = {o[0] + b->t * P->d[0], o[1] + b->t * P->d[1], o[2] + b->t * P->d[2]};
+        push_bound(P, b, o);
+        mesh_form_init(&P->forms[P->nforms - 1], &l->q[j], &P->frame, x, i & 1 ? 1 : -1,
+                       face_of(b));
+        P->state[P->nforms - 1] = 1;
+    }
+    return 0;
 }
 
 /* Where the event between pieces k and k + 1 of line l lies on the
@@ -991,8 +1023,9 @@ static double exact_event(pass *P, const line *l, int k, double guess, double wi
  * foreseen too (a quick line bracketing an event across the lines had
  * none, and its every event started from the first samples). */
 static void event_hints(pass *P, const line *const ls[4], double v, double pair, double span,
-                        double *h, int *n, int cap)
+                        double *h, int *n, int cap, double *paired, int *npaired)
 {
+    *npaired = 0;
     static _Thread_local event_at ev[4][LINE_EVENTS];
     int ne[4] = {0, 0, 0, 0};
     if (!ls[1] || !ls[2]) return;
@@ -1025,6 +1058,7 @@ static void event_hints(pass *P, const line *const ls[4], double v, double pair,
                                &last, &lastk);
         if (!isnan(x)) {
             w = 0.4 * P->inner.try_eps; /* a bracket no wider than eps */
+            paired[(*npaired)++] = x;
         } else {
             x = xs[0];
             if (!(w < 1e-3 * span)) continue; /* foreseen too roughly to pair */
@@ -1085,6 +1119,8 @@ static void free_line(line *l)
     free(l->p);
     free(l->b);
     free(l->org);
+    free(l->q);
+    free(l->qs);
 }
 
 /* Line l's pieces' boundaries copied from the pass's (l->b, l->org; left
@@ -1096,10 +1132,12 @@ static void keep_bounds(const pass *P, line *l)
         n += l->p[k].nf > 0 ? l->p[k].nf : 0;
     l->b = n ? malloc((size_t)n * sizeof *l->b) : NULL;
     l->org = n ? malloc((size_t)n * sizeof *l->org) : NULL;
+    l->q = n ? malloc((size_t)n * sizeof *l->q) : NULL;
+    l->qs = n ? calloc((size_t)n, 1) : NULL;
     int m = 0;
     for (int k = 0; k < l->np; k++) {
         piece *q = &l->p[k];
-        if (!l->b || !l->org || q->nf < 0) {
+        if (!l->b || !l->org || !l->q || !l->qs || q->nf < 0) {
             q->nf = -1;
             continue;
         }
@@ -1156,15 +1194,17 @@ static int line_eval(void *ctx, sample *sm)
                *L2 = up < P->nlines ? &P->lines[up] : NULL,
                *L3 = up + 1 < P->nlines ? &P->lines[up + 1] : NULL;
     int n = 0;
-    if (P->guide) hints_from(P->guide, NULL, v, P->hints, &n, MAX_HINTS);
+    if (P->guide) hints_from(P->guide, NULL, v, NULL, 0, P->hints, &n, MAX_HINTS);
     /* (lines either side alike: their pieces carried to v below cover
      * their own middles, 3 % of the bench part's rays) */
     int alike = L1 && L2 && L1->seq == L2->seq && L1->np == L2->np;
-    if (L1 && !alike) hints_from(L1, L0, v, P->hints, &n, MAX_HINTS);
-    if (L2 && !alike) hints_from(L2, L3, v, P->hints, &n, MAX_HINTS);
-    if (L1 && L2) hints_from(L1, L2, v, P->hints, &n, MAX_HINTS);
     const line *ls[4] = {L0, L1, L2, L3};
-    event_hints(P, ls, v, PAIR * 2 * P->reach, 2 * P->reach, P->hints, &n, MAX_HINTS);
+    double paired[MAX_HINTS / 2];
+    int np = 0;
+    event_hints(P, ls, v, PAIR * 2 * P->reach, 2 * P->reach, P->hints, &n, MAX_HINTS, paired, &np);
+    if (L1 && !alike) hints_from(L1, L0, v, paired, np, P->hints, &n, MAX_HINTS);
+    if (L2 && !alike) hints_from(L2, L3, v, paired, np, P->hints, &n, MAX_HINTS);
+    if (L1 && L2) hints_from(L1, L2, v, paired, np, P->hints, &n, MAX_HINTS);
     seed_hints(P, v, (ub - ua) / SAMPLES, P->hints, &n, MAX_HINTS);
     P->v = v;
     P->inner.quick = P->outer.bisecting;
@@ -1193,8 +1233,10 @@ static int line_eval(void *ctx, sample *sm)
         any = 1;
     }
     *sig = changes;
-    line l = {v,    seq, P->inner.npieces, malloc((size_t)P->inner.npieces * sizeof(piece)),
-              NULL, NULL};
+    line l = {.v = v,
+              .seq = seq,
+              .np = P->inner.npieces,
+              .p = malloc((size_t)P->inner.npieces * sizeof(piece))};
     if (!l.p) return -1;
     memcpy(l.p, P->inner.pieces, (size_t)l.np * sizeof *l.p);
     keep_bounds(P, &l);
@@ -1283,11 +1325,11 @@ static double width_at(pass *P, const line *l, int k, double v)
  * the piece has narrowed to under a hundredth of its width on near (its
  * boundaries lost on the way, rather than closing: a piece that far has
  * too where another event turns up between them); NAN where it has not. */
-static double closing(pass *P, const line *near, const line *far, int k, double guess)
+static double closing(pass *P, const line *near, double lim, int k, double guess)
 {
-    double lo = near->v, hi = far->v, w = near->p[k + 1].x1 - near->p[k + 1].x0, w0 = w;
+    double lo = near->v, hi = lim, w = near->p[k + 1].x1 - near->p[k + 1].x0, w0 = w;
     double lo1 = NAN, w1 = NAN, s = SLIVER * 2 * P->reach;
-    if (!(w > s) || isnan(width_at(P, near, k, lo))) return NAN;
+    if (!(w > s) || isnan(width_at(P, near, k, lo)) || width_at(P, near, k, hi) > s) return NAN;
     for (int it = 0; it < 64 && fabs(hi - lo) > 0.25 * P->outer.try_eps; it++) {
         double c[3] = {guess, NAN, 0.5 * (lo + hi)};
         if (!isnan(lo1)) {
@@ -1342,7 +1384,7 @@ static double narrowing(pass *P, const line *next2, const line *next, const line
         }
         double t = n < 2 ? NAN : root_toward(w, y, n, sgn);
         if (exact) {
-            t = closing(P, near, far, k, near->v + t) - near->v;
+            t = closing(P, near, isnan(best) ? far->v : best, k, near->v + t) - near->v;
             P->nforms = 0;
         }
         if (!isnan(t) && !(fabs(best - near->v) <= fabs(t))) best = near->v + t;
@@ -1358,7 +1400,7 @@ static double line_guess(void *ctx, double a, double b, int kind)
 {
     pass *P = ctx;
     int ia = line_at(P, a), ib = line_at(P, b);
-    const line none[2] = {{a, 0, 0, NULL, NULL, NULL}, {b, 0, 0, NULL, NULL, NULL}};
+    const line none[2] = {{.v = a}, {.v = b}};
     if ((ia < 0 || ib < 0) && (kind != 0 || (ia < 0 && ib < 0))) return NAN;
     const line *A = ia >= 0 ? &P->lines[ia] : &none[0], *B = ib >= 0 ? &P->lines[ib] : &none[1];
     double ga = ia < 0 ? NAN
