@@ -1335,6 +1335,12 @@ static double closing(pass *P, const line *near, double lim, int k, double guess
         if (!isnan(lo1)) {
             c[0] = lo - (w - s) * (lo - lo1) / (w - w1);
             c[1] = lo - (w * w - s * s) * (lo - lo1) / (w * w - w1 * w1);
+            /* neither foresees it closing ahead within three brackets: the
+             * piece is being lost, not closing */
+            double r0 = (c[0] - lo) / (hi - lo), r1 = (c[1] - lo) / (hi - lo);
+            if (!(r0 > 0 && r0 <= 3) && !(r1 > 0 && r1 <= 3)) break;
+        } else if (it >= 16) {
+            break; /* lost within a 65536th of the way */
         }
         int moved = 0;
         for (int i = 0; i < 3 && !moved; i++) {

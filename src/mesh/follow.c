@@ -33,9 +33,9 @@ void mesh_form_init(mesh_form *f, const iv_quadric *q, const mesh_line_frame *F,
     mat_vec(q->A, F->e1, Ae);
     mat_vec(q->A, F->p0, Ap);
     for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++)
-            f->A[i][j] = q->A[i][j];
-        f->b[i] = q->b[i];
+        f->g0[i] = 2 * Ap[i] + q->b[i];
+        f->gu[i] = 2 * Ae[i];
+        f->gt[i] = 2 * Ad[i];
     }
     f->al = dot3(F->d, Ad);
     f->bu = 2 * dot3(F->e1, Ad);
@@ -75,12 +75,11 @@ int mesh_forms_sums(const mesh_form *f, int n, const mesh_line_frame *F, double 
     *out = (mesh_follow_sums){0, 0, 0, 0, 0};
     double last = -INFINITY;
     for (int i = 0; i < n; i++) {
-        double t, x[3], g[3];
+        double t, g[3];
         if (mesh_form_t(&f[i], u, &t) != 0 || t < last) return 1;
         last = t;
         for (int k = 0; k < 3; k++)
-            x[k] = F->p0[k] + u * F->e1[k] + t * F->d[k];
-        gradient(f[i].A, f[i].b, x, g);
+            g[k] = f[i].g0[k] + u * f[i].gu[k] + t * f[i].gt[k];
         double gd = dot3(g, F->d), gl = sqrt(dot3(g, g));
         if (!(fabs(gd) > 0) || !((gd < 0) == (f[i].s < 0))) return 1;
         out->len += f[i].w * t;

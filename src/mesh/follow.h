@@ -25,7 +25,7 @@ typedef struct mesh_line_frame {
 
 /* One boundary of a ray, followed along its line. */
 typedef struct mesh_form {
-    double A[3][3], b[3];            /* the surface's gradient: 2Ax + b */
+    double g0[3], gu[3], gt[3];      /* its gradient 2Ax + b on the line: g0 + u gu + t gt */
     double al, bu, bt, cu2, cu1, c0; /* its quadratic on the line (above) */
     double s;                        /* the root: the sign of ∂q/∂t there */
     double w;                        /* +1: the ray leaves the solid; −1: enters */
