@@ -1067,17 +1067,35 @@ static void event_hints(pass *P, const line *const ls[4], double v, double pair,
         h[(*n)++] = x + w;
     }
     /* A piece of one nearest line that the other lacks (one of its ends
-     * not there) narrows to nothing between them: its ends carried on to v
-     * straight from that line and the next beyond it, its middle where it
-     * is still there (the piece a vertex of plane faces starts, too narrow
-     * for the first samples near the vertex). */
+     * not there) narrows to nothing between them (the piece a vertex of
+     * plane faces starts, too narrow for the first samples near the
+     * vertex): its two events followed to v from that line's boundaries,
+     * each sampled either side where both are there (a piece found by one
+     * line only was found again by the lines toward where it starts only
+     * by chance, their signatures flickering: 40 brackets in a row on a
+     * union of three faceted solids, its start missed), else its middle,
+     * its ends carried on to v straight from that line and the next beyond
+     * it. */
     for (int s = 1; s <= 2; s++) {
         int o = 3 - s, b = s == 1 ? 0 : 3;
-        if (!ls[b]) continue;
-        for (int k = 0; k + 1 < ne[s] && *n < cap; k++) {
+        lastk = -1;
+        for (int k = 0; k + 1 < ne[s] && *n + 4 <= cap; k++) {
             const event_at *e = &ev[s][k], *f = &ev[s][k + 1];
             if (!isnan(event_like(ev[o], ne[o], e)) && !isnan(event_like(ev[o], ne[o], f)))
                 continue;
+            double x0 = exact_event(P, ls[s], k, e->x, span, &last, &lastk);
+            double x1 = isnan(x0) ? NAN : exact_event(P, ls[s], k + 1, f->x, span, &last, &lastk);
+            if (x1 > x0) {
+                double w = 0.4 * P->inner.try_eps;
+                h[(*n)++] = x0 - w;
+                h[(*n)++] = x0 + w;
+                h[(*n)++] = x1 - w;
+                h[(*n)++] = x1 + w;
+                paired[(*npaired)++] = x0;
+                paired[(*npaired)++] = x1;
+                continue;
+            }
+            if (!ls[b]) continue;
             double xe = event_like(ev[b], ne[b], e), xf = event_like(ev[b], ne[b], f);
             double t = (v - ls[s]->v) / (ls[b]->v - ls[s]->v);
             xe = e->x + t * (xe - e->x);
