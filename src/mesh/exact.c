@@ -1083,8 +1083,19 @@ static void event_hints(pass *P, const line *const ls[4], double v, double pair,
             const event_at *e = &ev[s][k], *f = &ev[s][k + 1];
             if (!isnan(event_like(ev[o], ne[o], e)) && !isnan(event_like(ev[o], ne[o], f)))
                 continue;
-            double x0 = exact_event(P, ls[s], k, e->x, span, &last, &lastk);
-            double x1 = isnan(x0) ? NAN : exact_event(P, ls[s], k + 1, f->x, span, &last, &lastk);
+            /* (each foreseen within a window about where it is carried:
+             * over the whole line, two meetings of curved faces that close
+             * in on each other can fall between the steps looking for them) */
+            double t = ls[b] ? (v - ls[s]->v) / (ls[b]->v - ls[s]->v) : 0, dv = fabs(v - ls[s]->v);
+            double xe = ls[b] ? e->x + t * (event_like(ev[b], ne[b], e) - e->x) : NAN;
+            double xf = ls[b] ? f->x + t * (event_like(ev[b], ne[b], f) - f->x) : NAN;
+            double we = isnan(xe) ? 2 * dv : 4 * fabs(xe - e->x);
+            double wf = isnan(xf) ? 2 * dv : 4 * fabs(xf - f->x);
+            double x0 =
+                exact_event(P, ls[s], k, isnan(xe) ? e->x : xe, fmax(we, 16 * pair), &last, &lastk);
+            double x1 = isnan(x0) ? NAN
+                                  : exact_event(P, ls[s], k + 1, isnan(xf) ? f->x : xf,
+                                                fmax(wf, 16 * pair), &last, &lastk);
             if (x1 > x0) {
                 double w = 0.4 * P->inner.try_eps;
                 h[(*n)++] = x0 - w;
@@ -1095,11 +1106,6 @@ static void event_hints(pass *P, const line *const ls[4], double v, double pair,
                 paired[(*npaired)++] = x1;
                 continue;
             }
-            if (!ls[b]) continue;
-            double xe = event_like(ev[b], ne[b], e), xf = event_like(ev[b], ne[b], f);
-            double t = (v - ls[s]->v) / (ls[b]->v - ls[s]->v);
-            xe = e->x + t * (xe - e->x);
-            xf = f->x + t * (xf - f->x);
             if (xf > xe) h[(*n)++] = 0.5 * (xe + xf);
         }
     }
