@@ -156,6 +156,14 @@ int mesh_dexels_simplify(const mesh_dexels *d, mesh *m, double tol, const mesh_o
         snprintf(err, errlen, "out of memory simplifying the mesh");
         return -1;
     }
+    /* (the simplifier's own measure of a plane: FLAT of the sharp-edge
+     * bound) */
+    if (mesh_flatten(m, 1e-3 * EDGE * tol) != 0) {
+        mesh_snapper_free(&sn);
+        mesh_exact_tail_free(&exact);
+        snprintf(err, errlen, "out of memory simplifying the mesh");
+        return -1;
+    }
     int rc = mesh_simplify(m, SMOOTH * tol, EDGE * tol, &sn, mesh_thread_count(o), err, errlen);
     int splits = 0;
     if (rc == 0 && mesh_split_creases(m, &sn, &splits) != 0) {

@@ -396,6 +396,13 @@ int mesh_unbend(mesh *m, int t0, double h, const mesh_vnormals *vn);
  * no sliver and a new edge whose middle lies nearer the exact surface (sn)
  * than the old one's (unfold.c); 0 or -1 when out of memory. */
 int mesh_unsliver(mesh *m, mesh_snapper *sn, double h);
+/* Take away the vertices of m whose triangles all lie in one plane (each
+ * of m's vertices within eps of it) and have one colour, each collapsed
+ * into a neighbour whose fan over its ring turns no triangle over, in
+ * rounds until none is left that can go (flatten.c); the surface stays
+ * within eps of m's, closed, 2-manifold and outward.  0, or -1 when out of
+ * memory (m then holds some of the collapses). */
+int mesh_flatten(mesh *m, double eps);
 /* Simplify m in place by edge collapses (simplify.c) while every vertex and
  * sharp edge's midpoint of m stays within tol of the triangles that replace
  * it where m is curved, within edge_tol on flat faces, on sharp edges and

@@ -1010,7 +1010,7 @@ static void *run_team(void *arg)
 /* Regions: slabs of about equal vertex counts across the mesh's longest
  * side, at least REGION_VERTICES each, at most MAX_REGIONS (a fixed rule,
  * so the result does not depend on the number of threads). */
-#define REGION_VERTICES 20000
+#define REGION_VERTICES 10000
 #define MAX_REGIONS 16
 #define REGION_BINS 4096
 

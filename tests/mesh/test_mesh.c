@@ -1349,3 +1349,149 @@ Test(mesh_topology, half_twins_follow_their_rule)
         mesh_free(m);
     }
 }
+
+/* ---- flat faces' inner vertices (mesh_flatten) --------------------------- */
+
+/* The box [0, sx] × [0, sy] × [0, sz] with each face cut into n × n
+ * squares, each square two triangles (the diagonals alternating), facing
+ * out: its vertices shared, one per grid point of the surface. */
+static mesh *grid_box(int n, const double size[3])
+{
+    int side = n + 1, nv = 0;
+    float *v = malloc(3 * (size_t)side * side * side * sizeof *v);
+    int32_t *id = malloc((size_t)side * side * side * sizeof *id);
+    int32_t *t = malloc(6 * 2 * 3 * (size_t)n * n * sizeof *t);
+    cr_assert(v && id && t);
+    for (int i = 0; i < side * side * side; i++)
+        id[i] = -1;
+    int nt = 0;
+    for (int axis = 0; axis < 3; axis++)
+        for (int hi = 0; hi < 2; hi++) {
+            int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            for (int i = 0; i < n; i++)
+                for (int j = 0; j < n; j++) {
+                    int32_t q[4];
+                    for (int c = 0; c < 4; c++) {
+                        int g[3];
+                        g[axis] = hi * n;
+                        g[a] = i + (c == 1 || c == 2);
+                        g[b] = j + (c >= 2);
+                        int key = (g[0] * side + g[1]) * side + g[2];
+                        if (id[key] < 0) {
+                            for (int k = 0; k < 3; k++)
+                                v[3 * nv + k] = (float)(size[k] * g[k] / n);
+                            id[key] = nv++;
+                        }
+                        q[c] = id[key];
+                    }
+                    /* corners 0 (i, j), 1 (i+1, j), 2 (i+1, j+1), 3 (i, j+1):
+                     * counter-clockwise about +axis; the low face reversed */
+                    int32_t tri[2][3];
+                    if ((i + j) & 1) {
+                        int32_t x[2][3] = {{q[0], q[1], q[2]}, {q[0], q[2], q[3]}};
+                        memcpy(tri, x, sizeof tri);
+                    } else {
+                        int32_t x[2][3] = {{q[0], q[1], q[3]}, {q[1], q[2], q[3]}};
+                        memcpy(tri, x, sizeof tri);
+                    }
+                    for (int k = 0; k < 2; k++) {
+                        t[3 * nt] = tri[k][0];
+                        t[3 * nt + 1] = hi ? tri[k][1] : tri[k][2];
+                        t[3 * nt + 2] = hi ? tri[k][2] : tri[k][1];
+                        nt++;
+                    }
+                }
+        }
+    mesh *m = mesh_new_from_arrays(v, nv, t, nt);
+    cr_assert(m);
+    free(v);
+    free(id);
+    free(t);
+    return m;
+}
+
+static double area_of(const mesh *m)
+{
+    const float *v = mesh_vertices(m);
+    const int32_t *t = mesh_triangles(m);
+    double s = 0;
+    for (int q = 0; q < mesh_triangle_count(m); q++) {
+        double e[2][3];
+        for (int k = 0; k < 3; k++) {
+            e[0][k] = (double)v[3 * t[3 * q + 1] + k] - v[3 * t[3 * q] + k];
+            e[1][k] = (double)v[3 * t[3 * q + 2] + k] - v[3 * t[3 * q] + k];
+        }
+        double c[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                       e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+        s += 0.5 * sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    }
+    return s;
+}
+
+/* A box's faces cut into a grid: the vertices inside a face go, nearly
+ * all, those on its edges stay (they are not in one plane), and the solid
+ * is the same:
+ * closed and 2-manifold, the same volume and area (a triangle turned over
+ * would add its area), every triangle in a face. */
+Test(mesh_flatten, box_faces_lose_their_inner_vertices)
+{
+    const double size[3] = {3, 2, 1};
+    int n = 8;
+    mesh *m = grid_box(n, size);
+    cr_assert_null(check_manifold(m));
+    cr_assert_eq(mesh_vertex_count(m), 6 * (n + 1) * (n + 1) - 12 * (n + 1) + 8);
+    cr_assert_eq(mesh_flatten(m, 1e-6), 0);
+    cr_assert_null(check_manifold(m));
+    cr_expect_lt(fabs(volume_of(m) - 6), 1e-9, "volume %.12f", volume_of(m));
+    cr_expect_lt(fabs(area_of(m) - 22), 1e-9, "area %.12f", area_of(m));
+    const float *v = mesh_vertices(m);
+    int inner = 0;
+    for (int q = 0; q < mesh_vertex_count(m); q++) {
+        int on = 0; /* coordinates at a bound */
+        for (int k = 0; k < 3; k++)
+            on += v[3 * q + k] == 0 || v[3 * q + k] == (float)size[k];
+        inner += on < 2;
+    }
+    /* (a vertex goes only where a neighbour's fan can stand for it: the
+     * last few of a face can be tied to the edges by its neighbours'
+     * triangles, and are the simplifier's) */
+    cr_log_info("%d of %d vertices left inside the faces", inner, 6 * (n - 1) * (n - 1));
+    cr_expect_leq(inner, 6 * (n - 1) * (n - 1) / 16, "%d vertices left inside faces", inner);
+    cr_expect_eq(mesh_vertex_count(m), 12 * (n - 1) + 8 + inner);
+    const int32_t *t = mesh_triangles(m);
+    int off = 0;
+    for (int q = 0; q < mesh_triangle_count(m); q++) {
+        int face = 0;
+        for (int k = 0; k < 3; k++)
+            for (int hi = 0; hi < 2; hi++) {
+                float x = hi ? (float)size[k] : 0;
+                face |= v[3 * t[3 * q] + k] == x && v[3 * t[3 * q + 1] + k] == x &&
+                        v[3 * t[3 * q + 2] + k] == x;
+            }
+        off += !face;
+    }
+    cr_expect_eq(off, 0, "%d triangles out of the faces", off);
+    mesh_free(m);
+}
+
+/* A contoured sphere has no vertex whose triangles lie in one plane:
+ * nothing goes. */
+Test(mesh_flatten, curved_surface_is_left_alone)
+{
+    csg_scene *s = scene_of(sphere_node(5, 0.3, -0.2, 0.1));
+    mesh_options o = opts_h(0.5);
+    mesh *m = NULL;
+    char err[256] = "";
+    cr_assert(mesh_from_scene(s, &o, &m, NULL, err, sizeof err) == 0, "%s", err);
+    int nv = mesh_vertex_count(m), nt = mesh_triangle_count(m);
+    int32_t *before = malloc(3 * (size_t)nt * sizeof *before);
+    cr_assert(before);
+    memcpy(before, mesh_triangles(m), 3 * (size_t)nt * sizeof *before);
+    cr_assert_eq(mesh_flatten(m, 1e-6), 0);
+    cr_expect_eq(mesh_vertex_count(m), nv);
+    cr_expect_eq(mesh_triangle_count(m), nt);
+    cr_expect_eq(memcmp(before, mesh_triangles(m), 3 * (size_t)nt * sizeof *before), 0);
+    free(before);
+    mesh_free(m);
+    csg_scene_free(s);
+}
