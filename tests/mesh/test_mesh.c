@@ -254,21 +254,35 @@ static const char *check_manifold(const mesh *m)
     return msg;
 }
 
-/* Smallest triangle area. */
-static double min_area(const mesh *m)
+/* The area of triangle q of m. */
+static double tri_area(const mesh *m, int q)
 {
     const float *v = mesh_vertices(m);
     const int32_t *t = mesh_triangles(m);
+    const float *a = v + 3 * t[3 * q], *b = v + 3 * t[3 * q + 1], *c = v + 3 * t[3 * q + 2];
+    double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    return 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+/* Smallest triangle area. */
+static double min_area(const mesh *m)
+{
     double best = INFINITY;
-    for (int q = 0; q < mesh_triangle_count(m); q++) {
-        const float *a = v + 3 * t[3 * q], *b = v + 3 * t[3 * q + 1], *c = v + 3 * t[3 * q + 2];
-        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                       e1[0] * e2[1] - e1[1] * e2[0]};
-        best = fmin(best, 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-    }
+    for (int q = 0; q < mesh_triangle_count(m); q++)
+        best = fmin(best, tri_area(m, q));
     return best;
+}
+
+/* The surface's area. */
+static double area_of(const mesh *m)
+{
+    double s = 0;
+    for (int q = 0; q < mesh_triangle_count(m); q++)
+        s += tri_area(m, q);
+    return s;
 }
 
 /* Signed volume from the raw arrays, independent of mesh_signed_volume. */
@@ -1408,24 +1422,6 @@ static mesh *grid_box(int n, const double size[3])
     free(id);
     free(t);
     return m;
-}
-
-static double area_of(const mesh *m)
-{
-    const float *v = mesh_vertices(m);
-    const int32_t *t = mesh_triangles(m);
-    double s = 0;
-    for (int q = 0; q < mesh_triangle_count(m); q++) {
-        double e[2][3];
-        for (int k = 0; k < 3; k++) {
-            e[0][k] = (double)v[3 * t[3 * q + 1] + k] - v[3 * t[3 * q] + k];
-            e[1][k] = (double)v[3 * t[3 * q + 2] + k] - v[3 * t[3 * q] + k];
-        }
-        double c[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
-                       e[0][0] * e[1][1] - e[0][1] * e[1][0]};
-        s += 0.5 * sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    }
-    return s;
 }
 
 /* A box's faces cut into a grid: the vertices inside a face go, nearly
