@@ -478,6 +478,12 @@ static int bracket(level *L, const sample *l, const sample *r, int depth, events
                 if (bracket(L, &a, &m[i], depth + 1, E) != 0) return -1;
                 if (L->misled) return 0;
                 return bracket(L, &m[i], &b, depth + 1, E);
+            } else if (m[i].sig != a.sig && m[i].sig != b.sig && m[i].x > a.x && m[i].x < b.x) {
+                /* (too deep to split: the bracket closes in on the first
+                 * event, between a and m, where it had stayed as it was try
+                 * after try, to the end of the rays allowed, on a faceted
+                 * difference whose lines' signatures flickered) */
+                b = m[i];
             }
         }
         if (n == 2 && (a.x == a0) != (b.x == b0)) step = a.x != a0 ? a.x - a0 : b.x - b0;
