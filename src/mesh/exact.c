@@ -761,19 +761,27 @@ static int grow_forms(pass *P, int n)
 
 /* Sample s's boundaries followed (pass.forms); 0, or -1 where one is not
  * on a quadric. */
+/* Boundary i of the pass, on surface q, followed on the current line: the
+ * ray leaves the solid there where `exits`. */
+static void form_on(pass *P, int i, const iv_quadric *q, int exits)
+{
+    const iv_bound *b = &P->bounds[i];
+    const double *o = P->org[i];
+    double x[3] = {o[0] + b->t * P->d[0], o[1] + b->t * P->d[1], o[2] + b->t * P->d[2]};
+    mesh_form_init(&P->forms[i], q, &P->frame, x, exits ? 1 : -1, face_of(b));
+    P->state[i] = 1;
+}
+
 static int forms_of(pass *P, const sample *s)
 {
     if (s->nf < 0) return -1;
     for (int i = s->fo; i < s->fo + s->nf; i++) {
         if (P->state[i] == 0) {
-            const iv_bound *b = &P->bounds[i];
-            const double *o = P->org[i];
-            double x[3] = {o[0] + b->t * P->d[0], o[1] + b->t * P->d[1], o[2] + b->t * P->d[2]};
             iv_quadric q;
-            uint64_t face = face_of(b);
-            P->state[i] = csg_scene_quadric(P->s, b, o, P->d, &q) == 0 ? 1 : 2;
-            if (P->state[i] == 1)
-                mesh_form_init(&P->forms[i], &q, &P->frame, x, (i - s->fo) & 1 ? 1 : -1, face);
+            if (csg_scene_quadric(P->s, &P->bounds[i], P->org[i], P->d, &q) == 0)
+                form_on(P, i, &q, (i - s->fo) & 1);
+            else
+                P->state[i] = 2;
         }
         if (P->state[i] == 2) return -1;
     }
@@ -973,15 +981,11 @@ static int piece_forms(pass *P, const line *l, int k, sample *s)
     s->nf = q->nf;
     for (int i = 0; i < q->nf; i++) {
         int j = q->fo + i;
-        const iv_bound *b = &l->b[j];
-        const double *o = l->org[j];
-        if (l->qs[j] == 0) l->qs[j] = csg_scene_quadric(P->s, b, o, P->d, &l->q[j]) == 0 ? 1 : 2;
+        if (l->qs[j] == 0)
+            l->qs[j] = csg_scene_quadric(P->s, &l->b[j], l->org[j], P->d, &l->q[j]) == 0 ? 1 : 2;
         if (l->qs[j] == 2) return -1;
-        double x[3] = {o[0] + b->t * P->d[0], o[1] + b->t * P->d[1], o[2] + b->t * P->d[2]};
-        push_bound(P, b, o);
-        mesh_form_init(&P->forms[P->nforms - 1], &l->q[j], &P->frame, x, i & 1 ? 1 : -1,
-                       face_of(b));
-        P->state[P->nforms - 1] = 1;
+        push_bound(P, &l->b[j], l->org[j]);
+        form_on(P, P->nforms - 1, &l->q[j], i & 1);
     }
     return 0;
 }

@@ -114,7 +114,8 @@ static int flat_fan(const flat *f, int32_t v, double nrm[3])
         }
         if (!(dot3(c, nrm) > 0) || (m->npal && m->tc[t] != m->tc[first])) return 0;
         for (int k = 0; k < 3; k++) {
-            double d[3] = {p[k][0] - pv[0], p[k][1] - pv[1], p[k][2] - pv[2]};
+            double d[3];
+            sub3(p[k], pv, d);
             if (!(fabs(dot3(d, nrm)) <= f->eps)) return 0;
         }
     }
@@ -159,12 +160,12 @@ static int fan_ok(const flat *f, const int32_t *w, int n, int i, const double nr
     mesh_vertex_at(f->m, w[i], pu);
     for (int j = 0; j < n; j++) {
         if (j == i || (j + 1) % n == i) continue;
-        double a[3], b[3], c[3];
+        double a[3], b[3], ea[3], eb[3], c[3];
         mesh_vertex_at(f->m, w[j], a);
         mesh_vertex_at(f->m, w[(j + 1) % n], b);
-        tri_normal3(pu, a, b, c);
-        double ea[3] = {a[0] - pu[0], a[1] - pu[1], a[2] - pu[2]};
-        double eb[3] = {b[0] - pu[0], b[1] - pu[1], b[2] - pu[2]};
+        sub3(a, pu, ea);
+        sub3(b, pu, eb);
+        cross3(ea, eb, c); /* (tri_normal3 of pu, a, b) */
         if (!(dot3(c, nrm) > MIN_SINE * sqrt(dot3(ea, ea) * dot3(eb, eb)))) return 0;
     }
     return 1;
@@ -194,7 +195,8 @@ static int round_once(flat *f)
         for (int i = 0; i < n; i++) {
             double pu[3];
             mesh_vertex_at(m, w[i], pu);
-            double d[3] = {pu[0] - pv[0], pu[1] - pv[1], pu[2] - pv[2]};
+            double d[3];
+            sub3(pu, pv, d);
             if (dot3(d, d) < best && link_ok(f, w, n, i) && fan_ok(f, w, n, i, nrm)) {
                 best = dot3(d, d);
                 to = i;
