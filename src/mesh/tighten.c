@@ -24,8 +24,13 @@
  * that place already (two solids touching along an edge would be split at
  * the same points from both sides, and a reader welding by position would
  * join them).  Later rounds measure the triangles the last one made or
- * changed, up to ROUNDS.  At sharp edges and tips the contour's own error
- * is the larger, and halving triangles there does not end: left alone.
+ * changed, until one splits nothing or for ROUNDS (a triangle whose
+ * neighbour took the side it would split waits for the next round, and
+ * on bored_cone.scad splits went on to the thirteenth: at six, 0.23 % of
+ * its mesh's samples were beyond the tolerance, 0.14 % now, 17,408 ->
+ * 17,862 triangles; no other mesh model changes).  At sharp edges and
+ * tips the contour's own error is the larger, and halving triangles there
+ * does not end: left alone.
  *
  * Measured (tests/tools/meshdev --points, the mesh models at their default
  * tolerance): torus.scad 1.22 % of its mesh's samples beyond the tolerance,
@@ -66,7 +71,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define ROUNDS 6
+#define ROUNDS 16
 #define REACH 4         /* tolerances: rays are cast this far either side */
 #define COS_TURN 0.5    /* cos 60° */
 #define COS_SMOOTH 0.94 /* cos 20° */
