@@ -423,8 +423,9 @@ int mesh_balance(mesh *m, mesh_snapper *sn, double bound);
 /* Split the triangles of m's smooth parts that stray from the exact
  * surface by more than tol, measured by rays at seven points each (on up
  * to `threads` threads), on their longest edges, and the sides elsewhere
- * that cut across a sharp edge by more than tol on it, for a few rounds
- * (tighten.c); 0 or -1 when out of memory. */
+ * that cut across a sharp edge by more than tol on it; flip a side of
+ * those that stray and cannot be split where that brings them nearer; in
+ * rounds (tighten.c).  0 or -1 when out of memory. */
 int mesh_tighten(mesh *m, mesh_snapper *sn, double tol, int threads);
 /* Move x (a vertex placed from the ns samples sp, with normals nrm and
  * patches patch (mesh_hit.patch; NULL: not known), of its cell) onto the

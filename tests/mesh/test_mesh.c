@@ -1491,3 +1491,73 @@ Test(mesh_flatten, curved_surface_is_left_alone)
     mesh_free(m);
     csg_scene_free(s);
 }
+
+/* ---- triangles straying from the surface (mesh_tighten) ------------------ */
+
+/* A box's grid mesh with the sides along one of its edges flipped across
+ * it: each pair of triangles there a chamfer, cutting the edge off by up
+ * to a third of a grid step.  Tightened, every triangle lies on the box
+ * again (within the tolerance), closed, 2-manifold, its volume the box's. */
+Test(mesh_tighten, chamfers_across_an_edge_go)
+{
+    const double size[3] = {3, 2, 1}, b[6] = {0, 0, 0, 3, 2, 1};
+    mesh *grid = grid_box(4, size);
+    csg_scene *s = scene_of(box_node(b[0], b[1], b[2], b[3], b[4], b[5]));
+    /* the sides along the edge y = 0, z = 1 whose triangles' third corners
+     * are off it and off the end faces, each corner once, flipped: (a, b, c), (b, a, d) -> (c, a,
+     * d), (d, b, c) */
+    int nv = mesh_vertex_count(grid), nt = mesh_triangle_count(grid), flipped = 0;
+    const float *v = mesh_vertices(grid);
+    int32_t *t = malloc(3 * (size_t)nt * sizeof *t), *opp = malloc(3 * (size_t)nt * sizeof *opp);
+    char *touched = calloc((size_t)nt, 1), *joined = calloc((size_t)nv, 1);
+    cr_assert(t && opp && touched && joined && mesh_half_twins(grid, 0, opp) == 0);
+    memcpy(t, mesh_triangles(grid), 3 * (size_t)nt * sizeof *t);
+#define ON_EDGE(q) (v[3 * (q) + 1] == 0 && v[3 * (q) + 2] == 1)
+#define INSIDE(q) (v[3 * (q)] > 0 && v[3 * (q)] < 3) /* (off the end faces) */
+    for (int q = 0; q < nt; q++)
+        for (int k = 0; k < 3 && !touched[q]; k++) {
+            int32_t h = opp[3 * q + k], o = h / 3, j = h % 3;
+            int32_t a = t[3 * q + k], bb = t[3 * q + (k + 1) % 3], c = t[3 * q + (k + 2) % 3];
+            if (h < 0 || touched[o] || !ON_EDGE(a) || !ON_EDGE(bb)) continue;
+            int32_t d = t[3 * o + (j + 2) % 3];
+            if (ON_EDGE(c) || ON_EDGE(d) || joined[c] || joined[d] || !INSIDE(c) || !INSIDE(d))
+                continue;
+            int32_t x[2][3] = {{c, a, d}, {d, bb, c}};
+            memcpy(&t[3 * q], x[0], sizeof x[0]);
+            memcpy(&t[3 * o], x[1], sizeof x[1]);
+            touched[q] = touched[o] = 1;
+            joined[c] = joined[d] = 1; /* (one new side from each) */
+            flipped++;
+        }
+#undef ON_EDGE
+#undef INSIDE
+    mesh *m = mesh_new_from_arrays(v, nv, t, nt);
+    cr_assert_not_null(m);
+    free(t);
+    free(opp);
+    free(touched);
+    free(joined);
+    mesh_free(grid);
+    cr_assert_gt(flipped, 0);
+    cr_assert_null(check_manifold(m));
+    double tol = 1e-3, before = max_tri_dist(m, sd_box_ctx, b);
+    cr_assert_gt(before, 100 * tol, "the chamfers cut %g off", before);
+    mesh_options o = opts_h(0.1);
+    mesh_dexels *d = NULL;
+    char err[256] = "";
+    double lo[3] = {-0.2, -0.2, -0.2}, hi[3] = {3.2, 2.2, 1.2};
+    cr_assert(mesh_dexels_cast(s, &o, 0.1, lo, hi, &d, err, sizeof err) == 0, "%s", err);
+    mesh_snapper sn;
+    cr_assert_eq(mesh_snapper_init(&sn, d, cos(3.14159265358979323846 / 6)), 0);
+    cr_assert_eq(mesh_tighten(m, &sn, tol, 2), 0);
+    double after = max_tri_dist(m, sd_box_ctx, b);
+    cr_log_info("%d chamfers: %g off -> %g, %d triangles", flipped, before, after,
+                mesh_triangle_count(m));
+    cr_assert_null(check_manifold(m));
+    cr_expect_leq(after, tol, "still %g off the box", after);
+    cr_expect_lt(fabs(volume_of(m) - 6), 1e-5, "volume %.9f", volume_of(m));
+    mesh_snapper_free(&sn);
+    mesh_dexels_free(d);
+    mesh_free(m);
+    csg_scene_free(s);
+}
