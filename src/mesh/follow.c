@@ -9,7 +9,6 @@
 #include <stdlib.h>
 
 #define MAX_CHANGED 12 /* boundaries one ray has and the other lacks */
-#define SCAN 6         /* samples of a meeting's difference across [lo, hi] */
 
 static void mat_vec(const double A[3][3], const double x[3], double y[3])
 {
@@ -144,61 +143,119 @@ static int plane_meets(const mesh_form *p, const mesh_form *g, double lo, double
     return m;
 }
 
-/* Where f and g meet in (lo, hi), into x; their number (at most SCAN + 1).
- * Two planes: where their difference, linear in u, is zero; a plane and a
- * quadric: plane_meets; two quadrics: each sign change of their difference
- * over SCAN steps, closed in on by the Illinois rule. */
-static int meetings(const mesh_form *f, const mesh_form *g, double lo, double hi, double *x)
+/* The value at u of the polynomial c[0] + c[1] u + … + c[deg] u^deg. */
+static double poly_at(const double *c, int deg, double u)
 {
-    int n = 0;
-    if (flat(f) != flat(g))
-        return flat(f) ? plane_meets(f, g, lo, hi, x) : plane_meets(g, f, lo, hi, x);
-    if (flat(f)) {
-        /* two planes: their difference is linear in u */
-        double hl, hh;
-        if (gap(f, g, lo, &hl) != 0 || gap(f, g, hi, &hh) != 0 || hl == hh) return 0;
-        double r = lo - hl * (hi - lo) / (hh - hl);
-        if (r > lo && r < hi) x[n++] = r;
-        return n;
-    }
-    double pu = NAN, ph = NAN;
-    for (int i = 0; i <= SCAN; i++) {
-        double u = i == SCAN ? hi : lo + (hi - lo) * i / SCAN, h;
-        if (gap(f, g, u, &h) != 0) {
-            pu = NAN;
-            continue;
-        }
-        if (h == 0 && u > lo && u < hi) x[n++] = u;
-        if (!isnan(pu) && ((ph < 0 && h > 0) || (ph > 0 && h < 0))) {
-            double a = pu, fa = ph, b = u, fb = h;
-            int side = 0;
-            for (int it = 0; it < 100 && b - a > 1e-15 * (hi - lo); it++) {
-                double m = (a * fb - b * fa) / (fb - fa), fm;
-                if (!(m > a && m < b)) m = 0.5 * (a + b);
-                if (gap(f, g, m, &fm) != 0) break;
-                if (fm == 0) {
-                    a = b = m;
-                    break;
-                }
-                if ((fm < 0) == (fa < 0)) {
-                    a = m;
-                    fa = fm;
-                    if (side == -1) fb *= 0.5;
-                    side = -1;
-                } else {
-                    b = m;
-                    fb = fm;
-                    if (side == 1) fa *= 0.5;
-                    side = 1;
-                }
+    double v = c[deg];
+    for (int i = deg - 1; i >= 0; i--)
+        v = v * u + c[i];
+    return v;
+}
+
+/* The roots in (lo, hi) of the polynomial c (degree deg, at most 4) into
+ * x, in order; their number.  Each found between the roots of its
+ * derivative, where it is monotone, by bisection: a double root (a
+ * meeting that touches) is not one. */
+static int poly_roots(const double *c, int deg, double lo, double hi, double *x)
+{
+    if (deg < 1) return 0;
+    double d[4], cut[6];
+    for (int i = 0; i < deg; i++)
+        d[i] = (i + 1) * c[i + 1];
+    int nc = 0, n = 0;
+    cut[nc++] = lo;
+    nc += poly_roots(d, deg - 1, lo, hi, cut + nc);
+    cut[nc++] = hi;
+    for (int i = 0; i + 1 < nc; i++) {
+        double a = cut[i], b = cut[i + 1], fa = poly_at(c, deg, a), fb = poly_at(c, deg, b);
+        if (!((fa < 0 && fb > 0) || (fa > 0 && fb < 0))) continue;
+        for (int it = 0; it < 200; it++) {
+            double m = 0.5 * (a + b), fm = poly_at(c, deg, m);
+            if (!(m > a && m < b) || fm == 0) {
+                a = b = m;
+                break;
             }
-            double r = fabs(fa) < fabs(fb) ? a : b;
-            if (r > lo && r < hi) x[n++] = r;
+            if ((fm < 0) == (fa < 0))
+                a = m, fa = fm;
+            else
+                b = m;
         }
-        pu = u;
-        ph = h;
+        x[n++] = 0.5 * (a + b);
     }
     return n;
+}
+
+/* The product of polynomials p (degree np) and q (nq) into r (np + nq). */
+static void poly_mul(const double *p, int np, const double *q, int nq, double *r)
+{
+    for (int i = 0; i <= np + nq; i++)
+        r[i] = 0;
+    for (int i = 0; i <= np; i++)
+        for (int j = 0; j <= nq; j++)
+            r[i + j] += p[i] * q[j];
+}
+
+/* Where quadrics f and g meet in (lo, hi), into x; their number (at most
+ * 4).  On the line's plane each is a conic in (u, t), a t² + b(u) t +
+ * c(u) = 0: where both hold, the resultant of the two in t, (a₁c₂ −
+ * a₂c₁)² − (a₁b₂ − a₂b₁)(b₁c₂ − b₂c₁), a quartic in u, is zero.  Its roots
+ * where the two boundaries followed (their own roots in t) meet, each
+ * closed in on by Newton's method on their difference.  (Sign changes of
+ * the difference over six steps of [lo, hi] straddled meetings that close
+ * in on each other, an event about to end: closing() found the piece on
+ * its own line in fewer than half the tries.) */
+static int quadrics_meet(const mesh_form *f, const mesh_form *g, double lo, double hi, double *x)
+{
+    double A[3] = {f->al * g->c0 - g->al * f->c0, f->al * g->cu1 - g->al * f->cu1,
+                   f->al * g->cu2 - g->al * f->cu2};
+    double B[2] = {f->al * g->bt - g->al * f->bt, f->al * g->bu - g->al * f->bu};
+    double bf[2] = {f->bt, f->bu}, bg[2] = {g->bt, g->bu}, cf[3] = {f->c0, f->cu1, f->cu2},
+           cg[3] = {g->c0, g->cu1, g->cu2}, C1[4], C2[4], C[4], AA[5], BC[5], P[5];
+    poly_mul(bf, 1, cg, 2, C1);
+    poly_mul(bg, 1, cf, 2, C2);
+    for (int i = 0; i < 4; i++)
+        C[i] = C1[i] - C2[i];
+    poly_mul(A, 2, A, 2, AA);
+    poly_mul(B, 1, C, 3, BC);
+    for (int i = 0; i < 5; i++)
+        P[i] = AA[i] - BC[i];
+    double r[4], scale = hi - lo;
+    int nr = poly_roots(P, 4, lo, hi, r), n = 0;
+    for (int i = 0; i < nr; i++) {
+        double u = r[i], h, h2, du = 1e-7 * scale;
+        int ok = gap(f, g, u, &h) == 0;
+        for (int it = 0; it < 8 && ok && h != 0; it++) {
+            ok = gap(f, g, u + du, &h2) == 0 && h2 != h;
+            if (!ok) break;
+            double step = h * du / (h2 - h);
+            if (!(fabs(step) < 1e-3 * scale)) {
+                ok = 0;
+                break;
+            }
+            u -= step;
+            ok = gap(f, g, u, &h) == 0;
+            du = fmax(fabs(step), 1e-12 * scale);
+        }
+        if (ok && fabs(h) <= 1e-9 * scale && u > lo && u < hi) x[n++] = u;
+    }
+    return n;
+}
+
+/* Where f and g meet in (lo, hi), into x; their number (at most 4).  Two
+ * planes: where their difference, linear in u, is zero; a plane and a
+ * quadric: plane_meets; two quadrics: quadrics_meet. */
+static int meetings(const mesh_form *f, const mesh_form *g, double lo, double hi, double *x)
+{
+    if (flat(f) != flat(g))
+        return flat(f) ? plane_meets(f, g, lo, hi, x) : plane_meets(g, f, lo, hi, x);
+    if (!flat(f)) return quadrics_meet(f, g, lo, hi, x);
+    /* two planes: their difference is linear in u */
+    double hl, hh;
+    if (gap(f, g, lo, &hl) != 0 || gap(f, g, hi, &hh) != 0 || hl == hh) return 0;
+    double r = lo - hl * (hi - lo) / (hh - hl);
+    if (!(r > lo && r < hi)) return 0;
+    x[0] = r;
+    return 1;
 }
 
 static int by_value(const void *a, const void *b)
@@ -244,7 +301,7 @@ int mesh_forms_events(const mesh_form *a, int na, const mesh_form *b, int nb, do
         c[ma + i] = &b[ib[i]];
         pos[ma + i] = ib[i];
     }
-    double buf[MAX_CHANGED * (2 + MAX_CHANGED * (SCAN + 1))];
+    double buf[MAX_CHANGED * (2 + MAX_CHANGED * 4)];
     int n = 0;
     for (int i = 0; i < ma + mb; i++) {
         const mesh_form *f = c[i];

@@ -169,3 +169,38 @@ Test(follow, foresees_a_silhouette_and_a_meeting)
     cr_expect(found, "%d events foreseen, none at 1.5 (first %.17g)", n, n ? x[0] : NAN);
     csg_scene_free(s);
 }
+
+/* Two curved faces that meet twice close together, foreseen over a window
+ * far wider than the gap between the meetings (as where a piece of a line
+ * is followed to another line, and two events close in on each other): a
+ * sphere of radius 3 and a cylinder of radius ρ = 2.999 along z, united,
+ * along rays along x at y = 0.5 — the sphere bulges past the cylinder
+ * where z² < 9 − ρ², and the rays enter and leave through it there. */
+Test(follow, foresees_meetings_close_together)
+{
+    const double rho = 2.999, zm = sqrt(9 - rho * rho);
+    mesh_line_frame F = {{-10, 0.5, 0}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+    csg_node *u = csg_node_op(CSG_OP_UNION);
+    cr_assert_not_null(u);
+    cr_assert_eq(
+        csg_node_add(u, node((iv_shape){.kind = IV_SHAPE_SPHERE, .u.sphere.r = 3}, 0, 0, 0)), 0);
+    cr_assert_eq(csg_node_add(u, node((iv_shape){.kind = IV_SHAPE_CONE, .u.cone = {rho, rho, 20}},
+                                      0, 0, -10)),
+                 0);
+    char err[128] = "";
+    csg_scene *s = csg_scene_new(&u, 1, err, sizeof err);
+    cr_assert_not_null(s, "%s", err);
+    iv_list l;
+    mesh_form a[8], b[8];
+    int na = trace_forms(s, &F, 0, &l, a, 8), nb = trace_forms(s, &F, 0.5, &l, b, 8);
+    cr_assert_eq(na, 2);
+    cr_assert_eq(nb, 2);
+    cr_assert_neq(a[0].face, b[0].face, "the sphere at z = 0, the cylinder at 0.5");
+    double x[16];
+    int n = mesh_forms_events(a, na, b, nb, -20, 20, x, 16), near[2] = {0, 0};
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 2; k++)
+            near[k] |= fabs(x[i] - (k ? zm : -zm)) < 1e-12;
+    cr_expect(near[0] && near[1], "%d events foreseen, not both at ±%.17g", n, zm);
+    csg_scene_free(s);
+}
