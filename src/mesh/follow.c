@@ -153,12 +153,21 @@ static double poly_at(const double *c, int deg, double u)
 }
 
 /* The roots in (lo, hi) of the polynomial c (degree deg, at most 4) into
- * x, in order; their number.  Each found between the roots of its
- * derivative, where it is monotone, by bisection: a double root (a
- * meeting that touches) is not one. */
+ * x, in order; their number.  Past a quadratic, each found between the
+ * roots of its derivative, where it is monotone, by the Illinois rule (to
+ * 1e-12 of the stretch: quadrics_meet closes in on them after): a double
+ * root (a meeting that touches) is not one. */
 static int poly_roots(const double *c, int deg, double lo, double hi, double *x)
 {
-    if (deg < 1) return 0;
+    if (deg <= 2) {
+        int n = quadratic_in(deg == 2 ? c[2] : 0, deg >= 1 ? c[1] : 0, c[0], lo, hi, x);
+        if (n == 2 && x[0] > x[1]) {
+            double t = x[0];
+            x[0] = x[1];
+            x[1] = t;
+        }
+        return n;
+    }
     double d[4], cut[6];
     for (int i = 0; i < deg; i++)
         d[i] = (i + 1) * c[i + 1];
@@ -169,18 +178,26 @@ static int poly_roots(const double *c, int deg, double lo, double hi, double *x)
     for (int i = 0; i + 1 < nc; i++) {
         double a = cut[i], b = cut[i + 1], fa = poly_at(c, deg, a), fb = poly_at(c, deg, b);
         if (!((fa < 0 && fb > 0) || (fa > 0 && fb < 0))) continue;
-        for (int it = 0; it < 200; it++) {
-            double m = 0.5 * (a + b), fm = poly_at(c, deg, m);
-            if (!(m > a && m < b) || fm == 0) {
+        int side = 0;
+        for (int it = 0; it < 100 && b - a > 1e-12 * (hi - lo); it++) {
+            double m = (a * fb - b * fa) / (fb - fa), fm;
+            if (!(m > a && m < b)) m = 0.5 * (a + b);
+            fm = poly_at(c, deg, m);
+            if (fm == 0) {
                 a = b = m;
                 break;
             }
-            if ((fm < 0) == (fa < 0))
+            if ((fm < 0) == (fa < 0)) {
                 a = m, fa = fm;
-            else
-                b = m;
+                if (side == -1) fb *= 0.5;
+                side = -1;
+            } else {
+                b = m, fb = fm;
+                if (side == 1) fa *= 0.5;
+                side = 1;
+            }
         }
-        x[n++] = 0.5 * (a + b);
+        x[n++] = fabs(fa) < fabs(fb) ? a : b;
     }
     return n;
 }
