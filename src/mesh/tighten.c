@@ -206,12 +206,14 @@ static void point_of(const double p[3][3], int i, double x[3])
 
 /* How far triangle p strays from the surface: the farthest of its seven
  * points (nearest, each no nearer than it need be: `enough`), at most
- * reach; reach where it has no normal, or a point's lines cross nothing. */
-static double farthest(mesh_snapper *sn, const double p[3][3], double enough, double reach)
+ * reach, or the first at stop or farther (its caller's answer is then
+ * known); reach where it has no normal, or a point's lines cross nothing. */
+static double farthest(mesh_snapper *sn, const double p[3][3], double enough, double stop,
+                       double reach)
 {
     double n[3], e[3], l, worst = 0;
     if (!frame_of(p, n, e, &l)) return reach;
-    for (int i = 0; i < 7; i++) {
+    for (int i = 0; i < 7 && worst < stop; i++) {
         double x[3];
         point_of(p, i, x);
         worst = fmax(worst, fmin(nearest(sn, x, n, e, enough, reach), reach));
@@ -711,8 +713,10 @@ static int joined(const mesh *m, const flip_view *fv, int32_t a, int32_t b)
 }
 
 /* Flip the side of straying triangle t (unused this round) that brings it
- * and the triangle across (unused, of its colour) nearest the surface, at
- * least FLIP_GAIN of the way (farthest), both new triangles facing out:
+ * and the triangle across (unused, of its colour) nearest the surface,
+ * both new triangles within FLIP_GAIN of how far t strays (farthest; a
+ * triangle across that strays further is flipped from its own side, when
+ * it is measured) and facing out:
  * t = (a, b, c) and (b, a, d) become (c, a, d) and (d, b, c), where c and
  * d share no side yet.  The two flagged used and in nx; 1 when flipped. */
 static int flip_side(mesh *m, mesh_snapper *sn, const round_view *rv, flip_view *fv, int32_t t,
@@ -721,7 +725,7 @@ static int flip_side(mesh *m, mesh_snapper *sn, const round_view *rv, flip_view 
     double reach = REACH * tol, enough = 0.1 * tol, p[3][3];
     for (int q = 0; q < 3; q++)
         corner(m, t, q, p[q]);
-    double ft = farthest(sn, (const double(*)[3])p, enough, reach), best = FLIP_GAIN * ft;
+    double ft = NAN, best = INFINITY; /* (ft measured once a side may flip) */
     int bestk = -1;
     for (int k = 0; k < 3; k++) {
         int32_t h = rv->opp[3 * t + k], o = h / 3;
@@ -731,22 +735,28 @@ static int flip_side(mesh *m, mesh_snapper *sn, const round_view *rv, flip_view 
         if (c == d || fv->busy[a] || fv->busy[b] || fv->busy[c] || fv->busy[d] ||
             (m->tc && m->npal && m->tc[t] != m->tc[o]) || joined(m, fv, c, d))
             continue;
-        double po[3][3], n1[3][3], n2[3][3];
-        for (int q = 0; q < 3; q++)
-            corner(m, o, q, po[q]);
-        double before = fmax(ft, farthest(sn, (const double(*)[3])po, enough, reach));
+        double pd[3], n1[3][3], n2[3][3];
+        mesh_vertex_at(m, d, pd);
         memcpy(n1[0], p[(k + 2) % 3], sizeof n1[0]);
         memcpy(n1[1], p[k], sizeof n1[1]);
-        memcpy(n1[2], po[(h % 3 + 2) % 3], sizeof n1[2]);
-        memcpy(n2[0], po[(h % 3 + 2) % 3], sizeof n2[0]);
+        memcpy(n1[2], pd, sizeof n1[2]);
+        memcpy(n2[0], pd, sizeof n2[0]);
         memcpy(n2[1], p[(k + 1) % 3], sizeof n2[1]);
         memcpy(n2[2], p[(k + 2) % 3], sizeof n2[2]);
-        double after = fmax(farthest(sn, (const double(*)[3])n1, enough, reach),
-                            farthest(sn, (const double(*)[3])n2, enough, reach));
-        if (!(after < FLIP_GAIN * before && after < best) ||
-            !faces_out(sn, (const double(*)[3])n1, reach) ||
+        /* (the cheap tests first; the new pair measured no further than
+         * decides it) */
+        if (!faces_out(sn, (const double(*)[3])n1, reach) ||
             !faces_out(sn, (const double(*)[3])n2, reach))
             continue;
+        if (isnan(ft)) {
+            ft = farthest(sn, (const double(*)[3])p, enough, INFINITY, reach);
+            best = FLIP_GAIN * ft;
+        }
+        double stop = best;
+        double f1 = farthest(sn, (const double(*)[3])n1, enough, stop, reach);
+        double after =
+            f1 < stop ? fmax(f1, farthest(sn, (const double(*)[3])n2, enough, stop, reach)) : f1;
+        if (!(after < stop)) continue;
         best = after;
         bestk = k;
     }
