@@ -61,14 +61,15 @@
  * tolerances or more off its surface 145 -> 61, beyond the tolerance
  * 0.29 % -> 0.20 %, 16,774 -> 17,274 triangles; the bench part 5,500 ->
  * 5,602, as near its surface (0.95 -> 0.96 D); the other mesh models as
- * near as before. *
+ * near as before.
+ *
  * A triangle that strays and that no split took this round (its sides
  * may not be split, or it is not smooth and no side of it cuts a sharp
  * edge: a chamfer whose crease point lies too far off its side, a sliver
  * standing off a wall) has the side flipped that brings it and the
- * triangle across nearest the surface, where that halves how far the pair
- * strays (the farthest of their seven points each) and both new triangles
- * face out; rounds go on while anything splits or flips.  bored_cone.scad:
+ * triangle across nearest the surface, where both new triangles come
+ * within half of how far it strays (the farthest of their seven points
+ * each) and face out; rounds go on while anything splits or flips.  bored_cone.scad:
  * mesh samples beyond the tolerance 0.142 % -> 0.093 %, 17,862 -> 17,878
  * triangles; rotated_box_pin 0.090 % -> 0.050 %; the other mesh models and
  * the bench parts the same meshes.  And a sharp edge's point found off a
