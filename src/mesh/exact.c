@@ -759,8 +759,6 @@ static int grow_forms(pass *P, int n)
     return 0;
 }
 
-/* Sample s's boundaries followed (pass.forms); 0, or -1 where one is not
- * on a quadric. */
 /* Boundary i of the pass, on surface q, followed on the current line: the
  * ray leaves the solid there where `exits`. */
 static void form_on(pass *P, int i, const iv_quadric *q, int exits)
@@ -772,6 +770,8 @@ static void form_on(pass *P, int i, const iv_quadric *q, int exits)
     P->state[i] = 1;
 }
 
+/* Sample s's boundaries followed (pass.forms); 0, or -1 where one is not
+ * on a quadric. */
 static int forms_of(pass *P, const sample *s)
 {
     if (s->nf < 0) return -1;
